@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Fresh machine → the paper's experiment: installs what is missing, builds the
+# release preset and runs `proxsim run` (the built-in default scenario), passing
+# any arguments on, e.g. scripts/run.sh --out my-out.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+exec build/release/proxsim run "$@"

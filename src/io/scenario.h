@@ -1,0 +1,68 @@
+// A scenario: everything a run needs, parsed from YAML (DESIGN.md "Scenario
+// file") and validated before anything runs. SI units; angles are degrees in
+// the file and radians in these structs.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "sensors/sensor_spec.h"
+
+namespace proxsim {
+
+struct SensorConfig {
+  std::string name;
+  SensorSpec spec;
+  std::string link = "world";    ///< a robot link, or "world"
+  Pose X_LS = Pose::Identity();  ///< sensor frame S in its link L; the beam is S's +x
+  bool see_robot = true;         ///< false: the robot's own links are transparent to this sensor
+};
+
+struct GaitConfig {
+  double stride_m = 0.6;  ///< distance between two heel strikes of the same foot, > 0
+  double period_s = 1.2;  ///< duration of one gait cycle (a stride), > 0
+};
+
+struct RobotConfig {
+  std::string model = "builtin:biped";  ///< "builtin:biped" or a URDF path (relative to the scenario file)
+  Vec3 start_xyz_m = Vec3::Zero();
+  double start_yaw_rad = 0.0;
+  GaitConfig gait;
+  std::vector<Vec2> waypoints_m;            ///< path on the floor, world x-y; empty: straight ahead
+  std::optional<double> stop_distance_m;    ///< built-in strategy: stop before an obstacle this close
+  std::string trajectory_file;              ///< recorded trajectory CSV to replay instead of the gait
+};
+
+struct Scenario {
+  std::string source;  ///< the file it came from ("builtin:NAME" for embedded ones)
+  int schema = 1;
+  std::uint64_t seed = 1;
+  double duration_s = 10.0;  ///< > 0
+  double rate_hz = 50.0;     ///< samples per second, > 0
+  std::string builtin_scene = "empty";
+  Scene scene;  ///< the built-in scene's objects followed by the file's own, meshes loaded
+  std::optional<RobotConfig> robot;
+  std::vector<SensorConfig> sensors;
+
+  /// Number of samples in the run: t_k = k / rate_hz for k in [0, count).
+  std::int64_t SampleCount() const;
+};
+
+/// Parses and validates a scenario file. Throws InputError listing every
+/// problem (file, line, key, expectation; unknown keys with the nearest valid
+/// key suggested). Mesh and URDF paths are resolved relative to the file.
+Scenario LoadScenarioFile(const std::string& path);
+
+/// The same from YAML text; `source` names it in messages and resolves relative paths.
+Scenario LoadScenarioText(const std::string& yaml_text, const std::string& source);
+
+/// Names of the built-in scenarios ("paper" is the default run).
+std::vector<std::string> BuiltinScenarioNames();
+
+/// A built-in scenario by name: "paper" (the paper's experiment), "world_demo".
+Scenario LoadBuiltinScenario(const std::string& name);
+
+}  // namespace proxsim

@@ -1,0 +1,80 @@
+// The ray caster: the one place that talks to Embree (no other file includes
+// it). It holds rigid bodies made of shapes: the static world, and the robot's
+// links that move every sample. Rays come in a batch, hits go out in a
+// caller-owned buffer of the same length; nothing is allocated per ray.
+//
+// Frames: W world, B a body, O a shape on a body.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "scene/shape.h"
+
+namespace proxsim {
+
+/// One ray. The first hit in [0, max_range_m] is reported.
+struct Ray {
+  Vec3f origin_W = Vec3f::Zero();
+  Vec3f direction_W = Vec3f::UnitX();  ///< unit length
+  float max_range_m = 1.0f;            ///< > 0
+  bool see_robot = true;               ///< false: the robot's links are transparent
+};
+
+/// The first hit of a ray, or a miss.
+struct Hit {
+  float distance_m = std::numeric_limits<float>::infinity();  ///< +inf on a miss
+  Vec3f normal_W = Vec3f::Zero();  ///< unit geometric normal, as the surface has it (either side)
+  std::int32_t object_id = -1;     ///< the BodyShape's object_id; -1 on a miss
+
+  bool is_hit() const { return object_id >= 0; }
+};
+
+/// A shape fixed on a body.
+struct BodyShape {
+  Shape shape;
+  Pose X_BO = Pose::Identity();  ///< pose of the shape in its body frame
+  std::int32_t object_id = 0;    ///< reported in Hit::object_id; >= 0
+};
+
+enum class BodyKind { kWorld, kRobot };
+
+class RayCaster {
+ public:
+  RayCaster();
+  ~RayCaster();
+  RayCaster(const RayCaster&) = delete;
+  RayCaster& operator=(const RayCaster&) = delete;
+
+  /// Adds a rigid body at pose X_WB; returns its index for SetBodyPose.
+  int AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose& X_WB = Pose::Identity());
+
+  /// Moves a body; takes effect at the next Commit().
+  void SetBodyPose(int body, const Pose& X_WB);
+
+  /// Builds or refits the acceleration structures; call after adding or moving bodies.
+  void Commit();
+
+  /// Casts every ray; hits[i] answers rays[i]. Requires hits.size() == rays.size().
+  /// Large batches are spread over the threads set by set_threads.
+  void Cast(std::span<const Ray> rays, std::span<Hit> hits) const;
+
+  /// Threads used by Cast for large batches (>= 1).
+  void set_threads(int threads);
+
+  /// Distance from p_W to the nearest surface of any world body shape whose
+  /// object_id is not in exclude_object_ids; +inf when there is none.
+  double DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids) const;
+
+  /// Number of triangles held (meshes and boxes), for reports.
+  std::size_t triangle_count() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace proxsim

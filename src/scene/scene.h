@@ -1,0 +1,36 @@
+// A scene: named objects with a shape, a pose in the world and a material.
+// The objects of a built-in scene come first, then the scenario's own.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/shape.h"
+
+namespace proxsim {
+
+/// Surface properties. Stored for every object; the paper's sensor models do
+/// not use them (the beyond-the-paper physics of a later issue does).
+struct Material {
+  double albedo = 1.0;    ///< diffuse reflectance in [0, 1]
+  double specular = 0.0;  ///< specular fraction of the reflection in [0, 1]
+};
+
+struct SceneObject {
+  std::string name;  ///< unique within the scene; the `object` column of readings.csv
+  Shape shape;
+  Pose X_WO = Pose::Identity();  ///< pose of the object's frame O in world W
+  Material material;
+};
+
+struct Scene {
+  std::vector<SceneObject> objects;
+};
+
+/// Names of the built-in scenes, for validation and messages.
+const std::vector<std::string>& BuiltinSceneNames();
+
+/// The objects of a built-in scene; throws InputError for an unknown name.
+Scene MakeBuiltinScene(const std::string& name);
+
+}  // namespace proxsim
