@@ -9,11 +9,12 @@ packages=(
   nlohmann-json3-dev librandom123-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib python3-numpy
+  nodejs npm
 )
 # Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test.
 for extra in "$@"; do
   case "$extra" in
-    browser) packages+=(chromium nodejs npm) ;;
+    browser) packages+=(chromium) ;;
     *) echo "install-deps: unknown group '$extra' (known: browser)" >&2; exit 2 ;;
   esac
 done

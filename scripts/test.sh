@@ -3,7 +3,7 @@
 # the sanitizer (ASan+UBSan) presets, and runs the whole CTest suite under both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh browser
 for preset in release asan; do
   echo "=== $preset: configure and build"
   cmake --preset "$preset" >/dev/null
