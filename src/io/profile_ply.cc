@@ -1,0 +1,57 @@
+#include "io/profile_ply.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <vector>
+
+#include "io/number_format.h"
+
+namespace proxsim {
+
+ProfilePlyWriter::ProfilePlyWriter(const std::string& path) : path_(path), body_(path + ".body") {}
+
+void ProfilePlyWriter::Append(const SampleFrame& frame) {
+  for (std::size_t i = 0; i < frame.sensors.size(); ++i) {
+    const SensorSample& s = frame.sensors[i];
+    if (!s.reading.detected()) continue;
+    // the profile is built from what the sensor measured, not from the truth
+    const Vec3 p_W = s.p_WS + s.reading.d_m * s.dir_W;
+    line_.clear();
+    for (int k = 0; k < 3; ++k) {
+      AppendNumber(line_, static_cast<float>(p_W[k]));
+      line_ += ' ';
+    }
+    AppendInteger(line_, static_cast<long long>(i));
+    line_ += ' ';
+    AppendNumber(line_, frame.t_s);
+    line_ += ' ';
+    AppendInteger(line_, s.object_id);
+    line_ += '\n';
+    body_.Write(line_);
+    ++point_count_;
+  }
+}
+
+void ProfilePlyWriter::Commit() {
+  body_.Commit();  // now complete under path_ + ".body"
+  const std::string body_path = path_ + ".body";
+  AtomicFile ply(path_);
+  ply.Write("ply\nformat ascii 1.0\ncomment proxsim profile: world-frame detections\n");
+  std::string element = "element vertex ";
+  AppendInteger(element, point_count_);
+  ply.Write(element);
+  ply.Write(
+      "\nproperty float x\nproperty float y\nproperty float z\n"
+      "property int sensor\nproperty double t_s\nproperty int object\nend_header\n");
+  // copy the streamed vertices after the header
+  std::FILE* body = std::fopen(body_path.c_str(), "rb");
+  if (body == nullptr) throw std::runtime_error("cannot reopen " + body_path);
+  std::vector<char> chunk(1 << 20);
+  std::size_t n;
+  while ((n = std::fread(chunk.data(), 1, chunk.size(), body)) > 0) ply.Write({chunk.data(), n});
+  std::fclose(body);
+  std::remove(body_path.c_str());
+  ply.Commit();
+}
+
+}  // namespace proxsim

@@ -1,0 +1,33 @@
+// profile.ply: the world-frame points the sensors detected (paper §6.2), as an
+// ASCII PLY point cloud with the sensor index, time and hit object of each
+// point as vertex properties. Points are streamed to a side file while the run
+// goes, and the header (which needs the final count) is written at Commit.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "io/atomic_file.h"
+#include "sim/sample_frame.h"
+
+namespace proxsim {
+
+class ProfilePlyWriter {
+ public:
+  explicit ProfilePlyWriter(const std::string& path);
+
+  /// Adds every detection of the frame (status ok) at its measured distance
+  /// along the ray: p = origin + d_m·dir, the point a real sensor would report.
+  void Append(const SampleFrame& frame);
+  void Commit();
+
+  std::int64_t point_count() const { return point_count_; }
+
+ private:
+  std::string path_;
+  AtomicFile body_;  // the vertex lines, before the header exists
+  std::int64_t point_count_ = 0;
+  std::string line_;
+};
+
+}  // namespace proxsim

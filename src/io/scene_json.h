@@ -1,0 +1,29 @@
+// scene.json: the geometry a run used (objects with shape, pose and material;
+// the robot's links and their shapes; the sensors), so that the report can
+// draw the scene, the robot and the true cross-section without re-parsing the
+// scenario.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/scenario.h"
+#include "raycast/ray_caster.h"
+
+namespace proxsim {
+
+/// A shape and its pose as JSON fields: "shape", its dimensions, "xyz_m", "quat_wxyz".
+nlohmann::json ShapeToJson(const Shape& shape, const Pose& X);
+
+/// One robot link for scene.json: its name and shapes in the link frame.
+struct LinkGeometryJson {
+  std::string name;
+  std::vector<BodyShape> shapes;
+};
+
+/// The whole scene.json document; `robot_links` empty when there is no robot.
+nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links);
+
+}  // namespace proxsim

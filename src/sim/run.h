@@ -1,0 +1,28 @@
+// A whole run: step the simulation to the end, stream the readings and the
+// profile to the output folder, and write the summary. Every file appears
+// under its final name only when it is complete.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "io/scenario.h"
+
+namespace proxsim {
+
+struct RunOptions {
+  std::string out_dir = "proxsim-out";
+  int threads = 1;        ///< ray-casting threads, >= 1
+  bool progress = false;  ///< print a progress line to stderr while running
+};
+
+struct RunResult {
+  nlohmann::json summary;  ///< what was written to summary.json
+  double wall_s = 0.0;     ///< wall time of the simulation loop and its outputs
+};
+
+/// Runs a validated scenario; throws std::runtime_error on I/O failure.
+RunResult RunScenario(const Scenario& scenario, const RunOptions& options);
+
+}  // namespace proxsim

@@ -1,0 +1,46 @@
+#include "sim/run_statistics.h"
+
+namespace proxsim {
+
+RunStatistics::RunStatistics(std::size_t sensor_count) : sensors_(sensor_count) {}
+
+void RunStatistics::Add(const SampleFrame& frame) {
+  for (std::size_t i = 0; i < frame.sensors.size(); ++i) {
+    const SensorSample& s = frame.sensors[i];
+    PerSensor& stats = sensors_[i];
+    ++stats.samples;
+    ++stats.by_status[static_cast<std::size_t>(s.reading.status)];
+    if (s.reading.detected()) {
+      ++stats.detections_by_object[s.object_id];
+      stats.first_detection_t_s.try_emplace(s.object_id, frame.t_s);
+    }
+  }
+}
+
+std::int64_t RunStatistics::detections(std::size_t sensor) const {
+  return sensors_.at(sensor).by_status[static_cast<std::size_t>(ReadingStatus::kOk)];
+}
+
+nlohmann::json RunStatistics::ToJson(const std::vector<std::string>& sensor_names,
+                                     const std::vector<std::string>& object_names) const {
+  nlohmann::json all = nlohmann::json::object();
+  for (std::size_t i = 0; i < sensors_.size(); ++i) {
+    const PerSensor& stats = sensors_[i];
+    nlohmann::json by_status = nlohmann::json::object();
+    for (std::size_t k = 0; k < kStatusCount; ++k) {
+      by_status[ReadingStatusName(static_cast<ReadingStatus>(k))] = stats.by_status[k];
+    }
+    nlohmann::json by_object = nlohmann::json::object();
+    for (const auto& [id, count] : stats.detections_by_object) by_object[object_names.at(id)] = count;
+    nlohmann::json first = nlohmann::json::object();
+    for (const auto& [id, t_s] : stats.first_detection_t_s) first[object_names.at(id)] = t_s;
+    all[sensor_names.at(i)] = {{"samples", stats.samples},
+                               {"detections", stats.by_status[0]},
+                               {"by_status", by_status},
+                               {"detections_by_object", by_object},
+                               {"first_detection_t_s", first}};
+  }
+  return all;
+}
+
+}  // namespace proxsim

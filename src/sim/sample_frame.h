@@ -1,0 +1,44 @@
+// What one sample step produces: per sensor, the reading and the noise-free
+// truth beside it (DESIGN.md: every reading carries its status and the truth),
+// and the robot's state at that time. Buffers are sized once per run and
+// overwritten in place every step.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/geometry.h"
+#include "sensors/sensor_model.h"
+
+namespace proxsim {
+
+enum class SupportLeg : std::uint8_t { kNone, kLeft, kRight, kDouble };
+
+/// "", "left", "right" or "double".
+const char* SupportLegName(SupportLeg leg);
+
+struct SensorSample {
+  Reading reading;           ///< what the sensor reports
+  Echo echo;                 ///< the truth it came from: d, α, whether the robot was hit
+  std::int32_t object_id = -1;  ///< hit object (scene objects first, then robot links); -1: none
+  Vec3 p_WH = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());  ///< hit point, NaN when none
+  Vec3 p_WS = Vec3::Zero();       ///< ray origin: the sensor frame's origin in world
+  Vec3 dir_W = Vec3::UnitX();     ///< ray direction: the sensor frame's +x in world
+};
+
+struct RobotSample {
+  bool present = false;     ///< false when the scenario has no robot
+  double gait_phase = 0.0;  ///< of the left leg, in [0, 1), 0 at its heel strike
+  SupportLeg support = SupportLeg::kNone;
+  bool stopped = false;
+  double distance_walked_m = 0.0;
+};
+
+struct SampleFrame {
+  std::int64_t sample = 0;  ///< index k; t_s = k / rate_hz
+  double t_s = 0.0;
+  std::vector<SensorSample> sensors;  ///< one per scenario sensor, in scenario order
+  RobotSample robot;
+};
+
+}  // namespace proxsim

@@ -1,0 +1,58 @@
+// The sampling loop, one step at a time: at every sample time t_k = k/rate_hz,
+// place every sensor in the world (X_WS), cast all their rays in one batch,
+// and turn each sensor's first hit into a reading with the paper's model.
+// All state lives in this object, so a run, a test or a strategy written in
+// another language can step it sample by sample.
+//
+// Frames: W world, L a link a sensor is fixed on ("world" is W itself), S a sensor.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/scenario.h"
+#include "raycast/ray_caster.h"
+#include "sim/sample_frame.h"
+
+namespace proxsim {
+
+class Simulation {
+ public:
+  /// Builds the scene's acceleration structures; `threads` >= 1 for ray casting.
+  Simulation(const Scenario& scenario, int threads);
+  ~Simulation();
+
+  /// True once every sample of the run has been taken.
+  bool done() const { return next_sample_ >= sample_count_; }
+
+  /// Takes the next sample and returns it (valid until the next Step).
+  const SampleFrame& Step();
+
+  /// The last sample taken.
+  const SampleFrame& frame() const { return frame_; }
+
+  std::int64_t sample_count() const { return sample_count_; }
+  const Scenario& scenario() const { return scenario_; }
+
+  /// Name of an object id as found in SensorSample::object_id.
+  const std::string& object_name(std::int32_t object_id) const { return object_names_.at(object_id); }
+  std::size_t object_count() const { return object_names_.size(); }
+
+ private:
+  // place the sensors at time t and fill rays_ (one ray per sensor)
+  void PlaceSensors(double t_s);
+  // turn hits_ into readings in frame_
+  void MeasureAll();
+
+  const Scenario& scenario_;
+  std::int64_t sample_count_ = 0;
+  std::int64_t next_sample_ = 0;
+  RayCaster caster_;
+  std::vector<std::string> object_names_;
+  std::vector<Ray> rays_;
+  std::vector<Hit> hits_;
+  SampleFrame frame_;
+};
+
+}  // namespace proxsim
