@@ -1,0 +1,77 @@
+// Helpers for tests that drive the real `proxsim` binary: run a command line,
+// read a CSV back by column name.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace proxsim::testing {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `proxsim ARGS` (the binary under test) through the shell.
+inline CommandResult RunProxsim(const std::string& args) {
+  const std::string command = std::string(PROXSIM_BINARY) + " " + args + " 2>&1";
+  CommandResult result;
+  std::FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+/// A fresh, empty folder under the system's temporary directory.
+inline std::filesystem::path FreshDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("proxsim_test_" + name);
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+inline std::string ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// A CSV file as rows of named fields.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string>> rows;
+};
+
+inline Csv ReadCsv(const std::filesystem::path& path) {
+  Csv csv;
+  std::ifstream in(path);
+  std::string line;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> fields;
+    std::string field;
+    std::stringstream stream(text);
+    while (std::getline(stream, field, ',')) fields.push_back(field);
+    if (!text.empty() && text.back() == ',') fields.emplace_back();
+    return fields;
+  };
+  if (!std::getline(in, line)) return csv;
+  csv.header = split(line);
+  while (std::getline(in, line)) {
+    const auto fields = split(line);
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < csv.header.size() && i < fields.size(); ++i) row[csv.header[i]] = fields[i];
+    csv.rows.push_back(std::move(row));
+  }
+  return csv;
+}
+
+}  // namespace proxsim::testing
