@@ -1,0 +1,41 @@
+"""The paper's comparison (Figs 8–15 side by side): one column per sensor type
+(ideal, laser, ultrasonic, reflectance), the distance curve above the profile."""
+from .curve_figure import draw_curve
+from .profile_figure import draw_profile, object_legend_handles
+from .run_data import STATUSES
+from .style import PAPER_TYPE_ORDER, STATUS_COLORS, STATUS_LABELS, TYPE_LABELS
+
+
+def paper_sensors(sensors):
+    """The first sensor of each of the paper's types, in the paper's order; or,
+    when the run has none of them, its first four sensors."""
+    picked = []
+    for kind in PAPER_TYPE_ORDER:
+        s = next((s for s in sensors if s.type == kind), None)
+        if s is not None:
+            picked.append(s)
+    return picked or list(sensors[:4])
+
+
+def paper_figure(plt, run, path, has_robot):
+    from matplotlib.lines import Line2D
+    cols = paper_sensors(run.sensors)
+    fig, axes = plt.subplots(2, max(len(cols), 1), figsize=(4.3 * max(len(cols), 1), 6.8),
+                             squeeze=False)
+    # fixed margins: a layout engine costs seconds here, and the grid is regular
+    fig.subplots_adjust(left=0.055, right=0.99, top=0.86, bottom=0.17, hspace=0.5, wspace=0.28)
+    ids = set()
+    for j, sensor in enumerate(cols):
+        draw_curve(axes[0, j], sensor, compact=True)
+        ids |= draw_profile(axes[1, j], run, path, has_robot, sensor, compact=True)
+        axes[0, j].set_title(f"{TYPE_LABELS.get(sensor.type, sensor.type)}\n{sensor.name}", fontsize=10)
+        axes[1, j].set_title(f"profile: {sensor.name}", fontsize=10)
+    status_handles = [Line2D([], [], ls="none", marker="o", color=STATUS_COLORS[s], label=STATUS_LABELS[s])
+                      for s in STATUSES]
+    status_handles.append(Line2D([], [], color="#222222", lw=0.8, label="noise-free"))
+    status_handles.append(Line2D([], [], color="#b03030", ls="--", lw=0.9, label="d_max"))
+    status_handles.append(Line2D([], [], color="#777777", lw=0.6, label="sensor track"))
+    fig.legend(handles=status_handles + object_legend_handles(run, ids), loc="lower center",
+               ncol=len(status_handles) + len(ids) + 2, fontsize=8, frameon=False, bbox_to_anchor=(0.5, 0.0))
+    fig.suptitle("Distance curves (top) and profiles (bottom) per sensor type", fontsize=13)
+    return fig

@@ -1,0 +1,155 @@
+"""Reads a run's output files (readings.csv, poses.csv, profile.ply, scene.json)
+into flat NumPy columns: one SensorSeries per sensor, link poses per sample and
+the profile points. Empty CSV fields become NaN (numbers) or '' (names)."""
+import csv
+import json
+import os
+from dataclasses import dataclass, field
+
+import numpy as np
+
+STATUSES = ("ok", "no_echo", "too_close", "grazing", "self")
+
+
+class RunError(Exception):
+    """A run directory that cannot be drawn (missing or malformed file)."""
+
+
+@dataclass
+class SensorSeries:
+    """One sensor's readings over time, in columns (one entry per sample)."""
+    index: int
+    name: str
+    type: str
+    d_min_m: float
+    d_max_m: float
+    max_incidence_deg: float
+    t_s: np.ndarray = field(default=None)
+    status: np.ndarray = field(default=None)      # str, one of STATUSES
+    detected: np.ndarray = field(default=None)    # bool
+    d_m: np.ndarray = field(default=None)         # measured distance (d_max when not detected)
+    d_true_m: np.ndarray = field(default=None)    # noise-free distance, NaN when nothing in range
+    incidence_deg: np.ndarray = field(default=None)
+    signal: np.ndarray = field(default=None)
+    p_hit: np.ndarray = field(default=None)       # N×3 world, NaN rows when nothing was hit
+    p_origin: np.ndarray = field(default=None)    # N×3 world
+    dir: np.ndarray = field(default=None)         # N×3 world, unit
+    object: np.ndarray = field(default=None)      # str, '' when nothing was hit
+
+
+@dataclass
+class Run:
+    """Everything a report draws from one output directory."""
+    out_dir: str
+    scene: dict
+    sensors: list            # SensorSeries, in scene order
+    poses: dict              # link name -> (t_s N, p N×3, quat_wxyz N×4); empty when no robot
+    profile: dict            # x, y, z, sensor, t_s, object: 1-D arrays (detections, world frame)
+
+
+def _floats(rows, key):
+    return np.array([float(r[key]) if r[key] != "" else np.nan for r in rows])
+
+
+def _read_scene(out_dir):
+    path = os.path.join(out_dir, "scene.json")
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        raise RunError(f"cannot read {path}: {e}") from e
+
+
+def _read_readings(out_dir, scene):
+    path = os.path.join(out_dir, "readings.csv")
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        raise RunError(f"cannot read {path}: {e}") from e
+    by_sensor = {}
+    for r in rows:
+        by_sensor.setdefault(r["sensor"], []).append(r)
+    # sensors in scene.json order; any sensor only in the readings comes after
+    specs = {s["name"]: s for s in scene.get("sensors", [])}
+    names = [s["name"] for s in scene.get("sensors", [])]
+    names += [n for n in by_sensor if n not in specs]
+    sensors = []
+    for i, name in enumerate(names):
+        rs = by_sensor.get(name, [])
+        spec = specs.get(name, {})
+        rs.sort(key=lambda r: float(r["t_s"]))
+        d_m = _floats(rs, "d_m")
+        s = SensorSeries(
+            index=int(spec.get("index", i)), name=name,
+            type=spec.get("type", rs[0]["type"] if rs else "?"),
+            d_min_m=float(spec.get("min_range_m", 0.0)),
+            d_max_m=float(spec.get("max_range_m", np.nanmax(d_m) if len(d_m) else 1.0)),
+            max_incidence_deg=float(spec.get("max_incidence_deg", 90.0)))
+        s.t_s = _floats(rs, "t_s")
+        s.status = np.array([r["status"] for r in rs], dtype=object)
+        s.detected = np.array([r["detected"] == "1" for r in rs], dtype=bool)
+        s.d_m = d_m
+        s.d_true_m = _floats(rs, "d_true_m")
+        s.incidence_deg = _floats(rs, "incidence_deg")
+        s.signal = _floats(rs, "signal")
+        s.p_hit = np.stack([_floats(rs, k) for k in ("hit_x_m", "hit_y_m", "hit_z_m")], 1).reshape(-1, 3)
+        s.p_origin = np.stack([_floats(rs, k) for k in ("origin_x_m", "origin_y_m", "origin_z_m")], 1).reshape(-1, 3)
+        s.dir = np.stack([_floats(rs, k) for k in ("dir_x", "dir_y", "dir_z")], 1).reshape(-1, 3)
+        s.object = np.array([r["object"] for r in rs], dtype=object)
+        sensors.append(s)
+    return sensors
+
+
+def _read_poses(out_dir):
+    path = os.path.join(out_dir, "poses.csv")
+    if not os.path.exists(path):
+        return {}
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    by_link = {}
+    for r in rows:
+        by_link.setdefault(r["link"], []).append(r)
+    poses = {}
+    for link, rs in by_link.items():
+        rs.sort(key=lambda r: float(r["t_s"]))
+        p = np.stack([_floats(rs, k) for k in ("x", "y", "z")], 1)
+        q = np.stack([_floats(rs, k) for k in ("qw", "qx", "qy", "qz")], 1)
+        poses[link] = (_floats(rs, "t_s"), p, q)
+    return poses
+
+
+def _read_profile(out_dir):
+    """ASCII PLY vertices with their named properties (any order)."""
+    path = os.path.join(out_dir, "profile.ply")
+    empty = {k: np.zeros(0) for k in ("x", "y", "z", "sensor", "t_s", "object")}
+    if not os.path.exists(path):
+        return empty
+    with open(path) as f:
+        lines = f.read().splitlines()
+    props, count, start = [], 0, None
+    for i, line in enumerate(lines):
+        parts = line.split()
+        if parts[:2] == ["element", "vertex"]:
+            count = int(parts[2])
+        elif parts and parts[0] == "property":
+            props.append(parts[-1])
+        elif line.strip() == "end_header":
+            start = i + 1
+            break
+    if start is None:
+        raise RunError(f"{path}: no end_header")
+    if count == 0:
+        return empty
+    data = np.loadtxt(lines[start:start + count], ndmin=2)
+    cols = {name: data[:, j] for j, name in enumerate(props)}
+    for k in ("sensor", "object"):
+        cols[k] = cols.get(k, np.full(count, -1)).astype(int)
+    return {k: cols.get(k, np.zeros(count)) for k in ("x", "y", "z", "sensor", "t_s", "object")}
+
+
+def load_run(out_dir):
+    """Reads a finished run; raises RunError naming the file when one is unreadable."""
+    scene = _read_scene(out_dir)
+    return Run(out_dir=out_dir, scene=scene, sensors=_read_readings(out_dir, scene),
+               poses=_read_poses(out_dir), profile=_read_profile(out_dir))

@@ -1,0 +1,35 @@
+"""Colours and labels shared by the figures and the viewer, so that a status or
+an object has the same colour in every picture."""
+
+STATUS_COLORS = {
+    "ok": "#2a9d3a",         # a detection
+    "no_echo": "#9a9a9a",    # nothing within range
+    "too_close": "#f28e2b",
+    "grazing": "#d62728",    # incidence outside the sensor's window
+    "self": "#8c56b8",       # hit the robot's own body
+}
+STATUS_LABELS = {"ok": "detected", "no_echo": "no echo", "too_close": "too close",
+                 "grazing": "grazing", "self": "self (own body)"}
+TYPE_LABELS = {"ideal": "ideal sensor", "laser": "laser range finder",
+               "ultrasonic": "ultrasonic sensor", "reflectance": "reflectance (IR) sensor"}
+PAPER_TYPE_ORDER = ("ideal", "laser", "ultrasonic", "reflectance")
+
+# objects: a qualitative palette, indexed by object id (cycled)
+_OBJECT_PALETTE = ["#1f77b4", "#ff7f0e", "#17becf", "#e377c2", "#bcbd22",
+                   "#8c564b", "#2ca02c", "#9467bd", "#d62728", "#7f7f7f"]
+SENSOR_PALETTE = ["#1f77b4", "#e6550d", "#31a354", "#756bb1", "#c51b8a",
+                  "#3182bd", "#fd8d3c", "#74c476", "#9e9ac8", "#636363"]
+SECTION_FILL = "#c8c8c8"
+SECTION_EDGE = "#8a8a8a"
+
+
+def object_color(object_id):
+    return _OBJECT_PALETTE[int(object_id) % len(_OBJECT_PALETTE)] if object_id >= 0 else "#000000"
+
+
+def sensor_color(index):
+    return SENSOR_PALETTE[int(index) % len(SENSOR_PALETTE)]
+
+
+def sensor_title(sensor):
+    return f"{sensor.name} ({TYPE_LABELS.get(sensor.type, sensor.type)})"
