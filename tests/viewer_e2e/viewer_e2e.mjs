@@ -1,0 +1,171 @@
+// End-to-end test of the replay viewer in a real browser (Debian's chromium,
+// driven by playwright-core): opens OUT/report/index.html from disk, fails on
+// any console or page error, checks that the 3D canvas is drawn, that moving
+// the time (slider and API) moves the robot (or, without a robot, changes the
+// rays or the profile), that a sensor toggle hides its ray, that the curves are
+// drawn, and saves OUT/report/screenshot.png.
+//
+//   node tests/viewer_e2e/viewer_e2e.mjs OUT [--viewer-dir viewer] [--screenshot PATH]
+//
+// Exit 0 pass, 1 fail, 77 skip (only when /usr/bin/chromium is missing).
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { createRequire } from 'node:module';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const CHROMIUM = '/usr/bin/chromium';
+const SKIP = 77;
+const here = path.dirname(fileURLToPath(import.meta.url));
+
+function option(name, fallback) {
+  const i = process.argv.indexOf(name);
+  return i > 0 ? process.argv[i + 1] : fallback;
+}
+
+const outDir = process.argv[2];
+if (!outDir || outDir.startsWith('--')) {
+  console.error('usage: node viewer_e2e.mjs OUT [--viewer-dir DIR] [--screenshot PATH]');
+  process.exit(2);
+}
+const reportDir = path.resolve(outDir, 'report');
+const indexHtml = path.join(reportDir, 'index.html');
+const screenshotPath = path.resolve(option('--screenshot', path.join(reportDir, 'screenshot.png')));
+if (!fs.existsSync(CHROMIUM)) {
+  console.log(`viewer_e2e: SKIP: ${CHROMIUM} is missing (scripts/install-deps.sh browser installs it)`);
+  process.exit(SKIP);
+}
+if (!fs.existsSync(indexHtml)) {
+  console.error(`viewer_e2e: ${indexHtml} does not exist (run make_report.py first)`);
+  process.exit(1);
+}
+// playwright-core lives in the viewer's node_modules
+const viewerDir = path.resolve(option('--viewer-dir', path.join(here, '..', '..', 'viewer')));
+const { chromium } = createRequire(path.join(viewerDir, 'package.json'))('playwright-core');
+
+let passed = 0;
+const failures = [];
+function check(ok, what) {
+  if (ok) { passed += 1; console.log(`  ok   ${what}`); } else { failures.push(what); console.log(`  FAIL ${what}`); }
+}
+
+const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'proxsim-e2e-'));
+const context = await chromium.launchPersistentContext(userDataDir, {
+  executablePath: CHROMIUM,
+  headless: true,
+  args: ['--headless=new', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  viewport: { width: 1280, height: 820 },
+});
+const errors = [];
+try {
+  const page = await context.newPage();
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(`console: ${m.text()}`); });
+  page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+  await page.goto(pathToFileURL(indexHtml).href);
+  await page.waitForFunction(() => window.proxsimViewer && window.proxsimViewer.frameCount > 5, null, { timeout: 20000 });
+
+  // it plays on opening
+  const t0 = await page.evaluate(() => window.proxsimViewer.currentTime());
+  await page.waitForFunction((t) => window.proxsimViewer.currentTime() > t, t0, { timeout: 5000 }).catch(() => {});
+  check(await page.evaluate((t) => window.proxsimViewer.currentTime() > t, t0), 'the replay plays on opening');
+  const fps = await page.evaluate(() => new Promise((resolve) => {
+    const f0 = window.proxsimViewer.frameCount;
+    setTimeout(() => resolve((window.proxsimViewer.frameCount - f0) / 2), 2000);
+  }));
+  console.log(`  info replay at ${fps.toFixed(1)} frames/s (software rendering)`);
+  await page.evaluate(() => window.proxsimViewer.pause());
+
+  const info = await page.evaluate(() => ({
+    span: window.proxsimViewer.timeSpan(),
+    links: window.PROXSIM_DATA.poses ? Object.keys(window.PROXSIM_DATA.poses.links) : [],
+  }));
+  const [tStart, tEnd] = info.span;
+  // the state shown at a time: link positions, rays, profile points
+  const stateAt = (t) => page.evaluate(([tt, links]) => {
+    const v = window.proxsimViewer;
+    if (tt !== null) v.setTime(tt);
+    return { t: v.currentTime(), links: links.map((n) => v.robotLinkPosition(n)),
+      rays: v.rayEndpoints(), points: v.profilePointsShown() };
+  }, [t, info.links]);
+  const moved = (a, b) => Math.max(0, ...a.links.map((p, i) => Math.hypot(
+    p[0] - b.links[i][0], p[1] - b.links[i][1], p[2] - b.links[i][2])));
+  const changed = (a, b) => a.points !== b.points || a.rays.some((v, i) => Math.abs(v - b.rays[i]) > 1e-6);
+
+  const early = await stateAt(tStart + 0.1 * (tEnd - tStart));
+  const middle = await stateAt(tStart + 0.5 * (tEnd - tStart));
+  // the slider: set its value as a user's drag does, with an input event
+  const sliderT = tStart + 0.8 * (tEnd - tStart);
+  await page.evaluate((t) => {
+    const s = document.querySelector('.proxsim-slider');
+    s.value = String(t);
+    s.dispatchEvent(new Event('input', { bubbles: true }));
+  }, sliderT);
+  const late = await stateAt(null);
+  check(Math.abs(late.t - sliderT) < 0.05, `the slider sets the time (${late.t.toFixed(2)} s, wanted ${sliderT.toFixed(2)} s)`);
+  if (info.links.length) {
+    check(moved(early, middle) > 0.05, `setTime moves the robot (${moved(early, middle).toFixed(3)} m)`);
+    check(moved(middle, late) > 0.05, `the slider moves the robot (${moved(middle, late).toFixed(3)} m)`);
+  } else {
+    check(changed(early, late), 'without a robot, moving the time changes the rays or the profile');
+  }
+  check(late.points >= early.points && late.points > 0, `the profile accumulates (${early.points} → ${late.points} points)`);
+
+  // a sensor toggle hides that sensor's ray (its segment collapses to its origin)
+  await page.locator('.proxsim-sensor-toggle').first().uncheck();
+  await page.waitForFunction((f) => window.proxsimViewer.frameCount > f + 2,
+    await page.evaluate(() => window.proxsimViewer.frameCount));
+  const hidden = await stateAt(null);
+  const r = hidden.rays;
+  check(r[0] === r[3] && r[1] === r[4] && r[2] === r[5], 'unchecking a sensor hides its ray');
+  await page.locator('.proxsim-sensor-toggle').first().check();
+
+  // the curves: uPlot's canvas, laid out with a size
+  const curve = await page.evaluate(() => {
+    const c = document.querySelector('.proxsim-curves .uplot canvas');
+    return c ? [c.width, c.height] : null;
+  });
+  check(curve !== null && curve[0] > 100 && curve[1] > 50, `the distance curves are drawn (${curve})`);
+
+  // the 3D canvas is not blank: count its colours in a screenshot
+  await page.evaluate(() => window.proxsimViewer.setTime(window.proxsimViewer.timeSpan()[1] * 0.6));
+  await page.waitForFunction((f) => window.proxsimViewer.frameCount > f + 3,
+    await page.evaluate(() => window.proxsimViewer.frameCount));
+  const canvasPng = await page.locator('.proxsim-3d canvas').screenshot();
+  const probe = await context.newPage();
+  const colours = await probe.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const px = g.getImageData(0, 0, c.width, c.height).data;
+    const seen = new Map();
+    for (let i = 0; i < px.length; i += 4) {
+      const k = (px[i] << 16) | (px[i + 1] << 8) | px[i + 2];
+      seen.set(k, (seen.get(k) || 0) + 1);
+    }
+    const top = Math.max(...seen.values());
+    return { distinct: seen.size, notBackground: 1 - top / (px.length / 4) };
+  }, canvasPng.toString('base64'));
+  await probe.close();
+  check(colours.distinct > 50 && colours.notBackground > 0.05,
+    `the 3D view is drawn (${colours.distinct} colours, ${(100 * colours.notBackground).toFixed(0)} % not background)`);
+
+  fs.mkdirSync(path.dirname(screenshotPath), { recursive: true });
+  await page.screenshot({ path: screenshotPath });
+  console.log(`  info screenshot saved to ${screenshotPath}`);
+  check(errors.length === 0, `no console or page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
+} catch (e) {
+  failures.push(`exception: ${e.message}`);
+  console.log(`  FAIL ${e.stack}`);
+  if (errors.length) console.log(`  errors seen: ${errors.join(' | ')}`);
+} finally {
+  await context.close();
+  fs.rmSync(userDataDir, { recursive: true, force: true });
+}
+console.log(`viewer_e2e: ${passed} passed, ${failures.length} failed`);
+process.exit(failures.length ? 1 : 0);

@@ -1,0 +1,61 @@
+// The replay's controls: play/pause, time slider and readout, speed, camera
+// follow, one checkbox per sensor, and the legend of the ray colours (status).
+const SPEEDS = [0.25, 0.5, 1, 2, 4, 8];
+
+function el(tag, attrs = {}, children = []) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (k === 'text') e.textContent = v; else e.setAttribute(k, v);
+  }
+  for (const c of children) e.appendChild(c);
+  return e;
+}
+
+export class ControlsPanel {
+  /** handlers: {onPlayToggle(), onSeek(t), onSpeed(x), onSensor(j, on), onFollow(on)} */
+  constructor(bar, side, data, span, step, handlers) {
+    this.span = span;
+    this.playButton = el('button', { class: 'proxsim-play', title: 'play / pause (space)', text: '▶ Play' });
+    this.playButton.addEventListener('click', () => handlers.onPlayToggle());
+    this.slider = el('input', { type: 'range', class: 'proxsim-slider', min: String(span[0]),
+      max: String(span[1]), step: String(step), value: String(span[0]) });
+    this.slider.addEventListener('input', () => handlers.onSeek(Number(this.slider.value)));
+    this.readout = el('span', { class: 'proxsim-time' });
+    const speed = el('select', { class: 'proxsim-speed', title: 'replay speed' },
+      SPEEDS.map((x) => el('option', { value: String(x), text: `${x}×` })));
+    speed.value = '1';
+    speed.addEventListener('change', () => handlers.onSpeed(Number(speed.value)));
+    const follow = el('input', { type: 'checkbox', class: 'proxsim-follow' });
+    follow.checked = Boolean(data.poses);
+    follow.addEventListener('change', () => handlers.onFollow(follow.checked));
+    bar.append(this.playButton, this.slider, this.readout, el('label', { text: 'speed ' }, [speed]),
+      el('label', { title: 'the camera follows the robot' }, [follow, document.createTextNode(' follow')]));
+
+    // sensors
+    side.appendChild(el('h3', { text: 'Sensors' }));
+    data.sensors.forEach((s, j) => {
+      const box = el('input', { type: 'checkbox', class: 'proxsim-sensor-toggle', 'data-sensor': s.name });
+      box.checked = true;
+      box.addEventListener('change', () => handlers.onSensor(j, box.checked));
+      side.appendChild(el('label', { class: 'proxsim-row' }, [
+        box, el('span', { class: 'proxsim-swatch', style: `background:${s.color}` }),
+        document.createTextNode(` ${s.name} `), el('small', { text: s.type })]));
+    });
+    // ray colours
+    side.appendChild(el('h3', { text: 'Ray status' }));
+    data.statuses.forEach((_, k) => {
+      side.appendChild(el('div', { class: 'proxsim-row' }, [
+        el('span', { class: 'proxsim-swatch proxsim-ray', style: `background:${data.statusColors[k]}` }),
+        document.createTextNode(` ${data.statusLabels[k]}`)]));
+    });
+    side.appendChild(el('p', { class: 'proxsim-hint',
+      text: 'Dots: profile points, coloured by object. Drag to orbit, wheel to zoom, right-drag to pan.' }));
+  }
+
+  /** Reflects the time and play state in the widgets. */
+  show(t, playing) {
+    this.slider.value = String(t);
+    this.readout.textContent = `t = ${t.toFixed(2)} s / ${this.span[1].toFixed(2)} s`;
+    this.playButton.textContent = playing ? '❚❚ Pause' : '▶ Play';
+  }
+}

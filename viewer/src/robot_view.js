@@ -1,0 +1,54 @@
+// The robot: one group per link (its shapes placed relative to the link), moved
+// to the link's recorded world pose at the sample shown.
+import * as THREE from 'three';
+import { shapeMesh } from './shapes.js';
+import { sampleAt } from './timeline.js';
+
+export class RobotView {
+  /** robot: scene.json's robot (or null); poses: {t, links: {name: flat [x,y,z,qw,qx,qy,qz]*N}}. */
+  constructor(scene, robot, poses) {
+    this.poses = poses;
+    this.links = new Map();
+    if (!robot || !poses) return;
+    const material = new THREE.MeshStandardMaterial({ color: 0x4f6d8f, roughness: 0.55, metalness: 0.2 });
+    const joint = new THREE.MeshStandardMaterial({ color: 0x2f3f52, roughness: 0.6 });
+    for (const link of robot.links) {
+      const group = new THREE.Group();
+      group.name = link.name;
+      for (const shape of link.shapes || []) {
+        const mesh = shapeMesh(shape, shape.shape === 'sphere' ? joint : material);
+        if (mesh) group.add(mesh);
+      }
+      group.visible = Boolean(poses.links[link.name]);
+      scene.add(group);
+      this.links.set(link.name, group);
+    }
+  }
+
+  /** Poses every link at time t (the last sample at or before t). */
+  update(t) {
+    if (!this.poses) return;
+    const i = sampleAt(this.poses.t, t);
+    for (const [name, group] of this.links) {
+      const p = this.poses.links[name];
+      if (!p) continue;
+      const k = 7 * i;
+      group.position.set(p[k], p[k + 1], p[k + 2]);
+      group.quaternion.set(p[k + 4], p[k + 5], p[k + 6], p[k + 3]).normalize();
+    }
+  }
+
+  /** World position [x, y, z] of a link as shown, or null for an unknown link. */
+  linkPosition(name) {
+    const group = this.links.get(name);
+    return group ? group.position.toArray() : null;
+  }
+
+  /** The link that carries the robot (pelvis, base…), to follow with the camera. */
+  rootLink() {
+    for (const name of ['pelvis', 'base_link', 'base', 'torso']) {
+      if (this.links.has(name)) return this.links.get(name);
+    }
+    return this.links.values().next().value || null;
+  }
+}
