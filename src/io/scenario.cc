@@ -1,0 +1,192 @@
+// Loading a scenario (DESIGN.md "Scenario file"): YAML text → yaml-cpp
+// document → Scenario, with every problem collected before anything runs.
+// This file reads the top level (schema version, seed, duration, rate), hands
+// each section to its reader (scenario_scene.cc, scenario_robot.cc,
+// scenario_sensors.cc) and checks the run as a whole; any problem anywhere
+// ends in one InputError listing them all, each as
+// "FILE:LINE: KEY.PATH: expected …, got …".
+//
+// Relative paths in the file (robot model, meshes, trajectory) start from the
+// scenario file's folder; built-in scenarios ("builtin:NAME") resolve them
+// from the current directory. Robot model and trajectory paths are stored
+// resolved; a mesh keeps the path as written (Mesh::file) with its triangles
+// loaded.
+#include "io/scenario.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <system_error>
+
+#include "core/embedded_files.h"
+#include "core/input_error.h"
+#include "io/scenario_sections.h"
+
+namespace proxsim {
+
+namespace {
+
+constexpr int kSchemaVersion = 1;
+
+// A run bigger than this many sensor samples is refused as a likely typo.
+constexpr double kMaxSensorSamples = 1e9;
+
+struct BuiltinScenario {
+  const char* name;
+  const char* embedded_path;
+};
+constexpr BuiltinScenario kBuiltinScenarios[] = {
+    {"paper", "data/scenarios/paper_dining_room.yaml"},
+    {"world_demo", "data/scenarios/world_sensors_demo.yaml"},
+};
+
+std::string FormatCount(double value) {
+  std::ostringstream text;
+  text.precision(3);
+  text << value;
+  return text.str();
+}
+
+// The folder that relative paths in `source` start from.
+std::filesystem::path BaseDirOf(const std::string& source) {
+  if (source.starts_with("builtin:")) return {};
+  return std::filesystem::path(source).parent_path();
+}
+
+// The whole run must fit in memory and time: samples × sensors <= kMaxSensorSamples.
+void CheckRunSize(YamlReader& reader, const MapView& top, const Scenario& scenario) {
+  const double samples = scenario.duration_s * scenario.rate_hz;
+  const double sensors = static_cast<double>(std::max<std::size_t>(1, scenario.sensors.size()));
+  if (samples * sensors <= kMaxSensorSamples) return;
+  const Field duration = top["duration_s"];
+  reader.Fail(duration, "the run is too large: " + FormatCount(scenario.duration_s) + " s × " +
+                            FormatCount(scenario.rate_hz) + " Hz = " + FormatCount(samples) + " samples × " +
+                            FormatCount(sensors) + " sensor(s) = " + FormatCount(samples * sensors) +
+                            " sensor samples; expected at most 1e9 (shorten duration_s, lower rate_hz or use "
+                            "fewer sensors)");
+}
+
+// Everything after the YAML parse: the top-level keys and the sections.
+Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std::string& source) {
+  Scenario scenario;
+  scenario.source = source;
+  const auto top = reader.Map(reader.Root(document),
+                              {"proxsim", "seed", "duration_s", "rate_hz", "scene", "robot", "sensors"},
+                              "a map of scenario keys (proxsim, seed, duration_s, rate_hz, scene, robot, sensors)");
+  if (!top) return scenario;
+
+  // proxsim: the schema version, required
+  const Field version = (*top)["proxsim"];
+  if (reader.Require(version, "proxsim: 1, the schema version, as the first key")) {
+    const auto number = reader.Count(version);
+    if (number && *number != kSchemaVersion) {
+      reader.Fail(version, "expected schema version 1, got " + std::to_string(*number) +
+                               " (this proxsim reads version 1 only)");
+    }
+  }
+
+  // the run's clock and random seed
+  scenario.seed = reader.Count((*top)["seed"]).value_or(scenario.seed);
+  const auto duration_s = reader.Number((*top)["duration_s"], PositiveNumber("s"));
+  const auto rate_hz = reader.Number((*top)["rate_hz"], PositiveNumber("Hz"));
+  scenario.duration_s = duration_s.value_or(scenario.duration_s);
+  scenario.rate_hz = rate_hz.value_or(scenario.rate_hz);
+
+  // the sections
+  const std::filesystem::path base_dir = BaseDirOf(source);
+  ReadScene(reader, (*top)["scene"], base_dir, scenario);
+  if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir);
+  scenario.sensors = ReadSensors(reader, (*top)["sensors"], scenario.robot.has_value());
+
+  // the run as a whole (only with a valid clock, else the estimate means nothing)
+  if (duration_s.has_value() == top->Has("duration_s") && rate_hz.has_value() == top->Has("rate_hz")) {
+    CheckRunSize(reader, *top, scenario);
+  }
+  return scenario;
+}
+
+}  // namespace
+
+std::int64_t Scenario::SampleCount() const {
+  // samples at t_k = k / rate_hz strictly before duration_s; a product within
+  // rounding of a whole number counts as that number (0.3 s at 10 Hz is 3)
+  const double exact = duration_s * rate_hz;
+  if (!std::isfinite(exact) || exact <= 0) return 0;
+  if (exact >= static_cast<double>(std::numeric_limits<std::int64_t>::max() / 2)) {
+    return std::numeric_limits<std::int64_t>::max() / 2;
+  }
+  const double nearest = std::round(exact);
+  if (std::abs(exact - nearest) <= 1e-9 * std::max(1.0, exact)) return static_cast<std::int64_t>(nearest);
+  return static_cast<std::int64_t>(std::ceil(exact));
+}
+
+std::filesystem::path ResolveScenarioPath(const std::filesystem::path& base_dir, const std::string& file) {
+  const std::filesystem::path path(file);
+  if (path.is_absolute() || base_dir.empty()) return path;
+  return (base_dir / path).lexically_normal();
+}
+
+Pose ReadPose(YamlReader& reader, const Field& field) {
+  const auto map = reader.Map(field, {"xyz_m", "rpy_deg"});
+  if (!map) return Pose::Identity();
+  const Vec3 xyz_m = reader.Vector3((*map)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(Vec3::Zero());
+  const Vec3 rpy_deg =
+      reader.Vector3((*map)["rpy_deg"], AnyNumber(), "[roll, pitch, yaw] in degrees").value_or(Vec3::Zero());
+  return PoseFromXyzRpy(xyz_m, rpy_deg * (kPi / 180.0));
+}
+
+Scenario LoadScenarioText(const std::string& yaml_text, const std::string& source) {
+  YamlReader reader(source);
+
+  // the text must be YAML, and not empty
+  YAML::Node document;
+  try {
+    document = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& error) {
+    reader.FailAtLine(error.mark.is_null() ? 0 : error.mark.line + 1, "", "not valid YAML: " + error.msg);
+    throw InputError(reader.Problems());
+  }
+  if (!document.IsDefined() || document.IsNull()) {
+    reader.FailFile("the file is empty; expected a scenario map starting with 'proxsim: 1'");
+    throw InputError(reader.Problems());
+  }
+
+  Scenario scenario = ReadScenario(reader, document, source);
+  if (reader.HasProblems()) throw InputError(reader.Problems());
+  return scenario;
+}
+
+Scenario LoadScenarioFile(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw InputError(path + ": cannot read the scenario file: " +
+                     (std::filesystem::exists(path, error) ? "not a regular file" : "no such file"));
+  }
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (!file) throw InputError(path + ": cannot read the scenario file");
+  return LoadScenarioText(text.str(), path);
+}
+
+std::vector<std::string> BuiltinScenarioNames() {
+  std::vector<std::string> names;
+  for (const auto& builtin : kBuiltinScenarios) names.emplace_back(builtin.name);
+  return names;
+}
+
+Scenario LoadBuiltinScenario(const std::string& name) {
+  for (const auto& builtin : kBuiltinScenarios) {
+    if (name != builtin.name) continue;
+    const auto& files = EmbeddedFiles();
+    const auto file = files.find(builtin.embedded_path);
+    if (file == files.end()) throw InputError("builtin:" + name + ": the scenario is missing from this build");
+    return LoadScenarioText(std::string(file->second), "builtin:" + name);
+  }
+  std::string valid;
+  for (const auto& known : BuiltinScenarioNames()) valid += (valid.empty() ? "" : ", ") + known;
+  throw InputError("builtin:" + name + ": unknown built-in scenario (expected one of " + valid + ")");
+}
+
+}  // namespace proxsim

@@ -1,0 +1,77 @@
+// The `robot` section: which robot (the built-in biped or a URDF file), where
+// it starts, how it walks (gait, path of waypoints, or a recorded trajectory)
+// and the built-in stopping strategy. The URDF itself is loaded elsewhere
+// (robot/); here we only check that a named file exists, so that a typo in a
+// path is reported with the scenario's other problems.
+#include <system_error>
+
+#include "io/scenario_sections.h"
+
+namespace proxsim {
+
+namespace {
+
+constexpr const char* kBuiltinPrefix = "builtin:";
+
+// A file path value: resolved against the scenario's folder, and required to exist.
+std::optional<std::string> ReadExistingFile(YamlReader& reader, const Field& field,
+                                            const std::filesystem::path& base_dir, const std::string& what) {
+  const auto text = reader.String(field);
+  if (!text) return std::nullopt;
+  const std::filesystem::path path = ResolveScenarioPath(base_dir, *text);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    reader.Fail(field, "expected " + what + " (relative paths start from the scenario's folder), but '" +
+                           path.string() + "' is not a file");
+    return std::nullopt;
+  }
+  return path.string();
+}
+
+}  // namespace
+
+RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir) {
+  RobotConfig robot;
+  const auto map = reader.Map(field, {"model", "start", "gait", "path", "stop_distance_m", "trajectory"});
+  if (!map) return robot;
+
+  // model: builtin:NAME, or a URDF file
+  const Field model = (*map)["model"];
+  if (model && model.node.IsScalar() && model.node.Scalar().starts_with(kBuiltinPrefix)) {
+    robot.model = model.node.Scalar();
+  } else if (const auto urdf = ReadExistingFile(reader, model, base_dir, "builtin:biped or the path of a URDF file")) {
+    robot.model = *urdf;
+  }
+
+  // start: {xyz_m, yaw_deg}
+  if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg"})) {
+    robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
+    robot.start_yaw_rad = DegToRad(reader.Number((*start)["yaw_deg"]).value_or(0.0));
+  }
+
+  // gait: {stride_m, period_s}
+  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s"})) {
+    robot.gait.stride_m = reader.Number((*gait)["stride_m"], PositiveNumber("m")).value_or(robot.gait.stride_m);
+    robot.gait.period_s = reader.Number((*gait)["period_s"], PositiveNumber("s")).value_or(robot.gait.period_s);
+  }
+
+  // path: {waypoints_m: [[x, y], ...]}
+  if (const auto path = reader.Map((*map)["path"], {"waypoints_m"})) {
+    if (const auto points = reader.List((*path)["waypoints_m"], "a list of [x, y] points in metres")) {
+      for (const Field& point : *points) {
+        if (const auto xy = reader.Numbers(point, 2, AnyNumber(), "[x, y] in metres")) {
+          robot.waypoints_m.emplace_back((*xy)[0], (*xy)[1]);
+        }
+      }
+    }
+  }
+
+  robot.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m"));
+  if (const Field trajectory = (*map)["trajectory"]) {
+    robot.trajectory_file = ReadExistingFile(reader, trajectory, base_dir, "the path of a joint trajectory CSV file")
+                                .value_or("");
+  }
+  return robot;
+}
+
+}  // namespace proxsim

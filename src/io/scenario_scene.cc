@@ -1,0 +1,187 @@
+// The `scene` section: a built-in scene (scene/scene.h) plus the file's own
+// objects. Each object has a name, exactly one shape key, an optional pose
+// and an optional material. Meshes are loaded here, through Assimp, so that a
+// missing or broken mesh file is reported with the other problems before
+// anything runs.
+#include <map>
+
+#include "core/input_error.h"
+#include "io/nearest_key.h"
+#include "io/scenario_sections.h"
+#include "scene/mesh_loader.h"
+
+namespace proxsim {
+
+namespace {
+
+constexpr const char* kShapeKeys[] = {"box", "sphere", "cylinder", "plane", "mesh"};
+
+std::string JoinNames(const std::vector<std::string>& names) {
+  std::string all;
+  for (const auto& name : names) all += (all.empty() ? "" : ", ") + name;
+  return all;
+}
+
+// box: {size_m: [x, y, z]} — full extents
+Box ReadBox(YamlReader& reader, const Field& field) {
+  Box box;
+  const auto map = reader.Map(field, {"size_m"});
+  if (!map) return box;
+  const Field size = (*map)["size_m"];
+  if (reader.Require(size, "size_m: [x, y, z], the full extents in metres")) {
+    if (auto size_m = reader.Vector3(size, PositiveNumber("m"), "[x, y, z], the full extents in metres")) {
+      box.size_m = *size_m;
+    }
+  }
+  return box;
+}
+
+// sphere: {radius_m}
+Sphere ReadSphere(YamlReader& reader, const Field& field) {
+  Sphere sphere;
+  const auto map = reader.Map(field, {"radius_m"});
+  if (!map) return sphere;
+  const Field radius = (*map)["radius_m"];
+  if (reader.Require(radius, "radius_m, a finite number > 0 m")) {
+    sphere.radius_m = reader.Number(radius, PositiveNumber("m")).value_or(sphere.radius_m);
+  }
+  return sphere;
+}
+
+// cylinder: {radius_m, length_m} — axis along the object's z
+Cylinder ReadCylinder(YamlReader& reader, const Field& field) {
+  Cylinder cylinder;
+  const auto map = reader.Map(field, {"radius_m", "length_m"});
+  if (!map) return cylinder;
+  const Field radius = (*map)["radius_m"];
+  const Field length = (*map)["length_m"];
+  if (reader.Require(radius, "radius_m, a finite number > 0 m")) {
+    cylinder.radius_m = reader.Number(radius, PositiveNumber("m")).value_or(cylinder.radius_m);
+  }
+  if (reader.Require(length, "length_m, a finite number > 0 m")) {
+    cylinder.length_m = reader.Number(length, PositiveNumber("m")).value_or(cylinder.length_m);
+  }
+  return cylinder;
+}
+
+// mesh: {file, scale} — scale is one number or [x, y, z]; the file is loaded now
+Mesh ReadMesh(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir) {
+  Mesh mesh;
+  const auto map = reader.Map(field, {"file", "scale"});
+  if (!map) return mesh;
+
+  // scale: a uniform factor or one per axis
+  const Field scale = (*map)["scale"];
+  if (scale && scale.node.IsSequence()) {
+    const auto factors = reader.Vector3(scale, PositiveNumber(), "a number > 0 or [x, y, z] of numbers > 0");
+    if (factors) mesh.scale = *factors;
+  } else if (scale) {
+    NumberRule rule = PositiveNumber();
+    rule.expected = "a number > 0 or [x, y, z] of numbers > 0";
+    const auto factor = reader.Number(scale, rule);
+    if (factor) mesh.scale = Vec3::Constant(*factor);
+  }
+
+  // file: relative to the scenario's folder
+  const Field file = (*map)["file"];
+  if (!reader.Require(file, "file, the path of a mesh file (OBJ, STL, PLY, glTF, ...)")) return mesh;
+  const auto text = reader.String(file);
+  if (!text) return mesh;
+  mesh.file = *text;
+  try {
+    // loaded even with a bad scale (then unscaled), so that a bad file is reported too
+    mesh.data = LoadMeshFile(ResolveScenarioPath(base_dir, *text).string(), mesh.scale);
+  } catch (const InputError& error) {
+    for (const auto& problem : error.problems()) reader.Fail(file, problem);
+  }
+  return mesh;
+}
+
+// material: {albedo, specular}, each in [0, 1]
+Material ReadMaterial(YamlReader& reader, const Field& field) {
+  Material material;
+  const auto map = reader.Map(field, {"albedo", "specular"});
+  if (!map) return material;
+  material.albedo = reader.Number((*map)["albedo"], NumberIn(0, 1)).value_or(material.albedo);
+  material.specular = reader.Number((*map)["specular"], NumberIn(0, 1)).value_or(material.specular);
+  return material;
+}
+
+// The one shape of an object, or nullopt after reporting none or several.
+std::optional<Shape> ReadShape(YamlReader& reader, const MapView& object, const std::filesystem::path& base_dir) {
+  std::vector<std::string> given;
+  for (const char* key : kShapeKeys) {
+    if (object.Has(key)) given.emplace_back(key);
+  }
+  if (given.size() != 1) {
+    reader.Fail(object.field(), "expected exactly one shape key (box, sphere, cylinder, plane or mesh), got " +
+                                    (given.empty() ? std::string("none") : JoinNames(given)));
+    return std::nullopt;
+  }
+  const std::string& kind = given.front();
+  const Field field = object[kind];
+  if (kind == "box") return ReadBox(reader, field);
+  if (kind == "sphere") return ReadSphere(reader, field);
+  if (kind == "cylinder") return ReadCylinder(reader, field);
+  if (kind == "mesh") return ReadMesh(reader, field, base_dir);
+  reader.Map(field, {});  // a plane takes no parameters
+  return Plane{};
+}
+
+}  // namespace
+
+void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scenario& scenario) {
+  const auto scene = reader.Map(field, {"builtin", "objects"});
+  if (!scene) return;
+
+  // the built-in scene, by name
+  const Field builtin = (*scene)["builtin"];
+  if (const auto name = reader.String(builtin)) {
+    const auto& names = BuiltinSceneNames();
+    if (std::find(names.begin(), names.end(), *name) != names.end()) {
+      scenario.builtin_scene = *name;
+    } else {
+      const auto nearest = NearestKey(*name, names);
+      reader.Fail(builtin, "unknown built-in scene '" + *name + "' (" +
+                               (nearest ? "did you mean '" + *nearest + "'? " : "") + "expected one of " +
+                               JoinNames(names) + ")");
+    }
+  }
+  try {
+    scenario.scene = MakeBuiltinScene(scenario.builtin_scene);
+  } catch (const InputError& error) {
+    for (const auto& problem : error.problems()) reader.Fail(builtin, problem);
+  }
+
+  // where each name comes from, for duplicate reports
+  std::map<std::string, std::string> name_origin;
+  for (const auto& object : scenario.scene.objects) {
+    name_origin.emplace(object.name, "the built-in scene '" + scenario.builtin_scene + "'");
+  }
+
+  // the file's own objects
+  const auto items = reader.List((*scene)["objects"], "a list of objects");
+  if (!items) return;
+  for (const Field& item : *items) {
+    const auto object = reader.Map(item, {"name", "box", "sphere", "cylinder", "plane", "mesh", "pose", "material"},
+                                   "a map with a name and one shape (box, sphere, cylinder, plane or mesh)");
+    if (!object) continue;
+    SceneObject scene_object;
+    const Field name = (*object)["name"];
+    if (reader.Require(name, "name, unique in the scene")) {
+      if (const auto text = reader.String(name)) {
+        scene_object.name = *text;
+        const auto [previous, inserted] = name_origin.emplace(*text, item.path);
+        if (!inserted) reader.Fail(name, "duplicate object name '" + *text + "' (already used by " + previous->second + ")");
+      }
+    }
+    const auto shape = ReadShape(reader, *object, base_dir);
+    scene_object.X_WO = ReadPose(reader, (*object)["pose"]);
+    scene_object.material = ReadMaterial(reader, (*object)["material"]);
+    if (!shape) continue;
+    scene_object.shape = *shape;
+    scenario.scene.objects.push_back(std::move(scene_object));
+  }
+}
+
+}  // namespace proxsim

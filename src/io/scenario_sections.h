@@ -1,0 +1,36 @@
+// Internal to io/: the readers of the scenario file's sections, one file each
+// (scenario_scene.cc, scenario_robot.cc, scenario_sensors.cc), sharing the
+// reader that collects problems. Each reads what it can, reports every
+// problem it finds, and leaves defaults where a value was bad or absent; the
+// caller throws if any problem was reported.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/scenario.h"
+#include "io/yaml_reader.h"
+
+namespace proxsim {
+
+/// `file` as written in the scenario, resolved against the scenario's folder
+/// `base_dir` (empty: the current directory) unless it is absolute.
+std::filesystem::path ResolveScenarioPath(const std::filesystem::path& base_dir, const std::string& file);
+
+/// A `pose: {xyz_m, rpy_deg}` map (both optional, zeros by default); angles in
+/// the file are degrees.
+Pose ReadPose(YamlReader& reader, const Field& field);
+
+/// `scene: {builtin, objects}`: the built-in scene's objects, then the file's,
+/// meshes loaded; object names unique across both.
+void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scenario& scenario);
+
+/// `robot: {model, start, gait, path, stop_distance_m, trajectory}`; file paths resolved.
+RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir);
+
+/// `sensors: [...]`: presets from `type`, overrides, SensorSpec::Validate();
+/// without a robot, every link must be "world".
+std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bool has_robot);
+
+}  // namespace proxsim
