@@ -47,9 +47,13 @@ void ReadingsCsvWriter::Append(const SampleFrame& frame) {
     line_ += ',';
     if (hit) line_ += object_names_[s.object_id];
     line_ += ',';
-    if (frame.robot.present) AppendNumber(line_, frame.robot.gait_phase);
-    line_ += ',';
-    line_ += SupportLegName(frame.robot.support);
+    if (frame.robot.present) {
+      AppendNumber(line_, frame.robot.gait_phase);
+      line_ += ',';
+      line_ += SupportLegName(frame.robot.support);
+    } else {
+      line_ += ',';
+    }
     line_ += '\n';
     file_.Write(line_);
   }

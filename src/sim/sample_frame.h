@@ -8,14 +8,10 @@
 #include <vector>
 
 #include "core/geometry.h"
+#include "gait/locomotion.h"
 #include "sensors/sensor_model.h"
 
 namespace proxsim {
-
-enum class SupportLeg : std::uint8_t { kNone, kLeft, kRight, kDouble };
-
-/// "", "left", "right" or "double".
-const char* SupportLegName(SupportLeg leg);
 
 struct SensorSample {
   Reading reading;           ///< what the sensor reports
@@ -29,7 +25,7 @@ struct SensorSample {
 struct RobotSample {
   bool present = false;     ///< false when the scenario has no robot
   double gait_phase = 0.0;  ///< of the left leg, in [0, 1), 0 at its heel strike
-  SupportLeg support = SupportLeg::kNone;
+  SupportLeg support = SupportLeg::kDouble;
   bool stopped = false;
   double distance_walked_m = 0.0;
 };
