@@ -113,7 +113,9 @@ def cut_object(obj, path, s, lateral=0.0):
         if len(flips) == 0:
             return None
         k = flips[0]
-        return Section(name, oid, nan, nan, wall_s=float(s[k]), wall_solid_after=side[k + 1] < 0)
+        after = side[k + 1:][side[k + 1:] != 0]   # the first sample strictly past the plane
+        return Section(name, oid, nan, nan, wall_s=float(s[k]),
+                       wall_solid_after=bool(len(after) == 0 or after[0] < 0))
     if shape == "mesh":
         lo, hi = _mesh_interval(xy, obj, R, c)
     else:

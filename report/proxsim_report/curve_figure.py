@@ -37,11 +37,11 @@ def draw_curve(ax, sensor, compact=False):
     if not len(t):
         ax.text(0.5, 0.5, "no readings", transform=ax.transAxes, ha="center", color="#888888")
     if not compact:
-        ax.legend(loc="lower left", fontsize=8, markerscale=2.5, framealpha=0.85, ncol=2)
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, markerscale=2.5, frameon=False)
 
 
 def curve_figure(plt, sensor):
-    fig, ax = plt.subplots(figsize=(9, 3.6))
-    fig.subplots_adjust(left=0.075, right=0.985, bottom=0.14, top=0.9)
+    fig, ax = plt.subplots(figsize=(10.5, 3.6))
+    fig.subplots_adjust(left=0.065, right=0.8, bottom=0.14, top=0.9)   # the legend goes right
     draw_curve(ax, sensor)
     return fig

@@ -91,8 +91,9 @@ def profile_legend_handles(run, ids):
 
 
 def profile_figure(plt, run, path, has_robot, sensor):
-    fig, ax = plt.subplots(figsize=(9, 3.6))
-    fig.subplots_adjust(left=0.075, right=0.985, bottom=0.14, top=0.9)
+    fig, ax = plt.subplots(figsize=(10.5, 3.6))
+    fig.subplots_adjust(left=0.065, right=0.8, bottom=0.14, top=0.9)   # the legend goes right
     ids = draw_profile(ax, run, path, has_robot, sensor)
-    ax.legend(handles=profile_legend_handles(run, ids), loc="upper left", fontsize=8, framealpha=0.85)
+    ax.legend(handles=profile_legend_handles(run, ids), loc="upper left", bbox_to_anchor=(1.01, 1.0),
+              fontsize=8, frameon=False)
     return fig

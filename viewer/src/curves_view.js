@@ -17,7 +17,7 @@ export class CurvesView {
     }
     this.plot = new uPlot({
       width: Math.max(container.clientWidth, 200),
-      height: Math.max(container.clientHeight - 40, 120),
+      height: Math.max(container.clientHeight - 52, 120),
       series,
       scales: { x: { time: false }, y: { range: (u, lo, hi) => [0, Math.max(hi, 0.1) * 1.05] } },
       axes: [{ label: 'time t (s)' }, { label: 'distance d_m (m)' }],
@@ -50,7 +50,7 @@ export class CurvesView {
 
   resize() {
     this.plot.setSize({ width: Math.max(this.container.clientWidth, 200),
-      height: Math.max(this.container.clientHeight - 40, 120) });
+      height: Math.max(this.container.clientHeight - 52, 120) });
     this.lastT = null;
   }
 }

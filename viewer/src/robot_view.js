@@ -10,8 +10,8 @@ export class RobotView {
     this.poses = poses;
     this.links = new Map();
     if (!robot || !poses) return;
-    const material = new THREE.MeshStandardMaterial({ color: 0x4f6d8f, roughness: 0.55, metalness: 0.2 });
-    const joint = new THREE.MeshStandardMaterial({ color: 0x2f3f52, roughness: 0.6 });
+    const material = new THREE.MeshLambertMaterial({ color: 0x4f6d8f });
+    const joint = new THREE.MeshLambertMaterial({ color: 0x2f3f52 });
     for (const link of robot.links) {
       const group = new THREE.Group();
       group.name = link.name;

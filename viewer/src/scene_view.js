@@ -20,14 +20,14 @@ function objectMaterial(object) {
   const a = Math.min(Math.max(object.albedo ?? 0.6, 0.05), 1);
   const color = new THREE.Color().setRGB(0.55 + 0.35 * a, 0.52 + 0.33 * a, 0.47 + 0.3 * a);
   if (object.shape === 'plane') {
-    return new THREE.MeshStandardMaterial({ color: 0xd9d6cf, roughness: 0.95, side: THREE.DoubleSide });
+    return new THREE.MeshLambertMaterial({ color: 0xd9d6cf, side: THREE.DoubleSide });
   }
   if (isWall(object)) {
-    return new THREE.MeshStandardMaterial({
-      color, roughness: 0.9, transparent: true, opacity: 0.16, depthWrite: false, side: THREE.DoubleSide,
+    return new THREE.MeshLambertMaterial({
+      color, transparent: true, opacity: 0.16, depthWrite: false, side: THREE.DoubleSide,
     });
   }
-  return new THREE.MeshStandardMaterial({ color, roughness: 0.7, metalness: 0.05 * (object.specular ?? 0) });
+  return new THREE.MeshLambertMaterial({ color });
 }
 
 export class SceneView {

@@ -1,0 +1,70 @@
+# The report's build and tests (included by CMakeLists.txt).
+#  - proxsim_viewer (built by default): `npm ci` in viewer/ when package-lock.json
+#    changed (a stamp file in node_modules), then esbuild bundles three.js, uPlot
+#    and the viewer into ONE script, ${CMAKE_BINARY_DIR}/viewer/viewer.js.
+#  - proxsim_lib learns where the bundle and report/make_report.py are
+#    (PROXSIM_VIEWER_BUNDLE, PROXSIM_REPORT_SCRIPT), for MakeReport().
+#  - tests: the report's Python unit tests, and the viewer's end-to-end test in
+#    Debian's chromium (skipped, exit 77, only when /usr/bin/chromium is missing).
+
+find_program(PROXSIM_NODE node REQUIRED)
+find_program(PROXSIM_NPM npm REQUIRED)
+
+set(viewer_dir ${CMAKE_SOURCE_DIR}/viewer)
+set(viewer_bundle ${CMAKE_BINARY_DIR}/viewer/viewer.js)
+set(viewer_npm_stamp ${viewer_dir}/node_modules/.proxsim-npm-ci.stamp)
+
+add_custom_command(
+  OUTPUT ${viewer_npm_stamp}
+  COMMAND ${PROXSIM_NPM} ci --no-audit --no-fund --loglevel=error
+  COMMAND ${CMAKE_COMMAND} -E touch ${viewer_npm_stamp}
+  DEPENDS ${viewer_dir}/package-lock.json ${viewer_dir}/package.json
+  WORKING_DIRECTORY ${viewer_dir}
+  COMMENT "Installing the viewer's npm packages (npm ci)"
+  VERBATIM)
+
+file(GLOB viewer_sources CONFIGURE_DEPENDS ${viewer_dir}/src/*.js ${viewer_dir}/src/*.css)
+add_custom_command(
+  OUTPUT ${viewer_bundle}
+  COMMAND ${PROXSIM_NODE} build.mjs --outfile ${viewer_bundle}
+  DEPENDS ${viewer_npm_stamp} ${viewer_sources} ${viewer_dir}/build.mjs
+  WORKING_DIRECTORY ${viewer_dir}
+  COMMENT "Bundling the replay viewer (esbuild)"
+  VERBATIM)
+add_custom_target(proxsim_viewer ALL DEPENDS ${viewer_bundle})
+
+target_compile_definitions(proxsim_lib PUBLIC
+  PROXSIM_VIEWER_BUNDLE="${viewer_bundle}"
+  PROXSIM_REPORT_SCRIPT="${CMAKE_SOURCE_DIR}/report/make_report.py")
+add_dependencies(proxsim proxsim_viewer)
+
+if(PROXSIM_BUILD_TESTS)
+  set(report_python /usr/bin/python3)   # Debian's, which has python3-matplotlib
+  add_test(NAME report_unit
+           COMMAND ${report_python} -m unittest discover -s ${CMAKE_SOURCE_DIR}/tests/report -v)
+
+  # TODO(report): switch these runs from the synthetic sample to a real one:
+  #   $<TARGET_FILE:proxsim> run <small scenario> --out <dir>   (it writes the report itself)
+  # The sample has the output contract's formats (tests/data/report_sample/).
+  foreach(kind walk no_robot)
+    set(run_dir ${CMAKE_BINARY_DIR}/viewer_e2e/${kind})
+    set(sample_args ${run_dir})
+    if(kind STREQUAL "no_robot")
+      list(APPEND sample_args --no-robot)
+    endif()
+    add_test(NAME viewer_e2e_${kind}_run
+             COMMAND ${report_python} ${CMAKE_SOURCE_DIR}/tests/data/report_sample/make_sample.py ${sample_args})
+    add_test(NAME viewer_e2e_${kind}_report
+             COMMAND ${report_python} ${CMAKE_SOURCE_DIR}/report/make_report.py ${run_dir}
+                     --viewer-bundle ${viewer_bundle})
+    add_test(NAME viewer_e2e_${kind}
+             COMMAND ${PROXSIM_NODE} ${CMAKE_SOURCE_DIR}/tests/viewer_e2e/viewer_e2e.mjs ${run_dir}
+                     --viewer-dir ${viewer_dir})
+    set_tests_properties(viewer_e2e_${kind}_run PROPERTIES FIXTURES_SETUP e2e_${kind}_run)
+    set_tests_properties(viewer_e2e_${kind}_report PROPERTIES
+      FIXTURES_REQUIRED e2e_${kind}_run FIXTURES_SETUP e2e_${kind}_report TIMEOUT 120)
+    set_tests_properties(viewer_e2e_${kind} PROPERTIES
+      FIXTURES_REQUIRED "e2e_${kind}_run;e2e_${kind}_report" SKIP_RETURN_CODE 77 TIMEOUT 240
+      RESOURCE_LOCK chromium)
+  endforeach()
+endif()

@@ -1,0 +1,96 @@
+// MakeReport: spawns `/usr/bin/python3 PROXSIM_REPORT_SCRIPT OUT --viewer-bundle
+// PROXSIM_VIEWER_BUNDLE` (posix_spawn, no shell), waits for it and returns its
+// exit status. The paths are compile definitions set by cmake/viewer.cmake.
+#include "report/report_runner.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace proxsim {
+namespace {
+
+#ifndef PROXSIM_REPORT_SCRIPT
+#define PROXSIM_REPORT_SCRIPT PROXSIM_SOURCE_DIR "/report/make_report.py"
+#endif
+#ifndef PROXSIM_VIEWER_BUNDLE
+#define PROXSIM_VIEWER_BUNDLE ""
+#endif
+
+// Debian's interpreter: its packages (python3-matplotlib) serve this one only.
+constexpr const char* kPython = "/usr/bin/python3";
+// make_report.py's exit code when it cannot import matplotlib or numpy.
+constexpr int kMissingPlotting = 3;
+
+}  // namespace
+
+int MakeReport(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  const std::string script = PROXSIM_REPORT_SCRIPT;
+  const std::string bundle = PROXSIM_VIEWER_BUNDLE;
+
+  // what the report needs, checked up front for a clear message
+  if (access(kPython, X_OK) != 0) {
+    std::cerr << "proxsim: cannot draw the report: " << kPython
+              << " is missing (apt-get install python3 python3-matplotlib python3-numpy)\n";
+    return 1;
+  }
+  std::error_code ec;
+  if (!fs::is_regular_file(script, ec)) {
+    std::cerr << "proxsim: cannot draw the report: the report script " << script << " is missing\n";
+    return 1;
+  }
+  if (bundle.empty() || !fs::is_regular_file(bundle, ec)) {
+    std::cerr << "proxsim: cannot write the viewer: its bundle " << (bundle.empty() ? "(unset)" : bundle)
+              << " is missing (build the proxsim_viewer target: cmake --build --preset release)\n";
+    return 1;
+  }
+  if (!fs::is_directory(out_dir, ec)) {
+    std::cerr << "proxsim: cannot draw the report: " << out_dir << " is not a run directory\n";
+    return 1;
+  }
+
+  // spawn the script, no shell: arguments pass as they are
+  std::vector<std::string> args = {kPython, script, out_dir, "--viewer-bundle", bundle};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawn_error = posix_spawn(&pid, kPython, nullptr, nullptr, argv.data(), environ);
+  if (spawn_error != 0) {
+    std::cerr << "proxsim: cannot start " << kPython << ": " << std::strerror(spawn_error) << "\n";
+    return 1;
+  }
+
+  // wait for it, through interruptions
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) {
+      std::cerr << "proxsim: lost the report process: " << std::strerror(errno) << "\n";
+      return 1;
+    }
+  }
+  if (WIFEXITED(status)) {
+    const int code = WEXITSTATUS(status);
+    if (code == kMissingPlotting) {
+      std::cerr << "proxsim: the report needs matplotlib for " << kPython
+                << " (apt-get install python3-matplotlib python3-numpy)\n";
+    } else if (code != 0) {
+      std::cerr << "proxsim: the report script failed (exit " << code << ")\n";
+    }
+    return code;
+  }
+  std::cerr << "proxsim: the report script was killed by signal " << WTERMSIG(status) << "\n";
+  return 1;
+}
+
+}  // namespace proxsim

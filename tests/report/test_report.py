@@ -1,0 +1,148 @@
+"""Unit tests of the report's geometry (walking path, true cross-section) and
+loading, with expected values worked out by hand; plus make_report on a
+synthetic run (files written) and on bad input (exit 2).
+Run: /usr/bin/python3 -m unittest discover -s tests/report"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+sys.path.insert(0, os.path.join(ROOT, "report"))
+from proxsim_report.cross_section import cut_object  # noqa: E402
+from proxsim_report.walk_path import WalkPath  # noqa: E402
+
+X_AXIS = WalkPath(np.array([[0.0, 0.0], [1.0, 0.0]]))
+
+
+def quat_rpy(roll, pitch, yaw):
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return [cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
+            cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy]
+
+
+class WalkPathTest(unittest.TestCase):
+    def test_projects_onto_an_l_shaped_path(self):
+        path = WalkPath(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0]]))
+        s, lateral = path.project(np.array([[2.5, 1.0], [1.0, 0.3], [-1.0, 0.0]]))
+        np.testing.assert_allclose(s, [3.0, 1.0, -1.0])
+        np.testing.assert_allclose(lateral, [-0.5, 0.3, 0.0])   # left of the walk is positive
+
+    def test_point_at_inverts_project(self):
+        path = WalkPath(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0]]))
+        np.testing.assert_allclose(path.point_at(np.array([3.0, 1.0]), 0.5), [[1.5, 1.0], [1.0, 0.5]])
+
+
+class CrossSectionTest(unittest.TestCase):
+    s = np.linspace(0.0, 4.0, 4001)   # 1 mm steps
+
+    def at(self, cut, s0):
+        k = int(round(s0 * 1000))
+        return cut.bottom[k], cut.top[k]
+
+    def test_box_is_cut_to_its_height_over_its_length(self):
+        box = {"name": "b", "id": 1, "shape": "box", "size_m": [0.2, 0.4, 0.1], "xyz_m": [2.0, 0.0, 0.05],
+               "quat_wxyz": [1, 0, 0, 0]}
+        cut = cut_object(box, X_AXIS, self.s)
+        np.testing.assert_allclose(self.at(cut, 2.0), [0.0, 0.1], atol=1e-9)
+        self.assertTrue(np.isnan(cut.top[int(2.2 * 1000)]))
+        hit = self.s[np.isfinite(cut.top)]
+        self.assertAlmostEqual(hit.min(), 1.9, delta=1.5e-3)
+        self.assertAlmostEqual(hit.max(), 2.1, delta=1.5e-3)
+
+    def test_yawed_square_box_is_cut_along_its_diagonal(self):
+        box = {"name": "b", "shape": "box", "size_m": [0.2, 0.2, 0.3], "xyz_m": [1.0, 0.0, 0.15],
+               "quat_wxyz": quat_rpy(0, 0, math.radians(45))}
+        hit = self.s[np.isfinite(cut_object(box, X_AXIS, self.s).top)]
+        self.assertAlmostEqual(hit.max() - hit.min(), 0.2 * math.sqrt(2), delta=2e-3)
+
+    def test_sphere_outline_is_a_circle(self):
+        ball = {"name": "s", "shape": "sphere", "radius_m": 0.2, "xyz_m": [1.0, 0.0, 0.5]}
+        cut = cut_object(ball, X_AXIS, self.s)
+        np.testing.assert_allclose(self.at(cut, 1.0), [0.3, 0.7], atol=1e-9)
+        h = math.sqrt(0.2 ** 2 - 0.1 ** 2)
+        np.testing.assert_allclose(self.at(cut, 1.1), [0.5 - h, 0.5 + h], atol=1e-9)
+
+    def test_lying_cylinder_outline_is_a_circle(self):
+        log = {"name": "c", "shape": "cylinder", "radius_m": 0.1, "length_m": 1.0, "xyz_m": [3.0, 0.0, 0.1],
+               "quat_wxyz": quat_rpy(math.radians(90), 0, 0)}   # axis along y, across the path
+        cut = cut_object(log, X_AXIS, self.s)
+        np.testing.assert_allclose(self.at(cut, 3.0), [0.0, 0.2], atol=1e-9)
+        h = math.sqrt(0.1 ** 2 - 0.05 ** 2)
+        np.testing.assert_allclose(self.at(cut, 3.05), [0.1 - h, 0.1 + h], atol=1e-9)
+
+    def test_standing_cylinder_is_cut_between_its_caps(self):
+        post = {"name": "p", "shape": "cylinder", "radius_m": 0.1, "length_m": 1.0, "xyz_m": [2.0, 0.05, 0.5]}
+        cut = cut_object(post, X_AXIS, self.s)
+        np.testing.assert_allclose(self.at(cut, 2.0), [0.0, 1.0], atol=1e-9)
+        hit = self.s[np.isfinite(cut.top)]
+        self.assertAlmostEqual(hit.max() - hit.min(), 2 * math.sqrt(0.1 ** 2 - 0.05 ** 2), delta=2e-3)
+
+    def test_tilted_plane_height_and_solid_side(self):
+        ramp = {"name": "ramp", "shape": "plane", "xyz_m": [0, 0, 0.2],
+                "quat_wxyz": quat_rpy(0, math.radians(-10), 0)}   # rises along +x
+        cut = cut_object(ramp, X_AXIS, self.s)
+        self.assertTrue(cut.solid_below)
+        self.assertAlmostEqual(self.at(cut, 2.0)[1], 0.2 + 2.0 * math.tan(math.radians(10)), places=9)
+
+    def test_vertical_plane_is_a_wall_crossing(self):
+        wall = {"name": "w", "shape": "plane", "xyz_m": [2.5, 0, 0],
+                "quat_wxyz": quat_rpy(0, math.radians(-90), 0)}   # faces -x: solid beyond x = 2.5
+        cut = cut_object(wall, X_AXIS, self.s)
+        self.assertAlmostEqual(cut.wall_s, 2.5, delta=2e-3)
+        self.assertTrue(cut.wall_solid_after)
+
+    def test_lateral_offset_selects_what_is_cut(self):
+        box = {"name": "b", "shape": "box", "size_m": [0.2, 0.2, 0.1], "xyz_m": [1.0, 0.5, 0.05]}
+        self.assertIsNone(cut_object(box, X_AXIS, self.s, lateral=0.0))
+        self.assertIsNotNone(cut_object(box, X_AXIS, self.s, lateral=0.5))
+
+    def test_mesh_tetrahedron_top_and_bottom(self):
+        tet = {"name": "m", "shape": "mesh", "xyz_m": [1.0, 0.0, 0.0],
+               "vertices_m": [[-0.5, -0.5, 0], [0.5, -0.5, 0], [0, 0.5, 0], [0, 0, 1]],
+               "triangles": [[0, 1, 2], [0, 1, 3], [1, 2, 3], [2, 0, 3]]}
+        cut = cut_object(tet, X_AXIS, self.s)
+        bottom, top = self.at(cut, 1.0)
+        self.assertAlmostEqual(bottom, 0.0, places=9)
+        self.assertAlmostEqual(top, 1.0, places=9)
+
+
+class MakeReportTest(unittest.TestCase):
+    def run_script(self, *args):
+        return subprocess.run([sys.executable, *args], capture_output=True, text=True, cwd=ROOT)
+
+    def test_draws_a_run_without_robot_and_loads_it_consistently(self):
+        from proxsim_report.run_data import load_run
+        with tempfile.TemporaryDirectory() as out:
+            self.assertEqual(self.run_script("tests/data/report_sample/make_sample.py", out, "--no-robot").returncode, 0)
+            run = load_run(out)
+            self.assertEqual(run.poses, {})
+            detected = sum(int(s.detected.sum()) for s in run.sensors)
+            self.assertEqual(detected, len(run.profile["x"]))
+            sky = next(s for s in run.sensors if s.name == "laser_sky")
+            self.assertFalse(sky.detected.any())
+            self.assertTrue(np.isnan(sky.d_true_m).all())
+            r = self.run_script("report/make_report.py", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            files = set(os.listdir(os.path.join(out, "report")))
+            for name in ("paper_figures.png", "paper_figures.svg", "curve_laser_sky.png", "profile_laser_sky.svg"):
+                self.assertIn(name, files)
+
+    def test_bad_input_exits_2_with_a_message(self):
+        with tempfile.TemporaryDirectory() as out:
+            r = self.run_script("report/make_report.py", out)
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("scene.json", r.stderr)
+            r = self.run_script("report/make_report.py", out, "--viewer-bundle", os.path.join(out, "nope.js"))
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("viewer bundle", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
