@@ -1,0 +1,104 @@
+// One step of the kinematic walk: from a heel strike of one foot (the stance
+// foot) to the heel strike of the other (the swing foot), as a pure function
+// of the stance phase p in [0, 0.5]. This is GAIT.md's planted-foot
+// construction:
+//  - The stance foot pivots on its heel until foot-flat, lies flat until
+//    heel-off, then pivots on its toe. Each pivot is latched in the world: the
+//    heel at heel strike, then the flat foot frame F (which gives the sole point
+//    under the ankle and the toe exactly). The pelvis is the pivot minus the
+//    pivot's position in the pelvis frame (FK of the stance leg), so the
+//    contact point never slides and the pelvis height follows from geometry.
+//  - The pelvis is upright; its heading turns toward the next waypoint while
+//    the stance foot rolls on its heel only (the foot spins about its heel).
+//  - The stance leg follows the scaled normative curves (gait_curves.h). At
+//    heel strike its hip/knee differ a little from the curves (see the swing
+//    leg); the difference is blended out over the double-support window
+//    (p < 0.1), which keeps joint angles and pelvis height continuous.
+//  - Push-off: at small amplitudes the curves' toe rocker lifts the pelvis
+//    higher than the swing leg can reach down at its heel strike. The stance
+//    foot's pitch after heel-off is then scaled by a gain g ≤ 1 chosen so that
+//    at the other foot's heel strike the pelvis is no higher than the curves'
+//    landing posture allows (PushOffGain).
+//  - The swing leg's ankle follows the curves' ankle path in the pelvis frame,
+//    plus two blended corrections and a clearance bump, solved by planar
+//    two-link IK. The corrections join the path's start to where the foot
+//    actually was at the other foot's heel strike, and its end to a landing
+//    pose whose heel touches the floor exactly at the next heel strike (the
+//    pelvis height there is known: the stance foot is then on its latched toe).
+//    The bump is sized once per step so that the sole clears the floor by
+//    kSwingClearance_m in mid-swing; a per-sample guard lifts the foot if a
+//    sample would still go below the floor (trailing toe at push-off).
+// Departures from a real gait: no hip roll or yaw (the trailing toe slides
+// sideways during a turn), the trailing toe may slide a little during double
+// support, the pelvis does not sway sideways.
+#pragma once
+
+#include "gait/leg_kinematics.h"
+
+namespace proxsim {
+
+/// Minimum sole clearance aimed at in mid-swing, metres.
+constexpr double kSwingClearance_m = 0.02;
+/// End of double support and of the blends that start at heel strike (stance phase).
+constexpr double kDoubleSupportEnd = kToeOffPhase - 0.5;
+
+/// Everything latched at one heel strike for the step that follows.
+struct StepPlan {
+  Side stance = Side::kLeft;
+  Side swing = Side::kRight;
+  double k_from = 1, k_to = 1;          ///< curve amplitude, ramped over [0, kDoubleSupportEnd]
+  double g_from = 1, g_to = 1;          ///< push-off gain (PushOffGain of k), ramped likewise
+  double yaw_from = 0, yaw_to = 0;      ///< pelvis heading, ramped over [0, foot-flat)
+  double floor_z_m = 0;                 ///< floor height
+  Vec3 p_W_heel = Vec3::Zero();         ///< stance heel latched at heel strike
+  LegAnglesRad stance_offset;           ///< stance hip/knee minus curves at heel strike
+  Pose X_WF = Pose::Identity();         ///< stance foot frame once flat (foot-flat to toe-off)
+  bool flat_latched = false;            ///< X_WF is set (always, once a plan is finished)
+  Vec2xz swing_start_delta = Vec2xz::Zero();  ///< swing ankle correction at p = 0, pelvis frame
+  double swing_start_pitch = 0;               ///< swing foot pitch correction at p = 0
+  Vec2xz swing_end_delta = Vec2xz::Zero();    ///< swing ankle correction at p = 0.5
+  double clearance_bump_m = 0;                ///< height of the mid-swing bump
+};
+
+/// The robot at one stance phase of a step.
+struct StepPose {
+  Pose X_WP = Pose::Identity();  ///< pelvis
+  LegAnglesRad stance, swing;
+};
+
+/// Computes steps for one biped.
+class StepPlanner {
+ public:
+  explicit StepPlanner(const BipedLegs& legs) : legs_(legs) {}
+
+  /// The first step: left heel strike with the pelvis above (x, y) of p_W_start
+  /// (its z is the floor), heading yaw, curves at amplitude k.
+  StepPlan FirstStep(const Vec3& p_W_start, double yaw_rad, double k) const;
+  /// The step after `prev`, from its heel strike (prev at p = 0.5): amplitude
+  /// ramps to k_to and heading to yaw_to.
+  StepPlan NextStep(const StepPlan& prev, double k_to, double yaw_to) const;
+  /// The robot at stance phase p in [0, 0.5] of a step.
+  StepPose Evaluate(const StepPlan& plan, double p) const;
+
+  const BipedLegs& legs() const { return legs_; }
+
+ private:
+  double Amplitude(const StepPlan& plan, double p) const;
+  LegAnglesRad StanceAngles(const StepPlan& plan, double p) const;
+  Pose StancePelvis(const StepPlan& plan, double p, const LegAnglesRad& stance) const;
+  // The swing ankle target and pitch before the floor guard.
+  std::pair<Vec2xz, double> SwingTarget(const StepPlan& plan, double p) const;
+  // Latches X_WF, the landing correction and the clearance bump.
+  void Finish(StepPlan* plan) const;
+
+  const BipedLegs& legs_;
+};
+
+/// Push-off gain for amplitude k (1 when the curves need no reduction).
+double PushOffGain(const BipedLegs& legs, Side stance, double k);
+
+/// The stride (distance between two heel strikes of the same foot) of steady
+/// straight walking at curve amplitude k, metres.
+double SteadyStride_m(const StepPlanner& planner, double k);
+
+}  // namespace proxsim

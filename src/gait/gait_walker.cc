@@ -1,0 +1,139 @@
+#include "gait/gait_walker.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/input_error.h"
+
+namespace proxsim {
+
+namespace {
+
+constexpr double kMinAmplitude = 0.05, kMaxAmplitude = 1.6;
+
+double WrapAngle(double a) { return std::remainder(a, 2 * kPi); }
+
+}  // namespace
+
+const char* SupportLegName(SupportLeg s) {
+  switch (s) {
+    case SupportLeg::kLeft: return "left";
+    case SupportLeg::kRight: return "right";
+    case SupportLeg::kDouble: break;
+  }
+  return "double";
+}
+
+GaitWalker::GaitWalker(RobotModel model, const RobotConfig& config)
+    : model_(std::make_unique<RobotModel>(std::move(model))), gait_(config.gait), waypoints_m_(config.waypoints_m) {
+  std::vector<std::string> problems;
+  if (!(gait_.period_s > 0)) problems.push_back(model_->source() + ": gait period_s must be > 0");
+  if (!(gait_.stride_m > 0)) problems.push_back(model_->source() + ": gait stride_m must be > 0");
+  if (!problems.empty()) throw InputError(problems);
+  legs_ = std::make_unique<BipedLegs>(*model_);
+  planner_ = std::make_unique<StepPlanner>(*legs_);
+  SetStride(gait_.stride_m);
+  plan_ = planner_->FirstStep(config.start_xyz_m, config.start_yaw_rad, k_target_);
+}
+
+void GaitWalker::SetStride(double stride_m) {
+  if (!(stride_m > 0)) return;
+  gait_.stride_m = stride_m;
+  // bisection on the steady stride, assumed increasing with the amplitude
+  double lo = kMinAmplitude, hi = kMaxAmplitude;
+  if (SteadyStride_m(*planner_, hi) <= stride_m) {
+    lo = hi;
+  } else if (SteadyStride_m(*planner_, lo) >= stride_m) {
+    hi = lo;
+  } else {
+    for (int i = 0; i < 40; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (SteadyStride_m(*planner_, mid) < stride_m ? lo : hi) = mid;
+    }
+  }
+  k_target_ = 0.5 * (lo + hi);
+  achieved_stride_m_ = SteadyStride_m(*planner_, k_target_);
+}
+
+void GaitWalker::Resume() {
+  stopped_ = false;
+  stop_requested_ = false;
+}
+
+bool GaitWalker::DecideAtHeelStrike(const Pose& X_WP, double* yaw_to) {
+  *yaw_to = plan_.yaw_to;
+  if (stop_requested_) return true;
+  if (waypoints_m_.empty()) return false;
+  const Vec2 p = X_WP.translation().head<2>();
+  const double stride = achieved_stride_m_;
+  // pass waypoints that are within half a stride
+  while (next_waypoint_ + 1 < waypoints_m_.size() && (waypoints_m_[next_waypoint_] - p).norm() < 0.5 * stride)
+    ++next_waypoint_;
+  const Vec2 to = waypoints_m_[next_waypoint_] - p;
+  if (next_waypoint_ + 1 == waypoints_m_.size()) {
+    const Vec2 heading(std::cos(plan_.yaw_to), std::sin(plan_.yaw_to));
+    // the last one: stop within a quarter stride, or when one more step (half
+    // a stride along the heading) would not bring the pelvis closer
+    const bool closer = (to - 0.5 * stride * heading).norm() < to.norm();
+    if (to.norm() < 0.25 * stride || (to.norm() < stride && !closer)) {
+      path_done_ = true;
+      return true;
+    }
+  }
+  const double turn = std::clamp(WrapAngle(std::atan2(to.y(), to.x()) - plan_.yaw_to), -kMaxTurnPerStep_rad,
+                                 kMaxTurnPerStep_rad);
+  *yaw_to = plan_.yaw_to + turn;
+  return false;
+}
+
+RobotState GaitWalker::Advance(double t_s) {
+  if (!started_) {
+    started_ = true;
+    last_t_s_ = t_s;
+  }
+  const double dt = std::max(0.0, t_s - last_t_s_);
+  last_t_s_ = std::max(last_t_s_, t_s);
+  const double half = 0.5 * gait_.period_s;
+  if (!stopped_) {
+    clock_s_ += dt;
+    // heel strikes passed since the last sample
+    while (clock_s_ >= step_start_clock_s_ + half) {
+      const StepPose strike = planner_->Evaluate(plan_, 0.5);
+      double yaw_to = 0;
+      if (DecideAtHeelStrike(strike.X_WP, &yaw_to)) {
+        stopped_ = true;
+        stop_requested_ = false;
+        clock_s_ = step_start_clock_s_ + half;  // freeze at the heel strike
+        break;
+      }
+      plan_ = planner_->NextStep(plan_, k_target_, yaw_to);
+      step_start_clock_s_ += half;
+    }
+  }
+  const double p = std::clamp((clock_s_ - step_start_clock_s_) / gait_.period_s, 0.0, 0.5);
+  const StepPose pose = planner_->Evaluate(plan_, p);
+
+  RobotState state;
+  state.t_s = t_s;
+  state.X_WP = pose.X_WP;
+  state.q.assign(model_->joint_count(), 0.0);
+  legs_->WriteJoints(plan_.stance, pose.stance, state.q);
+  legs_->WriteJoints(plan_.swing, pose.swing, state.q);
+  // the left leg's phase, from the step so that it agrees with the support leg
+  step_phase_ = p;
+  const double phase = plan_.stance == Side::kLeft ? p : p + 0.5;
+  state.gait_phase = phase >= 1.0 ? phase - 1.0 : phase;
+  state.stopped = stopped_;
+  if (stopped_ || p < kDoubleSupportEnd)
+    state.support = SupportLeg::kDouble;
+  else
+    state.support = plan_.stance == Side::kLeft ? SupportLeg::kLeft : SupportLeg::kRight;
+  const Vec3 p_WP = pose.X_WP.translation();
+  if (has_last_p_WP_) distance_m_ += (p_WP - last_p_WP_).head<2>().norm();
+  last_p_WP_ = p_WP;
+  has_last_p_WP_ = true;
+  state.distance_walked_m = distance_m_;
+  return state;
+}
+
+}  // namespace proxsim

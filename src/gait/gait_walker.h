@@ -1,0 +1,81 @@
+// Kinematic walking of a biped along a path of waypoints (DESIGN.md "Robot and
+// gait"; GAIT.md): the steps of gait_steps.h chained in time, with the cycle
+// time `period_s` and the curve amplitude chosen so that the stride is
+// `stride_m`, heading changes at heel strikes (at most kMaxTurnPerStep_rad per
+// step, toward the current waypoint), and a stop at a heel strike — a double
+// support with both feet down — when asked or when the last waypoint is
+// reached.
+//
+// Time: a gait clock runs while walking and stands still while stopped; the
+// left leg's phase is clock / period_s, 0 at its heel strike. The walk starts at
+// t = the first Advance() time, in a left heel strike with the pelvis above
+// `start_xyz_m` (whose z is the floor height), heading `start_yaw_rad`.
+//
+// Stride: the amplitude k of the curves (1 = the normative adult gait) sets
+// the stride; k is found by bisection on the steady stride of straight walking
+// for this robot's legs. A stride beyond what k ∈ [0.05, 1.6] can give is
+// clamped: achieved_stride_m() says what is walked. A new stride takes effect
+// at the next heel strike, ramped in over the double support.
+#pragma once
+
+#include <memory>
+
+#include "gait/gait_steps.h"
+#include "gait/locomotion.h"
+#include "io/scenario.h"
+
+namespace proxsim {
+
+/// Largest heading change per step, rad.
+constexpr double kMaxTurnPerStep_rad = DegToRad(15.0);
+
+class GaitWalker : public Locomotion {
+ public:
+  /// Walks `model` as `config` says (start, gait, waypoints). Throws InputError
+  /// when the model is not a biped the gait can drive or the gait is invalid.
+  GaitWalker(RobotModel model, const RobotConfig& config);
+
+  RobotState Advance(double t_s) override;
+  void RequestStop() override { stop_requested_ = true; }
+  void Resume() override;
+  void SetStride(double stride_m) override;
+  const RobotModel& model() const override { return *model_; }
+
+  /// Curve amplitude in use for the requested stride.
+  double amplitude() const { return k_target_; }
+  /// Stride walked at that amplitude (equals the request unless it was out of reach), m.
+  double achieved_stride_m() const { return achieved_stride_m_; }
+  /// True once the last waypoint has been reached.
+  bool path_done() const { return path_done_; }
+  /// The current step (for tests and viewers: the latched pivots).
+  const StepPlan& current_step() const { return plan_; }
+  /// Stance phase in [0, 0.5] of the current step at the last Advance().
+  double step_phase() const { return step_phase_; }
+
+ private:
+  // At the heel strike ending the current step: decide heading and stopping.
+  bool DecideAtHeelStrike(const Pose& X_WP, double* yaw_to);
+
+  std::unique_ptr<RobotModel> model_;  // stable address: legs_ and planner_ refer into it
+  std::unique_ptr<BipedLegs> legs_;
+  std::unique_ptr<StepPlanner> planner_;
+  GaitConfig gait_;
+  std::vector<Vec2> waypoints_m_;
+  std::size_t next_waypoint_ = 0;
+  double k_target_ = 1;
+  double achieved_stride_m_ = 0;
+  StepPlan plan_;
+  double step_start_clock_s_ = 0;  // gait clock at the current step's heel strike
+  double clock_s_ = 0;
+  double step_phase_ = 0;
+  double last_t_s_ = 0;
+  bool started_ = false;
+  bool stopped_ = false;
+  bool stop_requested_ = false;
+  bool path_done_ = false;
+  double distance_m_ = 0;
+  Vec3 last_p_WP_ = Vec3::Zero();  // pelvis at the previous sample, for the distance walked
+  bool has_last_p_WP_ = false;
+};
+
+}  // namespace proxsim

@@ -1,0 +1,277 @@
+// RobotModel: URDF through urdfdom into flat link/joint tables, and forward
+// kinematics over them. urdfdom reports its reasons for refusing a file through
+// console_bridge; we capture those lines and put them in the InputError.
+#include "robot/robot_model.h"
+
+#include <fstream>
+#include <mutex>
+#include <queue>
+#include <sstream>
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include "core/embedded_files.h"
+#include "core/input_error.h"
+
+namespace proxsim {
+
+namespace {
+
+// Collects urdfdom's error and warning lines while one parse runs.
+class CaptureHandler : public console_bridge::OutputHandler {
+ public:
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN) lines.push_back(text);
+  }
+  std::vector<std::string> lines;
+};
+
+urdf::ModelInterfaceSharedPtr ParseCapturingErrors(const std::string& text,
+                                                   std::vector<std::string>* messages) {
+  // console_bridge's handler is process-global: one parse at a time.
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
+  CaptureHandler handler;
+  console_bridge::useOutputHandler(&handler);
+  urdf::ModelInterfaceSharedPtr model;
+  try {
+    model = urdf::parseURDF(text);
+  } catch (const std::exception& e) {
+    handler.lines.push_back(e.what());
+  }
+  console_bridge::restorePreviousOutputHandler();
+  *messages = std::move(handler.lines);
+  return model;
+}
+
+Pose PoseFromUrdf(const urdf::Pose& p) {
+  Pose X = Pose::Identity();
+  X.linear() = Eigen::Quaterniond(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z)
+                   .normalized()
+                   .toRotationMatrix();
+  X.translation() = Vec3(p.position.x, p.position.y, p.position.z);
+  return X;
+}
+
+// A URDF geometry as a proxsim shape; adds a problem and returns false when unsupported.
+bool ShapeFromUrdf(const urdf::Geometry& g, const std::string& where, Shape* out,
+                   std::vector<std::string>* problems) {
+  switch (g.type) {
+    case urdf::Geometry::BOX: {
+      const auto& b = static_cast<const urdf::Box&>(g);
+      *out = Box{Vec3(b.dim.x, b.dim.y, b.dim.z)};
+      if (b.dim.x <= 0 || b.dim.y <= 0 || b.dim.z <= 0) {
+        problems->push_back(where + ": box size must be > 0 on every axis");
+        return false;
+      }
+      return true;
+    }
+    case urdf::Geometry::SPHERE: {
+      const auto& s = static_cast<const urdf::Sphere&>(g);
+      if (s.radius <= 0) {
+        problems->push_back(where + ": sphere radius must be > 0");
+        return false;
+      }
+      *out = Sphere{s.radius};
+      return true;
+    }
+    case urdf::Geometry::CYLINDER: {
+      const auto& c = static_cast<const urdf::Cylinder&>(g);
+      if (c.radius <= 0 || c.length <= 0) {
+        problems->push_back(where + ": cylinder radius and length must be > 0");
+        return false;
+      }
+      *out = Cylinder{c.radius, c.length};
+      return true;
+    }
+    case urdf::Geometry::MESH: {
+      const auto& m = static_cast<const urdf::Mesh&>(g);
+      problems->push_back(where + ": mesh geometry ('" + m.filename +
+                          "') is not yet supported on robot links; use box, sphere or cylinder");
+      return false;
+    }
+  }
+  problems->push_back(where + ": unknown geometry type");
+  return false;
+}
+
+Pose JointMotion(const RobotJoint& j, double q) {
+  Pose M = Pose::Identity();
+  switch (j.type) {
+    case JointType::kRevolute:
+    case JointType::kContinuous:
+      M.linear() = Eigen::AngleAxisd(q, j.axis_J).toRotationMatrix();
+      break;
+    case JointType::kPrismatic:
+      M.translation() = q * j.axis_J;
+      break;
+    case JointType::kFixed:
+      break;
+  }
+  return M;
+}
+
+}  // namespace
+
+RobotModel RobotModel::FromUrdfFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the URDF file (missing or unreadable)");
+  std::stringstream text;
+  text << in.rdbuf();
+  return FromUrdfText(text.str(), path);
+}
+
+RobotModel RobotModel::Builtin(const std::string& name) {
+  const std::string key = "data/robots/" + name + ".urdf";
+  const auto& files = EmbeddedFiles();
+  const auto it = files.find(key);
+  if (it == files.end()) throw InputError("builtin:" + name + ": no built-in robot of that name (known: biped)");
+  return FromUrdfText(std::string(it->second), "builtin:" + name);
+}
+
+RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::string& source) {
+  std::vector<std::string> messages;
+  const urdf::ModelInterfaceSharedPtr urdf = ParseCapturingErrors(urdf_text, &messages);
+  if (!urdf) {
+    std::string why = source + ": urdfdom could not parse the URDF (not XML, a missing link or joint field, "
+                               "a joint naming an unknown link, a cycle or no single root)";
+    if (!messages.empty()) {
+      why += ": ";
+      for (std::size_t i = 0; i < messages.size(); ++i) why += (i ? "; " : "") + messages[i];
+    }
+    throw InputError(why);
+  }
+  const urdf::LinkConstSharedPtr root = urdf->getRoot();
+  if (!root) throw InputError(source + ": the URDF has no root link");
+
+  RobotModel model;
+  model.name_ = urdf->getName();
+  model.source_ = source;
+  std::vector<std::string> problems;
+
+  // Breadth-first from the root: link 0 is the root, every joint comes after
+  // its parent link, so joint order is a valid forward-kinematics order.
+  std::queue<urdf::LinkConstSharedPtr> todo;
+  todo.push(root);
+  while (!todo.empty()) {
+    const urdf::LinkConstSharedPtr ul = todo.front();
+    todo.pop();
+    const int link_index = static_cast<int>(model.links_.size());
+    if (model.LinkIndex(ul->name) >= 0) {
+      problems.push_back(source + ": link '" + ul->name + "' is reached twice from the root (a cycle)");
+      continue;
+    }
+    RobotLink link;
+    link.name = ul->name;
+    if (ul->inertial) link.mass_kg = ul->inertial->mass;
+    // Geometry: collision elements, else visual ones.
+    std::vector<std::pair<urdf::GeometrySharedPtr, urdf::Pose>> geoms;
+    for (const auto& c : ul->collision_array)
+      if (c && c->geometry) geoms.emplace_back(c->geometry, c->origin);
+    if (geoms.empty())
+      for (const auto& v : ul->visual_array)
+        if (v && v->geometry) geoms.emplace_back(v->geometry, v->origin);
+    for (const auto& [g, origin] : geoms) {
+      Shape shape;
+      if (ShapeFromUrdf(*g, source + ": link '" + ul->name + "'", &shape, &problems))
+        link.shapes.push_back({shape, PoseFromUrdf(origin)});
+    }
+    if (ul->parent_joint) link.parent_joint = model.JointIndex(ul->parent_joint->name);
+    model.links_.push_back(std::move(link));
+
+    for (const auto& uj : ul->child_joints) {
+      const urdf::LinkConstSharedPtr child = urdf->getLink(uj->child_link_name);
+      if (!child) {
+        problems.push_back(source + ": joint '" + uj->name + "' names a missing child link '" +
+                           uj->child_link_name + "'");
+        continue;
+      }
+      RobotJoint joint;
+      joint.name = uj->name;
+      joint.parent_link = link_index;
+      joint.X_PJ = PoseFromUrdf(uj->parent_to_joint_origin_transform);
+      const Vec3 axis(uj->axis.x, uj->axis.y, uj->axis.z);
+      switch (uj->type) {
+        case urdf::Joint::REVOLUTE: joint.type = JointType::kRevolute; break;
+        case urdf::Joint::CONTINUOUS: joint.type = JointType::kContinuous; break;
+        case urdf::Joint::PRISMATIC: joint.type = JointType::kPrismatic; break;
+        case urdf::Joint::FIXED: joint.type = JointType::kFixed; break;
+        default:
+          problems.push_back(source + ": joint '" + uj->name +
+                             "' has an unsupported type (use revolute, continuous, prismatic or fixed)");
+          joint.type = JointType::kFixed;
+      }
+      if (joint.type != JointType::kFixed) {
+        if (axis.norm() < 1e-12) {
+          problems.push_back(source + ": joint '" + uj->name + "' has a zero axis");
+        } else {
+          joint.axis_J = axis.normalized();
+        }
+      }
+      if (uj->limits) {
+        joint.lower = uj->limits->lower;
+        joint.upper = uj->limits->upper;
+      }
+      model.links_[link_index].child_joints.push_back(static_cast<int>(model.joints_.size()));
+      model.joints_.push_back(std::move(joint));
+      todo.push(child);
+    }
+  }
+  // Child link indices: links were appended in the same breadth-first order.
+  for (int j = 0; j < model.joint_count(); ++j) {
+    // the child of joint j is the link whose parent_joint is j
+    for (int l = 0; l < model.link_count(); ++l)
+      if (model.links_[l].parent_joint == j) model.joints_[j].child_link = l;
+  }
+  // Every link must hang from the root: urdfdom accepts a separate cycle of
+  // links (each has a parent, none reaches the root).
+  for (const auto& [name, ul] : urdf->links_) {
+    if (model.LinkIndex(name) < 0)
+      problems.push_back(source + ": link '" + name +
+                         "' is not connected to the root link '" + root->name + "' (a cycle or a second tree)");
+  }
+  if (!problems.empty()) throw InputError(problems);
+  model.root_link_ = 0;
+  model.joint_order_.resize(model.joints_.size());
+  for (int j = 0; j < model.joint_count(); ++j) model.joint_order_[j] = j;
+  return model;
+}
+
+int RobotModel::LinkIndex(const std::string& name) const {
+  for (int i = 0; i < link_count(); ++i)
+    if (links_[i].name == name) return i;
+  return -1;
+}
+
+int RobotModel::JointIndex(const std::string& name) const {
+  for (int i = 0; i < joint_count(); ++i)
+    if (joints_[i].name == name) return i;
+  return -1;
+}
+
+double RobotModel::TotalMass_kg() const {
+  double m = 0;
+  for (const auto& l : links_) m += l.mass_kg;
+  return m;
+}
+
+void RobotModel::ForwardKinematics(const Pose& X_WRoot, std::span<const double> q_by_joint_index,
+                                   std::span<Pose> X_WL_out) const {
+  // Sizes are our callers' responsibility (a bug, not bad input).
+  if (q_by_joint_index.size() != joints_.size() || X_WL_out.size() != links_.size())
+    throw std::logic_error("RobotModel::ForwardKinematics: span sizes do not match the model");
+  X_WL_out[root_link_] = X_WRoot;
+  for (const int j : joint_order_) {
+    const RobotJoint& joint = joints_[j];
+    X_WL_out[joint.child_link] = X_WL_out[joint.parent_link] * joint.X_PJ * JointMotion(joint, q_by_joint_index[j]);
+  }
+}
+
+std::vector<Pose> RobotModel::ForwardKinematics(const Pose& X_WRoot, std::span<const double> q_by_joint_index) const {
+  std::vector<Pose> X_WL(links_.size(), Pose::Identity());
+  ForwardKinematics(X_WRoot, q_by_joint_index, X_WL);
+  return X_WL;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,109 @@
+// A robot as a tree of rigid links joined by 1-DoF joints, read from URDF
+// (urdfdom), with the links' collision shapes so that the robot is geometry in
+// the scene, and forward kinematics over the tree.
+//
+// Frames: W world, L a link frame (URDF: a link's frame is its parent joint's
+// frame), J a joint frame, O a shape's own frame in its link. X_PJ is a joint's
+// origin in its parent link; the child link frame C is J moved by the joint
+// value q along/about the joint axis (expressed in J), so X_PC = X_PJ·M(q).
+//
+// Geometry comes from each link's <collision> elements, or its <visual> ones
+// when it has none. Boxes, spheres and cylinders map to proxsim shapes;
+// meshes are refused with an InputError for now (scene/mesh_loader is not wired
+// into robots yet).
+//
+// The built-in biped (data/robots/biped.urdf) follows this convention, which
+// src/gait relies on: at q = 0 the legs hang straight down; thigh frames at the
+// hips, tibia frames at the knees (tibia along −z), foot frames at the ankles;
+// positive *_hip_pitch = hip flexion (axis 0 −1 0), *_knee_pitch = knee
+// flexion (axis 0 1 0), *_ankle_pitch = dorsiflexion (axis 0 −1 0). Standing
+// at q = 0 with the pelvis 0.98 m above the floor puts the soles at z = 0.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/geometry.h"
+#include "scene/shape.h"
+
+namespace proxsim {
+
+/// One shape fixed on a link.
+struct LinkShape {
+  Shape shape;
+  Pose X_LO = Pose::Identity();  ///< shape frame O in its link L
+};
+
+struct RobotLink {
+  std::string name;
+  int parent_joint = -1;            ///< index of the joint whose child this is; −1 for the root
+  std::vector<int> child_joints;    ///< joints whose parent this is
+  std::vector<LinkShape> shapes;    ///< collision geometry (or visual when no collision)
+  double mass_kg = 0.0;             ///< 0 when the URDF gives no <inertial>
+};
+
+enum class JointType { kRevolute, kContinuous, kPrismatic, kFixed };
+
+struct RobotJoint {
+  std::string name;
+  JointType type = JointType::kFixed;
+  int parent_link = -1;
+  int child_link = -1;
+  Pose X_PJ = Pose::Identity();  ///< joint frame J in the parent link P (URDF <origin>)
+  Vec3 axis_J = Vec3::UnitX();   ///< unit axis in J (URDF <axis>)
+  double lower = 0.0;            ///< rad or m; only meaningful for revolute/prismatic
+  double upper = 0.0;            ///< rad or m
+};
+
+/// A URDF robot: links, joints, shapes and forward kinematics.
+class RobotModel {
+ public:
+  /// Reads a URDF file. Throws InputError naming the file when it is missing,
+  /// not a valid URDF (urdfdom refuses it: bad XML, a missing link, a cycle,
+  /// no root), or uses unsupported geometry.
+  static RobotModel FromUrdfFile(const std::string& path);
+
+  /// Parses URDF text; `source` names it in messages and resolves relative mesh paths.
+  static RobotModel FromUrdfText(const std::string& urdf_text, const std::string& source);
+
+  /// A robot shipped inside the binary: "biped" (data/robots/biped.urdf).
+  static RobotModel Builtin(const std::string& name);
+
+  const std::string& name() const { return name_; }
+  const std::string& source() const { return source_; }
+  int link_count() const { return static_cast<int>(links_.size()); }
+  int joint_count() const { return static_cast<int>(joints_.size()); }
+  int root_link() const { return root_link_; }
+  const RobotLink& link(int i) const { return links_.at(i); }
+  const RobotJoint& joint(int i) const { return joints_.at(i); }
+  const std::string& link_name(int i) const { return links_.at(i).name; }
+  const std::string& joint_name(int i) const { return joints_.at(i).name; }
+
+  /// Index of the link called `name`, or −1.
+  int LinkIndex(const std::string& name) const;
+  /// Index of the joint called `name`, or −1.
+  int JointIndex(const std::string& name) const;
+
+  /// Total mass of the links, kg.
+  double TotalMass_kg() const;
+
+  /// Poses of every link in W given the root link's pose X_WRoot and one value
+  /// per joint (rad or m, indexed like joint(i); fixed joints ignore theirs).
+  /// Both spans are sized joint_count() and link_count().
+  void ForwardKinematics(const Pose& X_WRoot, std::span<const double> q_by_joint_index,
+                         std::span<Pose> X_WL_out) const;
+
+  /// Convenience: the same returning a vector.
+  std::vector<Pose> ForwardKinematics(const Pose& X_WRoot, std::span<const double> q_by_joint_index) const;
+
+ private:
+  std::string name_;
+  std::string source_;
+  std::vector<RobotLink> links_;
+  std::vector<RobotJoint> joints_;
+  std::vector<int> joint_order_;  ///< joints parents-first, for forward kinematics
+  int root_link_ = -1;
+};
+
+}  // namespace proxsim

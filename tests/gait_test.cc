@@ -1,0 +1,202 @@
+// Gait: the normative curves, and the walker's planted-foot guarantees checked
+// with the robot's own 3D forward kinematics over several cycles at 200 Hz.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "gait/gait_curves.h"
+#include "gait/gait_walker.h"
+#include "robot/robot_model.h"
+
+namespace proxsim {
+namespace {
+
+constexpr double kRate_hz = 200.0;
+
+// The 8 corners of a foot's sole box in the world.
+std::vector<Vec3> SoleCorners(const BipedLegs& legs, Side side, const std::vector<Pose>& X_WL) {
+  const LegGeometry& g = legs.leg(side);
+  std::vector<Vec3> corners;
+  for (double x : {g.heel_x_m, g.toe_x_m})
+    for (double y : {-g.half_width_m, g.half_width_m}) corners.push_back(X_WL[g.foot_link] * Vec3(x, y, g.sole_z_m));
+  return corners;
+}
+
+double LowestSoleZ(const BipedLegs& legs, Side side, const std::vector<Pose>& X_WL) {
+  double z = 1e9;
+  for (const Vec3& c : SoleCorners(legs, side, X_WL)) z = std::min(z, c.z());
+  return z;
+}
+
+// The stance pivot of the current step, from 3D FK, and its latched value.
+std::pair<Vec3, Vec3> PivotNowAndLatched(const BipedLegs& legs, const StepPlan& plan, double p,
+                                         const std::vector<Pose>& X_WL) {
+  const LegGeometry& g = legs.leg(plan.stance);
+  const Pose& X_WF = X_WL[g.foot_link];
+  if (p < FootFlatPhase()) return {X_WF * Vec3(g.heel_x_m, 0, g.sole_z_m), plan.p_W_heel};
+  const double x = p <= HeelOffPhase() ? 0.0 : g.toe_x_m;
+  return {X_WF * Vec3(x, 0, g.sole_z_m), plan.X_WF * Vec3(x, 0, g.sole_z_m)};
+}
+
+RobotConfig StraightConfig(double stride_m, double period_s) {
+  RobotConfig c;
+  c.gait.stride_m = stride_m;
+  c.gait.period_s = period_s;
+  return c;
+}
+
+TEST(GaitCurves, PassThroughKeyPointsAndArePeriodicC1) {
+  EXPECT_NEAR(NormativeHipFlexionDeg()(0.50), -10.0, 1e-12);
+  EXPECT_NEAR(NormativeKneeFlexionDeg()(0.70), 62.0, 1e-12);
+  EXPECT_NEAR(NormativeAnkleDorsiflexionDeg()(0.62), -15.0, 1e-12);
+  for (const PeriodicCurve* c : {&NormativeHipFlexionDeg(), &NormativeKneeFlexionDeg(), &NormativeAnkleDorsiflexionDeg()}) {
+    EXPECT_NEAR((*c)(0.0), (*c)(1.0), 1e-12);
+    // C1 across the wrap and across a knot: one-sided slopes agree
+    for (double knot : {0.0, 0.25, 0.85}) {
+      const double h = 1e-6;
+      const double left = ((*c)(knot) - (*c)(knot - h)) / h, right = ((*c)(knot + h) - (*c)(knot)) / h;
+      EXPECT_NEAR(left, right, 1e-2 * std::max(1.0, std::abs(left)));
+    }
+  }
+  // the stance foot is exactly flat between foot-flat and heel-off, heel rocker before, toe rocker after
+  EXPECT_GT(FootFlatPhase(), 0.02);
+  EXPECT_LT(FootFlatPhase(), kDoubleSupportEnd);
+  EXPECT_GT(HeelOffPhase(), 0.3);
+  EXPECT_EQ(CurveLegAngles(0.2, 0.7).pitch, 0.0);
+  EXPECT_GT(CurveLegAngles(0.01, 0.7).pitch, 0.0);
+  EXPECT_LT(CurveLegAngles(0.45, 0.7).pitch, 0.0);
+}
+
+struct WalkFigures {
+  double max_pivot_slip_m = 0, lowest_sole_m = 1e9, max_pelvis_dz_m = 0, max_q_period_diff = 0;
+  std::vector<double> left_strike_x;
+  double distance_per_cycle_m = 0;
+};
+
+WalkFigures WalkStraight(double stride_m, double period_s, int cycles) {
+  GaitWalker walker(RobotModel::Builtin("biped"), StraightConfig(stride_m, period_s));
+  const BipedLegs legs(walker.model());
+  WalkFigures f;
+  const int per_cycle = static_cast<int>(std::lround(period_s * kRate_hz));
+  std::vector<std::vector<double>> q_hist;
+  std::vector<double> dist_hist;
+  double last_z = NAN;
+  Side last_stance = Side::kRight;
+  for (int i = 0; i <= cycles * per_cycle; ++i) {
+    const RobotState s = walker.Advance(i / kRate_hz);
+    const std::vector<Pose> X_WL = walker.model().ForwardKinematics(s.X_WP, s.q);
+    const StepPlan& plan = walker.current_step();
+    const double p = walker.step_phase();
+    const auto [now, latched] = PivotNowAndLatched(legs, plan, p, X_WL);
+    f.max_pivot_slip_m = std::max(f.max_pivot_slip_m, (now - latched).norm());
+    f.lowest_sole_m = std::min({f.lowest_sole_m, LowestSoleZ(legs, Side::kLeft, X_WL), LowestSoleZ(legs, Side::kRight, X_WL)});
+    if (!std::isnan(last_z)) f.max_pelvis_dz_m = std::max(f.max_pelvis_dz_m, std::abs(s.X_WP.translation().z() - last_z));
+    last_z = s.X_WP.translation().z();
+    if (plan.stance == Side::kLeft && last_stance == Side::kRight) f.left_strike_x.push_back(plan.p_W_heel.x());
+    last_stance = plan.stance;
+    q_hist.push_back(s.q);
+    dist_hist.push_back(s.distance_walked_m);
+  }
+  // periodicity over the steady cycles (skip the first two)
+  for (int i = 2 * per_cycle; i + per_cycle < static_cast<int>(q_hist.size()); ++i)
+    for (std::size_t j = 0; j < q_hist[i].size(); ++j)
+      f.max_q_period_diff = std::max(f.max_q_period_diff, std::abs(q_hist[i][j] - q_hist[i + per_cycle][j]));
+  f.distance_per_cycle_m = dist_hist[cycles * per_cycle] - dist_hist[(cycles - 1) * per_cycle];
+  return f;
+}
+
+TEST(GaitWalker, PlantedFootNoPenetrationContinuousPeriodicStride) {
+  for (const auto& [stride, period] : {std::pair{0.6, 1.2}, std::pair{1.0, 1.1}, std::pair{0.4, 1.0}}) {
+    const WalkFigures f = WalkStraight(stride, period, 6);
+    std::printf("[ measured ] stride %.2f m period %.2f s: pivot slip %.3g mm, lowest sole %.3g mm, "
+                "max pelvis dz %.3g mm / 5 ms, q periodicity %.3g rad, stride %.6f m, pelvis per cycle %.6f m\n",
+                stride, period, 1e3 * f.max_pivot_slip_m, 1e3 * f.lowest_sole_m, 1e3 * f.max_pelvis_dz_m,
+                f.max_q_period_diff, f.left_strike_x.back() - f.left_strike_x[f.left_strike_x.size() - 2],
+                f.distance_per_cycle_m);
+    EXPECT_LT(f.max_pivot_slip_m, 1e-3);
+    EXPECT_GT(f.lowest_sole_m, -1e-3);
+    EXPECT_LT(f.max_pelvis_dz_m, 3e-3);
+    EXPECT_LT(f.max_q_period_diff, 1e-9);
+    ASSERT_GE(f.left_strike_x.size(), 4u);
+    // stride: heel strike to heel strike of the left foot, and the pelvis advance per cycle, within 2 mm
+    EXPECT_NEAR(f.left_strike_x.back() - f.left_strike_x[f.left_strike_x.size() - 2], stride, 2e-3);
+    EXPECT_NEAR(f.distance_per_cycle_m, stride, 2e-3);
+  }
+}
+
+TEST(GaitWalker, FollowsWaypointsWithATurnAndStopsAtTheLast) {
+  RobotConfig c = StraightConfig(0.6, 1.2);
+  c.waypoints_m = {Vec2(0, 0), Vec2(3, 0), Vec2(3, 2)};
+  GaitWalker walker(RobotModel::Builtin("biped"), c);
+  const BipedLegs legs(walker.model());
+  RobotState s;
+  double lowest = 1e9;
+  for (int i = 0; i <= 60 * 200; ++i) {
+    s = walker.Advance(i / kRate_hz);
+    const auto X_WL = walker.model().ForwardKinematics(s.X_WP, s.q);
+    lowest = std::min({lowest, LowestSoleZ(legs, Side::kLeft, X_WL), LowestSoleZ(legs, Side::kRight, X_WL)});
+    if (s.stopped) break;
+  }
+  ASSERT_TRUE(s.stopped);
+  EXPECT_TRUE(walker.path_done());
+  const Vec2 end = s.X_WP.translation().head<2>();
+  std::printf("[ measured ] path (0,0)->(3,0)->(3,2): stopped at t=%.2f s at (%.3f, %.3f), yaw %.1f deg, lowest sole %.3g mm\n",
+              s.t_s, end.x(), end.y(), RadToDeg(RpyFromRotation(s.X_WP.linear()).z()), 1e3 * lowest);
+  EXPECT_LT((end - Vec2(3, 2)).norm(), 0.3);  // half a stride
+  EXPECT_GT(RadToDeg(RpyFromRotation(s.X_WP.linear()).z()), 60.0);  // it turned left
+  EXPECT_GT(lowest, -1e-3);
+}
+
+TEST(GaitWalker, RequestStopStandsStillInDoubleSupportThenResumes) {
+  GaitWalker walker(RobotModel::Builtin("biped"), StraightConfig(0.6, 1.2));
+  const BipedLegs legs(walker.model());
+  RobotState s;
+  int i = 0;
+  for (; i <= 2.3 * 200; ++i) s = walker.Advance(i / kRate_hz);
+  walker.RequestStop();
+  const double requested_at = s.t_s;
+  for (; !s.stopped; ++i) s = walker.Advance(i / kRate_hz);
+  // stopped within one step (half a period) of the request
+  EXPECT_LE(s.t_s - requested_at, 0.6 + 1e-9);
+  EXPECT_EQ(s.support, SupportLeg::kDouble);
+  const auto X_WL = walker.model().ForwardKinematics(s.X_WP, s.q);
+  EXPECT_NEAR(LowestSoleZ(legs, Side::kLeft, X_WL), 0.0, 1e-3);   // both feet down
+  EXPECT_NEAR(LowestSoleZ(legs, Side::kRight, X_WL), 0.0, 1e-3);
+  const RobotState frozen = s;
+  for (int j = 0; j < 400; ++j, ++i) s = walker.Advance(i / kRate_hz);
+  EXPECT_TRUE(s.stopped);
+  EXPECT_TRUE(s.X_WP.isApprox(frozen.X_WP, 1e-12));
+  EXPECT_EQ(s.q, frozen.q);
+  EXPECT_DOUBLE_EQ(s.distance_walked_m, frozen.distance_walked_m);
+  walker.Resume();
+  for (int j = 0; j < 400; ++j, ++i) s = walker.Advance(i / kRate_hz);
+  EXPECT_FALSE(s.stopped);
+  EXPECT_GT(s.distance_walked_m, frozen.distance_walked_m + 0.5);
+}
+
+TEST(GaitWalker, SetStrideChangesTheStrideWithoutPenetration) {
+  GaitWalker walker(RobotModel::Builtin("biped"), StraightConfig(0.6, 1.2));
+  const BipedLegs legs(walker.model());
+  std::vector<double> left_x;
+  Side last = Side::kRight;
+  double lowest = 1e9, max_dz = 0, last_z = NAN;
+  for (int i = 0; i <= 12 * 240; ++i) {
+    if (i == 3 * 240) walker.SetStride(0.9);
+    const RobotState s = walker.Advance(i / kRate_hz);
+    const auto X_WL = walker.model().ForwardKinematics(s.X_WP, s.q);
+    lowest = std::min({lowest, LowestSoleZ(legs, Side::kLeft, X_WL), LowestSoleZ(legs, Side::kRight, X_WL)});
+    if (!std::isnan(last_z)) max_dz = std::max(max_dz, std::abs(s.X_WP.translation().z() - last_z));
+    last_z = s.X_WP.translation().z();
+    if (walker.current_step().stance == Side::kLeft && last == Side::kRight) left_x.push_back(walker.current_step().p_W_heel.x());
+    last = walker.current_step().stance;
+  }
+  EXPECT_NEAR(walker.achieved_stride_m(), 0.9, 1e-4);
+  EXPECT_NEAR(left_x.back() - left_x[left_x.size() - 2], 0.9, 2e-3);
+  EXPECT_GT(lowest, -1e-3);
+  EXPECT_LT(max_dz, 3e-3);
+}
+
+}  // namespace
+}  // namespace proxsim
