@@ -1,6 +1,7 @@
 # Writes a C++ source that holds each file of FILES as a string, looked up by
 # its path relative to the source tree (see src/core/embedded_files.h).
 set(body "#include \"core/embedded_files.h\"\n\nnamespace proxsim {\n\nconst std::map<std::string, std::string_view>& EmbeddedFiles() {\n  static const std::map<std::string, std::string_view> files = {\n")
+string(REPLACE "," ";" FILES "${FILES}")
 foreach(file IN LISTS FILES)
   file(READ ${ROOT}/${file} content)
   # A raw string literal keeps the file verbatim; the delimiter cannot occur in YAML or URDF.
