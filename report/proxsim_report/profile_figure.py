@@ -34,7 +34,7 @@ def draw_profile(ax, run, path, has_robot, sensor, compact=False):
     s_lo = (s_all.min() if len(s_all) else 0.0) - 0.3
     s_hi = (s_all.max() if len(s_all) else 1.0) + 0.3
     if len(s_org):
-        s_hi = max(s_hi, s_org.max() + sensor.d_max_m)
+        s_hi = max(s_hi, s_org.max() + sensor.d_max_m + 0.15)
     s = np.linspace(s_lo, s_hi, 900)
 
     # the true cross-section, grey
@@ -57,6 +57,8 @@ def draw_profile(ax, run, path, has_robot, sensor, compact=False):
     # the sensor's own track, faint, and its detections by object
     if len(origins):
         ax.plot(s_org, origins[:, 2], color="#777777", lw=0.5, alpha=0.5, zorder=1)
+        if np.ptp(s_org) < 0.01 and np.ptp(origins[:, 2]) < 0.01:   # a fixed sensor: mark where it is
+            ax.plot(s_org[:1], origins[:1, 2], marker=">", ms=6, color="#555555", zorder=2)
     for oid in np.unique(obj_ids):
         sel = obj_ids == oid
         ax.plot(s_pts[sel], pts[sel, 2], ls="none", marker="o", ms=1.8 if compact else 2.6,

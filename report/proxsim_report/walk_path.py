@@ -55,17 +55,41 @@ def _root_link(run):
     return next((l for l in links if l in run.poses), next(iter(run.poses), None))
 
 
-def path_of_run(run, min_step_m=0.02):
+def simplify(xy, tolerance_m):
+    """Ramer–Douglas–Peucker: the fewest vertices of the polyline xy that stay
+    within tolerance_m of it (a straight walk with its sway becomes one segment)."""
+    keep = np.zeros(len(xy), dtype=bool)
+    keep[[0, -1]] = True
+    stack = [(0, len(xy) - 1)]
+    while stack:
+        a, b = stack.pop()
+        if b <= a + 1:
+            continue
+        d = xy[b] - xy[a]
+        rel = xy[a + 1:b] - xy[a]
+        length = np.hypot(*d)
+        dist = (np.abs(d[0] * rel[:, 1] - d[1] * rel[:, 0]) / length if length > 1e-12
+                else np.hypot(rel[:, 0], rel[:, 1]))
+        k = int(np.argmax(dist))
+        if dist[k] > tolerance_m:
+            keep[a + 1 + k] = True
+            stack += [(a, a + 1 + k), (a + 1 + k, b)]
+    return xy[keep]
+
+
+def path_of_run(run, tolerance_m=0.03):
     """The run's walking path: the root link's floor track, or the x axis."""
     root = _root_link(run)
     if root is not None:
         xy = run.poses[root][1][:, :2]
-        keep = [xy[0]]
-        for p in xy[1:]:
-            if np.linalg.norm(p - keep[-1]) >= min_step_m:
-                keep.append(p)
+        xy = xy[np.all(np.isfinite(xy), axis=1)]
+        # drop standing still (repeated points), then straighten the sway
+        moved = np.concatenate([[True], np.hypot(*np.diff(xy, axis=0).T) > 1e-6]) if len(xy) else []
+        xy = xy[moved]
+        keep = simplify(xy, tolerance_m) if len(xy) >= 2 else xy
         if len(keep) >= 2:
-            return WalkPath(np.array(keep)), True
+            return WalkPath(keep), True
         # a robot that stands still: the x axis through where it stands
-        return WalkPath(np.array([xy[0], xy[0] + [1.0, 0.0]])), True
+        start = xy[0] if len(xy) else np.zeros(2)
+        return WalkPath(np.array([start, start + [1.0, 0.0]])), True
     return WalkPath(np.array([[0.0, 0.0], [1.0, 0.0]])), False

@@ -39,6 +39,15 @@ class WalkPathTest(unittest.TestCase):
         np.testing.assert_allclose(path.point_at(np.array([3.0, 1.0]), 0.5), [[1.5, 1.0], [1.0, 0.5]])
 
 
+    def test_simplify_keeps_corners_and_drops_sway(self):
+        from proxsim_report.walk_path import simplify
+        x = np.linspace(0, 4, 401)
+        sway = np.column_stack([x, 0.01 * np.sin(8 * x)])             # 1 cm sway on a straight walk
+        np.testing.assert_allclose(simplify(sway, 0.03), sway[[0, -1]])
+        corner = np.array([[0, 0], [1, 0], [2, 0], [2, 1], [2, 2.0]])
+        np.testing.assert_allclose(simplify(corner, 0.03), [[0, 0], [2, 0], [2, 2]])
+
+
 class CrossSectionTest(unittest.TestCase):
     s = np.linspace(0.0, 4.0, 4001)   # 1 mm steps
 
