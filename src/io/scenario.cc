@@ -78,7 +78,7 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
 
   // proxsim: the schema version, required
   const Field version = (*top)["proxsim"];
-  if (reader.Require(version, "proxsim: 1, the schema version, as the first key")) {
+  if (reader.Require(version, "proxsim: 1 (the schema version)")) {
     const auto number = reader.Count(version);
     if (number && *number != kSchemaVersion) {
       reader.Fail(version, "expected schema version 1, got " + std::to_string(*number) +
