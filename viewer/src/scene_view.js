@@ -62,7 +62,7 @@ export class SceneView {
       this.scene.add(mesh);
       if (object.shape === 'plane') {
         // a metre grid on the floor, slightly above it, for depth
-        const grid = new THREE.GridHelper(40, 40, 0xb5b0a5, 0xc9c5bc);
+        const grid = new THREE.GridHelper(40, 40, 0x8f8a80, 0xa9a499);
         grid.rotateX(Math.PI / 2);
         grid.position.z = 0.002;
         mesh.add(grid);
