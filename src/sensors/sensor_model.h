@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/geometry.h"
 #include "sensors/sensor_spec.h"
 
 namespace proxsim {

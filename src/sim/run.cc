@@ -1,6 +1,8 @@
 #include "sim/run.h"
 
 #include <chrono>
+#include <cmath>
+#include <memory>
 #include <cstdio>
 #include <filesystem>
 
@@ -8,6 +10,7 @@
 #include <embree3/rtcore_config.h>
 
 #include "io/atomic_file.h"
+#include "io/poses_csv.h"
 #include "io/profile_ply.h"
 #include "io/readings_csv.h"
 #include "io/scene_json.h"
@@ -58,6 +61,25 @@ nlohmann::json EchoInputs(const Scenario& scenario) {
           {"sensors", sensors}};
 }
 
+nlohmann::json RobotSummary(const Simulation& sim) {
+  const Simulation::RobotOutcome& outcome = sim.robot_outcome();
+  const RobotState& state = sim.robot()->state();
+  nlohmann::json robot = {{"model", sim.robot()->model().source()},
+                          {"stopped", outcome.stopped},
+                          {"stop_t_s", outcome.stopped ? nlohmann::json(outcome.stop_t_s) : nlohmann::json(nullptr)},
+                          {"stop_requested_t_s", outcome.stop_requested ? nlohmann::json(outcome.stop_request_t_s)
+                                                                        : nlohmann::json(nullptr)},
+                          {"stop_trigger_sensor", outcome.stop_trigger_sensor >= 0
+                                                      ? nlohmann::json(sim.scenario().sensors[outcome.stop_trigger_sensor].name)
+                                                      : nlohmann::json(nullptr)},
+                          {"min_clearance_m", std::isfinite(outcome.min_clearance_m) ? nlohmann::json(outcome.min_clearance_m)
+                                                                                    : nlohmann::json(nullptr)},
+                          {"min_clearance_t_s", outcome.min_clearance_t_s},
+                          {"distance_walked_m", state.distance_walked_m},
+                          {"standing_at_end", state.stopped}};
+  return robot;
+}
+
 class ProgressLine {
  public:
   explicit ProgressLine(bool enabled) : enabled_(enabled) {}
@@ -80,16 +102,19 @@ class ProgressLine {
 
 RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   const auto start = Clock::now();
+  // everything that can fail on bad input happens before the folder is made
+  Simulation sim(scenario, options.threads);
   std::filesystem::create_directories(options.out_dir);
   const std::filesystem::path out(options.out_dir);
 
-  Simulation sim(scenario, options.threads);
   std::vector<std::string> object_names, sensor_names;
   for (std::size_t id = 0; id < sim.object_count(); ++id) object_names.push_back(sim.object_name(id));
   for (const SensorConfig& sensor : scenario.sensors) sensor_names.push_back(sensor.name);
 
   ReadingsCsvWriter readings((out / "readings.csv").string(), scenario, object_names);
   ProfilePlyWriter profile((out / "profile.ply").string());
+  std::unique_ptr<PosesCsvWriter> poses;
+  if (sim.robot()) poses = std::make_unique<PosesCsvWriter>((out / "poses.csv").string(), sim.robot()->model());
   RunStatistics statistics(scenario.sensors.size());
   ProgressLine progress(options.progress);
 
@@ -100,12 +125,14 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
     readings.Append(frame);
     profile.Append(frame);
     statistics.Add(frame);
+    if (poses) poses->Append(frame.t_s, sim.robot()->X_WL());
     progress.Update(frame.sample + 1, sim.sample_count(), frame.t_s);
   }
   const double loop_wall_s = SecondsSince(loop_start);
 
   readings.Commit();
   profile.Commit();
+  if (poses) poses->Commit();
 
   RunResult result;
   result.summary = {{"proxsim", 1},
@@ -115,7 +142,12 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
                     {"profile_points", profile.point_count()},
                     {"sensors", statistics.ToJson(sensor_names, object_names)},
                     {"outputs", {"readings.csv", "profile.ply", "scene.json", "summary.json", "timings.json"}}};
-  WriteFileAtomically((out / "scene.json").string(), SceneToJson(scenario, {}).dump(1) + "\n");
+  if (sim.robot()) {
+    result.summary["robot"] = RobotSummary(sim);
+    result.summary["outputs"].push_back("poses.csv");
+  }
+  const auto links = sim.robot() ? sim.robot()->LinkGeometry() : std::vector<LinkGeometryJson>{};
+  WriteFileAtomically((out / "scene.json").string(), SceneToJson(scenario, links).dump(1) + "\n");
   WriteFileAtomically((out / "summary.json").string(), result.summary.dump(2) + "\n");
 
   // timings live apart from the summary so that reruns give byte-identical summaries

@@ -1,0 +1,134 @@
+#include "sim/robot_in_scene.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/input_error.h"
+#include "gait/gait_walker.h"
+#include "gait/trajectory_player.h"
+#include "sim/surface_samples.h"
+
+namespace proxsim {
+
+namespace {
+
+constexpr const char* kBuiltinPrefix = "builtin:";
+constexpr double kClearanceSpacing_m = 0.01;
+
+RobotModel LoadModel(const std::string& model) {
+  if (model.starts_with(kBuiltinPrefix)) {
+    const std::string name = model.substr(std::string(kBuiltinPrefix).size());
+    return RobotModel::Builtin(name);
+  }
+  return RobotModel::FromUrdfFile(model);
+}
+
+std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config) {
+  RobotModel model = LoadModel(config.model);
+  if (!config.trajectory_file.empty()) {
+    return std::make_unique<TrajectoryPlayer>(std::move(model), config.trajectory_file);
+  }
+  return std::make_unique<GaitWalker>(std::move(model), config);
+}
+
+}  // namespace
+
+RobotInScene::RobotInScene(const RobotConfig& config, RayCaster& caster, std::int32_t first_object_id)
+    : locomotion_(MakeLocomotion(config)), caster_(caster) {
+  const RobotModel& robot = model();
+  link_body_.assign(robot.link_count(), -1);
+  link_samples_.resize(robot.link_count());
+  X_WL_.assign(robot.link_count(), Pose::Identity());
+  for (int link = 0; link < robot.link_count(); ++link) {
+    const auto& shapes = robot.link(link).shapes;
+    if (shapes.empty()) continue;
+    // one body per link, every shape reporting the link as the hit object
+    std::vector<BodyShape> body;
+    LinkSamples& samples = link_samples_[link];
+    for (const LinkShape& shape : shapes) {
+      body.push_back({shape.shape, shape.X_LO, first_object_id + link});
+      for (const Vec3& p_O : SurfaceSamples_O(shape.shape, kClearanceSpacing_m)) {
+        samples.points_L.push_back(shape.X_LO * p_O);
+      }
+    }
+    link_body_[link] = caster.AddBody(std::move(body), BodyKind::kRobot);
+    // a bounding sphere, to skip links that are far from everything
+    if (!samples.points_L.empty()) {
+      Vec3 lo = samples.points_L[0], hi = lo;
+      for (const Vec3& p : samples.points_L) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+      samples.center_L = (lo + hi) / 2;
+      for (const Vec3& p : samples.points_L) samples.radius_m = std::max(samples.radius_m, (p - samples.center_L).norm());
+    }
+    if (robot.link_name(link).find("foot") != std::string::npos) foot_links_.push_back(link);
+  }
+}
+
+RobotInScene::~RobotInScene() = default;
+
+void RobotInScene::MoveTo(double t_s) {
+  state_ = locomotion_->Advance(t_s);
+  model().ForwardKinematics(state_.X_WP, state_.q, X_WL_);
+  for (int link = 0; link < static_cast<int>(link_body_.size()); ++link) {
+    if (link_body_[link] >= 0) caster_.SetBodyPose(link_body_[link], X_WL_[link]);
+  }
+}
+
+RobotSelfKnowledge RobotInScene::SelfKnowledge() const {
+  RobotSelfKnowledge self;
+  // heading: the pelvis's +x, made horizontal
+  Vec3 heading = state_.X_WP.linear().col(0);
+  heading.z() = 0;
+  self.heading_W = heading.norm() > 1e-9 ? heading.normalized() : Vec3::UnitX();
+  // the feet (or the whole robot, for a model without feet): leading point and lowest point
+  const std::vector<int>* links = &foot_links_;
+  std::vector<int> all;
+  if (foot_links_.empty()) {
+    for (int link = 0; link < static_cast<int>(link_samples_.size()); ++link) all.push_back(link);
+    links = &all;
+  }
+  double front = -std::numeric_limits<double>::infinity();
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int link : *links) {
+    for (const Vec3& p_L : link_samples_[link].points_L) {
+      const Vec3 p_W = X_WL_[link] * p_L;
+      if (p_W.dot(self.heading_W) > front) {
+        front = p_W.dot(self.heading_W);
+        self.p_W_front = p_W;
+      }
+      lowest = std::min(lowest, p_W.z());
+    }
+  }
+  self.ground_z_m = std::isfinite(lowest) ? lowest : 0.0;
+  return self;
+}
+
+double RobotInScene::ClearanceTo(const RayCaster& caster, std::span<const std::int32_t> exclude_object_ids,
+                                 double below_m) const {
+  double best_m = below_m;
+  for (int link = 0; link < static_cast<int>(link_samples_.size()); ++link) {
+    const LinkSamples& samples = link_samples_[link];
+    if (samples.points_L.empty()) continue;
+    // the bounding sphere's distance is a lower bound for the link: skip it when it cannot win
+    const Vec3 c_W = X_WL_[link] * samples.center_L;
+    if (caster.DistanceToWorld(c_W, exclude_object_ids) - samples.radius_m >= best_m) continue;
+    for (const Vec3& p_L : samples.points_L) {
+      best_m = std::min(best_m, caster.DistanceToWorld(X_WL_[link] * p_L, exclude_object_ids));
+    }
+  }
+  return best_m;
+}
+
+std::vector<LinkGeometryJson> RobotInScene::LinkGeometry() const {
+  std::vector<LinkGeometryJson> links;
+  for (int link = 0; link < model().link_count(); ++link) {
+    LinkGeometryJson json{model().link_name(link), {}};
+    for (const LinkShape& shape : model().link(link).shapes) json.shapes.push_back({shape.shape, shape.X_LO, link});
+    links.push_back(std::move(json));
+  }
+  return links;
+}
+
+}  // namespace proxsim
