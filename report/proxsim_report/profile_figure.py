@@ -38,7 +38,6 @@ def draw_profile(ax, run, path, has_robot, sensor, compact=False):
     s = np.linspace(s_lo, s_hi, 900)
 
     # the true cross-section, grey
-    z_tops = [0.0]
     floor_z = -0.05
     for cut in cut_scene(run.scene, path, s, lateral):
         if cut.wall_s is not None:
@@ -52,7 +51,6 @@ def draw_profile(ax, run, path, has_robot, sensor, compact=False):
         else:
             ax.fill_between(s, cut.bottom, top, where=np.isfinite(top), color=SECTION_FILL,
                             ec=SECTION_EDGE, lw=0.8, zorder=0, interpolate=False)
-        z_tops.append(np.nanmax(top))
 
     # the sensor's own track, faint, and its detections by object
     if len(origins):
@@ -64,8 +62,9 @@ def draw_profile(ax, run, path, has_robot, sensor, compact=False):
         ax.plot(s_pts[sel], pts[sel, 2], ls="none", marker="o", ms=1.8 if compact else 2.6,
                 mew=0, color=object_color(oid), zorder=3)
 
-    z_hi = max([0.3] + [z for z in z_tops if z < 3.0] +
-               ([pts[:, 2].max()] if len(pts) else []) + ([origins[:, 2].max()] if len(origins) else []))
+    # the height shown: what the sensor saw and where it went (walls run off the top)
+    z_hi = max([0.3] + ([pts[:, 2].max()] if len(pts) else []) +
+               ([origins[:, 2].max() + 0.1] if len(origins) else []))
     z_lo = min([floor_z] + ([pts[:, 2].min() - 0.05] if len(pts) else []))
     ax.set_xlim(s_lo, s_hi)
     ax.set_ylim(z_lo, z_hi + 0.08)
