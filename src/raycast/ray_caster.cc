@@ -1,0 +1,596 @@
+// The Embree 3 adapter: the only file of proxsim that includes Embree.
+//
+// Layout of the acceleration structures:
+//   - every body B is a child RTCScene holding its shapes in the body frame:
+//     boxes as 12 triangles, meshes as their triangles (both moved by X_BO),
+//     spheres, cylinders and planes as user geometry intersected exactly
+//     (analytic_shapes.h), never tessellated;
+//   - two top-level scenes instance the bodies (one level of instancing):
+//     `all` holds every body (rays with see_robot = true) and `world` only the
+//     kWorld bodies (see_robot = false). The instance ID of a body is its index
+//     in both, so a hit maps straight back to (body, geometry) → object_id.
+// Moving a body only rewrites its instance transforms; Commit() then rebuilds
+// the two top-level scenes, whose only primitives are the instances. The
+// child scenes, and so the static world's BVH, are built once in AddBody.
+//
+// Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
+// triangle test, so a ray through a shared edge or vertex cannot slip between
+// triangles. Child scenes are built once with high (world) or medium (robot)
+// quality; the small top-level scenes are dynamic, low quality.
+//
+// Normals: Embree reports Ng in the instanced body's frame B and unnormalised;
+// we normalise it and rotate it by R_WB. Triangle normals follow the right-hand
+// rule of the vertex order (counter-clockwise seen from the front), which for
+// boxes is outward.
+//
+// Errors: the device error callback records Embree's message; the public
+// calls check it and throw std::runtime_error, so no error passes silently
+// (and no exception is thrown through Embree's C frames).
+#include "raycast/ray_caster.h"
+
+#include <embree3/rtcore.h>
+#include <omp.h>
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cassert>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "raycast/analytic_shapes.h"
+
+namespace proxsim {
+
+namespace {
+
+/// Batches at least this large are spread over the threads.
+constexpr std::size_t kParallelBatchRays = 512;
+
+enum class GeomKind { kBox, kMesh, kSphere, kCylinder, kPlane };
+
+/// One Embree geometry of a body: what the callbacks and hit mapping need.
+struct GeomRecord {
+  GeomKind kind = GeomKind::kBox;
+  std::int32_t object_id = 0;
+  Shape shape;  ///< boxes and analytic shapes only (a mesh's triangles live in Embree)
+  Pose X_BO = Pose::Identity();
+  Pose X_OB = Pose::Identity();
+  RTCBounds bounds_B{};  ///< user geometry only: conservative box in B
+  // triangle geometry only: Embree's own buffers, in B (read by point queries)
+  const float* vertices_B = nullptr;
+  const std::uint32_t* indices = nullptr;
+  std::size_t triangle_count = 0;
+};
+
+struct Body {
+  BodyKind kind = BodyKind::kWorld;
+  RTCScene scene = nullptr;
+  std::vector<std::unique_ptr<GeomRecord>> geoms;  ///< index = geomID in `scene`; stable addresses
+  Pose X_WB = Pose::Identity();
+  Eigen::Matrix3f R_WB = Eigen::Matrix3f::Identity();
+  RTCGeometry instance_all = nullptr;
+  RTCGeometry instance_world = nullptr;  ///< null for robot bodies
+  bool has_mesh = false;
+};
+
+/// Sets flush-to-zero and denormals-are-zero (Embree's recommendation) for
+/// the life of the guard, then puts the thread's MXCSR back as it was.
+class DenormalModeGuard {
+ public:
+  DenormalModeGuard() : saved_csr_(_mm_getcsr()) {
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+  }
+  ~DenormalModeGuard() { _mm_setcsr(saved_csr_); }
+  DenormalModeGuard(const DenormalModeGuard&) = delete;
+  DenormalModeGuard& operator=(const DenormalModeGuard&) = delete;
+
+ private:
+  unsigned int saved_csr_;
+};
+
+const char* ErrorCodeName(RTCError code) {
+  switch (code) {
+    case RTC_ERROR_NONE: return "none";
+    case RTC_ERROR_UNKNOWN: return "unknown";
+    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+    case RTC_ERROR_CANCELLED: return "cancelled";
+  }
+  return "unrecognised";
+}
+
+/// Embree's 3×4 column-major matrix of a pose (rotation columns, then translation).
+void ToColumnMajor3x4(const Pose& X, float out[12]) {
+  for (int col = 0; col < 4; ++col) {
+    for (int row = 0; row < 3; ++row) out[3 * col + row] = static_cast<float>(X.matrix()(row, col));
+  }
+}
+
+/// Grows a box by a hair so that float rounding of its corners never culls a
+/// hit on the surface it bounds.
+RTCBounds PaddedBounds(const Vec3& lower, const Vec3& upper) {
+  const double pad = 1e-4 + 1e-6 * std::max(lower.cwiseAbs().maxCoeff(), upper.cwiseAbs().maxCoeff());
+  return RTCBounds{static_cast<float>(lower.x() - pad), static_cast<float>(lower.y() - pad),
+                   static_cast<float>(lower.z() - pad), 0.0f,
+                   static_cast<float>(upper.x() + pad), static_cast<float>(upper.y() + pad),
+                   static_cast<float>(upper.z() + pad), 0.0f};
+}
+
+/// Axis-aligned bounds in B of a sphere, cylinder or (bounded) plane posed at X_BO.
+RTCBounds UserShapeBounds(const Shape& shape, const Pose& X_BO) {
+  const Vec3& p_BO = X_BO.translation();
+  const Rotation R_BO = X_BO.linear();
+  Vec3 half_extent = Vec3::Zero();
+  if (const auto* sphere = std::get_if<Sphere>(&shape)) {
+    half_extent.setConstant(sphere->radius_m);
+  } else if (const auto* cylinder = std::get_if<Cylinder>(&shape)) {
+    // per axis of B: the axis' projection of the half length plus the disc's reach
+    const Vec3 axis_B = R_BO.col(2);
+    for (int i = 0; i < 3; ++i) {
+      const double a = std::abs(axis_B[i]);
+      half_extent[i] = a * 0.5 * cylinder->length_m +
+                       cylinder->radius_m * std::sqrt(std::max(0.0, 1.0 - a * a));
+    }
+  } else {
+    // plane: the square of half side kPlaneHalfExtent_m in its z = 0
+    half_extent = kPlaneHalfExtent_m * (R_BO.col(0).cwiseAbs() + R_BO.col(1).cwiseAbs());
+  }
+  return PaddedBounds(p_BO - half_extent, p_BO + half_extent);
+}
+
+// ---- user geometry callbacks (spheres, cylinders, planes) ----
+
+void UserShapeBoundsCallback(const RTCBoundsFunctionArguments* args) {
+  *args->bounds_o = static_cast<const GeomRecord*>(args->geometryUserPtr)->bounds_B;
+}
+
+/// The analytic first hit of a ray given in B, as (t, normal in B).
+std::optional<ShapeHit> IntersectUserShape(const GeomRecord& geom, const Vec3& origin_B,
+                                           const Vec3& direction_B, double t_min, double t_max) {
+  const Vec3 origin_O = geom.X_OB * origin_B;
+  const Vec3 direction_O = geom.X_OB.linear() * direction_B;
+  std::optional<ShapeHit> hit;
+  switch (geom.kind) {
+    case GeomKind::kSphere:
+      hit = IntersectSphere(std::get<Sphere>(geom.shape), origin_O, direction_O, t_min, t_max);
+      break;
+    case GeomKind::kCylinder:
+      hit = IntersectCylinder(std::get<Cylinder>(geom.shape), origin_O, direction_O, t_min, t_max);
+      break;
+    case GeomKind::kPlane:
+      hit = IntersectPlane(origin_O, direction_O, t_min, t_max);
+      break;
+    default:
+      assert(false && "triangle geometry has no user callback");
+  }
+  if (hit) hit->normal_O = geom.X_BO.linear() * hit->normal_O;  // now in B
+  return hit;
+}
+
+void UserShapeIntersectCallback(const RTCIntersectFunctionNArguments* args) {
+  const auto& geom = *static_cast<const GeomRecord*>(args->geometryUserPtr);
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+  for (unsigned int i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const unsigned int N = args->N;
+
+    // the ray arrives in the body frame B (Embree applied the instance transform)
+    const Vec3 origin_B(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i));
+    const Vec3 direction_B(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i));
+    const auto hit = IntersectUserShape(geom, origin_B, direction_B, RTCRayN_tnear(rays, N, i),
+                                        RTCRayN_tfar(rays, N, i));
+    if (!hit) continue;
+
+    // record it: tfar shrinks to the hit, so later candidates must be nearer
+    RTCRayN_tfar(rays, N, i) = static_cast<float>(hit->t);
+    RTCHitN_Ng_x(hits, N, i) = static_cast<float>(hit->normal_O.x());
+    RTCHitN_Ng_y(hits, N, i) = static_cast<float>(hit->normal_O.y());
+    RTCHitN_Ng_z(hits, N, i) = static_cast<float>(hit->normal_O.z());
+    RTCHitN_u(hits, N, i) = 0.0f;
+    RTCHitN_v(hits, N, i) = 0.0f;
+    RTCHitN_primID(hits, N, i) = args->primID;
+    RTCHitN_geomID(hits, N, i) = args->geomID;
+    RTCHitN_instID(hits, N, i, 0) = args->context->instID[0];
+  }
+}
+
+void UserShapeOccludedCallback(const RTCOccludedFunctionNArguments* args) {
+  const auto& geom = *static_cast<const GeomRecord*>(args->geometryUserPtr);
+  for (unsigned int i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const unsigned int N = args->N;
+    RTCRayN* rays = args->ray;
+    const Vec3 origin_B(RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i));
+    const Vec3 direction_B(RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i));
+    // Embree's convention for "occluded": tfar = −inf
+    if (IntersectUserShape(geom, origin_B, direction_B, RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i))) {
+      RTCRayN_tfar(rays, N, i) = -std::numeric_limits<float>::infinity();
+    }
+  }
+}
+
+// ---- point query (distance to meshes) ----
+
+/// What the point-query callback reads and improves.
+struct PointQueryState {
+  const Body* body = nullptr;
+  std::span<const std::int32_t> exclude_object_ids;
+  Vec3 p_B = Vec3::Zero();
+  double best_distance_m = std::numeric_limits<double>::infinity();
+};
+
+bool IsExcluded(std::int32_t object_id, std::span<const std::int32_t> exclude_object_ids) {
+  return std::find(exclude_object_ids.begin(), exclude_object_ids.end(), object_id) !=
+         exclude_object_ids.end();
+}
+
+/// Called by rtcPointQuery for each primitive near the query point; measures
+/// mesh triangles (boxes and analytic shapes are measured exactly elsewhere).
+bool MeshPointQueryCallback(RTCPointQueryFunctionArguments* args) {
+  auto& state = *static_cast<PointQueryState*>(args->userPtr);
+  if (args->geomID >= state.body->geoms.size()) return false;
+  const GeomRecord& geom = *state.body->geoms[args->geomID];
+  if (geom.kind != GeomKind::kMesh || IsExcluded(geom.object_id, state.exclude_object_ids)) return false;
+
+  // the triangle's corners from Embree's own vertex buffer, in B
+  const std::uint32_t* tri = geom.indices + 3 * args->primID;
+  auto corner = [&](int k) {
+    const float* v = geom.vertices_B + 3 * tri[k];
+    return Vec3(v[0], v[1], v[2]);
+  };
+  const double distance_m = DistanceToTriangle(state.p_B, corner(0), corner(1), corner(2));
+  if (distance_m >= state.best_distance_m) return false;
+
+  // shrink the search sphere (a hair above, so float rounding prunes nothing closer)
+  state.best_distance_m = distance_m;
+  args->query->radius = static_cast<float>(distance_m * (1 + 1e-6) + 1e-6);
+  return true;
+}
+
+}  // namespace
+
+struct RayCaster::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene_all = nullptr;
+  RTCScene scene_world = nullptr;
+  std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in both top-level scenes
+  std::size_t triangle_count = 0;
+  int threads = 1;
+  bool committed = true;
+
+  // first error reported by Embree since the last check
+  std::mutex error_mutex;
+  std::string error_message;
+  std::atomic<bool> has_error{false};
+
+  static void OnDeviceError(void* user_ptr, RTCError code, const char* message) {
+    auto& impl = *static_cast<Impl*>(user_ptr);
+    std::lock_guard<std::mutex> lock(impl.error_mutex);
+    if (impl.error_message.empty()) {
+      impl.error_message = std::string("Embree error (") + ErrorCodeName(code) + "): " +
+                           (message ? message : "(no message)");
+    }
+    impl.has_error.store(true);
+  }
+
+  /// Throws std::runtime_error if Embree reported an error since the last check.
+  void ThrowIfDeviceError(const char* during) {
+    if (!has_error.load()) return;
+    std::string message;
+    {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      message = std::move(error_message);
+      error_message.clear();
+      has_error.store(false);
+    }
+    throw std::runtime_error(std::string("RayCaster::") + during + ": " + message);
+  }
+
+  RTCScene NewScene(RTCBuildQuality quality, bool dynamic) {
+    RTCScene scene = rtcNewScene(device);
+    rtcSetSceneFlags(scene, dynamic ? RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST
+                                    : RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene, quality);
+    return scene;
+  }
+
+  void AttachTriangles(Body& body, std::unique_ptr<GeomRecord> record, const std::vector<Vec3>& vertices_B,
+                       const std::vector<std::array<std::uint32_t, 3>>& triangles);
+  void AttachUserShape(Body& body, std::unique_ptr<GeomRecord> record);
+  RTCGeometry NewInstance(RTCScene top, const Body& body, unsigned int inst_id);
+};
+
+void RayCaster::Impl::AttachTriangles(Body& body, std::unique_ptr<GeomRecord> record,
+                                      const std::vector<Vec3>& vertices_B,
+                                      const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices_B.size()));
+  auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), triangles.size()));
+  ThrowIfDeviceError("AddBody");
+  for (std::size_t i = 0; i < vertices_B.size(); ++i) {
+    for (int k = 0; k < 3; ++k) vertices[3 * i + k] = static_cast<float>(vertices_B[i][k]);
+  }
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      assert(triangles[i][k] < vertices_B.size() && "mesh index out of range");
+      indices[3 * i + k] = triangles[i][k];
+    }
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(body.scene, geometry, static_cast<unsigned int>(body.geoms.size()));
+  rtcReleaseGeometry(geometry);  // the scene keeps it, and so its buffers, alive
+
+  record->vertices_B = vertices;
+  record->indices = indices;
+  record->triangle_count = triangles.size();
+  triangle_count += triangles.size();
+  body.geoms.push_back(std::move(record));
+}
+
+void RayCaster::Impl::AttachUserShape(Body& body, std::unique_ptr<GeomRecord> record) {
+  record->bounds_B = UserShapeBounds(record->shape, record->X_BO);
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geometry, 1);
+  rtcSetGeometryUserData(geometry, record.get());
+  rtcSetGeometryBoundsFunction(geometry, &UserShapeBoundsCallback, nullptr);
+  rtcSetGeometryIntersectFunction(geometry, &UserShapeIntersectCallback);
+  rtcSetGeometryOccludedFunction(geometry, &UserShapeOccludedCallback);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(body.scene, geometry, static_cast<unsigned int>(body.geoms.size()));
+  rtcReleaseGeometry(geometry);
+  body.geoms.push_back(std::move(record));
+}
+
+RTCGeometry RayCaster::Impl::NewInstance(RTCScene top, const Body& body, unsigned int inst_id) {
+  RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(instance, body.scene);
+  rtcSetGeometryTimeStepCount(instance, 1);
+  float xfm[12];
+  ToColumnMajor3x4(body.X_WB, xfm);
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+  rtcCommitGeometry(instance);
+  rtcAttachGeometryByID(top, instance, inst_id);
+  return instance;  // we keep our reference, for SetBodyPose
+}
+
+RayCaster::RayCaster() : impl_(std::make_unique<Impl>()) {
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device) {
+    throw std::runtime_error(std::string("RayCaster: cannot create the Embree device: ") +
+                             ErrorCodeName(rtcGetDeviceError(nullptr)));
+  }
+  rtcSetDeviceErrorFunction(impl_->device, &Impl::OnDeviceError, impl_.get());
+  impl_->scene_all = impl_->NewScene(RTC_BUILD_QUALITY_LOW, /*dynamic=*/true);
+  impl_->scene_world = impl_->NewScene(RTC_BUILD_QUALITY_LOW, /*dynamic=*/true);
+  impl_->threads = std::max(1, omp_get_max_threads());
+  Commit();  // an empty caster answers every ray with a miss
+}
+
+RayCaster::~RayCaster() {
+  for (auto& body : impl_->bodies) {
+    if (body->instance_all) rtcReleaseGeometry(body->instance_all);
+    if (body->instance_world) rtcReleaseGeometry(body->instance_world);
+    rtcReleaseScene(body->scene);
+  }
+  rtcReleaseScene(impl_->scene_all);
+  rtcReleaseScene(impl_->scene_world);
+  rtcReleaseDevice(impl_->device);
+}
+
+int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose& X_WB) {
+  Impl& impl = *impl_;
+  const int body_index = static_cast<int>(impl.bodies.size());
+  Body& body = *impl.bodies.emplace_back(std::make_unique<Body>());
+  body.kind = kind;
+  body.X_WB = X_WB;
+  body.R_WB = X_WB.linear().cast<float>();
+  body.scene = impl.NewScene(kind == BodyKind::kWorld ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM,
+                             /*dynamic=*/false);
+
+  for (BodyShape& body_shape : shapes) {
+    assert(body_shape.object_id >= 0 && "object ids must be >= 0");
+    auto record = std::make_unique<GeomRecord>();
+    record->object_id = body_shape.object_id;
+    record->X_BO = body_shape.X_BO;
+    record->X_OB = body_shape.X_BO.inverse();
+
+    if (const auto* box = std::get_if<Box>(&body_shape.shape)) {
+      // 8 corners (bit 0: +x, bit 1: +y, bit 2: +z) and 2 outward CCW triangles per face
+      std::vector<Vec3> corners_B(8);
+      for (int c = 0; c < 8; ++c) {
+        const Vec3 sign((c & 1) ? 1 : -1, (c & 2) ? 1 : -1, (c & 4) ? 1 : -1);
+        corners_B[c] = body_shape.X_BO * (0.5 * box->size_m.cwiseProduct(sign));
+      }
+      static const std::vector<std::array<std::uint32_t, 3>> kBoxTriangles = {
+          {0, 4, 6}, {0, 6, 2},  // −x
+          {1, 3, 7}, {1, 7, 5},  // +x
+          {0, 1, 5}, {0, 5, 4},  // −y
+          {2, 6, 7}, {2, 7, 3},  // +y
+          {0, 2, 3}, {0, 3, 1},  // −z
+          {4, 5, 7}, {4, 7, 6},  // +z
+      };
+      record->kind = GeomKind::kBox;
+      record->shape = body_shape.shape;
+      impl.AttachTriangles(body, std::move(record), corners_B, kBoxTriangles);
+    } else if (const auto* mesh = std::get_if<Mesh>(&body_shape.shape)) {
+      assert(mesh->data && "mesh must be loaded before it is added");
+      std::vector<Vec3> vertices_B;
+      vertices_B.reserve(mesh->data->vertices_O.size());
+      for (const Vec3f& v_O : mesh->data->vertices_O) vertices_B.push_back(body_shape.X_BO * v_O.cast<double>());
+      record->kind = GeomKind::kMesh;
+      body.has_mesh = true;
+      impl.AttachTriangles(body, std::move(record), vertices_B, mesh->data->triangles);
+    } else {
+      record->kind = std::holds_alternative<Sphere>(body_shape.shape)     ? GeomKind::kSphere
+                     : std::holds_alternative<Cylinder>(body_shape.shape) ? GeomKind::kCylinder
+                                                                          : GeomKind::kPlane;
+      record->shape = body_shape.shape;
+      impl.AttachUserShape(body, std::move(record));
+    }
+  }
+
+  // the body's BVH, built once; then its instance in the top-level scenes
+  rtcCommitScene(body.scene);
+  body.instance_all = impl.NewInstance(impl.scene_all, body, static_cast<unsigned int>(body_index));
+  if (kind == BodyKind::kWorld) {
+    body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body_index));
+  }
+  impl.committed = false;
+  impl.ThrowIfDeviceError("AddBody");
+  return body_index;
+}
+
+void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
+  assert(body_index >= 0 && body_index < static_cast<int>(impl_->bodies.size()));
+  Body& body = *impl_->bodies[body_index];
+  body.X_WB = X_WB;
+  body.R_WB = X_WB.linear().cast<float>();
+  float xfm[12];
+  ToColumnMajor3x4(X_WB, xfm);
+  for (RTCGeometry instance : {body.instance_all, body.instance_world}) {
+    if (!instance) continue;
+    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    rtcCommitGeometry(instance);
+  }
+  impl_->committed = false;
+  impl_->ThrowIfDeviceError("SetBodyPose");
+}
+
+void RayCaster::Commit() {
+  // only the instances are rebuilt; child scenes were committed in AddBody
+  rtcCommitScene(impl_->scene_all);
+  rtcCommitScene(impl_->scene_world);
+  impl_->committed = true;
+  impl_->ThrowIfDeviceError("Commit");
+}
+
+namespace {
+
+/// Casts one ray against the chosen top-level scene and maps the hit back.
+void CastOne(RTCScene scene_all, RTCScene scene_world, const std::vector<std::unique_ptr<Body>>& bodies,
+             const Ray& ray, Hit* hit) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+
+  RTCRayHit ray_hit;
+  ray_hit.ray.org_x = ray.origin_W.x();
+  ray_hit.ray.org_y = ray.origin_W.y();
+  ray_hit.ray.org_z = ray.origin_W.z();
+  ray_hit.ray.tnear = 0.0f;
+  ray_hit.ray.dir_x = ray.direction_W.x();
+  ray_hit.ray.dir_y = ray.direction_W.y();
+  ray_hit.ray.dir_z = ray.direction_W.z();
+  ray_hit.ray.time = 0.0f;
+  ray_hit.ray.tfar = ray.max_range_m;
+  ray_hit.ray.mask = 0xFFFFFFFFu;
+  ray_hit.ray.id = 0;
+  ray_hit.ray.flags = 0;
+  ray_hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  ray_hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(ray.see_robot ? scene_all : scene_world, &context, &ray_hit);
+
+  // a miss
+  if (ray_hit.hit.geomID == RTC_INVALID_GEOMETRY_ID || ray_hit.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
+    *hit = Hit{};
+    return;
+  }
+
+  // map (instance, geometry) to the body and its shape; Ng from B to W, unit
+  const Body& body = *bodies[ray_hit.hit.instID[0]];
+  const GeomRecord& geom = *body.geoms[ray_hit.hit.geomID];
+  const Vec3f normal_B = Vec3f(ray_hit.hit.Ng_x, ray_hit.hit.Ng_y, ray_hit.hit.Ng_z).normalized();
+  hit->distance_m = ray_hit.ray.tfar;
+  hit->normal_W = body.R_WB * normal_B;
+  hit->object_id = geom.object_id;
+}
+
+}  // namespace
+
+void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
+  assert(hits.size() == rays.size() && "one hit per ray");
+  assert(impl_->committed && "Commit() after adding or moving bodies");
+  const Impl& impl = *impl_;
+  const auto count = static_cast<std::ptrdiff_t>(rays.size());
+
+  if (rays.size() >= kParallelBatchRays && impl.threads > 1) {
+    // every ray is independent, so the result does not depend on the thread count
+#pragma omp parallel num_threads(impl.threads)
+    {
+      DenormalModeGuard denormal_mode;
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t i = 0; i < count; ++i) {
+        CastOne(impl.scene_all, impl.scene_world, impl.bodies, rays[i], &hits[i]);
+      }
+    }
+  } else {
+    DenormalModeGuard denormal_mode;
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+      CastOne(impl.scene_all, impl.scene_world, impl.bodies, rays[i], &hits[i]);
+    }
+  }
+  impl_->ThrowIfDeviceError("Cast");
+}
+
+void RayCaster::set_threads(int threads) {
+  assert(threads >= 1);
+  impl_->threads = std::max(1, threads);
+}
+
+double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids) const {
+  double best_m = std::numeric_limits<double>::infinity();
+  for (const auto& body_ptr : impl_->bodies) {
+    const Body& body = *body_ptr;
+    if (body.kind != BodyKind::kWorld) continue;
+    const Vec3 p_B = body.X_WB.inverse() * p_W;
+
+    // boxes and analytic shapes: exact closed forms in the shape frame
+    for (const auto& geom_ptr : body.geoms) {
+      const GeomRecord& geom = *geom_ptr;
+      if (geom.kind == GeomKind::kMesh || IsExcluded(geom.object_id, exclude_object_ids)) continue;
+      const Vec3 p_O = geom.X_OB * p_B;
+      double distance_m = best_m;
+      switch (geom.kind) {
+        case GeomKind::kBox: distance_m = DistanceToBox(std::get<Box>(geom.shape), p_O); break;
+        case GeomKind::kSphere: distance_m = DistanceToSphere(std::get<Sphere>(geom.shape), p_O); break;
+        case GeomKind::kCylinder: distance_m = DistanceToCylinder(std::get<Cylinder>(geom.shape), p_O); break;
+        case GeomKind::kPlane: distance_m = DistanceToPlane(p_O); break;
+        case GeomKind::kMesh: break;
+      }
+      best_m = std::min(best_m, distance_m);
+    }
+
+    // meshes: Embree's point query walks the body's BVH within the best distance so far
+    if (!body.has_mesh) continue;
+    PointQueryState state;
+    state.body = &body;
+    state.exclude_object_ids = exclude_object_ids;
+    state.p_B = p_B;
+    state.best_distance_m = best_m;
+    RTCPointQuery query;
+    query.x = static_cast<float>(p_B.x());
+    query.y = static_cast<float>(p_B.y());
+    query.z = static_cast<float>(p_B.z());
+    query.time = 0.0f;
+    query.radius = std::isinf(best_m) ? std::numeric_limits<float>::infinity()
+                                      : static_cast<float>(best_m * (1 + 1e-6) + 1e-6);
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(body.scene, &query, &context, &MeshPointQueryCallback, &state);
+    best_m = std::min(best_m, state.best_distance_m);
+  }
+  return best_m;
+}
+
+std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }
+
+}  // namespace proxsim
