@@ -223,6 +223,17 @@ TEST(RayCasterTest, EmptyCasterMissesEverything) {
   EXPECT_EQ(caster.triangle_count(), 0u);
 }
 
+TEST(RayCasterTest, EmptyMeshIsAcceptedAndNeverHit) {
+  RayCaster caster;
+  Mesh mesh;
+  mesh.data = std::make_shared<TriangleMesh>();
+  caster.AddBody({BodyShape{mesh, Pose::Identity(), 0}, BodyShape{Sphere{0.5}, Translation(2, 0, 0), 1}},
+                 BodyKind::kWorld);
+  caster.Commit();
+  EXPECT_EQ(CastOne(caster, MakeRay(Vec3(-1, 0, 0), Vec3::UnitX())).object_id, 1);
+  EXPECT_NEAR(caster.DistanceToWorld(Vec3::Zero(), std::vector<std::int32_t>{}), 1.5, 1e-9);
+}
+
 TEST(RayCasterTest, HitBeyondMaxRangeIsAMiss) {
   RayCaster caster;
   caster.AddBody({BodyShape{Sphere{0.1}, Translation(1, 0, 0), 0},

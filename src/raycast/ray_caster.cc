@@ -311,6 +311,7 @@ struct RayCaster::Impl {
 void RayCaster::Impl::AttachTriangles(Body& body, std::unique_ptr<GeomRecord> record,
                                       const std::vector<Vec3>& vertices_B,
                                       const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  if (triangles.empty()) return;  // nothing to hit (Embree refuses empty buffers)
   RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices_B.size()));
