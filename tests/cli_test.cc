@@ -28,7 +28,7 @@ std::vector<std::map<std::string, std::string>> RowsOf(const testing::Csv& csv, 
 
 TEST(CliRun, ReadingsMatchClosedForms) {
   const auto out = FreshDir("closed_form");
-  const auto result = RunProxsim("run " + kClosedForm + " --out " + out.string());
+  const auto result = RunProxsim("run " + kClosedForm + " --no-report --out " + out.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
   const testing::Csv csv = ReadCsv(out / "readings.csv");
@@ -92,14 +92,14 @@ TEST(CliRun, ReadingsMatchClosedForms) {
 
 TEST(CliRun, SameSeedGivesByteIdenticalFilesWhateverTheThreads) {
   const auto one = FreshDir("threads1"), two = FreshDir("threads2");
-  ASSERT_EQ(RunProxsim("run " + kClosedForm + " --threads 1 --out " + one.string()).exit_code, 0);
-  ASSERT_EQ(RunProxsim("run " + kClosedForm + " --threads 2 --out " + two.string()).exit_code, 0);
+  ASSERT_EQ(RunProxsim("run " + kClosedForm + " --no-report --threads 1 --out " + one.string()).exit_code, 0);
+  ASSERT_EQ(RunProxsim("run " + kClosedForm + " --no-report --threads 2 --out " + two.string()).exit_code, 0);
   for (const char* file : {"readings.csv", "profile.ply", "summary.json"}) {
     EXPECT_EQ(ReadFile(one / file), ReadFile(two / file)) << file;
   }
   // and another seed changes the noise
   const auto other = FreshDir("seed2");
-  ASSERT_EQ(RunProxsim("run " + kClosedForm + " --seed 12 --out " + other.string()).exit_code, 0);
+  ASSERT_EQ(RunProxsim("run " + kClosedForm + " --no-report --seed 12 --out " + other.string()).exit_code, 0);
   EXPECT_NE(ReadFile(one / "readings.csv"), ReadFile(other / "readings.csv"));
 }
 

@@ -1,6 +1,7 @@
 // The proxsim command line (DESIGN.md "CLI"):
 //   proxsim run [SCENARIO.yaml] [--out DIR] [--seed N] [--threads N]
 //   proxsim validate SCENARIO.yaml
+//   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
 #include <unistd.h>
@@ -14,6 +15,7 @@
 
 #include "core/input_error.h"
 #include "io/scenario.h"
+#include "report/report_runner.h"
 #include "sim/run.h"
 
 namespace {
@@ -33,7 +35,7 @@ proxsim::Scenario LoadScenarioArgument(const std::string& path) {
 }
 
 int Run(const std::string& scenario_path, const std::string& out_dir, std::optional<std::uint64_t> seed,
-        int threads) {
+        int threads, bool report) {
   proxsim::Scenario scenario = LoadScenarioArgument(scenario_path);
   if (seed) scenario.seed = *seed;
   proxsim::RunOptions options;
@@ -58,7 +60,23 @@ int Run(const std::string& scenario_path, const std::string& out_dir, std::optio
     }
     std::printf("%s%s\n", firsts.empty() ? "" : "  first: ", firsts.c_str());
   }
+  if (const auto robot = result.summary.find("robot"); robot != result.summary.end()) {
+    const auto& r = *robot;
+    std::printf("  robot: walked %.2f m, %s, min clearance %s m\n", r["distance_walked_m"].get<double>(),
+                r["stopped"].get<bool>()
+                    ? ("stopped at t = " + std::to_string(r["stop_t_s"].get<double>()) + " s").c_str()
+                    : "did not stop",
+                r["min_clearance_m"].is_null() ? "n/a" : std::to_string(r["min_clearance_m"].get<double>()).c_str());
+  }
   std::printf("outputs in %s/\n", out_dir.c_str());
+  std::fflush(stdout);
+  if (!report) return 0;
+  // the pictures: figures and the replay viewer, drawn from the files just written
+  if (proxsim::MakeReport(out_dir) != 0) {
+    std::fprintf(stderr, "proxsim: the run's files are complete, but its report could not be drawn\n");
+    return kExitFailure;
+  }
+  std::printf("report: %s/report/index.html and %s/report/*.png\n", out_dir.c_str(), out_dir.c_str());
   return 0;
 }
 
@@ -86,6 +104,12 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_dir, "output folder")->capture_default_str();
   run->add_option("--seed", seed, "seed of the sensor noise (overrides the scenario's)");
   run->add_option("--threads", threads, "ray-casting threads")->check(CLI::Range(1, 256))->capture_default_str();
+  bool no_report = false;
+  run->add_flag("--no-report", no_report, "skip the figures and the viewer (the data files are still written)");
+
+  std::string plot_dir;
+  CLI::App* plot = app.add_subcommand("plot", "redraw the figures and the viewer of a finished run");
+  plot->add_option("out", plot_dir, "the run's output folder")->required()->check(CLI::ExistingDirectory);
 
   std::string validate_path;
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
@@ -99,7 +123,8 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return Run(scenario_path, out_dir, seed, threads);
+    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report);
+    if (*plot) return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
     if (*validate) return Validate(validate_path);
   } catch (const proxsim::InputError& error) {
     return PrintInputError(error);

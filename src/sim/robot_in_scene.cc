@@ -13,7 +13,7 @@ namespace proxsim {
 namespace {
 
 constexpr const char* kBuiltinPrefix = "builtin:";
-constexpr double kClearanceSpacing_m = 0.01;
+constexpr double kClearanceSpacing_m = 0.02;
 
 RobotModel LoadModel(const std::string& model) {
   if (model.starts_with(kBuiltinPrefix)) {

@@ -40,7 +40,7 @@ class RobotInScene {
   /// Where the robot heads, its leading toe and its stance ground height, from its own kinematics.
   RobotSelfKnowledge SelfKnowledge() const;
 
-  /// Least distance between the robot's surface (sampled every 1 cm) and any
+  /// Least distance between the robot's surface (sampled every 2 cm) and any
   /// scene object other than the excluded ones (the floor it walks on), when
   /// it is below `below_m`; otherwise some value >= below_m (links that cannot
   /// come closer are skipped, which keeps a running minimum cheap).

@@ -17,6 +17,7 @@ Simulation::Simulation(const Scenario& scenario, int threads)
     object_names_.push_back(object.name);
   }
   caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
+  first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
   for (std::size_t id = 0; id < object_names_.size(); ++id) {
     if (object_names_[id].starts_with("floor")) ground_ids_.push_back(static_cast<std::int32_t>(id));
   }
@@ -96,6 +97,8 @@ void Simulation::MeasureAll() {
     out.echo = Echo{};
     if (hit.is_hit()) {
       out.echo.distance_m = hit.distance_m;
+      // the robot's links come after the scene's objects
+      out.echo.from_robot = hit.object_id >= first_robot_object_id_;
       const Vec3 normal_W = hit.normal_W.cast<double>();
       out.echo.incidence_deg = IncidenceDeg(out.dir_W.x(), out.dir_W.y(), out.dir_W.z(), normal_W.x(),
                                             normal_W.y(), normal_W.z());

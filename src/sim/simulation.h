@@ -72,6 +72,7 @@ class Simulation {
   std::int64_t next_sample_ = 0;
   RayCaster caster_;
   std::vector<std::string> object_names_;
+  std::int32_t first_robot_object_id_ = 0;  // object ids from here on are robot links
   std::unique_ptr<RobotInScene> robot_;
   std::vector<int> sensor_link_;             // link index per sensor; -1 for world
   std::vector<std::int32_t> ground_ids_;     // objects the feet stand on, left out of the clearance
