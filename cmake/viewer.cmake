@@ -43,28 +43,21 @@ if(PROXSIM_BUILD_TESTS)
   add_test(NAME report_unit
            COMMAND ${report_python} -m unittest discover -s ${CMAKE_SOURCE_DIR}/tests/report -v)
 
-  # TODO(report): switch these runs from the synthetic sample to a real one:
-  #   $<TARGET_FILE:proxsim> run <small scenario> --out <dir>   (it writes the report itself)
-  # The sample has the output contract's formats (tests/data/report_sample/).
+  # The browser test opens the report of real runs: the default paper run
+  # (walking robot) and the world-mounted sensor demo (no robot). `proxsim run`
+  # draws the report itself.
+  set(e2e_scenario_walk "")
+  set(e2e_scenario_no_robot ${CMAKE_SOURCE_DIR}/data/scenarios/world_sensors_demo.yaml)
   foreach(kind walk no_robot)
     set(run_dir ${CMAKE_BINARY_DIR}/viewer_e2e/${kind})
-    set(sample_args ${run_dir})
-    if(kind STREQUAL "no_robot")
-      list(APPEND sample_args --no-robot)
-    endif()
     add_test(NAME viewer_e2e_${kind}_run
-             COMMAND ${report_python} ${CMAKE_SOURCE_DIR}/tests/data/report_sample/make_sample.py ${sample_args})
-    add_test(NAME viewer_e2e_${kind}_report
-             COMMAND ${report_python} ${CMAKE_SOURCE_DIR}/report/make_report.py ${run_dir}
-                     --viewer-bundle ${viewer_bundle})
+             COMMAND $<TARGET_FILE:proxsim> run ${e2e_scenario_${kind}} --out ${run_dir})
     add_test(NAME viewer_e2e_${kind}
              COMMAND ${PROXSIM_NODE} ${CMAKE_SOURCE_DIR}/tests/viewer_e2e/viewer_e2e.mjs ${run_dir}
                      --viewer-dir ${viewer_dir})
-    set_tests_properties(viewer_e2e_${kind}_run PROPERTIES FIXTURES_SETUP e2e_${kind}_run)
-    set_tests_properties(viewer_e2e_${kind}_report PROPERTIES
-      FIXTURES_REQUIRED e2e_${kind}_run FIXTURES_SETUP e2e_${kind}_report TIMEOUT 120)
+    set_tests_properties(viewer_e2e_${kind}_run PROPERTIES FIXTURES_SETUP e2e_${kind}_run TIMEOUT 180)
     set_tests_properties(viewer_e2e_${kind} PROPERTIES
-      FIXTURES_REQUIRED "e2e_${kind}_run;e2e_${kind}_report" SKIP_RETURN_CODE 77 TIMEOUT 240
+      FIXTURES_REQUIRED e2e_${kind}_run SKIP_RETURN_CODE 77 TIMEOUT 240
       RESOURCE_LOCK chromium)
   endforeach()
 endif()
