@@ -73,10 +73,11 @@ export class SceneView {
     return box;
   }
 
-  /** Places the camera to look at `target` from the back-left, at `distance`. */
+  /** Places the camera to look at `target` from behind and to the robot's left
+   *  (+y in REP-103, the side of the default run's left-tibia sensors), at `distance`. */
   frame(target, distance) {
     this.controls.target.copy(target);
-    this.camera.position.set(target.x - 0.55 * distance, target.y - 0.8 * distance, target.z + 0.45 * distance);
+    this.camera.position.set(target.x - 0.55 * distance, target.y + 0.8 * distance, target.z + 0.45 * distance);
     this.controls.update();
   }
 
