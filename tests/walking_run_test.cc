@@ -209,3 +209,38 @@ TEST(WalkingRun, OwnBodyEchoesAreSelfAndTransparentWhenIgnored) {
 
 }  // namespace
 }  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// A replayed trajectory moves the robot exactly as recorded: at t = 1.5 s,
+// halfway between the rows at 1 s and 2 s, the pelvis is at x = 0.15 m.
+TEST(WalkingRun, RecordedTrajectoryIsReplayed) {
+  const auto out = testing::FreshDir("replay");
+  const auto result = testing::RunProxsim("run " + std::string(PROXSIM_SOURCE_DIR) +
+                                          "/data/scenarios/replay_trajectory.yaml --no-report --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto poses = testing::ReadCsv(out / "poses.csv");
+  bool found = false;
+  for (const auto& row : poses.rows) {
+    if (row.at("link") == "pelvis" && std::abs(std::stod(row.at("t_s")) - 1.5) < 1e-9) {
+      EXPECT_NEAR(std::stod(row.at("x")), 0.15, 1e-9);
+      EXPECT_NEAR(std::stod(row.at("z")), 0.98, 1e-9);
+      found = true;
+    }
+  }
+  EXPECT_TRUE(found);
+  // at t = 1 s the left hip is flexed 30°: the knee (the tibia's frame) is
+  // 0.45 m down the thigh, swung forward: (0.45 sin 30°, 0.98 − 0.45 cos 30°)
+  bool knee_checked = false;
+  for (const auto& row : poses.rows) {
+    if (row.at("link") != "left_tibia" || std::abs(std::stod(row.at("t_s")) - 1.0) > 1e-9) continue;
+    EXPECT_NEAR(std::stod(row.at("x")), 0.45 * std::sin(M_PI / 6), 1e-9);
+    EXPECT_NEAR(std::stod(row.at("z")), 0.98 - 0.45 * std::cos(M_PI / 6), 1e-9);
+    knee_checked = true;
+  }
+  EXPECT_TRUE(knee_checked);
+}
+
+}  // namespace
+}  // namespace proxsim
