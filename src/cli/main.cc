@@ -2,6 +2,7 @@
 //   proxsim run [SCENARIO.yaml] [--out DIR] [--seed N] [--threads N]
 //   proxsim validate SCENARIO.yaml
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
+//   proxsim bench [--json] [--quick] (the performance suite, README "Performance")
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
 #include <unistd.h>
@@ -13,6 +14,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench/bench_suite.h"
 #include "core/input_error.h"
 #include "io/scenario.h"
 #include "report/report_runner.h"
@@ -35,12 +37,13 @@ proxsim::Scenario LoadScenarioArgument(const std::string& path) {
 }
 
 int Run(const std::string& scenario_path, const std::string& out_dir, std::optional<std::uint64_t> seed,
-        int threads, bool report) {
+        int threads, bool report, const std::string& format) {
   proxsim::Scenario scenario = LoadScenarioArgument(scenario_path);
   if (seed) scenario.seed = *seed;
   proxsim::RunOptions options;
   options.out_dir = out_dir;
   options.threads = threads;
+  options.format = format == "npy" ? proxsim::ReadingsFormat::kNpy : proxsim::ReadingsFormat::kCsv;
   options.progress = isatty(STDERR_FILENO) != 0;
   const proxsim::RunResult result = proxsim::RunScenario(scenario, options);
 
@@ -64,8 +67,9 @@ int Run(const std::string& scenario_path, const std::string& out_dir, std::optio
     const auto& r = *robot;
     std::printf("  robot: walked %.2f m, %s, min clearance %s m\n", r["distance_walked_m"].get<double>(),
                 r["stopped"].get<bool>()
-                    ? ("stopped at t = " + std::to_string(r["stop_t_s"].get<double>()) + " s").c_str()
-                    : "did not stop",
+                    ? ("stopped by its strategy at t = " + std::to_string(r["stop_t_s"].get<double>()) + " s").c_str()
+                : r["standing_at_end"].get<bool>() ? "standing at the end of its path"
+                                                   : "still walking at the end",
                 r["min_clearance_m"].is_null() ? "n/a" : std::to_string(r["min_clearance_m"].get<double>()).c_str());
   }
   std::printf("outputs in %s/\n", out_dir.c_str());
@@ -106,6 +110,15 @@ int main(int argc, char** argv) {
   run->add_option("--threads", threads, "ray-casting threads")->check(CLI::Range(1, 256))->capture_default_str();
   bool no_report = false;
   run->add_flag("--no-report", no_report, "skip the figures and the viewer (the data files are still written)");
+  std::string format = "csv";
+  run->add_option("--format", format, "readings as readings.csv, or as one .npy per column in readings/ (large runs)")
+      ->check(CLI::IsMember({"csv", "npy"}))
+      ->capture_default_str();
+
+  bool bench_json = false, bench_quick = false;
+  CLI::App* bench = app.add_subcommand("bench", "race proxsim against bare Embree, Bullet and MuJoCo (a few minutes)");
+  bench->add_flag("--json", bench_json, "print one JSON object with every figure (keys: README, Performance)");
+  bench->add_flag("--quick", bench_quick, "fewer rays and a shorter heavy run: a smoke test");
 
   std::string plot_dir;
   CLI::App* plot = app.add_subcommand("plot", "redraw the figures and the viewer of a finished run");
@@ -123,7 +136,12 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report);
+    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format);
+    if (*bench) {
+      const nlohmann::json result = proxsim::bench::RunBench({.quick = bench_quick, .progress = true});
+      std::fputs(bench_json ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(), stdout);
+      return 0;
+    }
     if (*plot) return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
     if (*validate) return Validate(validate_path);
   } catch (const proxsim::InputError& error) {
