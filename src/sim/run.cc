@@ -53,8 +53,22 @@ nlohmann::json EchoInputs(const Scenario& scenario) {
   }
   nlohmann::json objects = nlohmann::json::array();
   for (const SceneObject& object : scenario.scene.objects) objects.push_back(object.name);
+  nlohmann::json robot = nullptr;
+  if (scenario.robot) {
+    const RobotConfig& r = *scenario.robot;
+    nlohmann::json waypoints = nlohmann::json::array();
+    for (const Vec2& p : r.waypoints_m) waypoints.push_back({p.x(), p.y()});
+    robot = {{"model", r.model},
+             {"start", {{"xyz_m", {r.start_xyz_m.x(), r.start_xyz_m.y(), r.start_xyz_m.z()}},
+                        {"yaw_deg", RadToDeg(r.start_yaw_rad)}}},
+             {"gait", {{"stride_m", r.gait.stride_m}, {"period_s", r.gait.period_s}}},
+             {"path", {{"waypoints_m", waypoints}}},
+             {"stop_distance_m", r.stop_distance_m ? nlohmann::json(*r.stop_distance_m) : nlohmann::json(nullptr)},
+             {"trajectory", r.trajectory_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.trajectory_file)}};
+  }
   return {{"source", scenario.source},
           {"seed", scenario.seed},
+          {"robot", robot},
           {"duration_s", scenario.duration_s},
           {"rate_hz", scenario.rate_hz},
           {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}}},
