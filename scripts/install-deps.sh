@@ -11,11 +11,13 @@ packages=(
   python3-matplotlib python3-numpy
   nodejs npm
 )
-# Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test.
+# Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test,
+# "fuzz" for scripts/fuzz.sh.
 for extra in "$@"; do
   case "$extra" in
     browser) packages+=(chromium) ;;
-    *) echo "install-deps: unknown group '$extra' (known: browser)" >&2; exit 2 ;;
+    fuzz) packages+=(clang libclang-rt-14-dev libomp-dev) ;;  # scripts/fuzz.sh: libFuzzer, OpenMP for clang
+    *) echo "install-deps: unknown group '$extra' (known: browser, fuzz)" >&2; exit 2 ;;
   esac
 done
 

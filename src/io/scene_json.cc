@@ -7,6 +7,8 @@ template <typename... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+template <typename... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;  // clang 14 has no aggregate deduction yet
 }  // namespace
 
 nlohmann::json ShapeToJson(const Shape& shape, const Pose& X) {

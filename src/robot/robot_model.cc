@@ -142,6 +142,15 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
     }
     throw InputError(why);
   }
+  // urdfdom links own their children (shared_ptr): links in a cycle keep each
+  // other alive after the model is gone. Cut those edges on every way out.
+  struct CutChildLinks {
+    urdf::ModelInterface& model;
+    ~CutChildLinks() {
+      for (auto& [name, link] : model.links_)
+        if (link) link->child_links.clear();
+    }
+  } cut_child_links{*urdf};
   const urdf::LinkConstSharedPtr root = urdf->getRoot();
   if (!root) throw InputError(source + ": the URDF has no root link");
 
