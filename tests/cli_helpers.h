@@ -74,4 +74,13 @@ inline Csv ReadCsv(const std::filesystem::path& path) {
   return csv;
 }
 
+/// The rows of one sensor, in time order.
+inline std::vector<std::map<std::string, std::string>> RowsOf(const Csv& csv, const std::string& sensor) {
+  std::vector<std::map<std::string, std::string>> rows;
+  for (const auto& row : csv.rows) {
+    if (row.at("sensor") == sensor) rows.push_back(row);
+  }
+  return rows;
+}
+
 }  // namespace proxsim::testing

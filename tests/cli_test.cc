@@ -14,17 +14,11 @@ namespace {
 using testing::FreshDir;
 using testing::ReadCsv;
 using testing::ReadFile;
+using testing::RowsOf;
 using testing::RunProxsim;
 
 const std::string kClosedForm = std::string(PROXSIM_TEST_DATA_DIR) + "/cli/world_closed_form.yaml";
 
-std::vector<std::map<std::string, std::string>> RowsOf(const testing::Csv& csv, const std::string& sensor) {
-  std::vector<std::map<std::string, std::string>> rows;
-  for (const auto& row : csv.rows) {
-    if (row.at("sensor") == sensor) rows.push_back(row);
-  }
-  return rows;
-}
 
 TEST(CliRun, ReadingsMatchClosedForms) {
   const auto out = FreshDir("closed_form");

@@ -16,16 +16,10 @@ using testing::Csv;
 using testing::FreshDir;
 using testing::ReadCsv;
 using testing::ReadFile;
+using testing::RowsOf;
 using testing::RunProxsim;
 using Row = std::map<std::string, std::string>;
 
-std::vector<Row> RowsOf(const Csv& csv, const std::string& sensor) {
-  std::vector<Row> rows;
-  for (const auto& row : csv.rows) {
-    if (row.at("sensor") == sensor) rows.push_back(row);
-  }
-  return rows;
-}
 
 bool Detects(const Row& row, const std::string& object) {
   return row.at("status") == "ok" && row.at("object") == object;
