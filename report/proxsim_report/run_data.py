@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-STATUSES = ("ok", "no_echo", "too_close", "grazing", "self")
+STATUSES = ("ok", "no_echo", "too_close", "grazing", "self", "dropout")
 
 
 class RunError(Exception):

@@ -7,11 +7,14 @@ STATUS_COLORS = {
     "too_close": "#f28e2b",
     "grazing": "#d62728",    # incidence outside the sensor's window
     "self": "#8c56b8",       # hit the robot's own body
+    "dropout": "#e7c31c",    # an echo lost to the noise model's dropout
 }
 STATUS_LABELS = {"ok": "detected", "no_echo": "no echo", "too_close": "too close",
-                 "grazing": "grazing", "self": "self (own body)"}
+                 "grazing": "grazing", "self": "self (own body)",
+                 "dropout": "dropout"}
 TYPE_LABELS = {"ideal": "ideal sensor", "laser": "laser range finder",
-               "ultrasonic": "ultrasonic sensor", "reflectance": "reflectance (IR) sensor"}
+               "ultrasonic": "ultrasonic sensor", "reflectance": "reflectance (IR) sensor",
+               "lookup": "lookup-table sensor"}
 PAPER_TYPE_ORDER = ("ideal", "laser", "ultrasonic", "reflectance")
 
 # objects: a qualitative palette, indexed by object id (cycled)

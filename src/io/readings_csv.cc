@@ -7,7 +7,7 @@ namespace proxsim {
 const char* const kReadingsCsvHeader =
     "t_s,sensor,type,status,detected,d_m,d_true_m,incidence_deg,signal,"
     "hit_x_m,hit_y_m,hit_z_m,origin_x_m,origin_y_m,origin_z_m,dir_x,dir_y,dir_z,object,"
-    "gait_phase,support_leg";
+    "gait_phase,support_leg,ray,output,t_reported_s";
 
 ReadingsCsvWriter::ReadingsCsvWriter(const std::string& path, const Scenario& scenario,
                                      std::vector<std::string> object_names)
@@ -21,6 +21,7 @@ void ReadingsCsvWriter::Append(const SampleFrame& frame) {
   for (std::size_t i = 0; i < frame.sensors.size(); ++i) {
     const SensorSample& s = frame.sensors[i];
     const SensorConfig& sensor = scenario_.sensors[i];
+    if (s.reading.status == ReadingStatus::kNotSampled) continue;  // no row between a sensor's own samples
     const bool hit = s.object_id >= 0;
     line_.clear();
     AppendNumber(line_, frame.t_s);
@@ -54,6 +55,13 @@ void ReadingsCsvWriter::Append(const SampleFrame& frame) {
     } else {
       line_ += ',';
     }
+    // beyond the paper: the beam's ray, a lookup sensor's output, the report time
+    line_ += ',';
+    line_ += std::to_string(s.ray);
+    line_ += ',';
+    AppendNumber(line_, s.reading.output);
+    line_ += ',';
+    AppendNumber(line_, s.t_reported_s);
     line_ += '\n';
     file_.Write(line_);
   }

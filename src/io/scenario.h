@@ -19,6 +19,11 @@ struct SensorConfig {
   std::string link = "world";    ///< a robot link, or "world"
   Pose X_LS = Pose::Identity();  ///< sensor frame S in its link L; the beam is S's +x
   bool see_robot = true;         ///< false: the robot's own links are transparent to this sensor
+  // timing (issue 7; all off by default)
+  double rate_hz = 0.0;          ///< > 0: samples only at the first run sample of each of its periods; 0: every sample
+  double latency_s = 0.0;        ///< >= 0: a reading is reported (and seen by the strategy) this much later
+  bool flight_time = false;      ///< time of flight: the echo is received where the sensor is when it returns
+  double wave_speed_m_s = 0.0;   ///< c for flight_time; 0: 343 m/s for ultrasonic, 299 792 458 m/s otherwise
 };
 
 struct GaitConfig {

@@ -97,13 +97,15 @@ Mesh ReadMesh(YamlReader& reader, const Field& field, const std::filesystem::pat
   return mesh;
 }
 
-// material: {albedo, specular}, each in [0, 1]
+// material: {albedo, specular, ir_albedo, acoustic_reflectivity}, each in [0, 1]
 Material ReadMaterial(YamlReader& reader, const Field& field) {
   Material material;
-  const auto map = reader.Map(field, {"albedo", "specular"});
+  const auto map = reader.Map(field, {"albedo", "specular", "ir_albedo", "acoustic_reflectivity"});
   if (!map) return material;
   material.albedo = reader.Number((*map)["albedo"], NumberIn(0, 1)).value_or(material.albedo);
   material.specular = reader.Number((*map)["specular"], NumberIn(0, 1)).value_or(material.specular);
+  material.ir_albedo = reader.Number((*map)["ir_albedo"], NumberIn(0, 1));
+  material.acoustic_reflectivity = reader.Number((*map)["acoustic_reflectivity"], NumberIn(0, 1));
   return material;
 }
 

@@ -1,8 +1,11 @@
 // The `sensors` section: each sensor starts from the preset of its `type`
-// (the paper's values, sensors/sensor_spec.h), any of range_m,
-// max_incidence_deg and noise override it, and SensorSpec::Validate() has the
-// last word; its problems are reported under the sensor's key path, at the
-// line of the offending key.
+// (the paper's values, or a named part's, sensors/sensor_spec.h), any of
+// range_m, max_incidence_deg, noise and the beyond-the-paper keys (beam,
+// echo_model, echo_threshold, specular_exponent, use_material, lookup_table)
+// override it, and SensorSpec::Validate() has the last word; its problems are
+// reported under the sensor's key path, at the line of the offending key. The
+// timing keys (rate_hz, latency_s, flight_time, wave_speed_m_s) belong to the
+// SensorConfig.
 #include <algorithm>
 #include <map>
 #include <set>
@@ -13,6 +16,16 @@
 namespace proxsim {
 
 namespace {
+
+// the physics types and the named parts
+const std::vector<std::string>& AllTypeNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = SensorTypeNames();
+    all.insert(all.end(), SensorSpec::PartNames().begin(), SensorSpec::PartNames().end());
+    return all;
+  }();
+  return names;
+}
 
 std::string JoinNames(const std::vector<std::string>& names) {
   std::string all;
@@ -61,6 +74,77 @@ bool ReadRange(YamlReader& reader, const Field& field, SensorSpec& spec) {
   return true;
 }
 
+// beam: {aperture_deg, rays, pattern: uniform | {gaussian: {width_deg}} | {table: [[angle_deg, gain], ...]}}
+void ReadBeam(YamlReader& reader, const Field& field, SensorSpec& spec) {
+  if (!field) return;
+  const auto map = reader.Map(field, {"aperture_deg", "rays", "pattern"});
+  if (!map) return;
+  BeamSpec beam = spec.beam.value_or(BeamSpec{});
+  if (reader.Require((*map)["aperture_deg"], "aperture_deg, the full cone angle in degrees")) {
+    beam.aperture_deg = reader.Number((*map)["aperture_deg"]).value_or(beam.aperture_deg);
+  }
+  if (const auto rays = reader.Count((*map)["rays"])) beam.rays = static_cast<int>(std::min<std::uint64_t>(*rays, 1000000));
+  const Field pattern = (*map)["pattern"];
+  if (pattern && pattern.node.IsScalar()) {
+    const auto name = reader.String(pattern);
+    if (name && *name == "uniform") {
+      beam.pattern = BeamPattern::kUniform;
+    } else if (name) {
+      reader.Fail(pattern, "expected uniform, {gaussian: {width_deg}} or {table: [[angle_deg, gain], ...]}, got '" + *name + "'");
+    }
+  } else if (pattern) {
+    const auto kinds = reader.Map(pattern, {"gaussian", "table"},
+                                  "uniform, {gaussian: {width_deg}} or {table: [[angle_deg, gain], ...]}");
+    if (kinds && kinds->Has("gaussian") == kinds->Has("table")) {
+      reader.Fail(pattern, "expected exactly one of gaussian, table, got " + DescribeNode(pattern.node));
+    } else if (kinds && kinds->Has("gaussian")) {
+      beam.pattern = BeamPattern::kGaussian;
+      if (const auto gaussian = reader.Map((*kinds)["gaussian"], {"width_deg"})) {
+        if (reader.Require((*gaussian)["width_deg"], "width_deg, the gaussian's standard deviation in degrees")) {
+          beam.width_deg = reader.Number((*gaussian)["width_deg"]).value_or(beam.width_deg);
+        }
+      }
+    } else if (kinds) {
+      beam.pattern = BeamPattern::kTable;
+      beam.table.clear();
+      if (const auto rows = reader.List((*kinds)["table"], "a list of [angle_deg, gain] rows")) {
+        for (const Field& row : *rows) {
+          if (const auto values = reader.Numbers(row, 2, AnyNumber(), "[angle_deg, gain]")) {
+            beam.table.push_back({(*values)[0], (*values)[1]});
+          }
+        }
+      }
+    }
+  }
+  spec.beam = beam;
+}
+
+// lookup_table: [[distance_m, output, noise_fraction], ...]
+void ReadLookupTable(YamlReader& reader, const Field& field, SensorSpec& spec) {
+  if (!field) return;
+  const auto rows = reader.List(field, "a list of [distance_m, output, noise_fraction] rows");
+  if (!rows) return;
+  spec.lookup_table.clear();
+  for (const Field& row : *rows) {
+    if (const auto values = reader.Numbers(row, 3, AnyNumber(), "[distance_m, output, noise_fraction]")) {
+      spec.lookup_table.push_back({(*values)[0], (*values)[1], (*values)[2]});
+    }
+  }
+}
+
+// the sensor's own sampling and the echo's flight
+void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
+  sensor.rate_hz = reader.Number(map["rate_hz"], PositiveNumber("Hz")).value_or(sensor.rate_hz);
+  sensor.latency_s = reader.Number(map["latency_s"], NonNegativeNumber("s")).value_or(sensor.latency_s);
+  sensor.wave_speed_m_s = reader.Number(map["wave_speed_m_s"], PositiveNumber("m/s")).value_or(sensor.wave_speed_m_s);
+  const Field flight = map["flight_time"];
+  sensor.flight_time = reader.Bool(flight).value_or(sensor.flight_time);
+  if (sensor.flight_time && !IsTimeOfFlight(sensor.spec.type)) {
+    reader.Fail(flight, std::string("expected false for a ") + SensorTypeName(sensor.spec.type) +
+                            " sensor (flight_time applies to ideal, laser and ultrasonic), got true");
+  }
+}
+
 // One sensor: preset, overrides, validation.
 SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) {
   SensorConfig sensor;
@@ -68,15 +152,17 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
 
   // type picks the preset
   const Field type = map["type"];
-  if (reader.Require(type, "type, one of " + JoinNames(SensorTypeNames()))) {
+  if (reader.Require(type, "type, one of " + JoinNames(AllTypeNames()))) {
     if (const auto name = reader.String(type)) {
       if (const auto sensor_type = SensorTypeFromName(*name)) {
         sensor.spec = SensorSpec::Preset(*sensor_type);
+      } else if (const auto part = SensorSpec::PartPreset(*name)) {
+        sensor.spec = *part;
       } else {
-        const auto nearest = NearestKey(*name, SensorTypeNames());
+        const auto nearest = NearestKey(*name, AllTypeNames());
         reader.Fail(type, "unknown sensor type '" + *name + "' (" +
                               (nearest ? "did you mean '" + *nearest + "'? " : "") + "expected one of " +
-                              JoinNames(SensorTypeNames()) + ")");
+                              JoinNames(AllTypeNames()) + ")");
       }
     }
   }
@@ -84,10 +170,40 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
   // overrides of the preset
   const bool range_valid = ReadRange(reader, map["range_m"], sensor.spec);
   sensor.spec.max_incidence_deg = reader.Number(map["max_incidence_deg"]).value_or(sensor.spec.max_incidence_deg);
-  if (const auto noise = reader.Map(map["noise"], {"sigma", "mean"})) {
+  if (const auto noise = reader.Map(map["noise"], {"model", "sigma", "mean", "resolution_m", "dropout"})) {
     sensor.spec.noise.sigma = reader.Number((*noise)["sigma"]).value_or(sensor.spec.noise.sigma);
     sensor.spec.noise.mean = reader.Number((*noise)["mean"]).value_or(sensor.spec.noise.mean);
+    sensor.spec.noise.resolution_m = reader.Number((*noise)["resolution_m"]).value_or(sensor.spec.noise.resolution_m);
+    sensor.spec.noise.dropout = reader.Number((*noise)["dropout"]).value_or(sensor.spec.noise.dropout);
+    if (const auto model = reader.String((*noise)["model"])) {
+      if (const auto parsed = NoiseModelFromName(*model)) {
+        sensor.spec.noise.model = *parsed;
+      } else {
+        reader.Fail((*noise)["model"], "expected multiplicative, additive or distance_scaled, got '" + *model + "'");
+      }
+    }
   }
+
+  // beyond the paper: beam, materials, echo model, lookup table
+  ReadBeam(reader, map["beam"], sensor.spec);
+  sensor.spec.echo_threshold = reader.Number(map["echo_threshold"]).value_or(sensor.spec.echo_threshold);
+  sensor.spec.specular_exponent = reader.Number(map["specular_exponent"]).value_or(sensor.spec.specular_exponent);
+  sensor.spec.use_material = reader.Bool(map["use_material"]).value_or(sensor.spec.use_material);
+  if (const auto model = reader.String(map["echo_model"])) {
+    if (*model == "window" || *model == "physical") {
+      sensor.spec.echo_model = *model == "window" ? EchoModel::kWindow : EchoModel::kPhysical;
+    } else {
+      reader.Fail(map["echo_model"], "expected window or physical, got '" + *model + "'");
+    }
+  }
+  ReadLookupTable(reader, map["lookup_table"], sensor.spec);
+  // a lookup sensor's range is its table's unless range_m says otherwise
+  if (sensor.spec.type == SensorType::kLookup && map.Has("lookup_table") && !map.Has("range_m") &&
+      sensor.spec.lookup_table.size() >= 2) {
+    sensor.spec.min_range_m = sensor.spec.lookup_table.front().distance_m;
+    sensor.spec.max_range_m = sensor.spec.lookup_table.back().distance_m;
+  }
+  ReadTiming(reader, map, sensor);
 
   // the spec's own checks, placed at the key they name (a bad range is already reported)
   for (const std::string& problem : sensor.spec.Validate()) {
@@ -118,8 +234,12 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
   std::map<std::string, std::string> name_origin;  // name -> key path of its first use
   for (const Field& item : *items) {
     const auto map = reader.Map(
-        item, {"name", "type", "link", "pose", "range_m", "max_incidence_deg", "noise", "see_robot"},
-        "a map with keys name, type, link, pose, range_m, max_incidence_deg, noise, see_robot");
+        item, {"name", "type", "link", "pose", "range_m", "max_incidence_deg", "noise", "see_robot", "beam",
+               "echo_model", "echo_threshold", "specular_exponent", "use_material", "lookup_table", "rate_hz",
+               "latency_s", "flight_time", "wave_speed_m_s"},
+        "a map with keys name, type, link, pose, range_m, max_incidence_deg, noise, see_robot, beam, echo_model, "
+        "echo_threshold, specular_exponent, use_material, lookup_table, rate_hz, latency_s, flight_time, "
+        "wave_speed_m_s");
     if (!map) continue;
     SensorConfig sensor = ReadSensor(reader, *map, has_robot);
     const Field name = (*map)["name"];

@@ -2,6 +2,7 @@
 // The objects of a built-in scene come first, then the scenario's own.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,10 +11,15 @@
 namespace proxsim {
 
 /// Surface properties. Stored for every object; the paper's sensor models do
-/// not use them (the beyond-the-paper physics of a later issue does).
+/// not use them; a sensor that opts in does (README "Sensor reference").
 struct Material {
+  constexpr Material() = default;
+  constexpr Material(double albedo_in, double specular_in) : albedo(albedo_in), specular(specular_in) {}
+
   double albedo = 1.0;    ///< diffuse reflectance in [0, 1]
   double specular = 0.0;  ///< specular fraction of the reflection in [0, 1]
+  std::optional<double> ir_albedo;              ///< in [0, 1]; the infrared sensors' albedo when not `albedo`
+  std::optional<double> acoustic_reflectivity;  ///< in [0, 1]; fraction of sound returned; absent: 1
 };
 
 struct SceneObject {

@@ -11,6 +11,8 @@ const char* ReadingStatusName(ReadingStatus status) {
     case ReadingStatus::kTooClose: return "too_close";
     case ReadingStatus::kGrazing: return "grazing";
     case ReadingStatus::kSelf: return "self";
+    case ReadingStatus::kDropout: return "dropout";
+    case ReadingStatus::kNotSampled: return "not_sampled";
   }
   return "?";
 }
@@ -22,55 +24,241 @@ double IncidenceDeg(double dir_x, double dir_y, double dir_z, double normal_x, d
   return RadToDeg(std::acos(std::min(cos_alpha, 1.0)));
 }
 
+double LookupOutput(const std::vector<LookupRow>& table, double distance_m, double* noise_fraction) {
+  const auto set_fraction = [&](double f) {
+    if (noise_fraction) *noise_fraction = f;
+  };
+  if (table.empty()) {
+    set_fraction(0.0);
+    return 0.0;
+  }
+  // out of the table: its first or last row (a miss, d = +inf, is beyond it)
+  if (!(distance_m > table.front().distance_m)) {
+    set_fraction(table.front().noise_fraction);
+    return table.front().output;
+  }
+  if (!(distance_m < table.back().distance_m)) {
+    set_fraction(table.back().noise_fraction);
+    return table.back().output;
+  }
+  const auto upper = std::upper_bound(table.begin(), table.end(), distance_m,
+                                      [](double d, const LookupRow& row) { return d < row.distance_m; });
+  const LookupRow& b = *upper;
+  const LookupRow& a = *(upper - 1);
+  const double u = (distance_m - a.distance_m) / (b.distance_m - a.distance_m);
+  set_fraction(a.noise_fraction + u * (b.noise_fraction - a.noise_fraction));
+  return a.output + u * (b.output - a.output);
+}
+
+double LookupDistance(const std::vector<LookupRow>& table, double output) {
+  if (table.empty()) return 0.0;
+  // the farthest segment whose outputs bracket the value
+  for (std::size_t i = table.size() - 1; i > 0; --i) {
+    const LookupRow& a = table[i - 1];
+    const LookupRow& b = table[i];
+    const double lo = std::min(a.output, b.output);
+    const double hi = std::max(a.output, b.output);
+    if (output >= lo && output <= hi) {
+      if (a.output == b.output) return b.distance_m;
+      return a.distance_m + (output - a.output) / (b.output - a.output) * (b.distance_m - a.distance_m);
+    }
+  }
+  // outside every segment (noise beyond the curve's extremes): the closest row, the farthest on ties
+  std::size_t best = table.size() - 1;
+  for (std::size_t i = table.size(); i-- > 0;) {
+    if (std::abs(table[i].output - output) < std::abs(table[best].output - output)) best = i;
+  }
+  return table[best].distance_m;
+}
+
+double FlightTimeShift(const Vec3& p_WS, const Vec3& v_W, const Vec3& p_WH, double d_m, double c_m_s) {
+  // fixed-point iteration from the static round trip; it contracts by |v|/c,
+  // so a few steps reach the last bit (the cap guards against |v| near c)
+  double tau_s = 2.0 * d_m / c_m_s;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double next_s = (d_m + (p_WH - (p_WS + v_W * tau_s)).norm()) / c_m_s;
+    const bool converged = std::abs(next_s - tau_s) <= 1e-16 * next_s;
+    tau_s = next_s;
+    if (converged) break;
+  }
+  return 0.5 * c_m_s * tau_s - d_m;
+}
+
+double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo) {
+  const double alpha = DegToRad(echo.incidence_deg);
+  const double r = spec.type == SensorType::kUltrasonic ? echo.acoustic_reflectivity : echo.ir_albedo;
+  const double s = echo.specular;
+  const double lobe = std::max(0.0, std::cos(2.0 * alpha));
+  return r * ((1.0 - s) * std::cos(alpha) + s * std::pow(lobe, spec.specular_exponent));
+}
+
+ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain) {
+  // the range windows of §4.1
+  if (!(echo.distance_m <= spec.max_range_m)) return ReadingStatus::kNoEcho;
+  if (echo.distance_m < spec.min_range_m) return ReadingStatus::kTooClose;
+  // the returned energy, or the paper's incidence window of §4.2 and the beam's threshold
+  if (spec.echo_model == EchoModel::kPhysical && IsTimeOfFlight(spec.type)) {
+    if (!(gain * PhysicalEchoEnergy(spec, echo) >= spec.echo_threshold)) return ReadingStatus::kGrazing;
+  } else {
+    if (echo.incidence_deg > spec.max_incidence_deg) return ReadingStatus::kGrazing;
+    if (gain < 1.0 && gain < spec.echo_threshold) return ReadingStatus::kNoEcho;
+  }
+  return echo.from_robot ? ReadingStatus::kSelf : ReadingStatus::kOk;
+}
+
 namespace {
 
-Reading NoDetection(const SensorSpec& spec, ReadingStatus status) {
+Reading NoDetection(const SensorSpec& spec, ReadingStatus status, double distance_m = std::numeric_limits<double>::infinity()) {
   Reading reading;
   reading.status = status;
   reading.d_m = spec.max_range_m;
   reading.signal = spec.type == SensorType::kReflectance ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+  // a lookup sensor always outputs something: the table at the true distance (its last row on a miss)
+  if (spec.type == SensorType::kLookup) reading.output = LookupOutput(spec.lookup_table, distance_m);
   return reading;
 }
 
-// Eq. (1) and its inversion at α = 0, N = 0 (§5).
-Reading MeasureReflectance(const SensorSpec& spec, const Echo& echo, double noise) {
+// d_r rounded to the sensor's resolution, if it has one
+double Quantise(const NoiseSpec& noise, double d_m) {
+  return noise.resolution_m > 0 ? std::round(d_m / noise.resolution_m) * noise.resolution_m : d_m;
+}
+
+// Eq. (1)'s noise-free signal, scaled by the IR albedo when the sensor uses materials
+double ReflectanceSignal(const SensorSpec& spec, const Echo& echo) {
   const double d = echo.distance_m;
-  const double d_max = spec.max_range_m;
   const double cos_alpha = std::cos(DegToRad(echo.incidence_deg));
+  if (d <= 0.0) return std::numeric_limits<double>::infinity();
+  double signal = (spec.max_range_m - d) / (d * d) * cos_alpha * cos_alpha;
+  if (spec.use_material) signal *= echo.ir_albedo;
+  return signal;
+}
+
+// the noisy signal from the noise-free one, inverted to d_r (§5)
+Reading InvertReflectance(const SensorSpec& spec, double clean_signal, double noise, ReadingStatus status) {
+  const double d_max = spec.max_range_m;
   Reading reading;
-  if (d <= 0.0) {
+  if (std::isinf(clean_signal)) {
     // a surface touching the emitter: infinite signal, the inversion's limit is 0
-    reading.signal = std::numeric_limits<double>::infinity();
+    reading.signal = clean_signal;
     reading.d_m = 0.0;
   } else {
-    reading.signal = (d_max - d) / (d * d) * cos_alpha * cos_alpha * (1.0 + noise);
+    reading.signal = spec.noise.model == NoiseModel::kAdditive ? clean_signal + noise : clean_signal * (1.0 + noise);
     // s ≤ 0 (at d_max, at 90°, or noise ≤ −1): no light comes back
     if (!(reading.signal > 0.0)) return NoDetection(spec, ReadingStatus::kNoEcho);
     // the positive root of s·d² + d − d_max = 0, in a form without cancellation
-    reading.d_m = 2.0 * d_max / (1.0 + std::sqrt(1.0 + 4.0 * reading.signal * d_max));
+    reading.d_m = Quantise(spec.noise, 2.0 * d_max / (1.0 + std::sqrt(1.0 + 4.0 * reading.signal * d_max)));
   }
-  reading.status = echo.from_robot ? ReadingStatus::kSelf : ReadingStatus::kOk;
+  reading.status = status;
   return reading;
 }
 
-}  // namespace
-
-Reading Measure(const SensorSpec& spec, const Echo& echo, double gaussian_g) {
-  // the range and incidence windows of §4.1–§4.2
-  if (!(echo.distance_m <= spec.max_range_m)) return NoDetection(spec, ReadingStatus::kNoEcho);
-  if (echo.distance_m < spec.min_range_m) return NoDetection(spec, ReadingStatus::kTooClose);
-  if (echo.incidence_deg > spec.max_incidence_deg) return NoDetection(spec, ReadingStatus::kGrazing);
+// a reading from an echo that counts (status kOk or kSelf)
+Reading MeasureCounted(const SensorSpec& spec, const Echo& echo, ReadingStatus status, const NoiseDraw& draw) {
+  if (draw.uniform <= spec.noise.dropout) return NoDetection(spec, ReadingStatus::kDropout, echo.distance_m);
 
   // the Gaussian law of §4.3
-  const double noise = spec.noise.sigma * gaussian_g + spec.noise.mean;
+  const double noise = spec.noise.sigma * draw.gaussian_g + spec.noise.mean;
 
-  if (spec.type == SensorType::kReflectance) return MeasureReflectance(spec, echo, noise);
+  if (spec.type == SensorType::kReflectance) return InvertReflectance(spec, ReflectanceSignal(spec, echo), noise, status);
 
-  // time of flight (laser, ultrasonic) and the ideal sensor: d_r = d·(1 + N)
   Reading reading;
-  reading.status = echo.from_robot ? ReadingStatus::kSelf : ReadingStatus::kOk;
-  reading.d_m = echo.distance_m * (1.0 + noise);
+  reading.status = status;
+  if (spec.type == SensorType::kLookup) {
+    // Webots' lookupTable: σ = fraction·output, then the distance it implies
+    double fraction = 0;
+    const double output = LookupOutput(spec.lookup_table, echo.distance_m, &fraction);
+    reading.output = output + fraction * output * draw.gaussian_g;
+    reading.d_m = Quantise(spec.noise, LookupDistance(spec.lookup_table, reading.output));
+    return reading;
+  }
+
+  // time of flight (laser, ultrasonic) and the ideal sensor: d_r = d·(1 + N), or a variant
+  const double d = echo.distance_m + echo.flight_shift_m;
+  switch (spec.noise.model) {
+    case NoiseModel::kMultiplicative: reading.d_m = d * (1.0 + noise); break;
+    case NoiseModel::kAdditive: reading.d_m = d + noise; break;
+    case NoiseModel::kDistanceScaled: reading.d_m = d + noise * d * d; break;
+  }
+  reading.d_m = Quantise(spec.noise, reading.d_m);
   return reading;
+}
+
+bool Counts(ReadingStatus status) { return status == ReadingStatus::kOk || status == ReadingStatus::kSelf; }
+
+}  // namespace
+
+Reading Measure(const SensorSpec& spec, const Echo& echo, double gaussian_g, double dropout_uniform) {
+  const ReadingStatus status = EchoStatus(spec, echo, 1.0);
+  if (!Counts(status)) return NoDetection(spec, status, echo.distance_m);
+  return MeasureCounted(spec, echo, status, {gaussian_g, dropout_uniform});
+}
+
+BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
+                        std::span<const NoiseDraw> draws) {
+  BeamReading out;
+  const std::size_t n = echoes.size();
+
+  // why nothing counted: the nearest hit within range says it
+  const auto no_detection = [&]() {
+    int nearest = -1;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (echoes[i].distance_m <= spec.max_range_m && (nearest < 0 || echoes[i].distance_m < echoes[nearest].distance_m)) {
+        nearest = static_cast<int>(i);
+      }
+    }
+    out.truth_ray = std::max(nearest, 0);
+    out.ray = -1;
+    const ReadingStatus status = nearest < 0 ? ReadingStatus::kNoEcho : EchoStatus(spec, echoes[nearest], rays[nearest].gain);
+    out.reading = NoDetection(spec, Counts(status) ? ReadingStatus::kNoEcho : status);
+    return out;
+  };
+
+  if (spec.type == SensorType::kReflectance) {
+    // an IR spot: the weighted sum of the rays' signals, one noise draw, one inversion
+    double sum = 0.0;
+    double largest = -1.0;
+    int dominant = -1;
+    ReadingStatus dominant_status = ReadingStatus::kNoEcho;
+    for (std::size_t i = 0; i < n; ++i) {
+      const ReadingStatus status = EchoStatus(spec, echoes[i], 1.0);
+      if (!Counts(status)) continue;
+      const double contribution = rays[i].weight * ReflectanceSignal(spec, echoes[i]);
+      sum += contribution;
+      if (contribution > largest) {
+        largest = contribution;
+        dominant = static_cast<int>(i);
+        dominant_status = status;
+      }
+    }
+    if (dominant < 0 || !(sum > 0.0)) return no_detection();
+    if (draws[0].uniform <= spec.noise.dropout) {
+      out.reading = NoDetection(spec, ReadingStatus::kDropout);
+      out.truth_ray = dominant;
+      return out;
+    }
+    const double noise = spec.noise.sigma * draws[0].gaussian_g + spec.noise.mean;
+    out.reading = InvertReflectance(spec, sum, noise, dominant_status);
+    out.truth_ray = dominant;
+    out.ray = out.reading.status == ReadingStatus::kNoEcho ? -1 : dominant;
+    return out;
+  }
+
+  // time of flight: the first echo back among those that count
+  int first = -1;
+  ReadingStatus first_status = ReadingStatus::kNoEcho;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double arrival = echoes[i].distance_m + echoes[i].flight_shift_m;
+    if (first >= 0 && !(arrival < echoes[first].distance_m + echoes[first].flight_shift_m)) continue;
+    const ReadingStatus status = EchoStatus(spec, echoes[i], rays[i].gain);
+    if (!Counts(status)) continue;
+    first = static_cast<int>(i);
+    first_status = status;
+  }
+  if (first < 0) return no_detection();
+  out.reading = MeasureCounted(spec, echoes[first], first_status, draws[first]);
+  out.truth_ray = first;
+  out.ray = out.reading.status == ReadingStatus::kDropout ? -1 : first;
+  return out;
 }
 
 }  // namespace proxsim

@@ -13,13 +13,36 @@
 // is flagged `self` and never counts as a detection; the reflectance root is
 // evaluated in the equivalent form 2·d_max / (1 + √(1 + 4·s·d_max)), which
 // has no cancellation for small s and gives 0 at d = 0.
+//
+// Beyond the paper (issue 7; each part off unless the sensor's spec asks for
+// it, so the paper's presets give the paper's readings bit for bit):
+//   - noise variants (additive, distance-scaled), quantisation to
+//     resolution_m, and a dropout probability (status `dropout`);
+//   - materials: with use_material, Eq. (1)'s s is scaled by the surface's IR
+//     albedo ρ: s = ρ·(d_max − d)/d²·cos²α·(1 + N);
+//   - echo_model physical (time of flight): instead of the window α <= α*, the
+//     echo returns when g·E >= echo_threshold, with the returned energy of a
+//     Phong-like lobe for a sensor that is emitter and receiver at once (as
+//     HELIOS++ does for lidar): E = r·((1 − s)·cos α + s·max(0, cos 2α)^n),
+//     r the surface's reflectivity for the modality, s its specular fraction,
+//     n the lobe's exponent, g the beam pattern's gain for the ray; 2α is the
+//     angle between the mirror direction and the way back to the sensor;
+//   - the receiver's motion during the flight (Echo::flight_shift_m);
+//   - a lookup sensor: output = table(d) + σ·G with σ = fraction·output
+//     (Webots' lookupTable), and the distance it implies, read off the table's
+//     far branch;
+//   - a beam of several rays (beam.h): time of flight reports the nearest echo
+//     that counts; reflectance sums the weighted signals and inverts the sum.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
+#include <vector>
 
 #include "core/geometry.h"
+#include "sensors/beam.h"
 #include "sensors/sensor_spec.h"
 
 namespace proxsim {
@@ -30,9 +53,11 @@ enum class ReadingStatus : std::uint8_t {
   kTooClose,  ///< first hit nearer than d_min (the dead zone)
   kGrazing,   ///< incidence outside [0, α*]: the echo does not come back
   kSelf,      ///< the echo came from the robot's own body
+  kDropout,   ///< an echo that counted, lost to the noise model's dropout
+  kNotSampled,  ///< the sensor took no sample at this time (its rate_hz is below the run's)
 };
 
-/// "ok", "no_echo", "too_close", "grazing" or "self".
+/// "ok", "no_echo", "too_close", "grazing", "self", "dropout" or "not_sampled".
 const char* ReadingStatusName(ReadingStatus status);
 
 /// What the ray found: the noise-free truth a sensor works from.
@@ -40,6 +65,19 @@ struct Echo {
   double distance_m = std::numeric_limits<double>::infinity();  ///< d; +inf when nothing was hit
   double incidence_deg = 0.0;  ///< α in [0, 90]: angle between the reversed ray and the surface normal
   bool from_robot = false;     ///< the hit surface belongs to the robot
+  // the surface's material (scene/scene.h); the robot's links are 1, 1, 0
+  double ir_albedo = 1.0;              ///< ρ, the diffuse reflectance in the infrared
+  double acoustic_reflectivity = 1.0;  ///< fraction of the sound energy the surface returns
+  double specular = 0.0;               ///< s, the specular fraction of the reflection
+  /// The time-of-flight distance minus d: half the change in the way back while
+  /// the sensor moved during the flight (0 unless flight_time is on).
+  double flight_shift_m = 0.0;
+};
+
+/// The random draws of one (seed, sensor, sample, ray) key.
+struct NoiseDraw {
+  double gaussian_g = 0.0;  ///< a standard normal variate
+  double uniform = 1.0;     ///< a uniform in (0, 1], for the dropout
 };
 
 struct Reading {
@@ -48,6 +86,8 @@ struct Reading {
   /// Reflectance signal s of Eq. (1), 0 when there is none; NaN for the
   /// time-of-flight sensors, which report a distance directly.
   double signal = std::numeric_limits<double>::quiet_NaN();
+  /// A lookup sensor's output (the table's unit); NaN for the other types.
+  double output = std::numeric_limits<double>::quiet_NaN();
 
   bool detected() const { return status == ReadingStatus::kOk; }
 };
@@ -58,7 +98,46 @@ double IncidenceDeg(double dir_x, double dir_y, double dir_z, double normal_x, d
                     double normal_z);
 
 /// The reading of a sensor given its echo and a standard normal draw G (the
-/// noise N = σ·G + m is formed here). Pure: same inputs, same reading.
-Reading Measure(const SensorSpec& spec, const Echo& echo, double gaussian_g);
+/// noise N = σ·G + m is formed here) and a uniform for the dropout (1: never
+/// dropped). Pure: same inputs, same reading.
+Reading Measure(const SensorSpec& spec, const Echo& echo, double gaussian_g, double dropout_uniform = 1.0);
+
+/// Whether the echo of one ray of pattern gain `gain` counts: kOk or kSelf
+/// when it does, otherwise why not (range, dead zone, incidence window or,
+/// in the physical model or below echo_threshold, kGrazing / kNoEcho).
+ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain);
+
+/// Returned energy E of the physical echo model for a surface hit at the
+/// echo's incidence (see the top of this file); r per the sensor's modality.
+double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo);
+
+/// A lookup table's output at distance d: linear between rows, the first
+/// row's value before the table and the last row's beyond it (and on a miss).
+/// `noise_fraction` receives the interpolated noise fraction when not null.
+double LookupOutput(const std::vector<LookupRow>& table, double distance_m, double* noise_fraction = nullptr);
+
+/// The distance a lookup output implies, searched from the far end of the
+/// table (the branch a datasheet's user calibrates): the farthest d with
+/// LookupOutput(d) = output; the distance of the closest output if none.
+double LookupDistance(const std::vector<LookupRow>& table, double output);
+
+/// The time of flight's distance minus d when the sensor moves: it emits at t
+/// from p_WS moving at v_W, the echo leaves p_WH (d from p_WS) and comes back
+/// to the sensor at t + τ where c·τ = d + |p_WH − (p_WS + v_W·τ)|; the sensor
+/// reports c·τ/2, so the shift is half the change of the way back (moving
+/// straight at the surface at v: c·τ/2 = d·c/(c + v), i.e. −v·τ/2).
+double FlightTimeShift(const Vec3& p_WS, const Vec3& v_W, const Vec3& p_WH, double d_m, double c_m_s);
+
+/// The reading of a whole beam: echoes[i] and draws[i] belong to rays[i].
+/// `ray` is the ray whose echo gave the reading (time of flight: the nearest
+/// echo that counts; reflectance: the largest weighted signal), -1 without a
+/// detection; `truth_ray` the ray whose truth stands beside the reading.
+struct BeamReading {
+  Reading reading;
+  int ray = -1;
+  int truth_ray = 0;
+};
+BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
+                        std::span<const NoiseDraw> draws);
 
 }  // namespace proxsim

@@ -1,5 +1,6 @@
 #include "sensors/sensor_spec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -15,6 +16,7 @@ constexpr TypeName kTypeNames[] = {
     {SensorType::kLaser, "laser"},
     {SensorType::kUltrasonic, "ultrasonic"},
     {SensorType::kReflectance, "reflectance"},
+    {SensorType::kLookup, "lookup"},
 };
 }  // namespace
 
@@ -39,6 +41,26 @@ const std::vector<std::string>& SensorTypeNames() {
     return all;
   }();
   return names;
+}
+
+bool IsTimeOfFlight(SensorType type) {
+  return type == SensorType::kIdeal || type == SensorType::kLaser || type == SensorType::kUltrasonic;
+}
+
+const char* NoiseModelName(NoiseModel model) {
+  switch (model) {
+    case NoiseModel::kMultiplicative: return "multiplicative";
+    case NoiseModel::kAdditive: return "additive";
+    case NoiseModel::kDistanceScaled: return "distance_scaled";
+  }
+  return "?";
+}
+
+std::optional<NoiseModel> NoiseModelFromName(std::string_view name) {
+  for (NoiseModel model : {NoiseModel::kMultiplicative, NoiseModel::kAdditive, NoiseModel::kDistanceScaled}) {
+    if (name == NoiseModelName(model)) return model;
+  }
+  return std::nullopt;
 }
 
 SensorSpec SensorSpec::Preset(SensorType type) {
@@ -69,8 +91,73 @@ SensorSpec SensorSpec::Preset(SensorType type) {
       spec.max_incidence_deg = 90.0;
       spec.noise = {0.01, 0.0};
       break;
+    case SensorType::kLookup:  // a datasheet sensor: the table is the scenario's
+      spec.min_range_m = 0.0;
+      spec.max_range_m = 2.0;
+      spec.max_incidence_deg = 90.0;
+      spec.noise = {0.0, 0.0};
+      break;
   }
   return spec;
+}
+
+const std::vector<std::string>& SensorSpec::PartNames() {
+  static const std::vector<std::string> names = {"hc_sr04", "sharp_gp2y0a21", "vl53l0x"};
+  return names;
+}
+
+std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
+  if (name == "hc_sr04") {
+    // HC-SR04 ultrasonic ranging module (ElecFreaks / Cytron datasheet
+    // "Ultrasonic Ranging Module HC-SR04"): 40 kHz, range 2 cm – 4 m,
+    // "measuring angle 15 degree" (read here as the lobe's half-angle: a 30°
+    // cone), "ranging accuracy can reach 3 mm". The datasheet gives no lobe
+    // shape or incidence limit: the paper's 15° ultrasonic window is kept and
+    // the lobe is uniform over the cone.
+    SensorSpec spec = Preset(SensorType::kUltrasonic);
+    spec.part = "hc_sr04";
+    spec.min_range_m = 0.02;
+    spec.max_range_m = 4.0;
+    spec.noise = {.sigma = 0.003, .mean = 0.0, .model = NoiseModel::kAdditive, .resolution_m = 0.003};
+    spec.beam = BeamSpec{.aperture_deg = 30.0, .rays = 37, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    return spec;
+  }
+  if (name == "sharp_gp2y0a21") {
+    // Sharp GP2Y0A21YK0F analog IR distance sensor (Sharp datasheet
+    // E4-A00201EN): distance measuring range 10–80 cm; output at L = 80 cm
+    // 0.4 V typ. (0.25–0.55); output change from L = 80 cm to 10 cm 1.9 V
+    // typ. (so 2.3 V at 10 cm); the "analog output voltage vs distance to
+    // reflective object" curve rises to about 3.1 V near 6–7 cm and falls
+    // below that (the non-monotonic branch: a near object reads like a far
+    // one). Between 10 and 80 cm the rows follow V ≈ 20.99/L[cm] + 0.19, a
+    // fit to that curve, pinned to the datasheet's 2.3 V and 0.4 V; the rows
+    // under 10 cm are read approximately off the curve. The noise fraction
+    // (2 %) is not in the datasheet; it is an assumption. Beyond the table the
+    // output stays at its last value (Webots' lookupTable convention).
+    SensorSpec spec = Preset(SensorType::kLookup);
+    spec.part = "sharp_gp2y0a21";
+    spec.min_range_m = 0.10;
+    spec.max_range_m = 0.80;
+    spec.lookup_table = {{0.00, 0.00, 0.02}, {0.02, 1.60, 0.02}, {0.04, 2.75, 0.02}, {0.06, 3.10, 0.02},
+                         {0.08, 2.75, 0.02}, {0.10, 2.30, 0.02}, {0.15, 1.59, 0.02}, {0.20, 1.24, 0.02},
+                         {0.25, 1.03, 0.02}, {0.30, 0.89, 0.02}, {0.40, 0.71, 0.02}, {0.50, 0.61, 0.02},
+                         {0.60, 0.54, 0.02}, {0.70, 0.47, 0.02}, {0.80, 0.40, 0.02}};
+    return spec;
+  }
+  if (name == "vl53l0x") {
+    // ST VL53L0X time-of-flight laser ranging sensor (ST datasheet DocID029104):
+    // 940 nm VCSEL, "up to 2 m" (long-range mode), field of view 25°, ranging
+    // output in millimetres, ranging accuracy about ±3 % indoors on a white
+    // target (taken here as σ = 3 % of the distance, the paper's law).
+    SensorSpec spec = Preset(SensorType::kLaser);
+    spec.part = "vl53l0x";
+    spec.min_range_m = 0.03;
+    spec.max_range_m = 2.0;
+    spec.noise = {.sigma = 0.03, .mean = 0.0, .model = NoiseModel::kMultiplicative, .resolution_m = 0.001};
+    spec.beam = BeamSpec{.aperture_deg = 25.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    return spec;
+  }
+  return std::nullopt;
 }
 
 std::vector<std::string> SensorSpec::Validate() const {
@@ -91,6 +178,69 @@ std::vector<std::string> SensorSpec::Validate() const {
   }
   if (!finite(noise.sigma) || noise.sigma < 0) fail("noise.sigma", "a finite standard deviation >= 0", noise.sigma);
   if (!finite(noise.mean)) fail("noise.mean", "a finite mean", noise.mean);
+  if (!finite(noise.resolution_m) || noise.resolution_m < 0) {
+    fail("noise.resolution_m", "a finite resolution >= 0 m", noise.resolution_m);
+  }
+  if (!finite(noise.dropout) || noise.dropout < 0 || noise.dropout > 1) {
+    fail("noise.dropout", "a probability in [0, 1]", noise.dropout);
+  }
+  if (noise.model == NoiseModel::kDistanceScaled && !IsTimeOfFlight(type)) {
+    problems.push_back("noise.model: expected multiplicative or additive for a " + std::string(SensorTypeName(type)) +
+                       " sensor (distance_scaled applies to time-of-flight distances), got distance_scaled");
+  }
+  if (!finite(echo_threshold) || echo_threshold < 0 || echo_threshold > 1) {
+    fail("echo_threshold", "a relative echo strength in [0, 1]", echo_threshold);
+  }
+  if (!finite(specular_exponent) || specular_exponent <= 0) {
+    fail("specular_exponent", "a finite exponent > 0", specular_exponent);
+  }
+  if (echo_model == EchoModel::kPhysical && !IsTimeOfFlight(type)) {
+    problems.push_back("echo_model: expected window for a " + std::string(SensorTypeName(type)) +
+                       " sensor (physical applies to ideal, laser and ultrasonic), got physical");
+  }
+  if (beam && type == SensorType::kLookup) {
+    problems.push_back("beam: expected no beam for a lookup sensor (its table already is the whole sensor), got a beam");
+  }
+  if (beam) {
+    if (!finite(beam->aperture_deg) || beam->aperture_deg <= 0 || beam->aperture_deg >= 180) {
+      fail("beam.aperture_deg", "a full cone angle in (0, 180) degrees", beam->aperture_deg);
+    }
+    if (beam->rays < 1 || beam->rays > 1000) fail("beam.rays", "a number of rays in [1, 1000]", beam->rays);
+    if (beam->pattern == BeamPattern::kGaussian && (!finite(beam->width_deg) || beam->width_deg <= 0)) {
+      fail("beam.pattern.gaussian.width_deg", "a finite width > 0 degrees", beam->width_deg);
+    }
+    if (beam->pattern == BeamPattern::kTable) {
+      double max_gain = 0;
+      if (beam->table.size() < 2) fail("beam.pattern.table", "at least 2 rows [angle_deg, gain]", static_cast<double>(beam->table.size()));
+      for (std::size_t i = 0; i < beam->table.size(); ++i) {
+        const auto& [angle, gain] = beam->table[i];
+        const std::string row = "beam.pattern.table[" + std::to_string(i) + "]";
+        if (!finite(angle) || angle < 0 || angle > 180 || (i > 0 && !(angle > beam->table[i - 1][0]))) {
+          fail(row + "[0]", "angles in [0, 180] degrees, strictly ascending", angle);
+        }
+        if (!finite(gain) || gain < 0) fail(row + "[1]", "a finite gain >= 0", gain);
+        if (finite(gain)) max_gain = std::max(max_gain, gain);
+      }
+      if (beam->table.size() >= 2 && !(max_gain > 0)) fail("beam.pattern.table", "at least one gain > 0", max_gain);
+    }
+  }
+  if (type == SensorType::kLookup) {
+    if (lookup_table.size() < 2) {
+      fail("lookup_table", "at least 2 rows [distance_m, output, noise_fraction]", static_cast<double>(lookup_table.size()));
+    }
+    for (std::size_t i = 0; i < lookup_table.size(); ++i) {
+      const LookupRow& row = lookup_table[i];
+      const std::string key = "lookup_table[" + std::to_string(i) + "]";
+      if (!finite(row.distance_m) || row.distance_m < 0 || (i > 0 && !(row.distance_m > lookup_table[i - 1].distance_m))) {
+        fail(key + "[0]", "distances >= 0 m, strictly ascending", row.distance_m);
+      }
+      if (!finite(row.output)) fail(key + "[1]", "a finite output", row.output);
+      if (!finite(row.noise_fraction) || row.noise_fraction < 0) fail(key + "[2]", "a noise fraction >= 0", row.noise_fraction);
+    }
+  } else if (!lookup_table.empty()) {
+    problems.push_back("lookup_table: expected only with type lookup, got a table for a " +
+                       std::string(SensorTypeName(type)) + " sensor");
+  }
   return problems;
 }
 

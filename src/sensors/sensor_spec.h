@@ -1,9 +1,13 @@
 // The parameters of a proximity sensor (paper §5), as a plain struct with the
-// paper's three sensors and an ideal one as named presets. Every value may be
-// overridden per sensor in the scenario file; Validate() lists every violated
-// condition at once.
+// paper's three sensors and an ideal one as named presets, plus the sensor
+// physics beyond the paper (issue 7), every part of it off by default: a beam
+// of several rays with a pattern, materials, a physical echo model, a lookup
+// table, noise variants. Presets for three real parts cite their datasheets in
+// sensor_spec.cc. Every value may be overridden per sensor in the scenario
+// file; Validate() lists every violated condition at once.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,30 +15,97 @@
 
 namespace proxsim {
 
-enum class SensorType { kIdeal, kLaser, kUltrasonic, kReflectance };
+/// The physics a sensor follows. ideal, laser and ultrasonic are time of
+/// flight; reflectance follows Eq. (1); lookup maps distance to an output
+/// through a datasheet table.
+enum class SensorType { kIdeal, kLaser, kUltrasonic, kReflectance, kLookup };
 
-/// "ideal", "laser", "ultrasonic" or "reflectance".
+/// "ideal", "laser", "ultrasonic", "reflectance" or "lookup".
 const char* SensorTypeName(SensorType type);
 /// The type named `name`, or nullopt.
 std::optional<SensorType> SensorTypeFromName(std::string_view name);
 /// Every type name, for messages.
 const std::vector<std::string>& SensorTypeNames();
+/// True for ideal, laser and ultrasonic: the reading is a time of flight.
+bool IsTimeOfFlight(SensorType type);
 
-/// Gaussian noise N = σ·G + m of paper §4.3; it scales the reading by (1 + N).
+/// How N is applied (N = σ·G + m, G a standard normal draw).
+enum class NoiseModel {
+  kMultiplicative,  ///< the paper's §4.3: x·(1 + N); σ dimensionless
+  kAdditive,        ///< x + N; σ in the unit of x (m for distances, signal units for reflectance)
+  kDistanceScaled,  ///< d + N·d²/(1 m); σ in 1/m — triangulation-like error growing with d² (distances only)
+};
+const char* NoiseModelName(NoiseModel model);
+std::optional<NoiseModel> NoiseModelFromName(std::string_view name);
+
+/// Gaussian noise N = σ·G + m of paper §4.3 and its variants.
 struct NoiseSpec {
-  double sigma = 0.0;  ///< standard deviation σ, dimensionless, >= 0
-  double mean = 0.0;   ///< mean m, dimensionless
+  double sigma = 0.0;  ///< standard deviation σ, >= 0 (unit: see NoiseModel)
+  double mean = 0.0;   ///< mean m, same unit as σ
+  NoiseModel model = NoiseModel::kMultiplicative;
+  double resolution_m = 0.0;  ///< > 0: d_r rounded to a multiple of this; 0: no quantisation
+  double dropout = 0.0;       ///< probability in [0, 1] that a detection is lost (status `dropout`)
+};
+
+/// How the beam's gain varies with the angle θ off the sensor's axis.
+enum class BeamPattern {
+  kUniform,   ///< g(θ) = 1
+  kGaussian,  ///< g(θ) = exp(−θ²/(2·w²)), w = width_deg
+  kTable,     ///< piecewise linear in θ through [angle_deg, gain] rows, relative to the table's largest gain
+};
+
+/// A cone of rays around the sensor's +x axis (beam.h lays them out).
+struct BeamSpec {
+  double aperture_deg = 0.0;  ///< full cone angle, in (0, 180)
+  int rays = 1;               ///< number of rays, in [1, 1000]; 1 is the axis ray alone
+  BeamPattern pattern = BeamPattern::kUniform;
+  double width_deg = 10.0;    ///< the gaussian's w, > 0
+  std::vector<std::array<double, 2>> table;  ///< [angle_deg, gain] rows, angles ascending
+};
+
+/// How a time-of-flight echo is judged to come back.
+enum class EchoModel {
+  kWindow,    ///< the paper's: incidence α <= α*, nothing else
+  kPhysical,  ///< returned energy r·((1−s)·cos α + s·max(0, cos 2α)^n) >= echo_threshold (Phong-like, as HELIOS++)
+};
+
+/// One row of a datasheet table: at distance_m the sensor outputs `output`,
+/// with a Gaussian noise of σ = noise_fraction·output (Webots' lookupTable).
+struct LookupRow {
+  double distance_m = 0.0;
+  double output = 0.0;
+  double noise_fraction = 0.0;
 };
 
 struct SensorSpec {
   SensorType type = SensorType::kIdeal;
+  std::string part;                  ///< the named part this came from ("" for the paper's presets)
   double min_range_m = 0.0;          ///< d_min: closer hits are `too_close`; >= 0
   double max_range_m = 2.0;          ///< d_max: farther hits are `no_echo`; > d_min
   double max_incidence_deg = 90.0;   ///< α*: hits at larger incidence are `grazing`; in [0, 90]
   NoiseSpec noise;
 
-  /// The paper's values for a type (§5; the ideal sensor: [0, 2] m, 90°, no noise).
+  /// A cone of rays; nullopt: the paper's single ray along +x.
+  std::optional<BeamSpec> beam;
+  /// A ray of pattern gain g counts for a time-of-flight beam only if
+  /// g·(echo strength) >= echo_threshold (strength 1 in the window model); in [0, 1].
+  double echo_threshold = 0.1;
+  EchoModel echo_model = EchoModel::kWindow;
+  double specular_exponent = 20.0;   ///< n of the physical model's specular lobe, > 0
+  /// Reflectance: scale Eq. (1)'s s by the surface's IR albedo. Off by
+  /// default, so the paper's formula holds whatever the scene's materials.
+  bool use_material = false;
+  /// type lookup: rows by ascending distance; at least 2.
+  std::vector<LookupRow> lookup_table;
+
+  /// The paper's values for a type (§5; the ideal sensor: [0, 2] m, 90°, no
+  /// noise; lookup: an empty table, to be given).
   static SensorSpec Preset(SensorType type);
+
+  /// A named real part ("hc_sr04", "sharp_gp2y0a21", "vl53l0x"), or nullopt.
+  static std::optional<SensorSpec> PartPreset(std::string_view name);
+  /// Every part name, for messages.
+  static const std::vector<std::string>& PartNames();
 
   /// Every violated condition, one message each, worded after the scenario key; empty if valid.
   std::vector<std::string> Validate() const;

@@ -7,6 +7,7 @@ RunStatistics::RunStatistics(std::size_t sensor_count) : sensors_(sensor_count) 
 void RunStatistics::Add(const SampleFrame& frame) {
   for (std::size_t i = 0; i < frame.sensors.size(); ++i) {
     const SensorSample& s = frame.sensors[i];
+    if (s.reading.status == ReadingStatus::kNotSampled) continue;  // not one of the sensor's samples
     PerSensor& stats = sensors_[i];
     ++stats.samples;
     ++stats.by_status[static_cast<std::size_t>(s.reading.status)];

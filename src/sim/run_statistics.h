@@ -28,7 +28,7 @@ class RunStatistics {
   std::int64_t detections(std::size_t sensor) const;
 
  private:
-  static constexpr std::size_t kStatusCount = 5;
+  static constexpr std::size_t kStatusCount = 6;  // every status but not_sampled, which is not a sample
   struct PerSensor {
     std::int64_t samples = 0;
     std::array<std::int64_t, kStatusCount> by_status{};

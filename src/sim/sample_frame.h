@@ -14,12 +14,15 @@
 namespace proxsim {
 
 struct SensorSample {
-  Reading reading;           ///< what the sensor reports
-  Echo echo;                 ///< the truth it came from: d, α, whether the robot was hit
+  Reading reading;           ///< what the sensor reports (status not_sampled between its samples)
+  Echo echo;                 ///< the truth it came from: d, α, whether the robot was hit (of the ray `truth_ray`)
+  std::int32_t ray = -1;        ///< the beam's ray that gave the reading; -1: none (0 is the axis)
+  std::int32_t truth_ray = 0;   ///< the ray whose truth (echo, object_id, p_WH) is given
+  double t_reported_s = 0.0;    ///< when the reading is reported: the sample time plus the sensor's latency
   std::int32_t object_id = -1;  ///< hit object (scene objects first, then robot links); -1: none
   Vec3 p_WH = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());  ///< hit point, NaN when none
   Vec3 p_WS = Vec3::Zero();       ///< ray origin: the sensor frame's origin in world
-  Vec3 dir_W = Vec3::UnitX();     ///< ray direction: the sensor frame's +x in world
+  Vec3 dir_W = Vec3::UnitX();     ///< the sensor's axis: its frame's +x in world (a beam's rays spread around it)
 };
 
 struct RobotSample {

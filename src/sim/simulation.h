@@ -1,6 +1,12 @@
 // The sampling loop, one step at a time: at every sample time t_k = k/rate_hz,
 // place every sensor in the world (X_WS), cast all their rays in one batch,
 // and turn each sensor's first hit into a reading with the paper's model.
+// A sensor with a beam owns a contiguous range of rays in that one batch and
+// is read with MeasureBeam. Timing (issue 7): a sensor with its own rate_hz
+// is read only at the first run sample of each of its periods (status
+// not_sampled otherwise); a latency delays what the strategy sees; with
+// flight_time the receive point is the sensor's origin at the echo's return,
+// extrapolated at the velocity it had between the last two samples.
 // All state lives in this object, so a run, a test or a strategy written in
 // another language can step it sample by sample.
 //
@@ -35,6 +41,11 @@ class Simulation {
 
   /// The last sample taken.
   const SampleFrame& frame() const { return frame_; }
+
+  /// What the sensors had delivered by the last sample's time: a reading
+  /// appears here at its t_reported_s (the first sample at or after it), and
+  /// not_sampled otherwise. The same as frame() when no sensor has a latency.
+  const SampleFrame& delivered() const { return latency_ ? delivered_ : frame_; }
 
   std::int64_t sample_count() const { return sample_count_; }
   const Scenario& scenario() const { return scenario_; }
@@ -78,9 +89,28 @@ class Simulation {
   std::vector<std::int32_t> ground_ids_;     // objects the feet stand on, left out of the clearance
   std::optional<StopRule> stop_rule_;
   RobotOutcome outcome_;
+  // the beams: sensor i owns rays [ray_begin_[i], ray_begin_[i + 1]) of every flat buffer
+  std::vector<std::size_t> ray_begin_;
+  std::vector<BeamRay> beam_rays_;  // the layout in the sensor frame
   std::vector<Ray> rays_;
+  std::vector<Vec3> ray_dir_W_;     // each ray's direction in double precision
   std::vector<Hit> hits_;
+  std::vector<Echo> echoes_;
+  std::vector<NoiseDraw> draws_;
+  std::vector<Vec3> p_WS_previous_;  // each sensor's origin at the previous sample, for flight_time
   SampleFrame frame_;
+  // latency: per sensor a ring of readings waiting to be delivered
+  bool latency_ = false;
+  struct Pending {
+    std::vector<SensorSample> ring;
+    std::size_t head = 0;
+    std::size_t count = 0;
+  };
+  std::vector<Pending> pending_;
+  SampleFrame delivered_;
+  // the sensor's own sampling: whether sample k is one of its samples
+  bool IsSensorSample(std::size_t sensor, std::int64_t sample) const;
+  void Deliver();
 };
 
 }  // namespace proxsim

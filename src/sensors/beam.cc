@@ -1,0 +1,81 @@
+#include "sensors/beam.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace proxsim {
+
+double BeamGain(const BeamSpec& beam, double off_axis_deg) {
+  switch (beam.pattern) {
+    case BeamPattern::kUniform:
+      return 1.0;
+    case BeamPattern::kGaussian: {
+      const double x = off_axis_deg / beam.width_deg;
+      return std::exp(-0.5 * x * x);
+    }
+    case BeamPattern::kTable: {
+      // piecewise linear; before the first row its gain, after the last its gain
+      const auto& table = beam.table;
+      double peak = 0;
+      for (const auto& row : table) peak = std::max(peak, row[1]);
+      if (table.empty() || !(peak > 0)) return 0.0;
+      if (off_axis_deg <= table.front()[0]) return table.front()[1] / peak;
+      if (off_axis_deg >= table.back()[0]) return table.back()[1] / peak;
+      const auto upper = std::upper_bound(table.begin(), table.end(), off_axis_deg,
+                                          [](double angle, const std::array<double, 2>& row) { return angle < row[0]; });
+      const auto& [a1, g1] = *upper;
+      const auto& [a0, g0] = *(upper - 1);
+      return (g0 + (g1 - g0) * (off_axis_deg - a0) / (a1 - a0)) / peak;
+    }
+  }
+  return 1.0;
+}
+
+std::vector<BeamRay> MakeBeamRays(const std::optional<BeamSpec>& beam) {
+  // the paper's single ray
+  if (!beam || beam->rays <= 1) return {BeamRay{}};
+
+  // K rings for the rays around the axis, about 3·K·(K+1) of them
+  const int around = beam->rays - 1;
+  int rings = std::max(1, static_cast<int>(std::lround(std::sqrt(around / 3.0))));
+  rings = std::min(rings, around);
+  const double half_rad = DegToRad(0.5 * beam->aperture_deg);
+  const double step_rad = half_rad / rings;
+
+  // ring k holds a share of the rays proportional to k; the remainder goes to the outer rings
+  std::vector<int> per_ring(rings);
+  const int triangle = rings * (rings + 1) / 2;
+  int given = 0;
+  for (int k = 1; k <= rings; ++k) given += per_ring[k - 1] = std::max(1, around * k / triangle);
+  // (the floor of each share is >= 1 for every K this picks, so `given` never exceeds `around`)
+  for (int k = rings; given < around; k = k > 1 ? k - 1 : rings) {
+    ++per_ring[k - 1];
+    ++given;
+  }
+
+  // the axis ray stands for the cap [0, step/2]; ring k for the band around θ_k, cut at the cone's edge
+  std::vector<BeamRay> rays;
+  rays.reserve(beam->rays);
+  const auto cap = [](double a, double b) { return 2.0 * std::numbers::pi * (std::cos(a) - std::cos(b)); };
+  rays.push_back({Vec3::UnitX(), 0.0, BeamGain(*beam, 0.0), cap(0.0, 0.5 * step_rad)});
+  for (int k = 1; k <= rings; ++k) {
+    const double theta = k * step_rad;
+    const double solid_angle = cap(theta - 0.5 * step_rad, std::min(theta + 0.5 * step_rad, half_rad)) / per_ring[k - 1];
+    const double gain = BeamGain(*beam, RadToDeg(theta));
+    for (int j = 0; j < per_ring[k - 1]; ++j) {
+      // φ = 0 lies along the sensor's +y, so every ring has a ray in the x-y plane
+      const double phi = 2.0 * std::numbers::pi * j / per_ring[k - 1];
+      rays.push_back({Vec3(std::cos(theta), std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi)),
+                      RadToDeg(theta), gain, solid_angle * gain});
+    }
+  }
+
+  // weights to Σw = 1 (a pattern that is zero everywhere leaves them zero)
+  double total = 0;
+  for (const BeamRay& ray : rays) total += ray.weight;
+  for (BeamRay& ray : rays) ray.weight = total > 0 ? ray.weight / total : 0.0;
+  return rays;
+}
+
+}  // namespace proxsim
