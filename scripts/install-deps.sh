@@ -8,6 +8,7 @@ packages=(
   libembree-dev libeigen3-dev libyaml-cpp-dev libassimp-dev libcli11-dev
   nlohmann-json3-dev librandom123-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libbullet-dev libmujoco-dev
   python3-matplotlib python3-numpy
   nodejs npm
 )

@@ -119,6 +119,10 @@ int main(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand("bench", "race proxsim against bare Embree, Bullet and MuJoCo (a few minutes)");
   bench->add_flag("--json", bench_json, "print one JSON object with every figure (keys: README, Performance)");
   bench->add_flag("--quick", bench_quick, "fewer rays and a shorter heavy run: a smoke test");
+  std::string bench_only = "all";
+  bench->add_option("--only", bench_only, "run one part: rays (the engines) or e2e (paper and heavy runs)")
+      ->check(CLI::IsMember({"all", "rays", "e2e"}))
+      ->capture_default_str();
 
   std::string plot_dir;
   CLI::App* plot = app.add_subcommand("plot", "redraw the figures and the viewer of a finished run");
@@ -138,8 +142,11 @@ int main(int argc, char** argv) {
   try {
     if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format);
     if (*bench) {
-      const nlohmann::json result = proxsim::bench::RunBench({.quick = bench_quick, .progress = true});
-      std::fputs(bench_json ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(), stdout);
+      const nlohmann::json result = proxsim::bench::RunBench(
+          {.quick = bench_quick, .progress = true, .rays = bench_only != "e2e", .end_to_end = bench_only != "rays"});
+      const bool whole = bench_only == "all";
+      std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
+                 stdout);
       return 0;
     }
     if (*plot) return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;

@@ -37,6 +37,7 @@
 #include <atomic>
 #include <cassert>
 #include <cmath>
+#include <map>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -75,6 +76,13 @@ struct Body {
   RTCGeometry instance_all = nullptr;
   RTCGeometry instance_world = nullptr;  ///< null for robot bodies
   bool has_mesh = false;
+  std::vector<const GeomRecord*> closed_form_geoms;  ///< every geom but meshes, for DistanceToWorld
+  // point-query scenes of this body's meshes without some objects (the
+  // ground, say), keyed by the sorted excluded object ids; built on first use
+  std::mutex query_scenes_mutex;
+  std::map<std::vector<std::int32_t>, RTCScene> query_scenes;
+  std::vector<std::int32_t> last_exclude{-1};  // the last list asked for (never a valid list: ids >= 0)
+  RTCScene last_query_scene = nullptr;          // and its answer
 };
 
 /// Sets flush-to-zero and denormals-are-zero (Embree's recommendation) for
@@ -246,7 +254,11 @@ bool MeshPointQueryCallback(RTCPointQueryFunctionArguments* args) {
     const float* v = geom.vertices_B + 3 * tri[k];
     return Vec3(v[0], v[1], v[2]);
   };
-  const double distance_m = DistanceToTriangle(state.p_B, corner(0), corner(1), corner(2));
+  // a triangle whose bounding box lies beyond the best distance cannot win (cheap reject)
+  const Vec3 a = corner(0), b = corner(1), c = corner(2);
+  const Vec3 below = a.cwiseMin(b).cwiseMin(c) - state.p_B, above = state.p_B - a.cwiseMax(b).cwiseMax(c);
+  if (below.cwiseMax(above).cwiseMax(0.0).squaredNorm() >= state.best_distance_m * state.best_distance_m) return false;
+  const double distance_m = DistanceToTriangle(state.p_B, a, b, c);
   if (distance_m >= state.best_distance_m) return false;
 
   // shrink the search sphere (a hair above, so float rounding prunes nothing closer)
@@ -306,7 +318,58 @@ struct RayCaster::Impl {
                        const std::vector<std::array<std::uint32_t, 3>>& triangles);
   void AttachUserShape(Body& body, std::unique_ptr<GeomRecord> record);
   RTCGeometry NewInstance(RTCScene top, const Body& body, unsigned int inst_id);
+  RTCScene MeshQueryScene(Body& body, std::span<const std::int32_t> exclude_object_ids);
 };
+
+/// The scene a point query of `body` walks: the body's own when none of its
+/// meshes is excluded, else (built once per exclusion set) a scene of the
+/// meshes that are not, sharing the body's vertex and index buffers, so that
+/// the walk never wades through excluded triangles (a robot's feet near a
+/// finely meshed floor). Null when every mesh is excluded.
+RTCScene RayCaster::Impl::MeshQueryScene(Body& body, std::span<const std::int32_t> exclude_object_ids) {
+  std::lock_guard<std::mutex> lock(body.query_scenes_mutex);
+  // the caller asks with the same list every time: answer it without a scan
+  if (std::equal(exclude_object_ids.begin(), exclude_object_ids.end(), body.last_exclude.begin(),
+                 body.last_exclude.end())) {
+    return body.last_query_scene;
+  }
+  body.last_exclude.assign(exclude_object_ids.begin(), exclude_object_ids.end());
+  std::vector<std::int32_t> key;
+  for (const auto& geom : body.geoms) {
+    if (geom->kind == GeomKind::kMesh && IsExcluded(geom->object_id, exclude_object_ids)) key.push_back(geom->object_id);
+  }
+  if (key.empty()) return body.last_query_scene = body.scene;
+  std::sort(key.begin(), key.end());
+  key.erase(std::unique(key.begin(), key.end()), key.end());
+  if (auto found = body.query_scenes.find(key); found != body.query_scenes.end()) {
+    return body.last_query_scene = found->second;
+  }
+  RTCScene scene = nullptr;
+  for (std::size_t id = 0; id < body.geoms.size(); ++id) {
+    const GeomRecord& geom = *body.geoms[id];
+    if (geom.kind != GeomKind::kMesh || IsExcluded(geom.object_id, exclude_object_ids)) continue;
+    if (!scene) {
+      scene = rtcNewScene(device);
+      rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
+    }
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    std::size_t vertex_count = 0;
+    for (std::size_t i = 0; i < 3 * geom.triangle_count; ++i) {
+      vertex_count = std::max<std::size_t>(vertex_count, geom.indices[i] + 1);
+    }
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, geom.vertices_B, 0,
+                               3 * sizeof(float), vertex_count);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, geom.indices, 0,
+                               3 * sizeof(std::uint32_t), geom.triangle_count);
+    rtcCommitGeometry(geometry);
+    // the same geometry ID as in the body's scene, so the callback finds its record
+    rtcAttachGeometryByID(scene, geometry, static_cast<unsigned int>(id));
+    rtcReleaseGeometry(geometry);
+  }
+  if (scene) rtcCommitScene(scene);
+  body.query_scenes.emplace(std::move(key), scene);
+  return body.last_query_scene = scene;
+}
 
 void RayCaster::Impl::AttachTriangles(Body& body, std::unique_ptr<GeomRecord> record,
                                       const std::vector<Vec3>& vertices_B,
@@ -381,6 +444,7 @@ RayCaster::~RayCaster() {
   for (auto& body : impl_->bodies) {
     if (body->instance_all) rtcReleaseGeometry(body->instance_all);
     if (body->instance_world) rtcReleaseGeometry(body->instance_world);
+    for (auto& [ids, scene] : body->query_scenes) rtcReleaseScene(scene);
     rtcReleaseScene(body->scene);
   }
   rtcReleaseScene(impl_->scene_all);
@@ -438,6 +502,10 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
       record->shape = body_shape.shape;
       impl.AttachUserShape(body, std::move(record));
     }
+  }
+
+  for (const auto& geom : body.geoms) {
+    if (geom->kind != GeomKind::kMesh) body.closed_form_geoms.push_back(geom.get());
   }
 
   // the body's BVH, built once; then its instance in the top-level scenes
@@ -555,9 +623,9 @@ double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t>
     const Vec3 p_B = body.X_WB.inverse() * p_W;
 
     // boxes and analytic shapes: exact closed forms in the shape frame
-    for (const auto& geom_ptr : body.geoms) {
+    for (const GeomRecord* geom_ptr : body.closed_form_geoms) {
       const GeomRecord& geom = *geom_ptr;
-      if (geom.kind == GeomKind::kMesh || IsExcluded(geom.object_id, exclude_object_ids)) continue;
+      if (IsExcluded(geom.object_id, exclude_object_ids)) continue;
       const Vec3 p_O = geom.X_OB * p_B;
       double distance_m = best_m;
       switch (geom.kind) {
@@ -570,23 +638,35 @@ double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t>
       best_m = std::min(best_m, distance_m);
     }
 
-    // meshes: Embree's point query walks the body's BVH within the best distance so far
+    // meshes: Embree's point query walks the body's BVH within a search radius.
+    // An unbounded query (a world of meshes only) would visit a large part of
+    // the BVH before the radius shrinks, so the radius grows from 5 cm by ×2
+    // until a triangle lies within it: the nearest one is then found exactly.
     if (!body.has_mesh) continue;
+    RTCScene query_scene = impl_->MeshQueryScene(const_cast<Body&>(body), exclude_object_ids);
+    if (!query_scene) continue;  // every mesh of the body is excluded
     PointQueryState state;
     state.body = &body;
     state.exclude_object_ids = exclude_object_ids;
     state.p_B = p_B;
     state.best_distance_m = best_m;
-    RTCPointQuery query;
-    query.x = static_cast<float>(p_B.x());
-    query.y = static_cast<float>(p_B.y());
-    query.z = static_cast<float>(p_B.z());
-    query.time = 0.0f;
-    query.radius = std::isinf(best_m) ? std::numeric_limits<float>::infinity()
-                                      : static_cast<float>(best_m * (1 + 1e-6) + 1e-6);
     RTCPointQueryContext context;
     rtcInitPointQueryContext(&context);
-    rtcPointQuery(body.scene, &query, &context, &MeshPointQueryCallback, &state);
+    constexpr double kFirstRadius_m = 0.05, kGrowth = 2.0, kLastFiniteRadius_m = 1e4;
+    for (double radius_m = std::min(best_m, kFirstRadius_m);; radius_m *= kGrowth) {
+      const bool last = radius_m >= best_m || radius_m > kLastFiniteRadius_m;
+      RTCPointQuery query;
+      query.x = static_cast<float>(p_B.x());
+      query.y = static_cast<float>(p_B.y());
+      query.z = static_cast<float>(p_B.z());
+      query.time = 0.0f;
+      const double bound_m = last ? best_m : radius_m;
+      query.radius = std::isinf(bound_m) ? std::numeric_limits<float>::infinity()
+                                         : static_cast<float>(bound_m * (1 + 1e-6) + 1e-6);
+      rtcPointQuery(query_scene, &query, &context, &MeshPointQueryCallback, &state);
+      // a triangle within the radius: nothing outside it can be nearer
+      if (last || state.best_distance_m <= radius_m) break;
+    }
     best_m = std::min(best_m, state.best_distance_m);
   }
   return best_m;

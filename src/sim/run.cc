@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 
@@ -10,6 +11,7 @@
 #include <embree3/rtcore_config.h>
 
 #include "io/atomic_file.h"
+#include "io/npy_writer.h"
 #include "io/poses_csv.h"
 #include "io/profile_ply.h"
 #include "io/readings_csv.h"
@@ -125,7 +127,14 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   for (std::size_t id = 0; id < sim.object_count(); ++id) object_names.push_back(sim.object_name(id));
   for (const SensorConfig& sensor : scenario.sensors) sensor_names.push_back(sensor.name);
 
-  ReadingsCsvWriter readings((out / "readings.csv").string(), scenario, object_names);
+  const bool npy = options.format == ReadingsFormat::kNpy;
+  std::optional<ReadingsCsvWriter> readings;
+  std::optional<NpyReadingsWriter> readings_npy;
+  if (npy) {
+    readings_npy.emplace((out / "readings").string(), scenario, object_names);
+  } else {
+    readings.emplace((out / "readings.csv").string(), scenario, object_names);
+  }
   ProfilePlyWriter profile((out / "profile.ply").string());
   std::unique_ptr<PosesCsvWriter> poses;
   if (sim.robot()) poses = std::make_unique<PosesCsvWriter>((out / "poses.csv").string(), sim.robot()->model());
@@ -136,7 +145,7 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   const auto loop_start = Clock::now();
   while (!sim.done()) {
     const SampleFrame& frame = sim.Step();
-    readings.Append(frame);
+    if (npy) readings_npy->Append(frame); else readings->Append(frame);
     profile.Append(frame);
     statistics.Add(frame);
     if (poses) poses->Append(frame.t_s, sim.robot()->X_WL());
@@ -144,7 +153,7 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   }
   const double loop_wall_s = SecondsSince(loop_start);
 
-  readings.Commit();
+  if (npy) readings_npy->Commit(); else readings->Commit();
   profile.Commit();
   if (poses) poses->Commit();
 
@@ -155,7 +164,7 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
                     {"samples", sim.sample_count()},
                     {"profile_points", profile.point_count()},
                     {"sensors", statistics.ToJson(sensor_names, object_names)},
-                    {"outputs", {"readings.csv", "profile.ply", "scene.json", "summary.json", "timings.json"}}};
+                    {"outputs", {npy ? "readings/" : "readings.csv", "profile.ply", "scene.json", "summary.json", "timings.json"}}};
   if (sim.robot()) {
     result.summary["robot"] = RobotSummary(sim);
     result.summary["outputs"].push_back("poses.csv");

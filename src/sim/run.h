@@ -11,8 +11,12 @@
 
 namespace proxsim {
 
+/// How the readings are written: readings.csv, or one .npy per column in readings/.
+enum class ReadingsFormat { kCsv, kNpy };
+
 struct RunOptions {
   std::string out_dir = "proxsim-out";
+  ReadingsFormat format = ReadingsFormat::kCsv;
   int threads = 1;        ///< ray-casting threads, >= 1
   bool progress = false;  ///< print a progress line to stderr while running
 };

@@ -1,0 +1,25 @@
+// `proxsim bench`: proxsim's pipeline against bare Embree, Bullet and MuJoCo
+// in one process, on one generated dining room at ~10k, 100k and 1M
+// triangles and the same rays; then the default paper run and the heavy
+// scenario end to end. Every figure is measured in this run; the README
+// ("Performance") documents every key of the result.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+namespace proxsim::bench {
+
+struct BenchOptions {
+  bool quick = false;     ///< fewer rays and a shorter heavy run (a smoke test, ~1 min)
+  bool progress = true;   ///< progress lines on stderr
+  bool rays = true;       ///< the engines on the ray sets
+  bool end_to_end = true; ///< the paper run and the heavy scenario
+};
+
+/// Runs the whole suite and returns its figures.
+nlohmann::json RunBench(const BenchOptions& options);
+
+/// The figures as a human-readable Markdown report.
+std::string BenchReport(const nlohmann::json& result);
+
+}  // namespace proxsim::bench
