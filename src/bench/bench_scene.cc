@@ -308,25 +308,19 @@ Scenario HeavyScenario(const BenchScene& scene, int mounts, int rays_per_mount, 
     const int per_link = (mounts + 5) / 6;
     const char* link = kLinks[m / per_link % kLinks.size()];
     const int slot = m % per_link;
-    Pose X_LM = Pose::Identity();
-    X_LM.translation() = Vec3(0.06, (slot % 2 ? 0.03 : -0.03), -0.05 - 0.3 * slot / std::max(1, per_link));
-    X_LM.linear() = RotationFromRpy(Vec3(0, (5 + 2.0 * slot) * std::numbers::pi / 180, 0));
-    for (int r = 0; r < rays_per_mount; ++r) {
-      // a cone of half-angle 12.5°: a sunflower spiral (ray 0 on the axis)
-      const double t = rays_per_mount > 1 ? std::sqrt(double(r) / (rays_per_mount - 1)) : 0.0;
-      const double off = t * 12.5 * std::numbers::pi / 180, around = r * 2.39996322972865332;
-      const Vec3 dir_M(std::cos(off), std::sin(off) * std::cos(around), std::sin(off) * std::sin(around));
-      // a rotation whose +x is dir_M
-      const Rotation R_MS = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), dir_M).toRotationMatrix();
-      SensorConfig sensor;
-      sensor.name = "m" + std::to_string(m) + "_r" + std::to_string(r);
-      sensor.spec = SensorSpec::Preset(SensorType::kUltrasonic);
-      sensor.link = link;
-      sensor.X_LS = X_LM;
-      sensor.X_LS.linear() = X_LM.linear() * R_MS;
-      sensor.see_robot = true;
-      scenario.sensors.push_back(std::move(sensor));
-    }
+    SensorConfig sensor;
+    sensor.name = "m" + std::to_string(m);
+    sensor.spec = SensorSpec::Preset(SensorType::kUltrasonic);
+    // a beam of rays_per_mount rays in a 25° cone (issue 7's beams: the first echo that counts wins)
+    BeamSpec beam;
+    beam.aperture_deg = 25.0;
+    beam.rays = rays_per_mount;
+    sensor.spec.beam = beam;
+    sensor.link = link;
+    sensor.X_LS.translation() = Vec3(0.06, (slot % 2 ? 0.03 : -0.03), -0.05 - 0.3 * slot / std::max(1, per_link));
+    sensor.X_LS.linear() = RotationFromRpy(Vec3(0, (5 + 2.0 * slot) * std::numbers::pi / 180, 0));
+    sensor.see_robot = true;
+    scenario.sensors.push_back(std::move(sensor));
   }
   return scenario;
 }

@@ -49,10 +49,9 @@ std::vector<Ray> IncoherentRays(std::size_t count, std::uint64_t seed);
 std::vector<Ray> FanRays(std::size_t count, std::size_t fan_rays, std::uint64_t seed);
 
 /// The heavy scenario of the issue, in the given scene: the built-in biped
-/// walking 4.5 m along +x at 1 kHz for `duration_s`, with `mounts` sensor
-/// mountings on its legs, each a cone of `rays_per_mount` ultrasonic
-/// single-ray sensors sharing the mounting's origin (a beam of rays written as
-/// one sensor per ray, until beams exist in the scenario).
+/// walking 4.5 m along +x at 1 kHz for `duration_s`, with `mounts`
+/// ultrasonic sensors on its legs, each a beam of `rays_per_mount` rays in a
+/// 25° cone (BeamSpec: the rays share the sensor's origin).
 Scenario HeavyScenario(const BenchScene& scene, int mounts, int rays_per_mount, double duration_s);
 
 }  // namespace proxsim::bench
