@@ -588,10 +588,11 @@ TEST(ScenarioErrorTest, AbsurdRunSizeIsRefusedWithTheEstimate) {
       "duration_s: 1000000\n"
       "rate_hz: 1000\n"
       "sensors: [{name: a, type: laser}, {name: b, type: laser}]\n"));
-  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:2:", "duration_s:", "too large", "1e+09 samples", "2 sensor(s)",
-                                    "2e+09 sensor samples", "at most 1e9"}));
-  // just under the limit passes
-  EXPECT_NO_THROW(LoadScenarioText(WithHeader("duration_s: 500000\nrate_hz: 1000\nsensors: [{name: a, type: laser}, "
+  // 1e9 samples × 2 sensors × 300 B per sensor sample
+  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:2:", "duration_s:", "too large", "1e+09 samples of 2 sensor(s)",
+                                    "about 600 GB", "at most 50 GB"}));
+  // just under the limit (8e7 samples × 2 × 300 B = 48 GB) passes
+  EXPECT_NO_THROW(LoadScenarioText(WithHeader("duration_s: 80000\nrate_hz: 1000\nsensors: [{name: a, type: laser}, "
                                               "{name: b, type: laser}]\n"),
                                    "scenario.yaml"));
 }

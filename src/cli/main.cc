@@ -5,8 +5,10 @@
 //   proxsim bench [--json] [--quick] (the performance suite, README "Performance")
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
+#include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -19,11 +21,28 @@
 #include "io/scenario.h"
 #include "report/report_runner.h"
 #include "sim/run.h"
+#include "sim/simulation.h"
 
 namespace {
 
 constexpr int kExitBadInput = 2;
 constexpr int kExitFailure = 1;
+
+// Set by SIGINT/SIGTERM during a run: the run stops after the current sample,
+// commits its files and exits 128 + the signal number. A second signal kills.
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "written from a signal handler");
+
+extern "C" void OnStopSignal(int signal_number) { g_stop_signal.store(signal_number); }
+
+void InstallStopHandlers() {
+  struct sigaction action {};
+  action.sa_handler = OnStopSignal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND;  // the second Ctrl-C takes the default action
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
 
 int PrintInputError(const proxsim::InputError& error) {
   std::fprintf(stderr, "proxsim: %zu problem%s in the input:\n", error.problems().size(),
@@ -45,7 +64,21 @@ int Run(const std::string& scenario_path, const std::string& out_dir, std::optio
   options.threads = threads;
   options.format = format == "npy" ? proxsim::ReadingsFormat::kNpy : proxsim::ReadingsFormat::kCsv;
   options.progress = isatty(STDERR_FILENO) != 0;
+  options.stop_signal = &g_stop_signal;
+  options.warn = [](const std::string& warning) { std::fprintf(stderr, "proxsim: warning: %s\n", warning.c_str()); };
+  InstallStopHandlers();
   const proxsim::RunResult result = proxsim::RunScenario(scenario, options);
+  if (result.interrupted) {
+    const int signal_number = g_stop_signal.load();
+    const auto& last = result.summary["last_sample_t_s"];
+    std::fprintf(stderr,
+                 "proxsim: interrupted by %s after %lld of %lld samples (last t = %s s); the files in %s/ hold "
+                 "every completed sample, summary.json says \"interrupted\": true\n",
+                 signal_number == SIGTERM ? "SIGTERM" : "SIGINT", result.summary["samples"].get<long long>(),
+                 result.summary["samples_planned"].get<long long>(),
+                 last.is_null() ? "none" : std::to_string(last.get<double>()).c_str(), out_dir.c_str());
+    return 128 + signal_number;
+  }
 
   // the summary a user reads first
   std::printf("proxsim: %s — %lld samples of %zu sensors in %.3f s wall\n", scenario.source.c_str(),
@@ -86,6 +119,8 @@ int Run(const std::string& scenario_path, const std::string& out_dir, std::optio
 
 int Validate(const std::string& scenario_path) {
   const proxsim::Scenario scenario = proxsim::LoadScenarioFile(scenario_path);
+  // the robot, its trajectory and the sensors' links, as a run would check them
+  const proxsim::Simulation simulation(scenario, 1);
   std::printf("%s: valid (%zu objects, %zu sensors, %lld samples)\n", scenario_path.c_str(),
               scenario.scene.objects.size(), scenario.sensors.size(),
               static_cast<long long>(scenario.SampleCount()));

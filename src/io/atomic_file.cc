@@ -41,10 +41,17 @@ void AtomicFile::Commit() {
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
   if (!flushed || !closed) {
+    const int write_errno = errno;
     std::remove(tmp_path_.c_str());
+    errno = write_errno;
     Fail("write", tmp_path_);
   }
-  if (std::rename(tmp_path_.c_str(), path_.c_str()) != 0) Fail("rename into place", path_);
+  if (std::rename(tmp_path_.c_str(), path_.c_str()) != 0) {
+    const int rename_errno = errno;
+    std::remove(tmp_path_.c_str());
+    errno = rename_errno;
+    Fail("rename into place", path_);
+  }
 }
 
 void WriteFileAtomically(const std::string& path, std::string_view content) {

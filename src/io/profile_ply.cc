@@ -35,6 +35,15 @@ void ProfilePlyWriter::Append(const SampleFrame& frame) {
 void ProfilePlyWriter::Commit() {
   body_.Commit();  // now complete under path_ + ".body"
   const std::string body_path = path_ + ".body";
+  try {
+    WriteWithHeader(body_path);
+  } catch (...) {
+    std::remove(body_path.c_str());  // a failed run leaves no part behind
+    throw;
+  }
+}
+
+void ProfilePlyWriter::WriteWithHeader(const std::string& body_path) {
   AtomicFile ply(path_);
   ply.Write("ply\nformat ascii 1.0\ncomment proxsim profile: world-frame detections\n");
   std::string element = "element vertex ";
@@ -48,7 +57,12 @@ void ProfilePlyWriter::Commit() {
   if (body == nullptr) throw std::runtime_error("cannot reopen " + body_path);
   std::vector<char> chunk(1 << 20);
   std::size_t n;
-  while ((n = std::fread(chunk.data(), 1, chunk.size(), body)) > 0) ply.Write({chunk.data(), n});
+  try {
+    while ((n = std::fread(chunk.data(), 1, chunk.size(), body)) > 0) ply.Write({chunk.data(), n});
+  } catch (...) {
+    std::fclose(body);
+    throw;
+  }
   std::fclose(body);
   std::remove(body_path.c_str());
   ply.Commit();

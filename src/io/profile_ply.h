@@ -24,6 +24,8 @@ class ProfilePlyWriter {
   std::int64_t point_count() const { return point_count_; }
 
  private:
+  void WriteWithHeader(const std::string& body_path);
+
   std::string path_;
   AtomicFile body_;  // the vertex lines, before the header exists
   std::int64_t point_count_ = 0;

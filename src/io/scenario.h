@@ -17,6 +17,7 @@ struct SensorConfig {
   std::string name;
   SensorSpec spec;
   std::string link = "world";    ///< a robot link, or "world"
+  int link_line = 0;             ///< line of `link:` in the scenario file, for messages (0: none)
   Pose X_LS = Pose::Identity();  ///< sensor frame S in its link L; the beam is S's +x
   bool see_robot = true;         ///< false: the robot's own links are transparent to this sensor
   // timing (issue 7; all off by default)

@@ -217,6 +217,7 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
   // where it is mounted
   const Field link = map["link"];
   sensor.link = reader.String(link).value_or(sensor.link);
+  if (link) sensor.link_line = link.node.Mark().line + 1;  // the link is checked against the robot later
   if (!has_robot && sensor.link != "world") {
     reader.Fail(link, "expected 'world' (the scenario has no robot section), got '" + sensor.link + "'");
   }

@@ -1,9 +1,10 @@
 // Loads triangle meshes through Assimp, whatever the format (OBJ, STL, PLY,
 // glTF, Collada ...), into one flat triangle soup in the mesh's own frame.
 //
-// Assimp triangulates polygons, merges identical vertices and bakes the node
-// hierarchy's transforms into the vertices (aiProcess_PreTransformVertices),
-// so a multi-part file comes out as the parts where the file puts them. Points
+// Polygons are triangulated (fans), identical vertices merged and the node
+// hierarchy's transforms baked into the vertices, so a multi-part file comes
+// out as the parts where the file puts them; we do it ourselves rather than by
+// Assimp's post-processing, which aborts on some malformed files. Points
 // and lines are dropped. Every failure is the user's input, so it is an
 // InputError that names the file: missing, unreadable or unparseable, without
 // a single triangle, or with a non-finite vertex (after scaling).
@@ -17,6 +18,7 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -40,8 +42,13 @@ std::size_t PlyTypeSize(const std::string& type) {
 }
 
 /// For a file that starts with the PLY magic: throws InputError unless its
-/// header ends with `end_header`, names only known types, and (binary) the body
-/// holds at least the bytes the header promises (lists counted as empty).
+/// header is well formed — only the PLY keywords (format, comment, obj_info,
+/// element NAME COUNT, property TYPE NAME, property list TYPE TYPE NAME,
+/// end_header), printable text, known types — and (binary) the body holds at
+/// least the bytes the header promises (lists counted as empty). Assimp 5.2's
+/// PLY reader corrupts its heap on some malformed headers (found by fuzzing:
+/// unknown keywords, control bytes in a property name), so nothing else
+/// reaches it.
 void CheckPlyFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
@@ -49,9 +56,19 @@ void CheckPlyFile(const std::string& path) {
 
   // walk the header, adding up the least size of a binary body
   constexpr std::size_t kMaxHeaderBytes = 1 << 16;
-  bool binary = false, ended = false;
+  bool binary = false, ended = false, has_format = false, in_element = false;
   std::size_t element_count = 0, least_body_bytes = 0;
+  int line_no = 1;
+  const auto fail = [&](const std::string& why) {
+    throw InputError(path + ":" + std::to_string(line_no) + ": PLY header: " + why);
+  };
   while (static_cast<std::size_t>(in.tellg()) < kMaxHeaderBytes && std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    for (const char c : line) {
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t') fail("a control byte in the header");
+      if (static_cast<unsigned char>(c) >= 0x7f) fail("a non-ASCII byte in the header");
+    }
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
@@ -59,21 +76,39 @@ void CheckPlyFile(const std::string& path) {
       ended = true;
       break;
     }
+    if (keyword == "comment" || keyword == "obj_info") continue;
     if (keyword == "format") {
-      std::string format;
-      words >> format;
-      binary = format.rfind("binary", 0) == 0;
+      std::string format, version;
+      words >> format >> version;
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+        fail("format '" + format + "' (expected ascii, binary_little_endian or binary_big_endian)");
+      binary = format != "ascii";
+      has_format = true;
     } else if (keyword == "element") {
       std::string name;
-      words >> name >> element_count;
+      if (!(words >> name >> element_count)) fail("expected 'element NAME COUNT'");
+      if (element_count > (std::size_t{1} << 32)) fail("element '" + name + "' has an absurd count");
+      in_element = true;
     } else if (keyword == "property") {
-      std::string type;
+      if (!in_element) fail("a property before any element");
+      std::string type, name;
       words >> type;
-      if (type == "list") words >> type;  // the list's count type: at least one per element
-      if (PlyTypeSize(type) == 0) throw InputError(path + ": PLY property of unknown type '" + type + "'");
+      if (type == "list") {
+        std::string count_type, item_type;
+        words >> count_type >> item_type;
+        if (PlyTypeSize(count_type) == 0 || PlyTypeSize(item_type) == 0)
+          fail("list property of unknown types '" + count_type + "', '" + item_type + "'");
+        type = count_type;  // at least the count, once per element
+      } else if (PlyTypeSize(type) == 0) {
+        throw InputError(path + ": PLY property of unknown type '" + type + "'");
+      }
+      if (!(words >> name)) fail("a property without a name");
       least_body_bytes += element_count * PlyTypeSize(type);
+    } else {
+      fail("unknown keyword '" + keyword + "'");
     }
   }
+  if (ended && !has_format) fail("no format line");
   if (!ended) throw InputError(path + ": PLY header has no end_header line");
 
   // a binary body shorter than the header promises is truncated
@@ -99,36 +134,57 @@ std::shared_ptr<const TriangleMesh> LoadMeshFile(const std::string& path, const 
 
   CheckPlyFile(path);
 
-  // parse (points and lines are skipped below, so that a file of lines only
-  // reports "no triangles")
+  // parse and validate only: Assimp 5.2's post-processing steps abort the
+  // process (ai_assert) on some malformed files (Triangulate on faces of fewer
+  // than three indices, found by fuzzing), so we triangulate, bake node
+  // transforms and join identical vertices ourselves; ValidateDataStructure
+  // refuses out-of-range indices and empty faces before we read them.
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
   if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
     throw InputError(path + ": cannot read the mesh file (" + importer.GetErrorString() + ")");
   }
 
-  // gather every mesh's triangles into one soup, scaling the vertices
+  // walk the node tree, baking each node's transform into the vertices of the
+  // meshes it holds; faces of 3+ indices become triangle fans, points and
+  // lines are dropped (a file of lines only reports "no triangles")
   auto mesh = std::make_shared<TriangleMesh>();
-  for (unsigned int m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh& part = *scene->mMeshes[m];
-    const auto first_vertex = static_cast<std::uint32_t>(mesh->vertices_O.size());
-    for (unsigned int v = 0; v < part.mNumVertices; ++v) {
-      const aiVector3D& p = part.mVertices[v];
-      const Vec3f p_O = Vec3(p.x, p.y, p.z).cwiseProduct(scale).cast<float>();
-      if (!p_O.allFinite()) {
-        throw InputError(path + ": vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
-                         " is not finite (after scaling)");
+  std::map<std::array<float, 3>, std::uint32_t> vertex_index;  // identical vertices joined
+  constexpr int kMaxDepth = 256;
+  const auto add_node = [&](const auto& self, const aiNode& node, const aiMatrix4x4& X_parent, int depth) -> void {
+    if (depth > kMaxDepth) throw InputError(path + ": node tree deeper than " + std::to_string(kMaxDepth));
+    const aiMatrix4x4 X = X_parent * node.mTransformation;
+    for (unsigned int k = 0; k < node.mNumMeshes; ++k) {
+      const unsigned int m = node.mMeshes[k];
+      if (m >= scene->mNumMeshes || !scene->mMeshes[m]) throw InputError(path + ": a node names a missing mesh");
+      const aiMesh& part = *scene->mMeshes[m];
+      std::vector<std::uint32_t> index_of(part.mNumVertices);
+      for (unsigned int v = 0; v < part.mNumVertices; ++v) {
+        const aiVector3D p = X * part.mVertices[v];
+        const Vec3f p_O = Vec3(p.x, p.y, p.z).cwiseProduct(scale).cast<float>();
+        if (!p_O.allFinite()) {
+          throw InputError(path + ": vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
+                           " is not finite (after scaling)");
+        }
+        const auto [it, added] = vertex_index.try_emplace({p_O.x(), p_O.y(), p_O.z()},
+                                                           static_cast<std::uint32_t>(mesh->vertices_O.size()));
+        if (added) mesh->vertices_O.push_back(p_O);
+        index_of[v] = it->second;
       }
-      mesh->vertices_O.push_back(p_O);
+      for (unsigned int f = 0; f < part.mNumFaces; ++f) {
+        const aiFace& face = part.mFaces[f];
+        for (unsigned int i = 0; i < face.mNumIndices; ++i)
+          if (face.mIndices[i] >= part.mNumVertices) throw InputError(path + ": a face names a missing vertex");
+        for (unsigned int i = 1; i + 1 < face.mNumIndices; ++i) {
+          mesh->triangles.push_back(
+              {index_of[face.mIndices[0]], index_of[face.mIndices[i]], index_of[face.mIndices[i + 1]]});
+        }
+      }
     }
-    for (unsigned int f = 0; f < part.mNumFaces; ++f) {
-      const aiFace& face = part.mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      mesh->triangles.push_back({first_vertex + face.mIndices[0], first_vertex + face.mIndices[1],
-                                 first_vertex + face.mIndices[2]});
-    }
-  }
+    for (unsigned int c = 0; c < node.mNumChildren; ++c)
+      if (node.mChildren[c]) self(self, *node.mChildren[c], X, depth + 1);
+  };
+  add_node(add_node, *scene->mRootNode, aiMatrix4x4(), 0);
   if (mesh->triangles.empty()) throw InputError(path + ": the mesh file has no triangles");
   return mesh;
 }

@@ -114,6 +114,44 @@ class ProgressLine {
   Clock::time_point last_{};
 };
 
+// How far p_O lies inside the solid shape (negative: outside); planes count
+// their z = 0 surface only, meshes have no inside here (nullopt).
+std::optional<double> DepthInside(const Shape& shape, const Vec3& p_O) {
+  if (const auto* box = std::get_if<Box>(&shape)) return ((box->size_m / 2) - p_O.cwiseAbs()).minCoeff();
+  if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->radius_m - p_O.norm();
+  if (const auto* cylinder = std::get_if<Cylinder>(&shape)) {
+    return std::min(cylinder->radius_m - p_O.head<2>().norm(), cylinder->length_m / 2 - std::abs(p_O.z()));
+  }
+  if (std::holds_alternative<Plane>(shape)) return -std::abs(p_O.z());
+  return std::nullopt;
+}
+
+// Suspicious but legal: a sensor whose ray starts inside a scene object, or
+// exactly on its surface (its rays may then hit that surface at d = 0).
+std::vector<std::string> SensorsInsideObjects(const Scenario& scenario, const SampleFrame& frame) {
+  constexpr double kOnSurface_m = 1e-9;
+  std::vector<std::string> warnings;
+  for (std::size_t s = 0; s < scenario.sensors.size() && s < frame.sensors.size(); ++s) {
+    const Vec3& p_WS = frame.sensors[s].p_WS;
+    for (const SceneObject& object : scenario.scene.objects) {
+      const auto depth_m = DepthInside(object.shape, object.X_WO.inverse() * p_WS);
+      if (!depth_m || *depth_m < -kOnSurface_m) continue;
+      char where[160];
+      std::snprintf(where, sizeof where, "at t = %g s its origin (%g, %g, %g) m", frame.t_s, p_WS.x(), p_WS.y(),
+                    p_WS.z());
+      const std::string sensor = scenario.source + ": sensor '" + scenario.sensors[s].name + "'";
+      if (*depth_m > kOnSurface_m) {
+        warnings.push_back(sensor + " is inside object '" + object.name + "' (" + where +
+                           "); it sees that object from within");
+      } else {
+        warnings.push_back(sensor + " starts on the surface of object '" + object.name + "' (" + where +
+                           "); its rays may hit that surface at d = 0");
+      }
+    }
+  }
+  return warnings;
+}
+
 }  // namespace
 
 RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
@@ -143,8 +181,24 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
 
   // the loop: one sample per step, streamed out as it is taken
   const auto loop_start = Clock::now();
+  std::vector<std::string> warnings;
+  bool interrupted = false;
+  std::int64_t samples_done = 0;
+  double last_t_s = 0.0;
   while (!sim.done()) {
+    // a stop request (SIGINT, SIGTERM) ends the run between two samples
+    if (options.stop_signal != nullptr && options.stop_signal->load() != 0) {
+      interrupted = true;
+      break;
+    }
     const SampleFrame& frame = sim.Step();
+    ++samples_done;
+    last_t_s = frame.t_s;
+    if (frame.sample == 0) {
+      warnings = SensorsInsideObjects(scenario, frame);
+      if (options.warn)
+        for (const std::string& warning : warnings) options.warn(warning);
+    }
     if (npy) readings_npy->Append(frame); else readings->Append(frame);
     profile.Append(frame);
     statistics.Add(frame);
@@ -161,10 +215,18 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   result.summary = {{"proxsim", 1},
                     {"versions", Versions()},
                     {"inputs", EchoInputs(scenario)},
-                    {"samples", sim.sample_count()},
+                    {"samples", samples_done},
+                    {"interrupted", interrupted},
                     {"profile_points", profile.point_count()},
                     {"sensors", statistics.ToJson(sensor_names, object_names)},
                     {"outputs", {npy ? "readings/" : "readings.csv", "profile.ply", "scene.json", "summary.json", "timings.json"}}};
+  result.summary["warnings"] = warnings;
+  if (interrupted) {
+    // the files hold every sample up to and including this one
+    result.summary["samples_planned"] = sim.sample_count();
+    result.summary["last_sample_t_s"] = samples_done > 0 ? nlohmann::json(last_t_s) : nlohmann::json(nullptr);
+  }
+  result.interrupted = interrupted;
   if (sim.robot()) {
     result.summary["robot"] = RobotSummary(sim);
     result.summary["outputs"].push_back("poses.csv");
@@ -175,7 +237,7 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
 
   // timings live apart from the summary so that reruns give byte-identical summaries
   result.wall_s = SecondsSince(start);
-  const double simulated_s = static_cast<double>(sim.sample_count()) / scenario.rate_hz;
+  const double simulated_s = static_cast<double>(samples_done) / scenario.rate_hz;
   const nlohmann::json timings = {{"wall_s", result.wall_s},
                                   {"loop_wall_s", loop_wall_s},
                                   {"threads", options.threads},

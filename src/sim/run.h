@@ -3,6 +3,8 @@
 // under its final name only when it is complete.
 #pragma once
 
+#include <atomic>
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -19,11 +21,18 @@ struct RunOptions {
   ReadingsFormat format = ReadingsFormat::kCsv;
   int threads = 1;        ///< ray-casting threads, >= 1
   bool progress = false;  ///< print a progress line to stderr while running
+  /// When set and non-zero (a signal number, say), the run stops after the
+  /// current sample, commits every file and marks summary.json interrupted.
+  const std::atomic<int>* stop_signal = nullptr;
+  /// Receives warnings about suspicious but legal input (a sensor that starts
+  /// inside an object); they are also listed in summary.json.
+  std::function<void(const std::string&)> warn;
 };
 
 struct RunResult {
   nlohmann::json summary;  ///< what was written to summary.json
   double wall_s = 0.0;     ///< wall time of the simulation loop and its outputs
+  bool interrupted = false;  ///< stopped early through RunOptions::stop_signal
 };
 
 /// Runs a validated scenario; throws std::runtime_error on I/O failure.

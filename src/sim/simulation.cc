@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "io/nearest_key.h"
 #include "sensors/noise.h"
 
 namespace proxsim {
@@ -38,9 +39,17 @@ Simulation::Simulation(const Scenario& scenario, int threads)
       link = robot_ ? robot_->model().LinkIndex(sensor.link) : -1;
       if (link < 0) {
         std::string known;
-        for (int i = 0; robot_ && i < robot_->model().link_count(); ++i) known += (i ? ", " : "") + robot_->model().link_name(i);
-        problems.push_back(scenario.source + ": sensors." + sensor.name + ".link: unknown link '" + sensor.link +
-                           "' (expected world" + (known.empty() ? "" : " or one of " + known) + ")");
+        std::vector<std::string> names;
+        for (int i = 0; robot_ && i < robot_->model().link_count(); ++i) {
+          names.push_back(robot_->model().link_name(i));
+          known += (i ? ", " : "") + names.back();
+        }
+        const auto nearest = NearestKey(sensor.link, names);
+        const std::string where =
+            scenario.source + (sensor.link_line > 0 ? ":" + std::to_string(sensor.link_line) : std::string());
+        problems.push_back(where + ": sensors." + sensor.name + ".link: unknown link '" + sensor.link + "'" +
+                           (nearest ? " (did you mean '" + *nearest + "'?)" : "") + "; expected world" +
+                           (known.empty() ? "" : " or one of " + known));
       }
     }
     sensor_link_.push_back(link);

@@ -1,0 +1,170 @@
+// Every class of bad input of issue 6 through the real `proxsim` binary: exit
+// code 2, one message per problem naming the file (and line), the key and what
+// was expected, and no output folder created. The inputs are small files in
+// tests/data/bad_input/; the README table "Bad input and the message it gets"
+// quotes the messages these tests check.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_helpers.h"
+
+namespace proxsim {
+namespace {
+
+using testing::CommandResult;
+using testing::FreshDir;
+using testing::RunProxsim;
+
+const std::string kBadDir = std::string(PROXSIM_TEST_DATA_DIR) + "/bad_input";
+
+// Runs `proxsim run FILE --out DIR --no-report` and checks the common
+// contract: exit 2, every fragment in the output, the folder not created.
+CommandResult ExpectRefused(const std::string& name, const std::string& run_args,
+                            const std::vector<std::string>& fragments) {
+  const auto out = FreshDir("bad_input_" + name);
+  const CommandResult result = RunProxsim("run " + run_args + " --out " + out.string() + " --no-report");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  for (const std::string& fragment : fragments) {
+    EXPECT_NE(result.output.find(fragment), std::string::npos) << "missing '" << fragment << "' in:\n"
+                                                               << result.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out)) << "the output folder was created for a refused run";
+  return result;
+}
+
+CommandResult ExpectRefusedFile(const std::string& file, const std::vector<std::string>& fragments) {
+  return ExpectRefused(std::filesystem::path(file).stem().string(), kBadDir + "/" + file, fragments);
+}
+
+TEST(BadInputTest, NotYaml) { ExpectRefusedFile("not_yaml.yaml", {"not_yaml.yaml:", "not valid YAML"}); }
+
+TEST(BadInputTest, EmptyFile) { ExpectRefusedFile("empty.yaml", {"empty.yaml", "the file is empty", "proxsim: 1"}); }
+
+TEST(BadInputTest, MissingFile) {
+  ExpectRefused("missing", kBadDir + "/no_such_scenario.yaml", {"no_such_scenario.yaml", "does not exist"});
+}
+
+TEST(BadInputTest, UnknownKeySuggestsTheNearest) {
+  ExpectRefusedFile("unknown_key.yaml", {"unknown_key.yaml:2:", "duraton_s", "duration_s"});
+}
+
+TEST(BadInputTest, WrongType) { ExpectRefusedFile("wrong_type.yaml", {"wrong_type.yaml:2:", "rate_hz", "fast"}); }
+
+TEST(BadInputTest, NanAndInfinityAnywhere) {
+  const auto result = ExpectRefusedFile("non_finite.yaml", {"non_finite.yaml:2:", "duration_s", "non_finite.yaml:6:",
+                                                             "size_m"});
+  EXPECT_NE(result.output.find("2 problems"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, ZeroAndNegativeRatesDurationsSizesRadii) {
+  const auto result = ExpectRefusedFile(
+      "non_positive.yaml", {"non_positive.yaml:2:", "duration_s", "non_positive.yaml:3:", "rate_hz",
+                            "non_positive.yaml:7:", "size_m", "non_positive.yaml:9:", "radius_m"});
+  EXPECT_NE(result.output.find("4 problems"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, SensorValuesAllAtOnce) {
+  // inverted and negative range_m, max_incidence_deg beyond 90, negative sigma, unknown type
+  const auto result = ExpectRefusedFile(
+      "sensor_values.yaml", {"sensor_values.yaml:5:", "range_m", "sensor_values.yaml:8:", "sensor_values.yaml:11:",
+                             "max_incidence_deg", "sensor_values.yaml:14:", "sigma", "sensor_values.yaml:16:",
+                             "sonar", "ultrasonic"});
+  EXPECT_NE(result.output.find("5 problems"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, UnknownLink) {
+  ExpectRefusedFile("unknown_link.yaml", {"unknown_link.yaml:7:", "sensors.us.link", "unknown link 'left_tibiaa'",
+                                          "did you mean 'left_tibia'?", "expected world or one of"});
+  // validate finds it too, without running
+  const CommandResult result = RunProxsim("validate " + kBadDir + "/unknown_link.yaml");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("unknown link 'left_tibiaa'"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, MissingMesh) { ExpectRefusedFile("missing_mesh.yaml", {"missing_mesh.yaml:5:", "no_such_mesh.obj"}); }
+
+TEST(BadInputTest, MeshWithoutTriangles) {
+  ExpectRefusedFile("mesh_no_triangles.yaml", {"lines_only.obj", "no triangles"});
+}
+
+TEST(BadInputTest, MeshWithNonFiniteVertices) {
+  ExpectRefusedFile("mesh_non_finite.yaml", {"non_finite.obj", "not finite"});
+}
+
+TEST(BadInputTest, BrokenUrdf) { ExpectRefusedFile("broken_urdf.yaml", {"broken.urdf", "could not parse the URDF"}); }
+
+TEST(BadInputTest, UrdfWhoseJointsFormACycle) {
+  ExpectRefusedFile("cycle_urdf.yaml", {"planar_cycle.urdf", "cycle"});
+}
+
+TEST(BadInputTest, UrdfWithAMissingLink) {
+  ExpectRefusedFile("missing_link_urdf.yaml", {"missing_link.urdf", "thigh"});
+}
+
+TEST(BadInputTest, TrajectoryWithMissingColumns) {
+  const auto result = ExpectRefusedFile("trajectory_missing_columns.yaml",
+                                        {"missing_columns.csv:1:", "missing column 'z_m'", "'roll_deg'", "'pitch_deg'"});
+  EXPECT_NE(result.output.find("3 problems"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, TrajectoryWithTimeGoingBackwards) {
+  ExpectRefusedFile("trajectory_time_backwards.yaml", {"time_backwards.csv:4:", "t_s"});
+}
+
+TEST(BadInputTest, AbsurdRate) {
+  ExpectRefusedFile("absurd_rate.yaml", {"absurd_rate.yaml:", "too large", "GB", "at most 50 GB"});
+}
+
+TEST(BadInputTest, RunThatWouldWriteTerabytesGivesTheEstimate) {
+  // 604800 s × 10 kHz × 8 sensors × 300 B
+  ExpectRefusedFile("terabytes.yaml", {"terabytes.yaml:3:", "duration_s", "6.05e+09 samples of 8 sensor(s)",
+                                       "about 1.45e+04 GB", "at most 50 GB"});
+}
+
+TEST(BadInputTest, CommandLine) {
+  ExpectRefused("threads_zero", "--threads 0", {"--threads"});
+  ExpectRefused("seed_text", "--seed abc", {"--seed"});
+  ExpectRefused("unknown_option", "--speed", {"not expected: --speed"});
+  ExpectRefused("format", "--format xml", {"--format", "xml"});
+}
+
+TEST(BadInputTest, ValidateListsTheSameProblems) {
+  const CommandResult result = RunProxsim("validate " + kBadDir + "/sensor_values.yaml");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("5 problems"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, SensorInsideAnObjectIsAWarningNotAnError) {
+  const auto out = FreshDir("bad_input_inside");
+  const CommandResult result =
+      RunProxsim("run " + kBadDir + "/sensor_inside_object.yaml --out " + out.string() + " --no-report");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("warning: "), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("sensor 'buried' is inside object 'crate'"), std::string::npos) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(out / "readings.csv"));
+  EXPECT_NE(testing::ReadFile(out / "summary.json").find("is inside object 'crate'"), std::string::npos);
+}
+
+TEST(BadInputTest, SensorOnASurfaceIsAWarning) {
+  const auto out = FreshDir("bad_input_on_surface");
+  const CommandResult result =
+      RunProxsim("run " + kBadDir + "/sensor_on_surface.yaml --out " + out.string() + " --no-report");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("warning: "), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("sensor 'flush' starts on the surface of object 'crate'"), std::string::npos)
+      << result.output;
+}
+
+TEST(BadInputTest, SensorOutsideObjectsGetsNoWarning) {
+  const auto out = FreshDir("bad_input_clean");
+  const CommandResult result = RunProxsim("run " + std::string(PROXSIM_TEST_DATA_DIR) +
+                                          "/cli/world_closed_form.yaml --out " + out.string() + " --no-report");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output.find("warning:"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace proxsim
