@@ -545,7 +545,9 @@ std::string BenchReport(const json& r) {
       << " → " << r["machine"]["load_average_1min_at_end"] << ", " << r["rays_per_set"] << " rays per set\n\n";
   out << "| scene | rays | threads | proxsim pipeline | bare Embree best (call) | Embree robust | Bullet | MuJoCo | "
          "proxsim/Embree | proxsim/Bullet | proxsim/MuJoCo |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const auto& [label, s] : r["scenes"].items()) {
+  for (const std::string label : {"10k", "100k", "1m"}) {
+    if (!r["scenes"].contains(label)) continue;
+    const json& s = r["scenes"][label];
     for (const char* set : {"incoherent", "fans"}) {
       const json& x = s[set];
       for (const char* t : {"1t", "2t"}) {
@@ -566,7 +568,9 @@ std::string BenchReport(const json& r) {
   }
   out << "\n| scene | build: proxsim | Embree | Bullet | MuJoCo (MJCF parse + compile) | Embree BVH bytes | proxsim RSS Δ | "
          "agreement vs Embree / Bullet / MuJoCo (mismatches of rays, max |Δd|) |\n|---|---|---|---|---|---|---|---|\n";
-  for (const auto& [label, s] : r["scenes"].items()) {
+  for (const std::string label : {"10k", "100k", "1m"}) {
+    if (!r["scenes"].contains(label)) continue;
+    const json& s = r["scenes"][label];
     std::string agree;
     for (const char* peer : {"embree", "bullet", "mujoco"}) {
       if (!s["agreement"].contains(peer)) continue;
