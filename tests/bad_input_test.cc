@@ -115,7 +115,8 @@ TEST(BadInputTest, TrajectoryWithTimeGoingBackwards) {
 }
 
 TEST(BadInputTest, AbsurdRate) {
-  ExpectRefusedFile("absurd_rate.yaml", {"absurd_rate.yaml:", "too large", "GB", "at most 50 GB"});
+  ExpectRefusedFile("absurd_rate.yaml", {"absurd_rate.yaml:2: rate_hz:", "too large", "1e+301 samples",
+                                         "at most 50 GB"});
 }
 
 TEST(BadInputTest, RunThatWouldWriteTerabytesGivesTheEstimate) {

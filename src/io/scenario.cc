@@ -67,8 +67,9 @@ void CheckRunSize(YamlReader& reader, const MapView& top, const Scenario& scenar
   const double bytes =
       samples * (sensors * kBytesPerSensorSample + (scenario.robot ? kBytesPerRobotSample : 0.0));
   if (bytes <= kMaxOutputBytes) return;
-  const Field duration = top["duration_s"];
-  reader.Fail(duration, "the run is too large: " + FormatCount(scenario.duration_s) + " s × " +
+  // blame the key the file gives (both default values fit)
+  const Field blame = top.Has("duration_s") ? top["duration_s"] : top["rate_hz"];
+  reader.Fail(blame, "the run is too large: " + FormatCount(scenario.duration_s) + " s × " +
                             FormatCount(scenario.rate_hz) + " Hz = " + FormatCount(samples) + " samples of " +
                             FormatCount(sensors) + " sensor(s) would write about " + FormatCount(bytes / 1e9) +
                             " GB; expected at most 50 GB (shorten duration_s, lower rate_hz or use fewer sensors)");
