@@ -2,6 +2,8 @@
 // read a CSV back by column name.
 #pragma once
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -31,9 +33,11 @@ inline CommandResult RunProxsim(const std::string& args) {
   return result;
 }
 
-/// A fresh, empty folder under the system's temporary directory.
+/// A fresh, empty folder under the system's temporary directory, private to
+/// this process: CTest runs each test in a process of its own, in parallel.
 inline std::filesystem::path FreshDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("proxsim_test_" + name);
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("proxsim_test_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   return dir;
 }
