@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "input_error_helpers.h"
+
 #include "core/input_error.h"
 #include "robot/robot_model.h"
 
@@ -32,15 +34,7 @@ const char* kTwoLink = R"(<?xml version="1.0"?>
   <joint name="spin" type="continuous"><parent link="slider"/><child link="wheel"/><axis xyz="0 0 1"/></joint>
 </robot>)";
 
-template <typename F>
-std::string ErrorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::ErrorOf;
 
 TEST(RobotModel, TwoLinkLegForwardKinematicsMatchesTrigonometry) {
   const RobotModel m = RobotModel::FromUrdfText(kTwoLink, "two_link.urdf");

@@ -2,6 +2,8 @@
 // and every kind of bad file refused with its file and line.
 #include <gtest/gtest.h>
 
+#include "input_error_helpers.h"
+
 #include "core/input_error.h"
 #include "gait/trajectory_player.h"
 
@@ -11,16 +13,7 @@ namespace {
 const std::string kDir = PROXSIM_TEST_DATA_DIR "/trajectories/";
 const char* kHeader = "t_s,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,left_knee_pitch\n";
 
-// The message of the InputError thrown by `f`, or "" when nothing is thrown.
-template <typename F>
-std::string ErrorOf(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::ErrorOf;
 
 std::string ErrorOfText(const std::string& text) {
   return ErrorOf([&] { TrajectoryPlayer::FromCsvText(RobotModel::Builtin("biped"), text, "mem.csv"); });
