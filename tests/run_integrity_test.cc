@@ -4,7 +4,8 @@
 //    130 / 143;
 //  - an unwritable folder and a full disk are clear errors, with no file under
 //    its final name and no temporary file left behind;
-//  - the default run gives byte-identical files with --threads 1, 2 and 8.
+//  - the default run gives byte-identical files with --threads 1, 2 and 8, and
+//    so does a run with enough beam rays for the work to be shared out.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -248,6 +249,26 @@ TEST(DeterminismTest, DefaultRunIsByteIdenticalWithOneTwoAndEightThreads) {
     EXPECT_TRUE(contents[0][f] == contents[1][f]) << files[f] << " differs between 1 and 2 threads";
     EXPECT_TRUE(contents[0][f] == contents[2][f]) << files[f] << " differs between 1 and 8 threads";
   }
+}
+
+// Enough rays per sample (592) that Cast and the sensor models run on several
+// threads: still the same bytes.
+TEST(DeterminismTest, ManyBeamsRunIsByteIdenticalWithOneTwoAndEightThreads) {
+  const std::string scenario = std::string(PROXSIM_TEST_DATA_DIR) + "/scenarios/many_beams.yaml";
+  std::vector<std::string> readings;
+  for (int threads : {1, 2, 8}) {
+    const auto out = FreshDir("determinism_beams_" + std::to_string(threads));
+    const auto result =
+        RunProxsim("run " + scenario + " --no-report --threads " + std::to_string(threads) + " --out " + out.string());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    readings.push_back(ReadFile(out / "readings.csv"));
+  }
+  // every kind of reading is there, so every draw path ran
+  for (const char* status : {",ok,", ",dropout,", ",grazing,", ",self,"}) {
+    EXPECT_NE(readings[0].find(status), std::string::npos) << status;
+  }
+  EXPECT_TRUE(readings[0] == readings[1]) << "readings.csv differs between 1 and 2 threads";
+  EXPECT_TRUE(readings[0] == readings[2]) << "readings.csv differs between 1 and 8 threads";
 }
 
 }  // namespace

@@ -190,5 +190,41 @@ TEST(StatusNames, AreTheDocumentedOnes) {
   EXPECT_STREQ(ReadingStatusName(ReadingStatus::kSelf), "self");
 }
 
+// The draws are made on demand: one ray's at most per reading, none without
+// an echo that counts, and the reading is the one every draw up front gives.
+TEST(LazyDraws, OneDrawPerReadingAtMostAndTheSameReading) {
+  const BeamSpec beam{.aperture_deg = 30.0, .rays = 7, .pattern = BeamPattern::kUniform, .width_deg = 10, .table = {}};
+  const std::vector<BeamRay> rays = MakeBeamRays(beam);
+  std::vector<NoiseDraw> draws(rays.size());
+  for (std::size_t i = 0; i < draws.size(); ++i) draws[i] = {0.3 * static_cast<double>(i) - 1.0, 0.5};
+
+  for (SensorType type : {SensorType::kLaser, SensorType::kUltrasonic, SensorType::kReflectance}) {
+    SensorSpec spec = SensorSpec::Preset(type);
+    spec.noise.dropout = 0.25;
+    // echoes that count at different distances, and one that does not (beyond range)
+    std::vector<Echo> echoes;
+    for (std::size_t i = 0; i < rays.size(); ++i) echoes.push_back(EchoAt(0.9 - 0.1 * static_cast<double>(i % 4)));
+    echoes[3] = Echo{};
+    int calls = 0;
+    const DrawOfRay counting = [&](int ray) {
+      ++calls;
+      return draws[static_cast<std::size_t>(ray)];
+    };
+    const BeamReading lazy = MeasureBeam(spec, echoes, rays, counting);
+    const BeamReading eager = MeasureBeam(spec, echoes, rays, std::span<const NoiseDraw>(draws));
+    EXPECT_EQ(calls, 1) << SensorTypeName(type);
+    EXPECT_EQ(lazy.reading.status, eager.reading.status) << SensorTypeName(type);
+    EXPECT_EQ(lazy.reading.d_m, eager.reading.d_m) << SensorTypeName(type);
+    EXPECT_EQ(lazy.ray, eager.ray) << SensorTypeName(type);
+
+    // nothing within range: no draw at all
+    calls = 0;
+    const std::vector<Echo> nothing(rays.size());
+    EXPECT_EQ(MeasureBeam(spec, nothing, rays, counting).reading.status, ReadingStatus::kNoEcho);
+    EXPECT_EQ(Measure(spec, Echo{}, counting).status, ReadingStatus::kNoEcho);
+    EXPECT_EQ(calls, 0) << SensorTypeName(type);
+  }
+}
+
 }  // namespace
 }  // namespace proxsim

@@ -83,7 +83,8 @@ std::string CpuModel() {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 /// proxsim's pipeline as the simulation runs it: one batched Cast, then per
-/// ray the echo, the keyed Gaussian draw and the sensor model (laser preset).
+/// ray the echo and the sensor model (laser preset), with the keyed Gaussian
+/// drawn only when the echo counts (Simulation::MeasureSensor does the same).
 struct Pipeline {
   const RayCaster* caster = nullptr;
   SensorSpec spec = SensorSpec::Preset(SensorType::kLaser);
@@ -106,8 +107,9 @@ struct Pipeline {
                                           hit.normal_W.x(), hit.normal_W.y(), hit.normal_W.z());
       }
       // (seed, sensor = beam of 32 rays, sample 0, ray in beam), as the simulation keys it
-      const double g = KeyedGaussian({7, static_cast<std::uint32_t>(i / 32), 0, static_cast<std::uint32_t>(i % 32)});
-      readings[i] = Measure(spec, echo, g);
+      readings[i] = Measure(spec, echo, [i](int) {
+        return NoiseDraw{KeyedGaussian({7, static_cast<std::uint32_t>(i / 32), 0, static_cast<std::uint32_t>(i % 32)})};
+      });
     }
   }
 };
@@ -491,8 +493,9 @@ json RunBench(const BenchOptions& options) {
                                               hits[i].normal_W.x(), hits[i].normal_W.y(), hits[i].normal_W.z());
           }
           const auto sensor = static_cast<std::uint32_t>(i / per_sensor), ray = static_cast<std::uint32_t>(i % per_sensor);
-          const double g = KeyedGaussian({heavy.seed, sensor, static_cast<std::uint64_t>(k), ray});
-          readings[i] = Measure(heavy.sensors[sensor].spec, echo, g);
+          readings[i] = Measure(heavy.sensors[sensor].spec, echo, [&](int) {
+            return NoiseDraw{KeyedGaussian({heavy.seed, sensor, static_cast<std::uint64_t>(k), ray})};
+          });
         }
         // keep the first samples' rays for bare Embree (a copy inside the timed loop, well under 1 % of it)
         if (threads == 1 && k < own_samples) own_rays.insert(own_rays.end(), rays.begin(), rays.end());

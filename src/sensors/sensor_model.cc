@@ -188,13 +188,22 @@ bool Counts(ReadingStatus status) { return status == ReadingStatus::kOk || statu
 }  // namespace
 
 Reading Measure(const SensorSpec& spec, const Echo& echo, double gaussian_g, double dropout_uniform) {
+  return Measure(spec, echo, [&](int) { return NoiseDraw{gaussian_g, dropout_uniform}; });
+}
+
+Reading Measure(const SensorSpec& spec, const Echo& echo, const DrawOfRay& draw) {
   const ReadingStatus status = EchoStatus(spec, echo, 1.0);
   if (!Counts(status)) return NoDetection(spec, status, echo.distance_m);
-  return MeasureCounted(spec, echo, status, {gaussian_g, dropout_uniform});
+  return MeasureCounted(spec, echo, status, draw(0));
 }
 
 BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
                         std::span<const NoiseDraw> draws) {
+  return MeasureBeam(spec, echoes, rays, [&](int ray) { return draws[static_cast<std::size_t>(ray)]; });
+}
+
+BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
+                        const DrawOfRay& draw) {
   BeamReading out;
   const std::size_t n = echoes.size();
 
@@ -231,12 +240,14 @@ BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, st
       }
     }
     if (dominant < 0 || !(sum > 0.0)) return no_detection();
-    if (draws[0].uniform <= spec.noise.dropout) {
+    // one draw for the spot (ray 0's key), as when every ray's draws were made
+    const NoiseDraw spot_draw = draw(0);
+    if (spot_draw.uniform <= spec.noise.dropout) {
       out.reading = NoDetection(spec, ReadingStatus::kDropout);
       out.truth_ray = dominant;
       return out;
     }
-    const double noise = spec.noise.sigma * draws[0].gaussian_g + spec.noise.mean;
+    const double noise = spec.noise.sigma * spot_draw.gaussian_g + spec.noise.mean;
     out.reading = InvertReflectance(spec, sum, noise, dominant_status);
     out.truth_ray = dominant;
     out.ray = out.reading.status == ReadingStatus::kNoEcho ? -1 : dominant;
@@ -255,7 +266,7 @@ BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, st
     first_status = status;
   }
   if (first < 0) return no_detection();
-  out.reading = MeasureCounted(spec, echoes[first], first_status, draws[first]);
+  out.reading = MeasureCounted(spec, echoes[first], first_status, draw(first));
   out.truth_ray = first;
   out.ray = out.reading.status == ReadingStatus::kDropout ? -1 : first;
   return out;

@@ -37,6 +37,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -80,6 +81,13 @@ struct NoiseDraw {
   double uniform = 1.0;     ///< a uniform in (0, 1], for the dropout
 };
 
+/// The draws of ray `ray` of a reading, made when the model asks for them: a
+/// reading uses the draws of at most one ray (the echo it reports), so a beam
+/// of 32 rays pays for one draw, and a sample with no echo for none. The
+/// draws must be a pure function of the ray (keyed noise), so that asking
+/// lazily gives the reading it would give with every draw made up front.
+using DrawOfRay = std::function<NoiseDraw(int ray)>;
+
 struct Reading {
   ReadingStatus status = ReadingStatus::kNoEcho;
   double d_m = 0.0;  ///< d_r, the distance the sensor reports
@@ -101,6 +109,9 @@ double IncidenceDeg(double dir_x, double dir_y, double dir_z, double normal_x, d
 /// noise N = σ·G + m is formed here) and a uniform for the dropout (1: never
 /// dropped). Pure: same inputs, same reading.
 Reading Measure(const SensorSpec& spec, const Echo& echo, double gaussian_g, double dropout_uniform = 1.0);
+
+/// The same reading, with the draws of ray 0 made only if the echo counts.
+Reading Measure(const SensorSpec& spec, const Echo& echo, const DrawOfRay& draw);
 
 /// Whether the echo of one ray of pattern gain `gain` counts: kOk or kSelf
 /// when it does, otherwise why not (range, dead zone, incidence window or,
@@ -139,5 +150,9 @@ struct BeamReading {
 };
 BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
                         std::span<const NoiseDraw> draws);
+
+/// The same beam reading, with the one ray's draws it needs made on demand.
+BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
+                        const DrawOfRay& draw);
 
 }  // namespace proxsim

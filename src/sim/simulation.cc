@@ -1,5 +1,6 @@
 #include "sim/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,7 +11,7 @@
 namespace proxsim {
 
 Simulation::Simulation(const Scenario& scenario, int threads)
-    : scenario_(scenario), sample_count_(scenario.SampleCount()) {
+    : scenario_(scenario), sample_count_(scenario.SampleCount()), threads_(std::max(1, threads)) {
   // the static world: one body, one shape per scene object, ids = scene order
   std::vector<BodyShape> world_shapes;
   world_shapes.reserve(scenario.scene.objects.size());
@@ -72,7 +73,6 @@ Simulation::Simulation(const Scenario& scenario, int threads)
   ray_dir_W_.resize(beam_rays_.size());
   hits_.resize(beam_rays_.size());
   echoes_.resize(beam_rays_.size());
-  draws_.resize(beam_rays_.size());
   frame_.sensors.resize(sensor_count);
   p_WS_previous_.assign(sensor_count, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t i = 0; i < sensor_count; ++i) {
@@ -164,96 +164,112 @@ void Simulation::PlaceSensors() {
 }
 
 void Simulation::MeasureAll() {
-  for (std::size_t i = 0; i < scenario_.sensors.size(); ++i) {
-    const SensorConfig& sensor = scenario_.sensors[i];
-    const SensorSpec& spec = sensor.spec;
-    SensorSample& out = frame_.sensors[i];
-    out.t_reported_s = frame_.t_s + sensor.latency_s;
-    const Vec3 p_WS_previous = p_WS_previous_[i];
-    p_WS_previous_[i] = out.p_WS;
+  // sensors are independent (each owns its rays, echoes and output slot), so
+  // many rays are shared out by sensor; the keyed noise keeps the readings
+  // the same whatever the thread count
+  const auto sensor_count = static_cast<std::ptrdiff_t>(scenario_.sensors.size());
+  if (threads_ > 1 && rays_.size() >= kParallelMeasureRays) {
+#pragma omp parallel for num_threads(threads_) schedule(dynamic, 4)
+    for (std::ptrdiff_t i = 0; i < sensor_count; ++i) MeasureSensor(static_cast<std::size_t>(i));
+  } else {
+    for (std::ptrdiff_t i = 0; i < sensor_count; ++i) MeasureSensor(static_cast<std::size_t>(i));
+  }
+}
 
-    // between the sensor's own samples: no reading
-    if (!IsSensorSample(i, frame_.sample)) {
-      out.reading = Reading{};
-      out.reading.status = ReadingStatus::kNotSampled;
-      out.reading.d_m = spec.max_range_m;
-      out.echo = Echo{};
-      out.object_id = -1;
-      out.ray = -1;
-      out.truth_ray = 0;
-      out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
-      continue;
-    }
+void Simulation::MeasureSensor(std::size_t i) {
+  const SensorConfig& sensor = scenario_.sensors[i];
+  const SensorSpec& spec = sensor.spec;
+  SensorSample& out = frame_.sensors[i];
+  out.t_reported_s = frame_.t_s + sensor.latency_s;
+  const Vec3 p_WS_previous = p_WS_previous_[i];
+  p_WS_previous_[i] = out.p_WS;
 
-    // the sensor's velocity over the last sample, for the echo's flight
-    Vec3 v_W = Vec3::Zero();
-    if (sensor.flight_time && frame_.sample > 0 && p_WS_previous.allFinite()) {
-      v_W = (out.p_WS - p_WS_previous) * scenario_.rate_hz;
-    }
-    const double c_m_s = sensor.wave_speed_m_s > 0 ? sensor.wave_speed_m_s
-                         : spec.type == SensorType::kUltrasonic ? 343.0
-                                                                 : 299792458.0;
+  // between the sensor's own samples: no reading
+  if (!IsSensorSample(i, frame_.sample)) {
+    out.reading = Reading{};
+    out.reading.status = ReadingStatus::kNotSampled;
+    out.reading.d_m = spec.max_range_m;
+    out.echo = Echo{};
+    out.object_id = -1;
+    out.ray = -1;
+    out.truth_ray = 0;
+    out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
 
-    // every ray's echo, with its material, and its keyed draws
-    const std::size_t begin = ray_begin_[i];
-    const std::size_t end = ray_begin_[i + 1];
-    for (std::size_t r = begin; r < end; ++r) {
-      const Hit& hit = hits_[r];
-      Echo& echo = echoes_[r];
-      echo = Echo{};
-      if (hit.is_hit()) {
-        echo.distance_m = hit.distance_m;
-        // the robot's links come after the scene's objects (and have the default material)
-        echo.from_robot = hit.object_id >= first_robot_object_id_;
-        if (!echo.from_robot) {
-          const Material& material = scenario_.scene.objects[hit.object_id].material;
-          echo.ir_albedo = material.ir_albedo.value_or(material.albedo);
-          echo.acoustic_reflectivity = material.acoustic_reflectivity.value_or(1.0);
-          echo.specular = material.specular;
-        }
-        const Vec3& dir_W = ray_dir_W_[r];
-        const Vec3 normal_W = hit.normal_W.cast<double>();
-        echo.incidence_deg = IncidenceDeg(dir_W.x(), dir_W.y(), dir_W.z(), normal_W.x(), normal_W.y(), normal_W.z());
-        if (sensor.flight_time) {
-          echo.flight_shift_m = FlightTimeShift(out.p_WS, v_W, out.p_WS + echo.distance_m * dir_W, echo.distance_m, c_m_s);
-        }
+  // the sensor's velocity over the last sample, for the echo's flight
+  Vec3 v_W = Vec3::Zero();
+  if (sensor.flight_time && frame_.sample > 0 && p_WS_previous.allFinite()) {
+    v_W = (out.p_WS - p_WS_previous) * scenario_.rate_hz;
+  }
+  const double c_m_s = sensor.wave_speed_m_s > 0 ? sensor.wave_speed_m_s
+                       : spec.type == SensorType::kUltrasonic ? 343.0
+                                                               : 299792458.0;
+
+  // every ray's echo, with its material
+  const std::size_t begin = ray_begin_[i];
+  const std::size_t end = ray_begin_[i + 1];
+  for (std::size_t r = begin; r < end; ++r) {
+    const Hit& hit = hits_[r];
+    Echo& echo = echoes_[r];
+    echo = Echo{};
+    if (hit.is_hit()) {
+      echo.distance_m = hit.distance_m;
+      // the robot's links come after the scene's objects (and have the default material)
+      echo.from_robot = hit.object_id >= first_robot_object_id_;
+      if (!echo.from_robot) {
+        const Material& material = scenario_.scene.objects[hit.object_id].material;
+        echo.ir_albedo = material.ir_albedo.value_or(material.albedo);
+        echo.acoustic_reflectivity = material.acoustic_reflectivity.value_or(1.0);
+        echo.specular = material.specular;
       }
-      // keyed draws per (seed, sensor, sample, ray): thread- and order-independent;
-      // the dropout's uniform has its own key (the ray's top bit set)
-      const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(i), static_cast<std::uint64_t>(frame_.sample),
-                         static_cast<std::uint32_t>(r - begin)};
-      draws_[r].gaussian_g = KeyedGaussian(key);
-      draws_[r].uniform = 1.0;
-      if (spec.noise.dropout > 0) {
-        NoiseKey dropout_key = key;
-        dropout_key.ray |= 0x80000000u;
-        draws_[r].uniform = KeyedUniforms(dropout_key).u1;
+      const Vec3& dir_W = ray_dir_W_[r];
+      const Vec3 normal_W = hit.normal_W.cast<double>();
+      echo.incidence_deg = IncidenceDeg(dir_W.x(), dir_W.y(), dir_W.z(), normal_W.x(), normal_W.y(), normal_W.z());
+      if (sensor.flight_time) {
+        echo.flight_shift_m = FlightTimeShift(out.p_WS, v_W, out.p_WS + echo.distance_m * dir_W, echo.distance_m, c_m_s);
       }
     }
+  }
 
-    // the reading: the paper's single ray, or the beam's combination
-    if (end - begin == 1) {
-      out.reading = Measure(spec, echoes_[begin], draws_[begin].gaussian_g, draws_[begin].uniform);
-      out.truth_ray = 0;
-      out.ray = (out.reading.status == ReadingStatus::kOk || out.reading.status == ReadingStatus::kSelf) ? 0 : -1;
-    } else {
-      const BeamReading beam = MeasureBeam(spec, std::span(echoes_).subspan(begin, end - begin),
-                                           std::span(beam_rays_).subspan(begin, end - begin),
-                                           std::span(draws_).subspan(begin, end - begin));
-      out.reading = beam.reading;
-      out.truth_ray = beam.truth_ray;
-      out.ray = beam.ray;
+  // keyed draws per (seed, sensor, sample, ray): thread- and order-independent,
+  // made only for the ray the reading needs; the dropout's uniform has its
+  // own key (the ray's top bit set)
+  const DrawOfRay draw = [&](int ray) {
+    const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(i), static_cast<std::uint64_t>(frame_.sample),
+                       static_cast<std::uint32_t>(ray)};
+    NoiseDraw d;
+    d.gaussian_g = KeyedGaussian(key);
+    if (spec.noise.dropout > 0) {
+      NoiseKey dropout_key = key;
+      dropout_key.ray |= 0x80000000u;
+      d.uniform = KeyedUniforms(dropout_key).u1;
     }
+    return d;
+  };
 
-    // the truth beside it: the echo, object and hit point of the ray it came from
-    const std::size_t truth = begin + static_cast<std::size_t>(out.truth_ray);
-    out.echo = echoes_[truth];
-    out.object_id = hits_[truth].object_id;
-    if (hits_[truth].is_hit()) {
-      out.p_WH = out.p_WS + out.echo.distance_m * ray_dir_W_[truth];
-    } else {
-      out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
-    }
+  // the reading: the paper's single ray, or the beam's combination
+  if (end - begin == 1) {
+    out.reading = Measure(spec, echoes_[begin], draw);
+    out.truth_ray = 0;
+    out.ray = (out.reading.status == ReadingStatus::kOk || out.reading.status == ReadingStatus::kSelf) ? 0 : -1;
+  } else {
+    const BeamReading beam = MeasureBeam(spec, std::span(echoes_).subspan(begin, end - begin),
+                                         std::span(beam_rays_).subspan(begin, end - begin),
+                                         draw);
+    out.reading = beam.reading;
+    out.truth_ray = beam.truth_ray;
+    out.ray = beam.ray;
+  }
+
+  // the truth beside it: the echo, object and hit point of the ray it came from
+  const std::size_t truth = begin + static_cast<std::size_t>(out.truth_ray);
+  out.echo = echoes_[truth];
+  out.object_id = hits_[truth].object_id;
+  if (hits_[truth].is_hit()) {
+    out.p_WH = out.p_WS + out.echo.distance_m * ray_dir_W_[truth];
+  } else {
+    out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
   }
 }
 

@@ -73,14 +73,18 @@ class Simulation {
  private:
   // place the sensors where their links are and fill rays_ (one ray per sensor)
   void PlaceSensors();
-  // turn hits_ into readings in frame_
+  // turn hits_ into readings in frame_, sensor by sensor
   void MeasureAll();
+  void MeasureSensor(std::size_t sensor);
+  // below this many rays a sample is measured on one thread (a fork costs more)
+  static constexpr std::size_t kParallelMeasureRays = 512;
   // the robot's part of a step after the readings: strategy, clearance, state
   void UpdateRobot();
 
   const Scenario& scenario_;
   std::int64_t sample_count_ = 0;
   std::int64_t next_sample_ = 0;
+  int threads_ = 1;
   RayCaster caster_;
   std::vector<std::string> object_names_;
   std::int32_t first_robot_object_id_ = 0;  // object ids from here on are robot links
@@ -96,7 +100,6 @@ class Simulation {
   std::vector<Vec3> ray_dir_W_;     // each ray's direction in double precision
   std::vector<Hit> hits_;
   std::vector<Echo> echoes_;
-  std::vector<NoiseDraw> draws_;
   std::vector<Vec3> p_WS_previous_;  // each sensor's origin at the previous sample, for flight_time
   SampleFrame frame_;
   // latency: per sensor a ring of readings waiting to be delivered
