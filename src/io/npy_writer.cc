@@ -58,18 +58,20 @@ namespace {
 // column order: readings.csv's
 enum Col {
   kT, kSensor, kType, kStatus, kDetected, kD, kDTrue, kIncidence, kSignal, kHitX, kHitY, kHitZ,
-  kOriginX, kOriginY, kOriginZ, kDirX, kDirY, kDirZ, kObject, kGaitPhase, kSupportLeg, kColumnCount
+  kOriginX, kOriginY, kOriginZ, kDirX, kDirY, kDirZ, kObject, kGaitPhase, kSupportLeg, kRay, kOutput,
+  kTReported, kColumnCount
 };
 struct ColumnSpec {
   const char* name;
   const char* descr;
 };
 constexpr ColumnSpec kColumns[kColumnCount] = {
-    {"t_s", "<f8"},      {"sensor", "<i4"},    {"type", "|u1"},      {"status", "|u1"},   {"detected", "|b1"},
-    {"d_m", "<f8"},      {"d_true_m", "<f8"},  {"incidence_deg", "<f8"}, {"signal", "<f8"}, {"hit_x_m", "<f8"},
-    {"hit_y_m", "<f8"},  {"hit_z_m", "<f8"},   {"origin_x_m", "<f8"}, {"origin_y_m", "<f8"}, {"origin_z_m", "<f8"},
-    {"dir_x", "<f8"},    {"dir_y", "<f8"},     {"dir_z", "<f8"},     {"object", "<i4"},   {"gait_phase", "<f8"},
-    {"support_leg", "|u1"}};
+    {"t_s", "<f8"},        {"sensor", "<i4"},     {"type", "|u1"},          {"status", "|u1"},
+    {"detected", "|b1"},   {"d_m", "<f8"},        {"d_true_m", "<f8"},      {"incidence_deg", "<f8"},
+    {"signal", "<f8"},     {"hit_x_m", "<f8"},    {"hit_y_m", "<f8"},       {"hit_z_m", "<f8"},
+    {"origin_x_m", "<f8"}, {"origin_y_m", "<f8"}, {"origin_z_m", "<f8"},    {"dir_x", "<f8"},
+    {"dir_y", "<f8"},      {"dir_z", "<f8"},      {"object", "<i4"},        {"gait_phase", "<f8"},
+    {"support_leg", "|u1"}, {"ray", "<i4"},       {"output", "<f8"},        {"t_reported_s", "<f8"}};
 }  // namespace
 
 NpyReadingsWriter::NpyReadingsWriter(const std::string& dir, const Scenario& scenario,
@@ -95,6 +97,7 @@ void NpyReadingsWriter::Append(const SampleFrame& frame) {
   for (int k = 0; k < kColumnCount; ++k) c[k] = columns_[k].get();
   for (std::size_t i = 0; i < frame.sensors.size(); ++i) {
     const SensorSample& s = frame.sensors[i];
+    if (s.reading.status == ReadingStatus::kNotSampled) continue;  // no row between a sensor's own samples
     const bool hit = s.object_id >= 0;
     c[kT]->Put(frame.t_s);
     c[kSensor]->Put(static_cast<std::int32_t>(i));
@@ -111,8 +114,12 @@ void NpyReadingsWriter::Append(const SampleFrame& frame) {
     c[kObject]->Put(static_cast<std::int32_t>(hit ? s.object_id : -1));
     c[kGaitPhase]->Put(frame.robot.present ? frame.robot.gait_phase : kNaN);
     c[kSupportLeg]->Put(static_cast<std::uint8_t>(frame.robot.present ? static_cast<int>(frame.robot.support) : 255));
+    // beyond the paper: the beam's ray, a lookup sensor's output, the report time
+    c[kRay]->Put(static_cast<std::int32_t>(s.ray));
+    c[kOutput]->Put(s.reading.output);
+    c[kTReported]->Put(s.t_reported_s);
+    ++rows_;
   }
-  rows_ += static_cast<std::int64_t>(frame.sensors.size());
   if (c[kT]->pending.size() >= kFlushBytes) {
     for (auto& column : columns_) column->Flush();
   }

@@ -1,11 +1,16 @@
 // The readings as columns (`proxsim run --format npy`): one NumPy .npy file
 // per column of readings.csv in OUT/readings/, for runs too large for a CSV
-// (thousands of rays at kHz rates). Same rows, same order, same meaning as the
-// CSV; what the CSV writes as text is a code here, named in columns.json:
+// (thousands of rays at kHz rates). Same rows (none between a sensor's own
+// samples), same order, same meaning as the CSV; what the CSV writes as text
+// is a code here, named in columns.json:
 //   t_s, d_m, d_true_m, incidence_deg, signal, hit_{x,y,z}_m, origin_{x,y,z}_m,
-//   dir_{x,y,z}, gait_phase        float64 (<f8); NaN where the CSV is empty
+//   dir_{x,y,z}, gait_phase, output, t_reported_s
+//                                  float64 (<f8); NaN where the CSV is empty
+//                                  (output: a lookup sensor's output, NaN for the other
+//                                  types; t_reported_s: t_s plus the sensor's latency)
 //   sensor                         int32 (<i4): index into columns.json "sensors"
 //   object                         int32: index into "objects"; −1 where the CSV is empty
+//   ray                            int32: the beam's ray that gave the reading, −1 without
 //   type, status, support_leg      uint8 (|u1): index into "types", "statuses", "support_legs";
 //                                  support_leg 255 when there is no robot
 //   detected                       bool (|b1)
