@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libembree-dev libeigen3-dev libyaml-cpp-dev libassimp-dev libcli11-dev
+  libembree-dev libtbb-dev libeigen3-dev libyaml-cpp-dev libassimp-dev libcli11-dev
   nlohmann-json3-dev librandom123-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libbullet-dev libmujoco-dev

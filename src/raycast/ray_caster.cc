@@ -29,7 +29,6 @@
 #include "raycast/ray_caster.h"
 
 #include <embree3/rtcore.h>
-#include <omp.h>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
 
@@ -42,6 +41,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/parallel.h"
 #include "raycast/analytic_shapes.h"
 
 namespace proxsim {
@@ -275,7 +275,7 @@ struct RayCaster::Impl {
   RTCScene scene_world = nullptr;
   std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in both top-level scenes
   std::size_t triangle_count = 0;
-  int threads = 1;
+  std::unique_ptr<ParallelRunner> runner = std::make_unique<ParallelRunner>(1);  ///< for large batches
   bool committed = true;
   // which top-level scene has a change to commit: moving a robot body leaves
   // the world-only scene as it was, so a step rebuilds only `all`
@@ -440,7 +440,6 @@ RayCaster::RayCaster() : impl_(std::make_unique<Impl>()) {
   rtcSetDeviceErrorFunction(impl_->device, &Impl::OnDeviceError, impl_.get());
   impl_->scene_all = impl_->NewScene(RTC_BUILD_QUALITY_LOW, /*dynamic=*/true);
   impl_->scene_world = impl_->NewScene(RTC_BUILD_QUALITY_LOW, /*dynamic=*/true);
-  impl_->threads = std::max(1, omp_get_max_threads());
   Commit();  // an empty caster answers every ray with a miss
 }
 
@@ -568,13 +567,16 @@ void CastPacket(RTCScene scene_all, RTCScene scene_world, const std::vector<std:
                 const Ray* rays, Hit* hits, std::size_t n) {
   for (const bool see_robot : {true, false}) {
     alignas(32) int valid[kPacketRays];
-    RTCRayHit8 packet;
     bool any = false;
     for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-      const bool active = lane < n && rays[lane].see_robot == see_robot;
-      valid[lane] = active ? -1 : 0;
-      any = any || active;
-      const Ray& ray = rays[active ? lane : 0];  // inactive lanes: any finite ray (Embree skips them)
+      valid[lane] = lane < n && rays[lane].see_robot == see_robot ? -1 : 0;
+      any = any || valid[lane];
+    }
+    if (!any) continue;  // usually every ray of a packet sees the robot, or none does
+
+    RTCRayHit8 packet;
+    for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+      const Ray& ray = rays[valid[lane] ? lane : 0];  // inactive lanes: any finite ray (Embree skips them)
       packet.ray.org_x[lane] = ray.origin_W.x();
       packet.ray.org_y[lane] = ray.origin_W.y();
       packet.ray.org_z[lane] = ray.origin_W.z();
@@ -590,7 +592,6 @@ void CastPacket(RTCScene scene_all, RTCScene scene_world, const std::vector<std:
       packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
-    if (!any) continue;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     rtcIntersect8(valid, see_robot ? scene_all : scene_world, &context, &packet);
@@ -627,24 +628,24 @@ void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
                std::min(kPacketRays, rays.size() - first));
   };
 
-  if (rays.size() >= kParallelBatchRays && impl.threads > 1) {
-    // every ray is independent, so the result does not depend on the thread count
-#pragma omp parallel num_threads(impl.threads)
-    {
-      DenormalModeGuard denormal_mode;
-#pragma omp for schedule(static)
-      for (std::ptrdiff_t p = 0; p < packets; ++p) cast_packet(p);
-    }
-  } else {
+  // every ray is independent, so the result does not depend on the thread count
+  // (a batch is split on packet boundaries: the same packets either way)
+  const std::size_t grain_packets = std::max<std::size_t>(1, kParallelBatchRays / kPacketRays);
+  const auto cast_packets = [&](std::size_t begin, std::size_t end) {
     DenormalModeGuard denormal_mode;
-    for (std::ptrdiff_t p = 0; p < packets; ++p) cast_packet(p);
+    for (std::size_t p = begin; p < end; ++p) cast_packet(static_cast<std::ptrdiff_t>(p));
+  };
+  if (rays.size() >= kParallelBatchRays && impl.runner->threads() > 1) {
+    impl.runner->For(static_cast<std::size_t>(packets), grain_packets, cast_packets);
+  } else {
+    cast_packets(0, static_cast<std::size_t>(packets));
   }
   impl_->ThrowIfDeviceError("Cast");
 }
 
 void RayCaster::set_threads(int threads) {
   assert(threads >= 1);
-  impl_->threads = std::max(1, threads);
+  if (threads != impl_->runner->threads()) impl_->runner = std::make_unique<ParallelRunner>(threads);
 }
 
 double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids) const {

@@ -11,7 +11,7 @@
 namespace proxsim {
 
 Simulation::Simulation(const Scenario& scenario, int threads)
-    : scenario_(scenario), sample_count_(scenario.SampleCount()), threads_(std::max(1, threads)) {
+    : scenario_(scenario), sample_count_(scenario.SampleCount()), runner_(threads) {
   // the static world: one body, one shape per scene object, ids = scene order
   std::vector<BodyShape> world_shapes;
   world_shapes.reserve(scenario.scene.objects.size());
@@ -103,8 +103,7 @@ const SampleFrame& Simulation::Step() {
     caster_.Commit();
   }
   PlaceSensors();
-  caster_.Cast(rays_, hits_);
-  MeasureAll();
+  ReadSensors();
   if (latency_) Deliver();
   if (robot_) UpdateRobot();
   return frame_;
@@ -163,16 +162,24 @@ void Simulation::PlaceSensors() {
   }
 }
 
-void Simulation::MeasureAll() {
-  // sensors are independent (each owns its rays, echoes and output slot), so
-  // many rays are shared out by sensor; the keyed noise keeps the readings
-  // the same whatever the thread count
-  const auto sensor_count = static_cast<std::ptrdiff_t>(scenario_.sensors.size());
-  if (threads_ > 1 && rays_.size() >= kParallelMeasureRays) {
-#pragma omp parallel for num_threads(threads_) schedule(dynamic, 4)
-    for (std::ptrdiff_t i = 0; i < sensor_count; ++i) MeasureSensor(static_cast<std::size_t>(i));
+void Simulation::ReadSensors() {
+  // sensors are independent (each owns its rays, hits, echoes and output
+  // slot), so a sample with many rays is shared out by sensor, in one fork:
+  // each thread casts a sensor's rays and reads them while they are in its
+  // cache. A sensor's rays are always cast on their own, in the same packets,
+  // and the noise is keyed, so the readings are the same whatever the thread count.
+  const std::size_t sensor_count = scenario_.sensors.size();
+  const auto read = [this](std::size_t begin_sensor, std::size_t end_sensor) {
+    for (std::size_t sensor = begin_sensor; sensor < end_sensor; ++sensor) {
+      const std::size_t begin = ray_begin_[sensor], count = ray_begin_[sensor + 1] - begin;
+      caster_.Cast(std::span(rays_).subspan(begin, count), std::span(hits_).subspan(begin, count));
+      MeasureSensor(sensor);
+    }
+  };
+  if (rays_.size() >= kParallelReadRays) {
+    runner_.For(sensor_count, kSensorsPerTask, read);
   } else {
-    for (std::ptrdiff_t i = 0; i < sensor_count; ++i) MeasureSensor(static_cast<std::size_t>(i));
+    read(0, sensor_count);
   }
 }
 

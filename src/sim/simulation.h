@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel.h"
 #include "io/scenario.h"
 #include "raycast/ray_caster.h"
 #include "sim/robot_in_scene.h"
@@ -73,18 +74,21 @@ class Simulation {
  private:
   // place the sensors where their links are and fill rays_ (one ray per sensor)
   void PlaceSensors();
-  // turn hits_ into readings in frame_, sensor by sensor
-  void MeasureAll();
+  // cast every sensor's rays into hits_ and turn them into readings in frame_
+  void ReadSensors();
+  // one sensor's hits into its reading
   void MeasureSensor(std::size_t sensor);
-  // below this many rays a sample is measured on one thread (a fork costs more)
-  static constexpr std::size_t kParallelMeasureRays = 512;
+  // below this many rays a sample is read on one thread (a fork costs more)
+  static constexpr std::size_t kParallelReadRays = 512;
+  // sensors read by one task: enough rays to outweigh the task's cost
+  static constexpr std::size_t kSensorsPerTask = 4;
   // the robot's part of a step after the readings: strategy, clearance, state
   void UpdateRobot();
 
   const Scenario& scenario_;
   std::int64_t sample_count_ = 0;
   std::int64_t next_sample_ = 0;
-  int threads_ = 1;
+  ParallelRunner runner_;  // shares the sensors of a sample out over the threads
   RayCaster caster_;
   std::vector<std::string> object_names_;
   std::int32_t first_robot_object_id_ = 0;  // object ids from here on are robot links
