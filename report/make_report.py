@@ -3,7 +3,8 @@
 
   /usr/bin/python3 report/make_report.py OUT --viewer-bundle build/release/viewer/viewer.js
 
-reads OUT/{scene.json, readings.csv, poses.csv, profile.ply} and writes OUT/report/:
+reads OUT/{scene.json, readings.csv or readings/ (--format npy), poses.csv, profile.ply}
+and writes OUT/report/:
   curve_<sensor>.png/.svg     distance curve per sensor (paper Figs 8, 10, 12, 14)
   profile_<sensor>.png/.svg   profile per sensor (paper Figs 9, 11, 13, 15)
   paper_figures.png/.svg      the four sensor types side by side

@@ -1,5 +1,5 @@
-// Helpers for tests that drive the real `proxsim` binary: run a command line,
-// read a CSV back by column name.
+// Helpers for tests that drive the real `proxsim` binary (or a script on its
+// output): run a command line, read a CSV back by column name.
 #pragma once
 
 #include <unistd.h>
@@ -19,9 +19,9 @@ struct CommandResult {
   std::string output;  ///< stdout and stderr together
 };
 
-/// Runs `proxsim ARGS` (the binary under test) through the shell.
-inline CommandResult RunProxsim(const std::string& args) {
-  const std::string command = std::string(PROXSIM_BINARY) + " " + args + " 2>&1";
+/// Runs a command line through the shell, stderr with stdout.
+inline CommandResult RunCommand(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   CommandResult result;
   std::FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -31,6 +31,11 @@ inline CommandResult RunProxsim(const std::string& args) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+/// Runs `proxsim ARGS` (the binary under test) through the shell.
+inline CommandResult RunProxsim(const std::string& args) {
+  return RunCommand(std::string(PROXSIM_BINARY) + " " + args);
 }
 
 /// A fresh, empty folder under the system's temporary directory, private to

@@ -1,7 +1,8 @@
 // `proxsim run --format npy`: the columns hold exactly the rows of the CSV.
 // A run written both ways through the real CLI, on sensors that exercise
 // every column (a beam, lookup sensors, a slow sensor with latency, a walking
-// robot), must give the same value in every column, row by row.
+// robot), must give the same value in every column, row by row; and the
+// report must draw the npy run from the same data it reads from the CSV.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -297,6 +298,42 @@ TEST(NpyWriter, CliRunGivesTheCsvValuesInEveryColumn) {
   EXPECT_EQ(phases, static_cast<int>(rows));
   EXPECT_EQ(rows_of["cone"], 150);
   EXPECT_EQ(rows_of["slow_late"], 45) << "a 30 Hz sensor in a 100 Hz run: one row per own sample";
+  fs::remove_all(root);
+}
+
+// --- the report of an npy run ---------------------------------------------------------
+
+TEST(NpyWriter, ReportOfAnNpyRunIsDrawnFromTheCsvsData) {
+  using proxsim::testing::RunCommand;
+  using proxsim::testing::RunProxsim;
+  const fs::path root = proxsim::testing::FreshDir("npy_report");
+  fs::create_directories(root);
+  const fs::path scenario = root / "exercise.yaml";
+  std::ofstream(scenario) << kExercisingScenario;
+  const fs::path csv = root / "csv", npy = root / "npy";
+  const auto csv_run = RunProxsim("run " + scenario.string() + " --no-report --out " + csv.string());
+  ASSERT_EQ(csv_run.exit_code, 0) << csv_run.output;
+
+  // the whole run, report included, exits 0 with the figures and the viewer
+  const auto npy_run = RunProxsim("run " + scenario.string() + " --format npy --out " + npy.string());
+  ASSERT_EQ(npy_run.exit_code, 0) << npy_run.output;
+  EXPECT_FALSE(fs::exists(npy / "readings.csv"));
+  const std::vector<std::string> report_files = {"paper_figures.png", "curve_cone.png", "profile_cone.png",
+                                                 "curve_slow_late.png", "index.html", "data.js", "viewer.js"};
+  for (const std::string& name : report_files) {
+    EXPECT_TRUE(fs::is_regular_file(npy / "report" / name)) << name << "\n" << npy_run.output;
+  }
+
+  // the report reads the same arrays from both runs (every field of every sensor)
+  const fs::path compare = fs::path(PROXSIM_TEST_DATA_DIR).parent_path() / "report" / "same_run_data.py";
+  const auto same = RunCommand("/usr/bin/python3 " + compare.string() + " " + csv.string() + " " + npy.string());
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+
+  // `proxsim plot` redraws it
+  fs::remove_all(npy / "report");
+  const auto plot = RunProxsim("plot " + npy.string());
+  ASSERT_EQ(plot.exit_code, 0) << plot.output;
+  EXPECT_TRUE(fs::is_regular_file(npy / "report" / "paper_figures.png")) << plot.output;
   fs::remove_all(root);
 }
 

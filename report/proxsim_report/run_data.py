@@ -1,6 +1,7 @@
-"""Reads a run's output files (readings.csv, poses.csv, profile.ply, scene.json)
-into flat NumPy columns: one SensorSeries per sensor, link poses per sample and
-the profile points. Empty CSV fields become NaN (numbers) or '' (names)."""
+"""Reads a run's output files (readings.csv or the npy columns in readings/,
+poses.csv, profile.ply, scene.json) into flat NumPy columns: one SensorSeries
+per sensor, link poses per sample and the profile points. Empty CSV fields
+become NaN (numbers) or '' (names); the npy columns give the same arrays."""
 import csv
 import json
 import os
@@ -60,7 +61,15 @@ def _read_scene(out_dir):
         raise RunError(f"cannot read {path}: {e}") from e
 
 
-def _read_readings(out_dir, scene):
+# the readings columns a SensorSeries is made of
+_FLOAT_COLUMNS = ("t_s", "d_m", "d_true_m", "incidence_deg", "signal", "hit_x_m", "hit_y_m", "hit_z_m",
+                  "origin_x_m", "origin_y_m", "origin_z_m", "dir_x", "dir_y", "dir_z")
+_NAME_COLUMNS = ("type", "status", "object")
+
+
+def _readings_csv(out_dir):
+    """readings.csv as {sensor name: {column: array}}, sensors in order of first
+    row, each sensor's rows sorted by time (stable)."""
     path = os.path.join(out_dir, "readings.csv")
     try:
         with open(path, newline="") as f:
@@ -70,33 +79,111 @@ def _read_readings(out_dir, scene):
     by_sensor = {}
     for r in rows:
         by_sensor.setdefault(r["sensor"], []).append(r)
+    columns = {}
+    for name, rs in by_sensor.items():
+        rs.sort(key=lambda r: float(r["t_s"]))
+        c = {k: _floats(rs, k) for k in _FLOAT_COLUMNS}
+        c.update({k: np.array([r[k] for r in rs], dtype=object) for k in _NAME_COLUMNS})
+        c["detected"] = np.array([r["detected"] == "1" for r in rs], dtype=bool)
+        columns[name] = c
+    return columns
+
+
+def _load_npy(folder, column, rows):
+    path = os.path.join(folder, column + ".npy")
+    try:
+        values = np.load(path)
+    except (OSError, ValueError) as e:
+        raise RunError(f"cannot read {path}: {e}") from e
+    if values.shape != (rows,):
+        raise RunError(f"{path}: shape {values.shape}, but columns.json says {rows} rows")
+    return values
+
+
+def _readings_npy(out_dir):
+    """The same as _readings_csv, from `proxsim run --format npy`'s readings/:
+    one .npy per column, the names of the coded columns in columns.json
+    (src/io/npy_writer.h). NaN stays NaN; object −1 becomes ''."""
+    folder = os.path.join(out_dir, "readings")
+    path = os.path.join(folder, "columns.json")
+    try:
+        with open(path) as f:
+            codes = json.load(f)
+        rows = int(codes["rows"])
+        raw = {k: _load_npy(folder, k, rows) for k in ("sensor", "detected") + _FLOAT_COLUMNS + _NAME_COLUMNS}
+        # codes to names; code −1 (no object) picks the '' appended last
+        names = {"sensor": codes["sensors"], "type": codes["types"], "status": codes["statuses"],
+                 "object": list(codes["objects"]) + [""]}
+        decoded = {k: np.array(v, dtype=object)[raw[k]] for k, v in names.items()}
+    except (OSError, ValueError, KeyError, TypeError, IndexError) as e:
+        raise RunError(f"cannot read {path}: {e}") from e
+
+    # sensors in order of first row, each one's rows sorted by time (stable), as from the CSV
+    columns = {}
+    sensor = raw["sensor"]
+    present, first_row = np.unique(sensor, return_index=True)
+    for code in present[np.argsort(first_row)]:
+        mine = np.flatnonzero(sensor == code)
+        mine = mine[np.argsort(raw["t_s"][mine], kind="stable")]
+        c = {k: raw[k][mine].astype(np.float64, copy=False) for k in _FLOAT_COLUMNS}
+        c.update({k: decoded[k][mine] for k in _NAME_COLUMNS})
+        c["detected"] = raw["detected"][mine].astype(bool, copy=False)
+        columns[decoded["sensor"][mine[0]]] = c
+    return columns
+
+
+def _readings_format(out_dir):
+    """'npy' or 'csv': the readings the run's summary.json lists among its
+    outputs (a stale readings.csv may sit beside a newer readings/), else
+    readings.csv, else readings/ when only that exists."""
+    try:
+        with open(os.path.join(out_dir, "summary.json")) as f:
+            outputs = json.load(f).get("outputs", [])
+    except (OSError, ValueError, AttributeError):
+        outputs = []
+    if "readings/" in outputs:
+        return "npy"
+    if "readings.csv" in outputs or os.path.exists(os.path.join(out_dir, "readings.csv")):
+        return "csv"
+    return "npy" if os.path.isdir(os.path.join(out_dir, "readings")) else "csv"
+
+
+def _no_readings():
+    c = {k: np.zeros(0) for k in _FLOAT_COLUMNS}
+    c.update({k: np.array([], dtype=object) for k in _NAME_COLUMNS})
+    c["detected"] = np.zeros(0, dtype=bool)
+    return c
+
+
+def _read_readings(out_dir, scene):
+    """One SensorSeries per sensor, from readings.csv or readings/ (npy)."""
+    by_sensor = _readings_npy(out_dir) if _readings_format(out_dir) == "npy" else _readings_csv(out_dir)
     # sensors in scene.json order; any sensor only in the readings comes after
     specs = {s["name"]: s for s in scene.get("sensors", [])}
     names = [s["name"] for s in scene.get("sensors", [])]
     names += [n for n in by_sensor if n not in specs]
     sensors = []
     for i, name in enumerate(names):
-        rs = by_sensor.get(name, [])
+        c = by_sensor.get(name) or _no_readings()
         spec = specs.get(name, {})
-        rs.sort(key=lambda r: float(r["t_s"]))
-        d_m = _floats(rs, "d_m")
+        d_m = c["d_m"]
         s = SensorSeries(
             index=int(spec.get("index", i)), name=name,
-            type=spec.get("type", rs[0]["type"] if rs else "?"),
+            type=spec.get("type", c["type"][0] if len(c["type"]) else "?"),
             d_min_m=float(spec.get("min_range_m", 0.0)),
             d_max_m=float(spec.get("max_range_m", np.nanmax(d_m) if len(d_m) else 1.0)),
             max_incidence_deg=float(spec.get("max_incidence_deg", 90.0)))
-        s.t_s = _floats(rs, "t_s")
-        s.status = np.array([r["status"] for r in rs], dtype=object)
-        s.detected = np.array([r["detected"] == "1" for r in rs], dtype=bool)
+        s.t_s = c["t_s"]
+        s.status = c["status"]
+        s.detected = c["detected"]
         s.d_m = d_m
-        s.d_true_m = _floats(rs, "d_true_m")
-        s.incidence_deg = _floats(rs, "incidence_deg")
-        s.signal = _floats(rs, "signal")
-        s.p_hit = np.stack([_floats(rs, k) for k in ("hit_x_m", "hit_y_m", "hit_z_m")], 1).reshape(-1, 3)
-        s.p_origin = np.stack([_floats(rs, k) for k in ("origin_x_m", "origin_y_m", "origin_z_m")], 1).reshape(-1, 3)
-        s.dir = np.stack([_floats(rs, k) for k in ("dir_x", "dir_y", "dir_z")], 1).reshape(-1, 3)
-        s.object = np.array([r["object"] for r in rs], dtype=object)
+        s.d_true_m = c["d_true_m"]
+        s.incidence_deg = c["incidence_deg"]
+        s.signal = c["signal"]
+        s.p_hit = np.stack([c[k] for k in ("hit_x_m", "hit_y_m", "hit_z_m")], 1).reshape(-1, 3)
+        s.p_origin = np.stack([c[k] for k in ("origin_x_m", "origin_y_m", "origin_z_m")], 1).reshape(-1, 3)
+        s.dir = np.stack([c[k] for k in ("dir_x", "dir_y", "dir_z")], 1).reshape(-1, 3)
+        s.object = c["object"]
         sensors.append(s)
     return sensors
 

@@ -2,8 +2,10 @@
 loading, with expected values worked out by hand; plus make_report on a
 synthetic run (files written) and on bad input (exit 2).
 Run: /usr/bin/python3 -m unittest discover -s tests/report"""
+import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -120,6 +122,52 @@ class CrossSectionTest(unittest.TestCase):
         bottom, top = self.at(cut, 1.0)
         self.assertAlmostEqual(bottom, 0.0, places=9)
         self.assertAlmostEqual(top, 1.0, places=9)
+
+
+class ReadingsFormatTest(unittest.TestCase):
+    """Which readings a run is read from: readings.csv, or the npy columns in
+    readings/ (their equality with the CSV is tests/npy_writer_test.cc's, on
+    real runs, through same_run_data.py)."""
+
+    def folder(self, files, outputs=None):
+        out = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, out)
+        for name in files:
+            if name.endswith("/"):
+                os.makedirs(os.path.join(out, name))
+            else:
+                open(os.path.join(out, name), "w").close()
+        if outputs is not None:
+            with open(os.path.join(out, "summary.json"), "w") as f:
+                json.dump({"outputs": outputs}, f)
+        return out
+
+    def test_the_summary_names_the_run_s_own_readings_over_a_stale_file(self):
+        from proxsim_report.run_data import _readings_format
+        both = ["readings.csv", "readings/"]
+        self.assertEqual(_readings_format(self.folder(both, ["readings/", "scene.json"])), "npy")
+        self.assertEqual(_readings_format(self.folder(both, ["readings.csv", "scene.json"])), "csv")
+
+    def test_without_a_summary_the_csv_comes_first(self):
+        from proxsim_report.run_data import _readings_format
+        self.assertEqual(_readings_format(self.folder(["readings.csv", "readings/"])), "csv")
+        self.assertEqual(_readings_format(self.folder(["readings/"])), "npy")
+        self.assertEqual(_readings_format(self.folder([])), "csv")   # whose error names readings.csv
+
+    def test_a_missing_or_short_column_is_named(self):
+        from proxsim_report.run_data import RunError, load_run
+        out = self.folder(["readings/"], ["readings/"])
+        with open(os.path.join(out, "scene.json"), "w") as f:
+            json.dump({"sensors": []}, f)
+        with self.assertRaisesRegex(RunError, "columns.json"):
+            load_run(out)
+        with open(os.path.join(out, "readings", "columns.json"), "w") as f:
+            json.dump({"rows": 2, "sensors": ["s"], "types": ["laser"], "statuses": ["ok"], "objects": []}, f)
+        with self.assertRaisesRegex(RunError, "sensor.npy"):
+            load_run(out)
+        np.save(os.path.join(out, "readings", "sensor.npy"), np.zeros(1, dtype="<i4"))
+        with self.assertRaisesRegex(RunError, "sensor.npy: shape \\(1,\\), but columns.json says 2 rows"):
+            load_run(out)
 
 
 class MakeReportTest(unittest.TestCase):
