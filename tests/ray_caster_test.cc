@@ -5,7 +5,7 @@
 // c − r ...), then the watertight (robust) mode along shared edges and
 // vertices, then equivalence on a random scene: batch = single-ray calls =
 // the analytic reference in analytic_intersector.h, and 1 thread = 2 threads
-// bit for bit. Last, DistanceToWorld against closed forms.
+// bit for bit. Last, DistanceToWorld against closed forms, with and without a cap.
 #include "raycast/ray_caster.h"
 
 #include <gtest/gtest.h>
@@ -689,6 +689,78 @@ TEST(RayCasterTest, DistanceToWorldTakesTheNearestNotExcludedWorldShape) {
   EXPECT_NEAR(caster.DistanceToWorld(p_W, std::vector<std::int32_t>{0}), 2.5, 1e-9);
   EXPECT_NEAR(caster.DistanceToWorld(p_W, std::vector<std::int32_t>{0, 1}), 4.0, 1e-9);
   EXPECT_TRUE(std::isinf(caster.DistanceToWorld(p_W, std::vector<std::int32_t>{0, 1, 2})));
+}
+
+// A cap answers min(distance, cap): the exact distance below it, the cap itself above.
+TEST(RayCasterTest, DistanceToWorldWithACapIsExactBelowItAndTheCapAbove) {
+  const std::vector<std::int32_t> none;
+  {
+    // a box face 0.3 away (closed form), under and over caps
+    RayCaster caster;
+    const Pose X_WO = XyzRpyDeg(1, 2, 0.5, 0, 0, 30);
+    caster.AddBody({BodyShape{Box{Vec3(1, 0.5, 0.2)}, X_WO, 0}}, BodyKind::kWorld);
+    caster.Commit();
+    const Vec3 p_W = X_WO * Vec3(0.8, 0, 0);
+    EXPECT_NEAR(caster.DistanceToWorld(p_W, none, 0.5), 0.3, 1e-9);
+    EXPECT_EQ(caster.DistanceToWorld(p_W, none, 0.2), 0.2);
+    EXPECT_EQ(caster.DistanceToWorld(p_W, none, 0.0), 0.0);
+  }
+  {
+    // a mesh: a point 0.7 beyond a tetrahedron's corner, and a point far from it
+    auto tetrahedron = std::make_shared<TriangleMesh>();
+    tetrahedron->vertices_O = {Vec3f(0, 0, 0), Vec3f(1, 0, 0), Vec3f(0, 1, 0), Vec3f(0, 0, 1)};
+    tetrahedron->triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    Mesh mesh;
+    mesh.data = tetrahedron;
+    RayCaster caster;
+    caster.AddBody({BodyShape{mesh, Pose::Identity(), 4}}, BodyKind::kWorld);
+    caster.Commit();
+    EXPECT_NEAR(caster.DistanceToWorld(Vec3(1.7, 0, 0), none, 0.8), 0.7, 1e-6);
+    EXPECT_EQ(caster.DistanceToWorld(Vec3(1.7, 0, 0), none, 0.6), 0.6);
+    EXPECT_EQ(caster.DistanceToWorld(Vec3(1.7, 0, 0), none, 0.01), 0.01);
+    EXPECT_EQ(caster.DistanceToWorld(Vec3(500, 0, 0), none, 3.0), 3.0) << "far from every triangle";
+    EXPECT_EQ(caster.DistanceToWorld(Vec3::Zero(), std::vector<std::int32_t>{4}, 3.0), 3.0) << "excluded";
+  }
+}
+
+// Over a cloud of points around every kind of shape, a capped distance equals
+// min(uncapped distance, cap) bit for bit, for caps below, near and above it.
+TEST(RayCasterTest, DistanceToWorldWithACapEqualsTheUncappedOneCapped) {
+  Mesh wall;
+  wall.data = GridMesh(8, 0.1, true);  // 0.8 m square, 128 triangles
+  const std::vector<std::vector<BodyShape>> worlds = {
+      {BodyShape{Box{Vec3(0.4, 0.3, 0.2)}, XyzRpyDeg(0.1, 0, 0.2, 10, 20, 30), 0}},
+      {BodyShape{Sphere{0.25}, Translation(0.2, -0.1, 0.3), 0}},
+      {BodyShape{Cylinder{0.1, 0.6}, XyzRpyDeg(0, 0.1, 0.3, 0, 90, 20), 0}},
+      {BodyShape{Plane{}, XyzRpyDeg(0, 0, -0.2, 5, 0, 0), 0}},
+      {BodyShape{wall, XyzRpyDeg(-0.4, -0.4, 0, 90, 0, 0), 0}},
+      {BodyShape{Box{Vec3(0.2, 0.2, 0.2)}, Translation(0.5, 0.5, 0), 0},
+       BodyShape{wall, XyzRpyDeg(-0.4, 0.3, -0.1, 0, 0, 0), 1},
+       BodyShape{Sphere{0.1}, Translation(-0.5, 0, 0.5), 2}},
+  };
+  const std::vector<std::int32_t> none;
+  for (std::size_t w = 0; w < worlds.size(); ++w) {
+    SCOPED_TRACE("world " + std::to_string(w));
+    RayCaster caster;
+    caster.AddBody(worlds[w], BodyKind::kWorld);
+    caster.Commit();
+    Uniform uniform(17 + static_cast<unsigned>(w));
+    int capped_count = 0, exact_count = 0;
+    for (int i = 0; i < 300; ++i) {
+      const Vec3 p_W(uniform(-1.5, 1.5), uniform(-1.5, 1.5), uniform(-1.0, 1.5));
+      const double exact_m = caster.DistanceToWorld(p_W, none);
+      ASSERT_TRUE(std::isfinite(exact_m));
+      for (double cap_m : {0.01, 0.1, 0.5 * exact_m, exact_m, 2 * exact_m + 1e-3, 0.7, 3.0}) {
+        const double capped_m = caster.DistanceToWorld(p_W, none, cap_m);
+        EXPECT_EQ(capped_m, std::min(exact_m, cap_m)) << "at " << p_W.transpose() << " cap " << cap_m;
+        capped_count += exact_m > cap_m;
+        exact_count += exact_m < cap_m;
+      }
+    }
+    // both sides of the cap were tried
+    EXPECT_GT(capped_count, 300);
+    EXPECT_GT(exact_count, 300);
+  }
 }
 
 TEST(RayCasterTest, TriangleCountCountsBoxesAndMeshesOnly) {

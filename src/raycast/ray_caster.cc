@@ -648,8 +648,12 @@ void RayCaster::set_threads(int threads) {
   if (threads != impl_->runner->threads()) impl_->runner = std::make_unique<ParallelRunner>(threads);
 }
 
-double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids) const {
-  double best_m = std::numeric_limits<double>::infinity();
+double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
+                                  double below_m) const {
+  // no distance is below a cap <= 0 (and a point query needs a positive radius)
+  if (!(below_m > 0)) return below_m;
+  // the cap is the first best: nothing at or beyond it is measured
+  double best_m = below_m;
   for (const auto& body_ptr : impl_->bodies) {
     const Body& body = *body_ptr;
     if (body.kind != BodyKind::kWorld) continue;
@@ -675,6 +679,9 @@ double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t>
     // An unbounded query (a world of meshes only) would visit a large part of
     // the BVH before the radius shrinks, so the radius grows from 5 cm by ×2
     // until a triangle lies within it: the nearest one is then found exactly.
+    // The growth stops at the best so far (the cap at first): a point far from
+    // every mesh then costs a few small empty queries, not one that wades
+    // through the triangles between it and the nearest.
     if (!body.has_mesh) continue;
     RTCScene query_scene = impl_->MeshQueryScene(const_cast<Body&>(body), exclude_object_ids);
     if (!query_scene) continue;  // every mesh of the body is excluded

@@ -66,8 +66,10 @@ class RayCaster {
   void set_threads(int threads);
 
   /// Distance from p_W to the nearest surface of any world body shape whose
-  /// object_id is not in exclude_object_ids; +inf when there is none.
-  double DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids) const;
+  /// object_id is not in exclude_object_ids (+inf when there is none), capped:
+  /// min(distance, below_m), exact below the cap and cheaper the lower the cap.
+  double DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
+                         double below_m = std::numeric_limits<double>::infinity()) const;
 
   /// Number of triangles held (meshes and boxes), for reports.
   std::size_t triangle_count() const;

@@ -1,6 +1,7 @@
 #include "sim/robot_in_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/input_error.h"
@@ -14,6 +15,15 @@ namespace {
 
 constexpr const char* kBuiltinPrefix = "builtin:";
 constexpr double kClearanceSpacing_m = 0.02;
+// Point queries are capped this far above the running minimum: a capped
+// distance still bounds its point from below, and the bound lasts until the
+// point has moved this far, while a point farther than the cap costs only small
+// empty queries. On the bench's heavy scenario 2 to 10 cm cost the same;
+// without per-point bounds, 10 cm cost twice as much as 2 cm.
+constexpr double kBoundMargin_m = 0.05;
+// Rounding in the poses and distances is far below this: a skip never hinges
+// on the last bits of a bound.
+constexpr double kBoundSlack_m = 1e-9;
 
 RobotModel LoadModel(const std::string& model) {
   if (model.starts_with(kBuiltinPrefix)) {
@@ -29,6 +39,15 @@ std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config) {
     return std::make_unique<TrajectoryPlayer>(std::move(model), config.trajectory_file);
   }
   return std::make_unique<GaitWalker>(std::move(model), config);
+}
+
+// The farthest any point within radius_m of center_L (link frame) moves when
+// the link goes from X_WL_ref to X_WL: the centre's travel plus the rotation's
+// sweep 2·sin(θ/2)·radius_m, where ‖R − R_ref‖_F = √8·sin(θ/2) for a turn by θ.
+double MaxTravel_m(const Pose& X_WL_ref, const Pose& X_WL, const Vec3& center_L, double radius_m) {
+  const double center_travel_m = (X_WL * center_L - X_WL_ref * center_L).norm();
+  const double chord_per_m = (X_WL.linear() - X_WL_ref.linear()).norm() / std::sqrt(2.0);
+  return center_travel_m + chord_per_m * radius_m;
 }
 
 }  // namespace
@@ -106,17 +125,48 @@ RobotSelfKnowledge RobotInScene::SelfKnowledge() const {
 }
 
 double RobotInScene::ClearanceTo(const RayCaster& caster, std::span<const std::int32_t> exclude_object_ids,
-                                 double below_m) const {
+                                 double below_m) {
+  constexpr double kNoBound = -std::numeric_limits<double>::infinity();
+  // the bounds hold for one world and one exclude list: start afresh on another
+  if (&caster != bounds_caster_ || !std::ranges::equal(exclude_object_ids, bounds_exclude_ids_)) {
+    clearance_bounds_.assign(link_samples_.size(), ClearanceBounds{});
+    for (std::size_t link = 0; link < link_samples_.size(); ++link) {
+      clearance_bounds_[link].point_lower_m.assign(link_samples_[link].points_L.size(), kNoBound);
+      clearance_bounds_[link].p_W_ref.assign(link_samples_[link].points_L.size(), Vec3::Zero());
+    }
+    bounds_caster_ = &caster;
+    bounds_exclude_ids_.assign(exclude_object_ids.begin(), exclude_object_ids.end());
+  }
+
   double best_m = below_m;
   for (int link = 0; link < static_cast<int>(link_samples_.size()); ++link) {
     const LinkSamples& samples = link_samples_[link];
     if (samples.points_L.empty()) continue;
-    // the bounding sphere's distance is a lower bound for the link: skip it when it cannot win
-    const Vec3 c_W = X_WL_[link] * samples.center_L;
-    if (caster.DistanceToWorld(c_W, exclude_object_ids) - samples.radius_m >= best_m) continue;
-    for (const Vec3& p_L : samples.points_L) {
-      best_m = std::min(best_m, caster.DistanceToWorld(X_WL_[link] * p_L, exclude_object_ids));
+    const Pose& X_WL = X_WL_[link];
+    ClearanceBounds& bounds = clearance_bounds_[link];
+
+    // no sample has moved farther than the link's travel since its bound was taken: skip it when it cannot win
+    const double travel_m = MaxTravel_m(bounds.X_WL_ref, X_WL, samples.center_L, samples.radius_m);
+    if (bounds.link_lower_m - travel_m - kBoundSlack_m >= best_m) continue;
+
+    // else each sample the same way with its own bound and travel, and the
+    // ones that could win measured with capped queries: a distance below the
+    // cap is exact, and only those can lower best_m (the cap is above it)
+    const double cap_m = best_m + kBoundMargin_m;
+    double link_lower_m = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < samples.points_L.size(); ++i) {
+      const Vec3 p_W = X_WL * samples.points_L[i];
+      double lower_m = bounds.point_lower_m[i] - (p_W - bounds.p_W_ref[i]).norm() - kBoundSlack_m;
+      if (lower_m < best_m) {
+        lower_m = caster.DistanceToWorld(p_W, exclude_object_ids, cap_m);
+        bounds.point_lower_m[i] = lower_m;
+        bounds.p_W_ref[i] = p_W;
+        best_m = std::min(best_m, lower_m);
+      }
+      link_lower_m = std::min(link_lower_m, lower_m);
     }
+    bounds.link_lower_m = link_lower_m;
+    bounds.X_WL_ref = X_WL;
   }
   return best_m;
 }

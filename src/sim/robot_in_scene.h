@@ -42,10 +42,13 @@ class RobotInScene {
 
   /// Least distance between the robot's surface (sampled every 2 cm) and any
   /// scene object other than the excluded ones (the floor it walks on), when
-  /// it is below `below_m`; otherwise some value >= below_m (links that cannot
-  /// come closer are skipped, which keeps a running minimum cheap).
+  /// it is below `below_m`; otherwise some value >= below_m. Links and samples
+  /// that cannot come closer are skipped, which keeps a running minimum cheap:
+  /// each remembers a lower bound of its clearance from when it was last
+  /// measured, valid while the world bodies stay as they are (the bounds start
+  /// afresh when the caster or the exclude list differs from the last call's).
   double ClearanceTo(const RayCaster& caster, std::span<const std::int32_t> exclude_object_ids,
-                     double below_m = std::numeric_limits<double>::infinity()) const;
+                     double below_m = std::numeric_limits<double>::infinity());
 
   /// Link shapes for scene.json.
   std::vector<LinkGeometryJson> LinkGeometry() const;
@@ -56,11 +59,23 @@ class RobotInScene {
     Vec3 center_L = Vec3::Zero();
     double radius_m = 0;         // bounding sphere of the samples
   };
+  // ClearanceTo's memory of a link: lower bounds of its samples' clearance,
+  // each with the pose (or point) at which it holds
+  struct ClearanceBounds {
+    double link_lower_m = -std::numeric_limits<double>::infinity();  // no sample nearer, with the link at X_WL_ref
+    Pose X_WL_ref = Pose::Identity();
+    std::vector<double> point_lower_m;  // sample i no nearer than this when it was at p_W_ref[i]
+    std::vector<Vec3> p_W_ref;
+  };
 
   std::unique_ptr<Locomotion> locomotion_;
   RayCaster& caster_;
   std::vector<int> link_body_;  // body index of each link in the caster (-1: no shapes)
   std::vector<LinkSamples> link_samples_;
+  // ClearanceTo's memory: bounds per link, and the world and exclude list they hold for
+  std::vector<ClearanceBounds> clearance_bounds_;
+  const RayCaster* bounds_caster_ = nullptr;
+  std::vector<std::int32_t> bounds_exclude_ids_;
   std::vector<int> foot_links_;
   RobotState state_;
   std::vector<Pose> X_WL_;
