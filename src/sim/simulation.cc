@@ -59,6 +59,9 @@ Simulation::Simulation(const Scenario& scenario, int threads)
 
   caster_.set_threads(threads);
   caster_.Commit();
+  // the clearance truth's point-query structure over the scene without the
+  // ground is built here with the other structures, not at the first sample
+  if (robot_) caster_.DistanceToWorld(Vec3::Zero(), ground_ids_);
 
   // buffers sized once; every step overwrites them in place. Sensor i owns the
   // rays [ray_begin_[i], ray_begin_[i + 1]): one for the paper's sensors, a beam's otherwise.
