@@ -5,6 +5,7 @@
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/parallel_invoke.h>
 #include <oneapi/tbb/task_arena.h>
 
 namespace proxsim {
@@ -31,6 +32,15 @@ void ParallelRunner::For(std::size_t count, std::size_t grain,
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, std::max<std::size_t>(1, grain)),
                       [&](const tbb::blocked_range<std::size_t>& range) { body(range.begin(), range.end()); });
   });
+}
+
+void ParallelRunner::Invoke(const std::function<void()>& a, const std::function<void()>& b) const {
+  if (!arena_) {
+    a();
+    b();
+    return;
+  }
+  arena_->arena.execute([&] { tbb::parallel_invoke(a, b); });
 }
 
 int ParallelRunner::HardwareThreads() { return std::max(1, tbb::info::default_concurrency()); }

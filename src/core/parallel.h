@@ -32,6 +32,9 @@ class ParallelRunner {
   /// Which thread takes which chunk varies, so body must not depend on it.
   void For(std::size_t count, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& body) const;
 
+  /// Runs a and b, at once when there are threads for it; returns when both are done.
+  void Invoke(const std::function<void()>& a, const std::function<void()>& b) const;
+
   /// The number of threads the machine offers to this process.
   static int HardwareThreads();
 

@@ -106,9 +106,15 @@ const SampleFrame& Simulation::Step() {
     caster_.Commit();
   }
   PlaceSensors();
-  ReadSensors();
+  // the robot's clearance truth depends on its pose only, not on the
+  // readings: it is measured while the sensors are read
+  double clearance_m = std::numeric_limits<double>::infinity();
+  runner_.Invoke([this] { ReadSensors(); },
+                 [&] {
+                   if (robot_) clearance_m = robot_->ClearanceTo(caster_, ground_ids_, outcome_.min_clearance_m);
+                 });
   if (latency_) Deliver();
-  if (robot_) UpdateRobot();
+  if (robot_) UpdateRobot(clearance_m);
   return frame_;
 }
 
@@ -283,7 +289,7 @@ void Simulation::MeasureSensor(std::size_t i) {
   }
 }
 
-void Simulation::UpdateRobot() {
+void Simulation::UpdateRobot(double clearance_m) {
   const RobotState& state = robot_->state();
   frame_.robot = {.present = true,
                   .gait_phase = state.gait_phase,
@@ -307,7 +313,6 @@ void Simulation::UpdateRobot() {
   }
 
   // the truth, for the summary only
-  const double clearance_m = robot_->ClearanceTo(caster_, ground_ids_, outcome_.min_clearance_m);
   if (clearance_m < outcome_.min_clearance_m) {
     outcome_.min_clearance_m = clearance_m;
     outcome_.min_clearance_t_s = frame_.t_s;

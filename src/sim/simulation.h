@@ -82,8 +82,9 @@ class Simulation {
   static constexpr std::size_t kParallelReadRays = 512;
   // sensors read by one task: enough rays to outweigh the task's cost
   static constexpr std::size_t kSensorsPerTask = 4;
-  // the robot's part of a step after the readings: strategy, clearance, state
-  void UpdateRobot();
+  // the robot's part of a step after the readings: strategy, state, and the
+  // clearance measured during the step
+  void UpdateRobot(double clearance_m);
 
   const Scenario& scenario_;
   std::int64_t sample_count_ = 0;

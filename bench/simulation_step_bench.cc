@@ -1,0 +1,57 @@
+// Google Benchmark micro-benchmarks of one sample step's fixed costs, apart
+// from the rays: moving the robot's link bodies and rebuilding the top-level
+// scene (RayCaster::Commit), and one whole Simulation::Step of the paper's
+// scenario and of a 64-beam one. Run: build/release/proxsim_microbench
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "io/scenario.h"
+#include "raycast/ray_caster.h"
+#include "sim/robot_in_scene.h"
+#include "sim/simulation.h"
+
+namespace {
+
+using proxsim::Scenario;
+
+/// The paper's scenario, or the same walk with 64 beams of 32 rays at 1 kHz.
+Scenario StepScenario(bool beams) {
+  Scenario scenario = proxsim::LoadBuiltinScenario("paper");
+  scenario.duration_s = 1000.0;  // never done within a benchmark
+  if (!beams) return scenario;
+  scenario.rate_hz = 1000;
+  const proxsim::SensorConfig model = scenario.sensors[2];  // the ultrasonic sensor
+  scenario.sensors.clear();
+  for (int m = 0; m < 64; ++m) {
+    proxsim::SensorConfig sensor = model;
+    sensor.name = "m" + std::to_string(m);
+    sensor.link = m % 2 ? "left_tibia" : "right_tibia";
+    sensor.spec.beam = proxsim::BeamSpec{.aperture_deg = 25.0, .rays = 32, .pattern = proxsim::BeamPattern::kUniform,
+                                         .width_deg = 10.0, .table = {}};
+    scenario.sensors.push_back(sensor);
+  }
+  return scenario;
+}
+
+void BM_MoveRobotAndCommit(benchmark::State& state) {
+  const Scenario scenario = StepScenario(false);
+  proxsim::RayCaster caster;
+  proxsim::RobotInScene robot(*scenario.robot, caster, 0);
+  double t_s = 0;
+  for (auto _ : state) {
+    robot.MoveTo(t_s += 0.001);
+    caster.Commit();
+  }
+}
+BENCHMARK(BM_MoveRobotAndCommit);
+
+void BM_SimulationStep(benchmark::State& state) {
+  const Scenario scenario = StepScenario(state.range(0) != 0);
+  proxsim::Simulation simulation(scenario, static_cast<int>(state.range(1)));
+  for (auto _ : state) benchmark::DoNotOptimize(simulation.Step());
+  state.SetLabel(state.range(0) ? "64 beams x 32 rays" : "paper, 4 sensors");
+}
+BENCHMARK(BM_SimulationStep)->Args({0, 1})->Args({1, 1})->Args({1, 2})->UseRealTime();
+
+}  // namespace
