@@ -46,6 +46,15 @@ void BM_MoveRobotAndCommit(benchmark::State& state) {
 }
 BENCHMARK(BM_MoveRobotAndCommit);
 
+void BM_MoveRobotOnly(benchmark::State& state) {
+  const Scenario scenario = StepScenario(false);
+  proxsim::RayCaster caster;
+  proxsim::RobotInScene robot(*scenario.robot, caster, 0);
+  double t_s = 0;
+  for (auto _ : state) robot.MoveTo(t_s += 0.001);
+}
+BENCHMARK(BM_MoveRobotOnly);
+
 void BM_SimulationStep(benchmark::State& state) {
   const Scenario scenario = StepScenario(state.range(0) != 0);
   proxsim::Simulation simulation(scenario, static_cast<int>(state.range(1)));
