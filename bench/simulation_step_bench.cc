@@ -1,11 +1,13 @@
 // Google Benchmark micro-benchmarks of one sample step's fixed costs, apart
 // from the rays: moving the robot's link bodies and rebuilding the top-level
 // scene (RayCaster::Commit), and one whole Simulation::Step of the paper's
-// scenario and of a 64-beam one. Run: build/release/proxsim_microbench
+// scenario, of a 64-beam one, and of the bench's heavy scenario in the
+// 1M-triangle room. Run: build/release/proxsim_microbench
 #include <benchmark/benchmark.h>
 
 #include <string>
 
+#include "bench/bench_scene.h"
 #include "io/scenario.h"
 #include "raycast/ray_caster.h"
 #include "sim/robot_in_scene.h"
@@ -62,5 +64,14 @@ void BM_SimulationStep(benchmark::State& state) {
   state.SetLabel(state.range(0) ? "64 beams x 32 rays" : "paper, 4 sensors");
 }
 BENCHMARK(BM_SimulationStep)->Args({0, 1})->Args({1, 1})->Args({1, 2})->UseRealTime();
+
+// The heavy scenario of `proxsim bench`: 64 beams of 32 rays in the 1M-triangle room.
+void BM_HeavyStep1M(benchmark::State& state) {
+  static const proxsim::bench::BenchScene scene = proxsim::bench::MakeBenchDiningRoom(1'000'000);
+  const Scenario scenario = proxsim::bench::HeavyScenario(scene, 64, 32, 1000.0);
+  proxsim::Simulation simulation(scenario, static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(simulation.Step());
+}
+BENCHMARK(BM_HeavyStep1M)->Arg(1)->Arg(2)->UseRealTime()->Iterations(1000);
 
 }  // namespace

@@ -105,7 +105,6 @@ const SampleFrame& Simulation::Step() {
     robot_->MoveTo(frame_.t_s);
     caster_.Commit();
   }
-  PlaceSensors();
   // the robot's clearance truth depends on its pose only, not on the
   // readings: it is measured while the sensors are read
   double clearance_m = std::numeric_limits<double>::infinity();
@@ -154,33 +153,32 @@ void Simulation::Deliver() {
   }
 }
 
-void Simulation::PlaceSensors() {
-  for (std::size_t i = 0; i < scenario_.sensors.size(); ++i) {
-    const Pose& X_LS = scenario_.sensors[i].X_LS;
-    const Pose X_WS = sensor_link_[i] < 0 ? X_LS : robot_->X_WL(sensor_link_[i]) * X_LS;
-    SensorSample& out = frame_.sensors[i];
-    out.p_WS = X_WS.translation();
-    out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
-    for (std::size_t r = ray_begin_[i]; r < ray_begin_[i + 1]; ++r) {
-      rays_[r].origin_W = out.p_WS.cast<float>();
-      // the axis ray is exactly the sensor's +x, as in the paper's single-ray model
-      const BeamRay& beam_ray = beam_rays_[r];
-      ray_dir_W_[r] = beam_ray.off_axis_deg == 0.0 ? out.dir_W : Vec3(X_WS.linear() * beam_ray.dir_S);
-      rays_[r].direction_W = ray_dir_W_[r].cast<float>();
-    }
+void Simulation::PlaceSensor(std::size_t i) {
+  const Pose& X_LS = scenario_.sensors[i].X_LS;
+  const Pose X_WS = sensor_link_[i] < 0 ? X_LS : robot_->X_WL(sensor_link_[i]) * X_LS;
+  SensorSample& out = frame_.sensors[i];
+  out.p_WS = X_WS.translation();
+  out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
+  for (std::size_t r = ray_begin_[i]; r < ray_begin_[i + 1]; ++r) {
+    rays_[r].origin_W = out.p_WS.cast<float>();
+    // the axis ray is exactly the sensor's +x, as in the paper's single-ray model
+    const BeamRay& beam_ray = beam_rays_[r];
+    ray_dir_W_[r] = beam_ray.off_axis_deg == 0.0 ? out.dir_W : Vec3(X_WS.linear() * beam_ray.dir_S);
+    rays_[r].direction_W = ray_dir_W_[r].cast<float>();
   }
 }
 
 void Simulation::ReadSensors() {
   // sensors are independent (each owns its rays, hits, echoes and output
   // slot), so a sample with many rays is shared out by sensor, in one fork:
-  // each thread casts a sensor's rays and reads them while they are in its
-  // cache. A sensor's rays are always cast on their own, in the same packets,
+  // each thread places a sensor's rays, casts them and reads them while they
+  // are in its cache. A sensor's rays are always cast on their own, in the same packets,
   // and the noise is keyed, so the readings are the same whatever the thread count.
   const std::size_t sensor_count = scenario_.sensors.size();
   const auto read = [this](std::size_t begin_sensor, std::size_t end_sensor) {
     for (std::size_t sensor = begin_sensor; sensor < end_sensor; ++sensor) {
       const std::size_t begin = ray_begin_[sensor], count = ray_begin_[sensor + 1] - begin;
+      PlaceSensor(sensor);
       caster_.Cast(std::span(rays_).subspan(begin, count), std::span(hits_).subspan(begin, count));
       MeasureSensor(sensor);
     }

@@ -72,8 +72,8 @@ class Simulation {
   const RobotOutcome& robot_outcome() const { return outcome_; }
 
  private:
-  // place the sensors where their links are and fill rays_ (one ray per sensor)
-  void PlaceSensors();
+  // place a sensor where its link is and fill its rays in rays_
+  void PlaceSensor(std::size_t sensor);
   // cast every sensor's rays into hits_ and turn them into readings in frame_
   void ReadSensors();
   // one sensor's hits into its reading
