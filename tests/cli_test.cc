@@ -4,6 +4,8 @@
 // the thread count.
 #include <cmath>
 
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include "cli_helpers.h"
@@ -126,6 +128,18 @@ TEST(CliRun, BadCommandLineExitsTwo) {
   EXPECT_EQ(RunProxsim("run --threads 0").exit_code, 2);
   EXPECT_EQ(RunProxsim("frobnicate").exit_code, 2);
   EXPECT_EQ(RunProxsim("run /no/such/file.yaml").exit_code, 2);
+}
+
+// `bench --from` draws the tables of a saved --json run; anything else is bad input.
+TEST(CliBench, FromRefusesAFileThatIsNotABenchRun) {
+  const auto dir = FreshDir("bench_from");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "not_bench.json") << R"({"scenes": 1})";
+  const auto result = RunProxsim("bench --from " + (dir / "not_bench.json").string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("not_bench.json: not the output of `proxsim bench --json`"), std::string::npos)
+      << result.output;
+  EXPECT_EQ(RunProxsim("bench --from /no/such/file.json").exit_code, 2);
 }
 
 }  // namespace

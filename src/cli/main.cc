@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstdio>
 #include <exception>
+#include <fstream>
 #include <optional>
 #include <string>
 
@@ -154,6 +155,9 @@ int main(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand("bench", "race proxsim against bare Embree, Bullet and MuJoCo (a few minutes)");
   bench->add_flag("--json", bench_json, "print one JSON object with every figure (keys: README, Performance)");
   bench->add_flag("--quick", bench_quick, "fewer rays and a shorter heavy run: a smoke test");
+  std::string bench_from;
+  bench->add_option("--from", bench_from, "print the Markdown tables of a run saved with --json, without running")
+      ->check(CLI::ExistingFile);
   std::string bench_only = "all";
   bench->add_option("--only", bench_only, "run one part: rays (the engines) or e2e (paper and heavy runs)")
       ->check(CLI::IsMember({"all", "rays", "e2e"}))
@@ -176,6 +180,17 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format);
+    if (*bench && !bench_from.empty()) {
+      std::string report;
+      try {
+        std::ifstream saved(bench_from);
+        report = proxsim::bench::BenchReport(nlohmann::json::parse(saved));
+      } catch (const nlohmann::json::exception& error) {
+        throw proxsim::InputError(bench_from + ": not the output of `proxsim bench --json` (" + error.what() + ")");
+      }
+      std::fputs(report.c_str(), stdout);
+      return 0;
+    }
     if (*bench) {
       const nlohmann::json result = proxsim::bench::RunBench(
           {.quick = bench_quick, .progress = true, .rays = bench_only != "e2e", .end_to_end = bench_only != "rays"});
