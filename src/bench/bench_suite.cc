@@ -527,26 +527,26 @@ std::string BenchReport(const json& r) {
   std::ostringstream out;
   char line[512];
   const auto M = [](const json& v) { return v.is_number() ? v.get<double>() / 1e6 : std::nan(""); };
-  out << "proxsim bench — " << r["machine"]["cpu"].get<std::string>() << ", load " << r["machine"]["load_average_1min_at_start"]
-      << " → " << r["machine"]["load_average_1min_at_end"] << ", " << r["rays_per_set"] << " rays per set\n\n";
+  out << "proxsim bench — " << r.at("machine").at("cpu").get<std::string>() << ", load " << r.at("machine").at("load_average_1min_at_start")
+      << " → " << r.at("machine").at("load_average_1min_at_end") << ", " << r.at("rays_per_set") << " rays per set\n\n";
   out << "| scene | rays | threads | proxsim pipeline | bare Embree best (call) | Embree robust | Bullet | MuJoCo | "
          "proxsim/Embree | proxsim/Bullet | proxsim/MuJoCo |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string label : {"10k", "100k", "1m"}) {
-    if (!r["scenes"].contains(label)) continue;
-    const json& s = r["scenes"][label];
+    if (!r.at("scenes").contains(label)) continue;
+    const json& s = r.at("scenes").at(label);
     for (const char* set : {"incoherent", "fans"}) {
-      const json& x = s[set];
+      const json& x = s.at(set);
       for (const char* t : {"1t", "2t"}) {
         const std::string T = t;
-        const double p = x["proxsim_rays_per_s_" + T];
-        const double e = x["embree_best_rays_per_s_" + T];
+        const double p = x.at("proxsim_rays_per_s_" + T);
+        const double e = x.at("embree_best_rays_per_s_" + T);
         const double b = x.value("bullet_rays_per_s_" + T, std::nan(""));
         const double m = x.value("mujoco_rays_per_s_" + T, std::nan(""));
         const std::string robust =
-            std::string(set) == "incoherent" ? std::to_string(M(s["embree_robust_rays_per_s_" + T])).substr(0, 5) : "";
+            std::string(set) == "incoherent" ? std::to_string(M(s.at("embree_robust_rays_per_s_" + T))).substr(0, 5) : "";
         std::snprintf(line, sizeof line, "| %s (%zu tri) | %s | %c | %.2f M/s | %.2f M/s (%s) | %s | %.3f M/s | %.5f M/s | %.2f | %.1f | %.0f |\n",
-                      label.c_str(), s["triangles"].get<std::size_t>(), set, t[0], p / 1e6, e / 1e6,
-                      x["embree_best_call_" + T].get<std::string>().c_str(), robust.c_str(), b / 1e6, m / 1e6, p / e,
+                      label.c_str(), s.at("triangles").get<std::size_t>(), set, t[0], p / 1e6, e / 1e6,
+                      x.at("embree_best_call_" + T).get<std::string>().c_str(), robust.c_str(), b / 1e6, m / 1e6, p / e,
                       p / b, p / m);
         out << line;
       }
@@ -555,37 +555,37 @@ std::string BenchReport(const json& r) {
   out << "\n| scene | build: proxsim | Embree | Bullet | MuJoCo (MJCF parse + compile) | Embree BVH bytes | proxsim RSS Δ | "
          "agreement vs Embree / Bullet / MuJoCo (mismatches of rays, max |Δd|) |\n|---|---|---|---|---|---|---|---|\n";
   for (const std::string label : {"10k", "100k", "1m"}) {
-    if (!r["scenes"].contains(label)) continue;
-    const json& s = r["scenes"][label];
+    if (!r.at("scenes").contains(label)) continue;
+    const json& s = r.at("scenes").at(label);
     std::string agree;
     for (const char* peer : {"embree", "bullet", "mujoco"}) {
-      if (!s["agreement"].contains(peer)) continue;
-      const json& a = s["agreement"][peer];
+      if (!s.at("agreement").contains(peer)) continue;
+      const json& a = s.at("agreement").at(peer);
       char buf[128];
-      std::snprintf(buf, sizeof buf, "%s%zu/%zu, %.1e m", agree.empty() ? "" : "; ", a["hit_miss_mismatches"].get<std::size_t>(),
-                    a["rays"].get<std::size_t>(), a["max_distance_diff_m"].get<double>());
+      std::snprintf(buf, sizeof buf, "%s%zu/%zu, %.1e m", agree.empty() ? "" : "; ", a.at("hit_miss_mismatches").get<std::size_t>(),
+                    a.at("rays").get<std::size_t>(), a.at("max_distance_diff_m").get<double>());
       agree += buf;
     }
     std::snprintf(line, sizeof line, "| %s | %.3f s | %.3f s | %.3f s | %.2f s | %.1f MB | %.1f MB | %s |\n", label.c_str(),
-                  s["proxsim_build_s"].get<double>(), s["embree_build_s"].get<double>(), s.value("bullet_build_s", std::nan("")),
-                  s.value("mujoco_build_s", std::nan("")), s["embree_bytes"].get<double>() / 1e6,
-                  s["proxsim_bytes_rss"].get<double>() / 1e6, agree.c_str());
+                  s.at("proxsim_build_s").get<double>(), s.at("embree_build_s").get<double>(), s.value("bullet_build_s", std::nan("")),
+                  s.value("mujoco_build_s", std::nan("")), s.at("embree_bytes").get<double>() / 1e6,
+                  s.at("proxsim_bytes_rss").get<double>() / 1e6, agree.c_str());
     out << line;
   }
-  const json& h = r["heavy"];
+  const json& h = r.at("heavy");
   std::snprintf(line, sizeof line,
                 "\npaper run: %.3f s wall (1 thread), %.3f s (2 threads)\n"
                 "heavy: %zu rays/sample (64 beams of 32) at 1 kHz, %.2f simulated s: %.2fx real time at 1 thread, %.2fx at 2 "
                 "(%.2f / %.2f M rays/s; bare Embree on its rays %.2f / %.2f M rays/s; peak RSS +%.0f MB)\n"
                 "heavy, simulation steps only (no outputs): %.2fx real time at 1 thread, %.2fx at 2 (%.2f / %.2f M rays/s)\n"
                 "bench wall time: %.0f s\n",
-                r["paper_run"]["wall_s_1t"].get<double>(), r["paper_run"]["wall_s_2t"].get<double>(),
-                h["rays_per_sample"].get<std::size_t>(), h["duration_s"].get<double>(), h["realtime_factor_1t"].get<double>(),
-                h["realtime_factor_2t"].get<double>(), M(h["rays_per_s_1t"]), M(h["rays_per_s_2t"]),
-                M(h["embree_best_rays_per_s_own_rays_1t"]), M(h["embree_best_rays_per_s_own_rays_2t"]),
-                h["peak_rss_above_start_bytes_2t"].get<double>() / 1e6,
-                h["steps_only_realtime_factor_1t"].get<double>(), h["steps_only_realtime_factor_2t"].get<double>(),
-                M(h["steps_only_rays_per_s_1t"]), M(h["steps_only_rays_per_s_2t"]), r["bench_wall_s"].get<double>());
+                r.at("paper_run").at("wall_s_1t").get<double>(), r.at("paper_run").at("wall_s_2t").get<double>(),
+                h.at("rays_per_sample").get<std::size_t>(), h.at("duration_s").get<double>(), h.at("realtime_factor_1t").get<double>(),
+                h.at("realtime_factor_2t").get<double>(), M(h.at("rays_per_s_1t")), M(h.at("rays_per_s_2t")),
+                M(h.at("embree_best_rays_per_s_own_rays_1t")), M(h.at("embree_best_rays_per_s_own_rays_2t")),
+                h.at("peak_rss_above_start_bytes_2t").get<double>() / 1e6,
+                h.at("steps_only_realtime_factor_1t").get<double>(), h.at("steps_only_realtime_factor_2t").get<double>(),
+                M(h.at("steps_only_rays_per_s_1t")), M(h.at("steps_only_rays_per_s_2t")), r.at("bench_wall_s").get<double>());
   out << line;
   return out.str();
 }

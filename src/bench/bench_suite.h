@@ -19,7 +19,8 @@ struct BenchOptions {
 /// Runs the whole suite and returns its figures.
 nlohmann::json RunBench(const BenchOptions& options);
 
-/// The figures as a human-readable Markdown report.
+/// The figures as a human-readable Markdown report; throws nlohmann::json::exception
+/// when `result` lacks a figure (a file that is not a whole `--json` run).
 std::string BenchReport(const nlohmann::json& result);
 
 }  // namespace proxsim::bench
