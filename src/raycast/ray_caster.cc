@@ -29,6 +29,7 @@
 #include "raycast/ray_caster.h"
 
 #include <embree3/rtcore.h>
+#include <oneapi/tbb/task_arena.h>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
 
@@ -281,6 +282,7 @@ struct RayCaster::Impl {
   // the world-only scene as it was, so a step rebuilds only `all`
   bool all_dirty = true;
   bool world_dirty = true;
+  tbb::task_arena commit_arena{1};  ///< one slot: top-level commits run on the caller only
 
   // first error reported by Embree since the last check
   std::mutex error_mutex;
@@ -546,8 +548,14 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
 void RayCaster::Commit() {
   // only the instances are rebuilt, and only in the scenes that changed;
   // child scenes were committed in AddBody
-  if (impl_->all_dirty) rtcCommitScene(impl_->scene_all);
-  if (impl_->world_dirty) rtcCommitScene(impl_->scene_world);
+  // on the calling thread alone: a parallel commit of a few instances wakes
+  // Embree's TBB workers, which then spin for work every sample and take the
+  // core from the sample's own threads (BM_HeavyStep1M at 2 threads: 260–400 µs
+  // per step this way, 400–530 µs with the default arena)
+  impl_->commit_arena.execute([this] {
+    if (impl_->all_dirty) rtcCommitScene(impl_->scene_all);
+    if (impl_->world_dirty) rtcCommitScene(impl_->scene_world);
+  });
   impl_->all_dirty = impl_->world_dirty = false;
   impl_->committed = true;
   impl_->ThrowIfDeviceError("Commit");
