@@ -6,12 +6,17 @@
 //     spheres, cylinders and planes as user geometry intersected exactly
 //     (analytic_shapes.h), never tessellated;
 //   - two top-level scenes instance the bodies (one level of instancing):
-//     `all` holds every body (rays with see_robot = true) and `world` only the
-//     kWorld bodies (see_robot = false). The instance ID of a body is its index
-//     in both, so a hit maps straight back to (body, geometry) → object_id.
+//     `world` the kWorld bodies and `robot` the kRobot ones. The instance ID
+//     of a body is its index, so a hit maps straight back to (body, geometry)
+//     → object_id. A ray is cast into the world first — straight into the
+//     world body's own scene when there is one world body at the identity
+//     pose (the usual case), so the big static BVH is walked without an
+//     instance level — then, if it sees the robot, into `robot` up to the
+//     world hit: the nearer hit wins.
 // Moving a body only rewrites its instance transforms; Commit() then rebuilds
-// the two top-level scenes, whose only primitives are the instances. The
-// child scenes, and so the static world's BVH, are built once in AddBody.
+// the top-level scene that changed (the robot's, each sample), whose only
+// primitives are the instances. The child scenes, and so the static world's
+// BVH, are built once in AddBody.
 //
 // Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
 // triangle test, so a ray through a shared edge or vertex cannot slip between
@@ -74,7 +79,7 @@ struct Body {
   std::vector<std::unique_ptr<GeomRecord>> geoms;  ///< index = geomID in `scene`; stable addresses
   Pose X_WB = Pose::Identity();
   Eigen::Matrix3f R_WB = Eigen::Matrix3f::Identity();
-  RTCGeometry instance_all = nullptr;
+  RTCGeometry instance_robot = nullptr;  ///< null for world bodies
   RTCGeometry instance_world = nullptr;  ///< null for robot bodies
   bool has_mesh = false;
   std::vector<const GeomRecord*> closed_form_geoms;  ///< every geom but meshes, for DistanceToWorld
@@ -272,15 +277,19 @@ bool MeshPointQueryCallback(RTCPointQueryFunctionArguments* args) {
 
 struct RayCaster::Impl {
   RTCDevice device = nullptr;
-  RTCScene scene_all = nullptr;
   RTCScene scene_world = nullptr;
-  std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in both top-level scenes
+  RTCScene scene_robot = nullptr;
+  std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in the top-level scenes
+  // the world body cast without its instance (see the top of the file), or null
+  RTCScene world_direct = nullptr;
+  int world_direct_body = -1;
+  bool has_robot = false;
   std::size_t triangle_count = 0;
   std::unique_ptr<ParallelRunner> runner = std::make_unique<ParallelRunner>(1);  ///< for large batches
   bool committed = true;
   // which top-level scene has a change to commit: moving a robot body leaves
-  // the world-only scene as it was, so a step rebuilds only `all`
-  bool all_dirty = true;
+  // the world's as it was, so a step rebuilds only `robot`
+  bool robot_dirty = true;
   bool world_dirty = true;
   tbb::task_arena commit_arena{1};  ///< one slot: top-level commits run on the caller only
 
@@ -442,20 +451,20 @@ RayCaster::RayCaster() : impl_(std::make_unique<Impl>()) {
   // rebuilt every sample: medium quality, not dynamic (for a few instances
   // Embree's low-quality two-level builder costs 3× more: ~60 µs against ~20 µs
   // per commit, proxsim_microbench BM_MoveRobotAndCommit)
-  impl_->scene_all = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
   impl_->scene_world = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
+  impl_->scene_robot = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
   Commit();  // an empty caster answers every ray with a miss
 }
 
 RayCaster::~RayCaster() {
   for (auto& body : impl_->bodies) {
-    if (body->instance_all) rtcReleaseGeometry(body->instance_all);
+    if (body->instance_robot) rtcReleaseGeometry(body->instance_robot);
     if (body->instance_world) rtcReleaseGeometry(body->instance_world);
     for (auto& [ids, scene] : body->query_scenes) rtcReleaseScene(scene);
     rtcReleaseScene(body->scene);
   }
-  rtcReleaseScene(impl_->scene_all);
   rtcReleaseScene(impl_->scene_world);
+  rtcReleaseScene(impl_->scene_robot);
   rtcReleaseDevice(impl_->device);
 }
 
@@ -516,13 +525,15 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
 
   // the body's BVH, built once; then its instance in the top-level scenes
   rtcCommitScene(body.scene);
-  body.instance_all = impl.NewInstance(impl.scene_all, body, static_cast<unsigned int>(body_index));
   if (kind == BodyKind::kWorld) {
     body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body_index));
+    impl.world_dirty = true;
+  } else {
+    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(body_index));
+    impl.robot_dirty = true;
+    impl.has_robot = true;
   }
   impl.committed = false;
-  impl.all_dirty = true;
-  if (kind == BodyKind::kWorld) impl.world_dirty = true;
   impl.ThrowIfDeviceError("AddBody");
   return body_index;
 }
@@ -534,14 +545,13 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   body.R_WB = X_WB.linear().cast<float>();
   float xfm[12];
   ToColumnMajor3x4(X_WB, xfm);
-  for (RTCGeometry instance : {body.instance_all, body.instance_world}) {
+  for (RTCGeometry instance : {body.instance_robot, body.instance_world}) {
     if (!instance) continue;
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
     rtcCommitGeometry(instance);
   }
   impl_->committed = false;
-  impl_->all_dirty = true;
-  if (body.instance_world) impl_->world_dirty = true;
+  (body.instance_world ? impl_->world_dirty : impl_->robot_dirty) = true;
   impl_->ThrowIfDeviceError("SetBodyPose");
 }
 
@@ -552,11 +562,26 @@ void RayCaster::Commit() {
   // Embree's TBB workers, which then spin for work every sample and take the
   // core from the sample's own threads (BM_HeavyStep1M at 2 threads: 260–400 µs
   // per step this way, 400–530 µs with the default arena)
-  impl_->commit_arena.execute([this] {
-    if (impl_->all_dirty) rtcCommitScene(impl_->scene_all);
-    if (impl_->world_dirty) rtcCommitScene(impl_->scene_world);
+  Impl& impl = *impl_;
+  if (impl.world_dirty) {
+    // one world body at the identity: cast into its own scene, no instance level
+    impl.world_direct = nullptr;
+    impl.world_direct_body = -1;
+    int world_bodies = 0;
+    for (std::size_t b = 0; b < impl.bodies.size(); ++b) {
+      if (impl.bodies[b]->kind != BodyKind::kWorld) continue;
+      ++world_bodies;
+      impl.world_direct_body = static_cast<int>(b);
+    }
+    if (world_bodies == 1 && impl.bodies[impl.world_direct_body]->X_WB.matrix() == Eigen::Matrix4d::Identity()) {
+      impl.world_direct = impl.bodies[impl.world_direct_body]->scene;
+    }
+  }
+  impl.commit_arena.execute([&impl] {
+    if (impl.robot_dirty) rtcCommitScene(impl.scene_robot);
+    if (impl.world_dirty) rtcCommitScene(impl.scene_world);
   });
-  impl_->all_dirty = impl_->world_dirty = false;
+  impl.robot_dirty = impl.world_dirty = false;
   impl_->committed = true;
   impl_->ThrowIfDeviceError("Commit");
 }
@@ -569,57 +594,76 @@ namespace {
 /// about what its single-ray one does (`proxsim bench` measures both).
 constexpr std::size_t kPacketRays = 8;
 
-/// Casts rays[0..n) (n <= 8) as one packet per top-level scene they need and
-/// maps the hits back. Each lane is intersected on its own, so a ray's answer
-/// does not depend on the other rays of its packet.
-void CastPacket(RTCScene scene_all, RTCScene scene_world, const std::vector<std::unique_ptr<Body>>& bodies,
-                const Ray* rays, Hit* hits, std::size_t n) {
-  for (const bool see_robot : {true, false}) {
-    alignas(32) int valid[kPacketRays];
-    bool any = false;
-    for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-      valid[lane] = lane < n && rays[lane].see_robot == see_robot ? -1 : 0;
-      any = any || valid[lane];
-    }
-    if (!any) continue;  // usually every ray of a packet sees the robot, or none does
+/// Where a packet's rays are cast.
+struct CastScenes {
+  RTCScene world = nullptr;      ///< the world's top-level scene, or the world body's own (direct)
+  int direct_body = -1;          ///< the body of `world` when it is direct, else -1 (hits carry the instance)
+  RTCScene robot = nullptr;      ///< the robot's top-level scene; null when there is no robot
+};
 
-    RTCRayHit8 packet;
-    for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-      const Ray& ray = rays[valid[lane] ? lane : 0];  // inactive lanes: any finite ray (Embree skips them)
-      packet.ray.org_x[lane] = ray.origin_W.x();
-      packet.ray.org_y[lane] = ray.origin_W.y();
-      packet.ray.org_z[lane] = ray.origin_W.z();
-      packet.ray.tnear[lane] = 0.0f;
-      packet.ray.dir_x[lane] = ray.direction_W.x();
-      packet.ray.dir_y[lane] = ray.direction_W.y();
-      packet.ray.dir_z[lane] = ray.direction_W.z();
-      packet.ray.time[lane] = 0.0f;
-      packet.ray.tfar[lane] = ray.max_range_m;
-      packet.ray.mask[lane] = 0xFFFFFFFFu;
-      packet.ray.id[lane] = 0;
-      packet.ray.flags[lane] = 0;
-      packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-      packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-    }
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    rtcIntersect8(valid, see_robot ? scene_all : scene_world, &context, &packet);
+/// Maps the hit of `lane` to the body and its shape; Ng from B to W, unit.
+void MapHit(const RTCRayHit8& packet, std::size_t lane, int direct_body,
+            const std::vector<std::unique_ptr<Body>>& bodies, Hit* hit) {
+  const unsigned int inst = packet.hit.instID[0][lane];
+  if (packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID || (direct_body < 0 && inst == RTC_INVALID_GEOMETRY_ID)) {
+    *hit = Hit{};  // a miss
+    return;
+  }
+  const Body& body = *bodies[direct_body >= 0 ? static_cast<std::size_t>(direct_body) : inst];
+  const GeomRecord& geom = *body.geoms[packet.hit.geomID[lane]];
+  const Vec3f normal_B = Vec3f(packet.hit.Ng_x[lane], packet.hit.Ng_y[lane], packet.hit.Ng_z[lane]).normalized();
+  hit->distance_m = packet.ray.tfar[lane];
+  hit->normal_W = body.R_WB * normal_B;
+  hit->object_id = geom.object_id;
+}
 
-    for (std::size_t lane = 0; lane < n; ++lane) {
-      if (!valid[lane]) continue;
-      Hit& hit = hits[lane];
-      // a miss
-      if (packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID || packet.hit.instID[0][lane] == RTC_INVALID_GEOMETRY_ID) {
-        hit = Hit{};
-        continue;
-      }
-      // map (instance, geometry) to the body and its shape; Ng from B to W, unit
-      const Body& body = *bodies[packet.hit.instID[0][lane]];
-      const GeomRecord& geom = *body.geoms[packet.hit.geomID[lane]];
-      const Vec3f normal_B = Vec3f(packet.hit.Ng_x[lane], packet.hit.Ng_y[lane], packet.hit.Ng_z[lane]).normalized();
-      hit.distance_m = packet.ray.tfar[lane];
-      hit.normal_W = body.R_WB * normal_B;
-      hit.object_id = geom.object_id;
+/// Casts rays[0..n) (n <= 8) as one packet: into the world, then the lanes
+/// that see the robot into the robot's scene up to their world hit (Embree
+/// only reports a nearer one). Each lane is intersected on its own, so a
+/// ray's answer does not depend on the other rays of its packet.
+void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body>>& bodies, const Ray* rays,
+                Hit* hits, std::size_t n) {
+  alignas(32) int valid[kPacketRays];
+  RTCRayHit8 packet;
+  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+    valid[lane] = lane < n ? -1 : 0;
+    const Ray& ray = rays[lane < n ? lane : 0];  // inactive lanes: any finite ray (Embree skips them)
+    packet.ray.org_x[lane] = ray.origin_W.x();
+    packet.ray.org_y[lane] = ray.origin_W.y();
+    packet.ray.org_z[lane] = ray.origin_W.z();
+    packet.ray.tnear[lane] = 0.0f;
+    packet.ray.dir_x[lane] = ray.direction_W.x();
+    packet.ray.dir_y[lane] = ray.direction_W.y();
+    packet.ray.dir_z[lane] = ray.direction_W.z();
+    packet.ray.time[lane] = 0.0f;
+    packet.ray.tfar[lane] = ray.max_range_m;
+    packet.ray.mask[lane] = 0xFFFFFFFFu;
+    packet.ray.id[lane] = 0;
+    packet.ray.flags[lane] = 0;
+    packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+
+  // the static world
+  rtcIntersect8(valid, scenes.world, &context, &packet);
+  for (std::size_t lane = 0; lane < n; ++lane) MapHit(packet, lane, scenes.direct_body, bodies, &hits[lane]);
+
+  // the robot's links, nearer than the world hit (tfar now holds it)
+  if (!scenes.robot) return;
+  bool any = false;
+  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+    valid[lane] = lane < n && rays[lane].see_robot ? -1 : 0;
+    any = any || valid[lane];
+    packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+  if (!any) return;
+  rtcIntersect8(valid, scenes.robot, &context, &packet);
+  for (std::size_t lane = 0; lane < n; ++lane) {
+    if (valid[lane] && packet.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
+      MapHit(packet, lane, /*direct_body=*/-1, bodies, &hits[lane]);
     }
   }
 }
@@ -631,10 +675,12 @@ void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
   assert(impl_->committed && "Commit() after adding or moving bodies");
   const Impl& impl = *impl_;
   const auto packets = static_cast<std::ptrdiff_t>((rays.size() + kPacketRays - 1) / kPacketRays);
+  const CastScenes scenes{.world = impl.world_direct ? impl.world_direct : impl.scene_world,
+                          .direct_body = impl.world_direct ? impl.world_direct_body : -1,
+                          .robot = impl.has_robot ? impl.scene_robot : nullptr};
   const auto cast_packet = [&](std::ptrdiff_t p) {
     const std::size_t first = static_cast<std::size_t>(p) * kPacketRays;
-    CastPacket(impl.scene_all, impl.scene_world, impl.bodies, rays.data() + first, hits.data() + first,
-               std::min(kPacketRays, rays.size() - first));
+    CastPacket(scenes, impl.bodies, rays.data() + first, hits.data() + first, std::min(kPacketRays, rays.size() - first));
   };
 
   // every ray is independent, so the result does not depend on the thread count
