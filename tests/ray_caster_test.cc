@@ -316,6 +316,53 @@ TEST(RayCasterTest, RaysThatIgnoreTheRobotPassThroughItsBodies) {
   EXPECT_NEAR(through.distance_m, 2.9, 1e-6);
 }
 
+// The world is cast first (straight into its scene when it is one body at the
+// identity, through instances otherwise), then the robot up to the world hit:
+// the nearer surface wins in every layout, and a moved link is seen moved.
+TEST(RayCasterTest, TheNearerOfWorldAndRobotWinsWhateverTheWorldsLayout) {
+  for (int layout = 0; layout < 3; ++layout) {
+    SCOPED_TRACE(layout == 0 ? "one world body at the identity" : layout == 1 ? "one posed world body" : "two world bodies");
+    RayCaster caster;
+    // a wall whose near face is at x = 2.9, as one body or split in two (y < 0 and y > 0)
+    if (layout == 0) {
+      caster.AddBody({BodyShape{Box{Vec3(0.2, 4, 4)}, Translation(3, 0, 0), 0}}, BodyKind::kWorld);
+    } else if (layout == 1) {
+      caster.AddBody({BodyShape{Box{Vec3(0.2, 4, 4)}, Pose::Identity(), 0}}, BodyKind::kWorld, Translation(3, 0, 0));
+    } else {
+      caster.AddBody({BodyShape{Box{Vec3(0.2, 2, 4)}, Translation(3, -1, 0), 0}}, BodyKind::kWorld);
+      caster.AddBody({BodyShape{Box{Vec3(0.2, 2, 4)}, Translation(3, 1, 0), 0}}, BodyKind::kWorld);
+    }
+    // a link in front of the wall on y = 0.5, another behind it on y = -0.5
+    const int front = caster.AddBody({BodyShape{Sphere{0.2}, Pose::Identity(), 7}}, BodyKind::kRobot,
+                                     Translation(1, 0.5, 0));
+    caster.AddBody({BodyShape{Sphere{0.2}, Pose::Identity(), 8}}, BodyKind::kRobot, Translation(5, -0.5, 0));
+    caster.Commit();
+
+    Hit hit = CastOne(caster, MakeRay(Vec3(0, 0.5, 0), Vec3::UnitX(), 10));
+    EXPECT_EQ(hit.object_id, 7);
+    EXPECT_NEAR(hit.distance_m, 0.8, 1e-6);
+    ExpectNormalNear(hit.normal_W, -Vec3::UnitX());
+    hit = CastOne(caster, MakeRay(Vec3(0, -0.5, 0), Vec3::UnitX(), 10));
+    EXPECT_EQ(hit.object_id, 0) << "the link behind the wall is hidden";
+    EXPECT_NEAR(hit.distance_m, 2.9, 1e-6);
+    ExpectNormalNear(hit.normal_W, -Vec3::UnitX());
+    hit = CastOne(caster, MakeRay(Vec3(0, 0.5, 0), Vec3::UnitX(), 0.5));
+    EXPECT_FALSE(hit.is_hit()) << "both beyond the range";
+
+    // the front link moves out of the way, then comes back nearer
+    caster.SetBodyPose(front, Translation(1, 3, 0));
+    caster.Commit();
+    hit = CastOne(caster, MakeRay(Vec3(0, 0.5, 0), Vec3::UnitX(), 10));
+    EXPECT_EQ(hit.object_id, 0);
+    EXPECT_NEAR(hit.distance_m, 2.9, 1e-6);
+    caster.SetBodyPose(front, Translation(0.5, 0.5, 0));
+    caster.Commit();
+    hit = CastOne(caster, MakeRay(Vec3(0, 0.5, 0), Vec3::UnitX(), 10));
+    EXPECT_EQ(hit.object_id, 7);
+    EXPECT_NEAR(hit.distance_m, 0.3, 1e-6);
+  }
+}
+
 // ---------------------------------------------------------------- robust mode
 
 TEST(RayCasterTest, RaysAlongAFaceDiagonalHit) {
