@@ -102,7 +102,7 @@ TEST(RobotInSceneTest, RunningMinimumClearanceEqualsTheBruteForceOne) {
     robot.MoveTo(k / kRate_hz);
     caster.Commit();
     const double expected_m = BruteForceClearance(robot, caster, exclude);
-    const double clearance_m = robot.ClearanceTo(caster, exclude, running_m);
+    const double clearance_m = robot.ClearanceTo(exclude, running_m);
     if (expected_m < running_m) {
       ASSERT_EQ(clearance_m, expected_m) << "sample " << k;
       ++lowered;
@@ -129,7 +129,7 @@ TEST(RobotInSceneTest, EveryClearanceWithoutACapEqualsTheBruteForceOne) {
   for (int k = 0; k < 150; ++k) {
     robot.MoveTo(k / 50.0);
     caster.Commit();
-    const double clearance_m = robot.ClearanceTo(caster, exclude);
+    const double clearance_m = robot.ClearanceTo(exclude);
     ASSERT_EQ(clearance_m, BruteForceClearance(robot, caster, exclude)) << "sample " << k;
     least_m = std::min(least_m, clearance_m);
     most_m = std::max(most_m, clearance_m);
@@ -163,7 +163,7 @@ TEST(RobotInSceneTest, ClearanceOfARobotTurningOnTheSpotEqualsTheBruteForceOne) 
     robot.MoveTo(k / 100.0);
     caster.Commit();
     const double expected_m = BruteForceClearance(robot, caster, exclude);
-    const double clearance_m = robot.ClearanceTo(caster, exclude, running_m);
+    const double clearance_m = robot.ClearanceTo(exclude, running_m);
     if (expected_m < running_m) {
       ASSERT_EQ(clearance_m, expected_m) << "sample " << k;
     } else {
@@ -187,10 +187,10 @@ TEST(RobotInSceneTest, ClearanceStartsAfreshWhenTheExcludeListChanges) {
     robot.MoveTo(k / 50.0);
     caster.Commit();
     const auto& exclude = k % 10 < 5 ? floor_excluded : nothing_excluded;
-    ASSERT_EQ(robot.ClearanceTo(caster, exclude), BruteForceClearance(robot, caster, exclude)) << "sample " << k;
+    ASSERT_EQ(robot.ClearanceTo(exclude), BruteForceClearance(robot, caster, exclude)) << "sample " << k;
   }
-  EXPECT_LT(robot.ClearanceTo(caster, nothing_excluded), 0.03) << "a foot on the floor";
-  EXPECT_GT(robot.ClearanceTo(caster, floor_excluded), 0.03);
+  EXPECT_LT(robot.ClearanceTo(nothing_excluded), 0.03) << "a foot on the floor";
+  EXPECT_GT(robot.ClearanceTo(floor_excluded), 0.03);
 }
 
 }  // namespace

@@ -216,22 +216,18 @@ json RaceOnRays(const char* set_name, std::span<const Ray> rays, Pipeline& pipel
     Progress("  %s bare Embree best %.2f M rays/s (%s)", set_name, best / 1e6, best_call.c_str());
 
     // the slow peers on a fixed prefix of the same rays
-    if (bullet) {
-      std::vector<float> d(bullet_rays);
-      const auto subset = rays.first(bullet_rays);
-      out["bullet_rays_per_s_" + t] = RaysPerSecond(bullet_rays, 1, [&] { bullet->Cast(subset, d, threads); });
-      if (threads == 1 && bullet_distances) *bullet_distances = d;
-      Progress("  %s Bullet %.3f M rays/s on %zu rays", set_name, out["bullet_rays_per_s_" + t].get<double>() / 1e6,
-               bullet_rays);
-    }
-    if (mujoco) {
-      std::vector<float> d(mujoco_rays);
-      const auto subset = rays.first(mujoco_rays);
-      out["mujoco_rays_per_s_" + t] = RaysPerSecond(mujoco_rays, 1, [&] { mujoco->Cast(subset, d, threads); });
-      if (threads == 1 && mujoco_distances) *mujoco_distances = d;
-      Progress("  %s MuJoCo %.4f M rays/s on %zu rays", set_name, out["mujoco_rays_per_s_" + t].get<double>() / 1e6,
-               mujoco_rays);
-    }
+    const auto time_slow_peer = [&](const char* key, const char* name, RayPeer* peer, std::size_t count,
+                                    std::vector<float>* distances_1t) {
+      if (!peer) return;
+      std::vector<float> d(count);
+      const auto subset = rays.first(count);
+      const double rays_per_s = RaysPerSecond(count, 1, [&] { peer->Cast(subset, d, threads); });
+      out[std::string(key) + "_rays_per_s_" + t] = rays_per_s;
+      if (threads == 1 && distances_1t) *distances_1t = d;
+      Progress("  %s %s %.4f M rays/s on %zu rays", set_name, name, rays_per_s / 1e6, count);
+    };
+    time_slow_peer("bullet", "Bullet", bullet, bullet_rays, bullet_distances);
+    time_slow_peer("mujoco", "MuJoCo", mujoco, mujoco_rays, mujoco_distances);
   }
   out["proxsim_bit_identical_1t_2t"] = identical;
   if (proxsim_distances) {

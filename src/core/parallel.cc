@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include <oneapi/tbb/blocked_range.h>
-#include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_invoke.h>
 #include <oneapi/tbb/task_arena.h>
@@ -42,7 +41,5 @@ void ParallelRunner::Invoke(const std::function<void()>& a, const std::function<
   }
   arena_->arena.execute([&] { tbb::parallel_invoke(a, b); });
 }
-
-int ParallelRunner::HardwareThreads() { return std::max(1, tbb::info::default_concurrency()); }
 
 }  // namespace proxsim

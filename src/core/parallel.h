@@ -35,9 +35,6 @@ class ParallelRunner {
   /// Runs a and b, at once when there are threads for it; returns when both are done.
   void Invoke(const std::function<void()>& a, const std::function<void()>& b) const;
 
-  /// The number of threads the machine offers to this process.
-  static int HardwareThreads();
-
  private:
   struct Arena;
   int threads_ = 1;

@@ -124,17 +124,15 @@ RobotSelfKnowledge RobotInScene::SelfKnowledge() const {
   return self;
 }
 
-double RobotInScene::ClearanceTo(const RayCaster& caster, std::span<const std::int32_t> exclude_object_ids,
-                                 double below_m) {
+double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_ids, double below_m) {
   constexpr double kNoBound = -std::numeric_limits<double>::infinity();
-  // the bounds hold for one world and one exclude list: start afresh on another
-  if (&caster != bounds_caster_ || !std::ranges::equal(exclude_object_ids, bounds_exclude_ids_)) {
+  // the bounds hold for one exclude list: start afresh on another
+  if (clearance_bounds_.empty() || !std::ranges::equal(exclude_object_ids, bounds_exclude_ids_)) {
     clearance_bounds_.assign(link_samples_.size(), ClearanceBounds{});
     for (std::size_t link = 0; link < link_samples_.size(); ++link) {
       clearance_bounds_[link].point_lower_m.assign(link_samples_[link].points_L.size(), kNoBound);
       clearance_bounds_[link].p_W_ref.assign(link_samples_[link].points_L.size(), Vec3::Zero());
     }
-    bounds_caster_ = &caster;
     bounds_exclude_ids_.assign(exclude_object_ids.begin(), exclude_object_ids.end());
   }
 
@@ -158,7 +156,7 @@ double RobotInScene::ClearanceTo(const RayCaster& caster, std::span<const std::i
       const Vec3 p_W = X_WL * samples.points_L[i];
       double lower_m = bounds.point_lower_m[i] - (p_W - bounds.p_W_ref[i]).norm() - kBoundSlack_m;
       if (lower_m < best_m) {
-        lower_m = caster.DistanceToWorld(p_W, exclude_object_ids, cap_m);
+        lower_m = caster_.DistanceToWorld(p_W, exclude_object_ids, cap_m);
         bounds.point_lower_m[i] = lower_m;
         bounds.p_W_ref[i] = p_W;
         best_m = std::min(best_m, lower_m);

@@ -41,13 +41,13 @@ class RobotInScene {
   RobotSelfKnowledge SelfKnowledge() const;
 
   /// Least distance between the robot's surface (sampled every 2 cm) and any
-  /// scene object other than the excluded ones (the floor it walks on), when
-  /// it is below `below_m`; otherwise some value >= below_m. Links and samples
-  /// that cannot come closer are skipped, which keeps a running minimum cheap:
-  /// each remembers a lower bound of its clearance from when it was last
-  /// measured, valid while the world bodies stay as they are (the bounds start
-  /// afresh when the caster or the exclude list differs from the last call's).
-  double ClearanceTo(const RayCaster& caster, std::span<const std::int32_t> exclude_object_ids,
+  /// world object of its ray caster other than the excluded ones (the floor it
+  /// walks on), when it is below `below_m`; otherwise some value >= below_m.
+  /// Links and samples that cannot come closer are skipped, which keeps a
+  /// running minimum cheap: each remembers a lower bound of its clearance from
+  /// when it was last measured, valid while the world bodies stay as they are
+  /// (the bounds start afresh when the exclude list differs from the last call's).
+  double ClearanceTo(std::span<const std::int32_t> exclude_object_ids,
                      double below_m = std::numeric_limits<double>::infinity());
 
   /// Link shapes for scene.json.
@@ -72,9 +72,8 @@ class RobotInScene {
   RayCaster& caster_;
   std::vector<int> link_body_;  // body index of each link in the caster (-1: no shapes)
   std::vector<LinkSamples> link_samples_;
-  // ClearanceTo's memory: bounds per link, and the world and exclude list they hold for
+  // ClearanceTo's memory: bounds per link, and the exclude list they hold for
   std::vector<ClearanceBounds> clearance_bounds_;
-  const RayCaster* bounds_caster_ = nullptr;
   std::vector<std::int32_t> bounds_exclude_ids_;
   std::vector<int> foot_links_;
   RobotState state_;

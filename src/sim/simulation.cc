@@ -110,7 +110,7 @@ const SampleFrame& Simulation::Step() {
   double clearance_m = std::numeric_limits<double>::infinity();
   runner_.Invoke([this] { ReadSensors(); },
                  [&] {
-                   if (robot_) clearance_m = robot_->ClearanceTo(caster_, ground_ids_, outcome_.min_clearance_m);
+                   if (robot_) clearance_m = robot_->ClearanceTo(ground_ids_, outcome_.min_clearance_m);
                  });
   if (latency_) Deliver();
   if (robot_) UpdateRobot(clearance_m);
