@@ -71,7 +71,6 @@ StepPose StepPlanner::Evaluate(const StepPlan& plan, double p) const {
   pose.X_WP = StancePelvis(plan, p, pose.stance);
   auto [p_PA, pitch] = SwingTarget(plan, p);
   // floor guard: lift the swing foot if its lowest sole corner would be below the floor
-  LegAnglesRad target{0, 0, pitch};
   const double lowest = std::min(RotateSagittal(pitch, legs_.FootOffset(plan.swing, FootPoint::kHeel)).y(),
                                  RotateSagittal(pitch, legs_.FootOffset(plan.swing, FootPoint::kToe)).y());
   const double deficit = plan.floor_z_m - (pose.X_WP.translation().z() + p_PA.y() + lowest);
