@@ -10,6 +10,7 @@
 #include "bench/bench_scene.h"
 #include "io/scenario.h"
 #include "raycast/ray_caster.h"
+#include "gait/make_locomotion.h"
 #include "sim/robot_in_scene.h"
 #include "sim/simulation.h"
 
@@ -39,10 +40,11 @@ Scenario StepScenario(bool beams) {
 void BM_MoveRobotAndCommit(benchmark::State& state) {
   const Scenario scenario = StepScenario(false);
   proxsim::RayCaster caster;
-  proxsim::RobotInScene robot(*scenario.robot, caster, 0);
+  const auto locomotion = proxsim::MakeLocomotion(*scenario.robot);
+  proxsim::RobotInScene robot(locomotion->model(), caster, 0);
   double t_s = 0;
   for (auto _ : state) {
-    robot.MoveTo(t_s += 0.001);
+    robot.Place(locomotion->Advance(t_s += 0.001));
     caster.Commit();
   }
 }
@@ -51,9 +53,10 @@ BENCHMARK(BM_MoveRobotAndCommit);
 void BM_MoveRobotOnly(benchmark::State& state) {
   const Scenario scenario = StepScenario(false);
   proxsim::RayCaster caster;
-  proxsim::RobotInScene robot(*scenario.robot, caster, 0);
+  const auto locomotion = proxsim::MakeLocomotion(*scenario.robot);
+  proxsim::RobotInScene robot(locomotion->model(), caster, 0);
   double t_s = 0;
-  for (auto _ : state) robot.MoveTo(t_s += 0.001);
+  for (auto _ : state) robot.Place(locomotion->Advance(t_s += 0.001));
 }
 BENCHMARK(BM_MoveRobotOnly);
 

@@ -16,10 +16,20 @@
 #include <vector>
 
 #include "cli_helpers.h"
+#include "gait/make_locomotion.h"
 #include "sim/surface_samples.h"
 
 namespace proxsim {
 namespace {
+
+// A robot walked by its scenario's locomotion, its bodies placed at each time
+struct WalkingRobot {
+  WalkingRobot(const RobotConfig& config, RayCaster& caster, std::int32_t first_object_id)
+      : locomotion(MakeLocomotion(config)), body(locomotion->model(), caster, first_object_id) {}
+  void MoveTo(double t_s) { body.Place(locomotion->Advance(t_s)); }
+  std::unique_ptr<Locomotion> locomotion;
+  RobotInScene body;
+};
 
 constexpr std::int32_t kFloorId = 0;
 
@@ -93,13 +103,14 @@ double BruteForceClearance(const RobotInScene& robot, const RayCaster& caster,
 TEST(RobotInSceneTest, RunningMinimumClearanceEqualsTheBruteForceOne) {
   RayCaster caster;
   AddWorld(caster);
-  RobotInScene robot(WalkThatTurns(), caster, 10);
+  WalkingRobot walking(WalkThatTurns(), caster, 10);
+  RobotInScene& robot = walking.body;
   const std::vector<std::int32_t> exclude{kFloorId};
   constexpr double kRate_hz = 100;
   double running_m = std::numeric_limits<double>::infinity(), expected_running_m = running_m;
   int lowered = 0;
   for (int k = 0; k < 300; ++k) {
-    robot.MoveTo(k / kRate_hz);
+    walking.MoveTo(k / kRate_hz);
     caster.Commit();
     const double expected_m = BruteForceClearance(robot, caster, exclude);
     const double clearance_m = robot.ClearanceTo(exclude, running_m);
@@ -123,11 +134,12 @@ TEST(RobotInSceneTest, RunningMinimumClearanceEqualsTheBruteForceOne) {
 TEST(RobotInSceneTest, EveryClearanceWithoutACapEqualsTheBruteForceOne) {
   RayCaster caster;
   AddWorld(caster);
-  RobotInScene robot(WalkThatTurns(), caster, 10);
+  WalkingRobot walking(WalkThatTurns(), caster, 10);
+  RobotInScene& robot = walking.body;
   const std::vector<std::int32_t> exclude{kFloorId};
   double least_m = std::numeric_limits<double>::infinity(), most_m = 0;
   for (int k = 0; k < 150; ++k) {
-    robot.MoveTo(k / 50.0);
+    walking.MoveTo(k / 50.0);
     caster.Commit();
     const double clearance_m = robot.ClearanceTo(exclude);
     ASSERT_EQ(clearance_m, BruteForceClearance(robot, caster, exclude)) << "sample " << k;
@@ -156,11 +168,12 @@ TEST(RobotInSceneTest, ClearanceOfARobotTurningOnTheSpotEqualsTheBruteForceOne) 
                  BodyKind::kWorld);
   RobotConfig config;
   config.trajectory_file = csv_path.string();
-  RobotInScene robot(config, caster, 10);
+  WalkingRobot walking(config, caster, 10);
+  RobotInScene& robot = walking.body;
   const std::vector<std::int32_t> exclude{kFloorId};
   double running_m = std::numeric_limits<double>::infinity(), expected_running_m = running_m;
   for (int k = 0; k < 200; ++k) {
-    robot.MoveTo(k / 100.0);
+    walking.MoveTo(k / 100.0);
     caster.Commit();
     const double expected_m = BruteForceClearance(robot, caster, exclude);
     const double clearance_m = robot.ClearanceTo(exclude, running_m);
@@ -181,10 +194,11 @@ TEST(RobotInSceneTest, ClearanceOfARobotTurningOnTheSpotEqualsTheBruteForceOne) 
 TEST(RobotInSceneTest, ClearanceStartsAfreshWhenTheExcludeListChanges) {
   RayCaster caster;
   AddWorld(caster);
-  RobotInScene robot(WalkThatTurns(), caster, 10);
+  WalkingRobot walking(WalkThatTurns(), caster, 10);
+  RobotInScene& robot = walking.body;
   const std::vector<std::int32_t> floor_excluded{kFloorId}, nothing_excluded;
   for (int k = 0; k < 40; ++k) {
-    robot.MoveTo(k / 50.0);
+    walking.MoveTo(k / 50.0);
     caster.Commit();
     const auto& exclude = k % 10 < 5 ? floor_excluded : nothing_excluded;
     ASSERT_EQ(robot.ClearanceTo(exclude), BruteForceClearance(robot, caster, exclude)) << "sample " << k;

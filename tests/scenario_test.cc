@@ -119,8 +119,10 @@ TEST(ScenarioTest, FullFileParsesToTheValuesWrittenInIt) {
   EXPECT_DOUBLE_EQ(robot.gait.period_s, 1.0);
   ASSERT_EQ(robot.waypoints_m.size(), 3u);
   EXPECT_TRUE(robot.waypoints_m[2].isApprox(Vec2(4, 2)));
-  ASSERT_TRUE(robot.stop_distance_m.has_value());
-  EXPECT_DOUBLE_EQ(*robot.stop_distance_m, 0.25);
+  // stop_distance_m is the shorthand for the stop strategy
+  ASSERT_TRUE(robot.strategy.has_value());
+  ASSERT_TRUE(std::holds_alternative<StopConfig>(*robot.strategy));
+  EXPECT_DOUBLE_EQ(std::get<StopConfig>(*robot.strategy).stop_distance_m, 0.25);
   EXPECT_TRUE(robot.trajectory_file.empty());
 
   // sensors: the ultrasonic preset untouched, mounted with a 20° pitch
@@ -177,7 +179,7 @@ TEST(ScenarioTest, RobotSectionDefaultsWhenEmpty) {
   EXPECT_EQ(scenario.robot->model, "builtin:biped");
   EXPECT_DOUBLE_EQ(scenario.robot->gait.stride_m, 0.6);
   EXPECT_DOUBLE_EQ(scenario.robot->gait.period_s, 1.2);
-  EXPECT_FALSE(scenario.robot->stop_distance_m.has_value());
+  EXPECT_FALSE(scenario.robot->strategy.has_value());
   EXPECT_TRUE(scenario.robot->waypoints_m.empty());
 }
 

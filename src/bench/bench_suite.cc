@@ -25,6 +25,7 @@
 #include "sensors/sensor_model.h"
 #include "robot/robot_model.h"
 #include "sensors/beam.h"
+#include "gait/make_locomotion.h"
 #include "sim/robot_in_scene.h"
 #include "sim/run.h"
 #include "sim/simulation.h"
@@ -470,10 +471,11 @@ json RunBench(const BenchOptions& options) {
     std::vector<Ray> own_rays;
     {
       RayCaster caster;
-      RobotInScene robot(*heavy.robot, caster, 0);
+      const auto locomotion = MakeLocomotion(*heavy.robot);
+      RobotInScene robot(locomotion->model(), caster, 0);
       const int own_samples = options.quick ? 20 : 100;
       for (int k = 0; k < own_samples && k < heavy.SampleCount(); ++k) {
-        robot.MoveTo(static_cast<double>(k) / heavy.rate_hz);
+        robot.Place(locomotion->Advance(static_cast<double>(k) / heavy.rate_hz));
         for (const SensorConfig& sensor : heavy.sensors) {
           const Pose X_WS = robot.X_WL(robot.model().LinkIndex(sensor.link)) * sensor.X_LS;
           for (const BeamRay& beam_ray : MakeBeamRays(sensor.spec.beam)) {

@@ -25,15 +25,38 @@ const char* SupportLegName(SupportLeg s) {
 }
 
 GaitWalker::GaitWalker(RobotModel model, const RobotConfig& config)
-    : model_(std::make_unique<RobotModel>(std::move(model))), gait_(config.gait), waypoints_m_(config.waypoints_m) {
+    : initial_(config), model_(std::make_unique<RobotModel>(std::move(model))), gait_(config.gait) {
   std::vector<std::string> problems;
   if (!(gait_.period_s > 0)) problems.push_back(model_->source() + ": gait period_s must be > 0");
   if (!(gait_.stride_m > 0)) problems.push_back(model_->source() + ": gait stride_m must be > 0");
   if (!problems.empty()) throw InputError(problems);
   legs_ = std::make_unique<BipedLegs>(*model_);
   planner_ = std::make_unique<StepPlanner>(*legs_);
-  SetStride(gait_.stride_m);
-  plan_ = planner_->FirstStep(config.start_xyz_m, config.start_yaw_rad, k_target_);
+  // the amplitude search runs once; Reset() reuses its answer
+  SetStride(initial_.gait.stride_m);
+  initial_k_ = k_target_;
+  initial_achieved_stride_m_ = achieved_stride_m_;
+  Start();
+}
+
+void GaitWalker::Start() {
+  gait_ = initial_.gait;
+  waypoints_m_ = initial_.waypoints_m;
+  next_waypoint_ = 0;
+  k_target_ = initial_k_;
+  achieved_stride_m_ = initial_achieved_stride_m_;
+  plan_ = planner_->FirstStep(initial_.start_xyz_m, initial_.start_yaw_rad, k_target_);
+  step_start_clock_s_ = 0;
+  clock_s_ = 0;
+  step_phase_ = 0;
+  last_t_s_ = 0;
+  started_ = false;
+  stopped_ = false;
+  stop_requested_ = false;
+  path_done_ = false;
+  distance_m_ = 0;
+  last_p_WP_ = Vec3::Zero();
+  has_last_p_WP_ = false;
 }
 
 void GaitWalker::SetStride(double stride_m) {
@@ -134,6 +157,30 @@ RobotState GaitWalker::Advance(double t_s) {
   has_last_p_WP_ = true;
   state.distance_walked_m = distance_m_;
   return state;
+}
+
+void GaitWalker::Reset() { Start(); }
+
+void GaitWalker::SetPath(std::vector<Vec2> waypoints_m) {
+  waypoints_m_ = std::move(waypoints_m);
+  next_waypoint_ = 0;
+  // a robot that stood at the end of its old path walks on to the new one
+  if (path_done_) {
+    path_done_ = false;
+    if (stopped_ && !waypoints_m_.empty()) Resume();
+  }
+}
+
+std::vector<FootFrame> GaitWalker::Feet() const {
+  std::vector<FootFrame> feet;
+  for (const Side side : {Side::kLeft, Side::kRight}) {
+    const LegGeometry& leg = legs_->leg(side);
+    feet.push_back({.link = leg.foot_link,
+                    .p_L_sole = Vec3(0, 0, leg.sole_z_m),
+                    .p_L_toe = Vec3(leg.toe_x_m, 0, leg.sole_z_m),
+                    .p_L_heel = Vec3(leg.heel_x_m, 0, leg.sole_z_m)});
+  }
+  return feet;
 }
 
 }  // namespace proxsim

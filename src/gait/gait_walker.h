@@ -39,6 +39,9 @@ class GaitWalker : public Locomotion {
   void RequestStop() override { stop_requested_ = true; }
   void Resume() override;
   void SetStride(double stride_m) override;
+  void SetPath(std::vector<Vec2> waypoints_m) override;
+  std::vector<FootFrame> Feet() const override;
+  void Reset() override;
   const RobotModel& model() const override { return *model_; }
 
   /// Curve amplitude in use for the requested stride.
@@ -55,6 +58,12 @@ class GaitWalker : public Locomotion {
  private:
   // At the heel strike ending the current step: decide heading and stopping.
   bool DecideAtHeelStrike(const Pose& X_WP, double* yaw_to);
+
+  // the episode's beginning, for Reset()
+  RobotConfig initial_;
+  double initial_k_ = 1;
+  double initial_achieved_stride_m_ = 0;
+  void Start();
 
   std::unique_ptr<RobotModel> model_;  // stable address: legs_ and planner_ refer into it
   std::unique_ptr<BipedLegs> legs_;

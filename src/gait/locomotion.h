@@ -1,6 +1,7 @@
 // The small interface between a robot's motion source (the kinematic gait or a
-// replayed trajectory) and the simulation loop or a strategy: step it in time,
-// read the robot's state, and command it (stop, resume, change stride).
+// replayed trajectory) and the simulation loop: step it in time, read the
+// robot's state, command it (stop, resume, stride, path) and start it afresh
+// for a new episode. Strategies command it through strategy/RobotCommands.
 #pragma once
 
 #include <vector>
@@ -26,10 +27,20 @@ struct RobotState {
   double distance_walked_m = 0;     ///< path length of the pelvis on the floor since t = 0
 };
 
+/// A foot's contact points in its link frame, for what the robot knows of itself.
+struct FootFrame {
+  int link = -1;                 ///< the foot link
+  Vec3 p_L_sole = Vec3::Zero();  ///< the sole point under the ankle
+  Vec3 p_L_toe = Vec3::Zero();   ///< the sole's front end on the foot's centre line
+  Vec3 p_L_heel = Vec3::Zero();  ///< its back end
+};
+
 /// What moves the robot. Advance() is called with non-decreasing times.
 class Locomotion {
  public:
   virtual ~Locomotion() = default;
+  /// Back to the state before the first Advance(): a new episode.
+  virtual void Reset() = 0;
   /// The state at t_s (≥ the previous call's).
   virtual RobotState Advance(double t_s) = 0;
   /// Stop at the next double support and stand still there, both feet down.
@@ -38,6 +49,10 @@ class Locomotion {
   virtual void Resume() = 0;
   /// Stride (heel strike to heel strike of one foot) to walk from the next step on, metres.
   virtual void SetStride(double stride_m) = 0;
+  /// Replaces the rest of the path (world x-y); a motion that has no path ignores it.
+  virtual void SetPath(std::vector<Vec2> waypoints_m) = 0;
+  /// The feet, left then right; empty when the motion does not know them.
+  virtual std::vector<FootFrame> Feet() const = 0;
   virtual const RobotModel& model() const = 0;
 };
 

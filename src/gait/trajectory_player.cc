@@ -166,4 +166,14 @@ RobotState TrajectoryPlayer::Advance(double t_s) {
   return s;
 }
 
+void TrajectoryPlayer::Reset() {
+  started_ = false;
+  stopped_ = false;
+  last_t_s_ = 0;
+  play_t_s_ = 0;
+  has_last_ = false;
+  last_p_WP_ = Vec3::Zero();
+  distance_m_ = 0;
+}
+
 }  // namespace proxsim

@@ -9,7 +9,7 @@
 // last. Times are simulation times; while stopped (RequestStop) the playback
 // clock stands still, so after Resume() the rest plays late by the pause.
 // A recording has no gait: support is reported as double, gait_phase as 0, and
-// SetStride() does nothing.
+// SetStride() and SetPath() do nothing.
 #pragma once
 
 #include <string>
@@ -33,6 +33,10 @@ class TrajectoryPlayer : public Locomotion {
   void RequestStop() override { stopped_ = true; }
   void Resume() override { stopped_ = false; }
   void SetStride(double) override {}
+  void SetPath(std::vector<Vec2>) override {}
+  /// A recording names no feet.
+  std::vector<FootFrame> Feet() const override { return {}; }
+  void Reset() override;
   const RobotModel& model() const override { return model_; }
 
   /// Number of rows read.

@@ -10,6 +10,7 @@
 
 #include "scene/scene.h"
 #include "sensors/sensor_spec.h"
+#include "strategy/strategy_config.h"
 
 namespace proxsim {
 
@@ -38,7 +39,7 @@ struct RobotConfig {
   double start_yaw_rad = 0.0;
   GaitConfig gait;
   std::vector<Vec2> waypoints_m;            ///< path on the floor, world x-y; empty: straight ahead
-  std::optional<double> stop_distance_m;    ///< built-in strategy: stop before an obstacle this close
+  std::optional<StrategyConfig> strategy;  ///< the built-in strategy (`robot.strategy`, or `stop_distance_m` for stop); none when absent
   std::string trajectory_file;              ///< recorded trajectory CSV to replay instead of the gait
 };
 

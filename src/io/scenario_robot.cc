@@ -1,10 +1,12 @@
 // The `robot` section: which robot (the built-in biped or a URDF file), where
 // it starts, how it walks (gait, path of waypoints, or a recorded trajectory)
-// and the built-in stopping strategy. The URDF itself is loaded elsewhere
+// and its built-in strategy (`strategy: {name: stop | circumvent, ...}`, or
+// the shorthand `stop_distance_m: D` for `{name: stop, stop_distance_m: D}`). The URDF itself is loaded elsewhere
 // (robot/); here we only check that a named file exists, so that a typo in a
 // path is reported with the scenario's other problems.
 #include <system_error>
 
+#include "io/nearest_key.h"
 #include "io/scenario_sections.h"
 
 namespace proxsim {
@@ -28,11 +30,53 @@ std::optional<std::string> ReadExistingFile(YamlReader& reader, const Field& fie
   return path.string();
 }
 
+// `strategy: {name, ...}`: the keys allowed depend on the name.
+std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& field) {
+  const std::vector<std::string> names = {"stop", "circumvent"};
+  const YAML::Node name_node = field.node.IsMap() ? field.node["name"] : YAML::Node();
+  const std::string name = name_node && name_node.IsScalar() ? name_node.Scalar() : "";
+  if (name == "stop") {
+    const auto map = reader.Map(field, {"name", "stop_distance_m", "min_height_m", "corridor_half_width_m"});
+    if (!map) return std::nullopt;
+    StopConfig stop;
+    stop.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(stop.stop_distance_m);
+    stop.min_height_m = reader.Number((*map)["min_height_m"], PositiveNumber("m")).value_or(stop.min_height_m);
+    stop.corridor_half_width_m =
+        reader.Number((*map)["corridor_half_width_m"], PositiveNumber("m")).value_or(stop.corridor_half_width_m);
+    return stop;
+  }
+  if (name == "circumvent") {
+    const auto map = reader.Map(field, {"name", "margin_m", "detect_distance_m", "stop_distance_m", "min_height_m",
+                                        "max_detour_m", "assumed_depth_m", "rejoin_m"});
+    if (!map) return std::nullopt;
+    CircumventConfig c;
+    c.margin_m = reader.Number((*map)["margin_m"], NonNegativeNumber("m")).value_or(c.margin_m);
+    c.detect_distance_m = reader.Number((*map)["detect_distance_m"], PositiveNumber("m")).value_or(c.detect_distance_m);
+    c.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(c.stop_distance_m);
+    c.min_height_m = reader.Number((*map)["min_height_m"], PositiveNumber("m")).value_or(c.min_height_m);
+    c.max_detour_m = reader.Number((*map)["max_detour_m"], PositiveNumber("m")).value_or(c.max_detour_m);
+    c.assumed_depth_m = reader.Number((*map)["assumed_depth_m"], NonNegativeNumber("m")).value_or(c.assumed_depth_m);
+    c.rejoin_m = reader.Number((*map)["rejoin_m"], PositiveNumber("m")).value_or(c.rejoin_m);
+    return c;
+  }
+  // not a map, no name, or an unknown one
+  if (!field.node.IsMap()) {
+    reader.Fail(field, "expected a map {name: stop | circumvent, ...}, got " + DescribeNode(field.node));
+  } else if (!name_node) {
+    reader.Fail(field, "expected a strategy name: name: stop or name: circumvent");
+  } else {
+    const auto nearest = NearestKey(name, names);
+    reader.Fail(field, "unknown strategy '" + name + "'" + (nearest ? " (did you mean '" + *nearest + "'?)" : "") +
+                           "; expected stop or circumvent");
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir) {
   RobotConfig robot;
-  const auto map = reader.Map(field, {"model", "start", "gait", "path", "stop_distance_m", "trajectory"});
+  const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory"});
   if (!map) return robot;
 
   // model: builtin:NAME, or a URDF file
@@ -66,7 +110,17 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     }
   }
 
-  robot.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m"));
+  // the strategy, or its shorthand for stop
+  const Field shorthand = (*map)["stop_distance_m"];
+  const Field strategy = (*map)["strategy"];
+  if (shorthand && strategy) {
+    reader.Fail(shorthand, "give either stop_distance_m (shorthand for strategy: {name: stop, stop_distance_m: D}) "
+                           "or strategy, not both");
+  } else if (strategy) {
+    robot.strategy = ReadStrategy(reader, strategy);
+  } else if (const auto stop_distance_m = reader.Number(shorthand, PositiveNumber("m"))) {
+    robot.strategy = StopConfig{.stop_distance_m = *stop_distance_m};
+  }
   if (const Field trajectory = (*map)["trajectory"]) {
     robot.trajectory_file = ReadExistingFile(reader, trajectory, base_dir, "the path of a joint trajectory CSV file")
                                 .value_or("");

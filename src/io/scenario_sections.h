@@ -26,7 +26,7 @@ Pose ReadPose(YamlReader& reader, const Field& field);
 /// meshes loaded; object names unique across both.
 void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scenario& scenario);
 
-/// `robot: {model, start, gait, path, stop_distance_m, trajectory}`; file paths resolved.
+/// `robot: {model, start, gait, path, strategy, stop_distance_m, trajectory}`; file paths resolved.
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir);
 
 /// `sensors: [...]`: presets from `type`, overrides, SensorSpec::Validate();

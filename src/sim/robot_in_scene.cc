@@ -4,16 +4,12 @@
 #include <cmath>
 #include <limits>
 
-#include "core/input_error.h"
-#include "gait/gait_walker.h"
-#include "gait/trajectory_player.h"
 #include "sim/surface_samples.h"
 
 namespace proxsim {
 
 namespace {
 
-constexpr const char* kBuiltinPrefix = "builtin:";
 constexpr double kClearanceSpacing_m = 0.02;
 // Point queries are capped this far above the running minimum: a capped
 // distance still bounds its point from below, and the bound lasts until the
@@ -24,22 +20,6 @@ constexpr double kBoundMargin_m = 0.05;
 // Rounding in the poses and distances is far below this: a skip never hinges
 // on the last bits of a bound.
 constexpr double kBoundSlack_m = 1e-9;
-
-RobotModel LoadModel(const std::string& model) {
-  if (model.starts_with(kBuiltinPrefix)) {
-    const std::string name = model.substr(std::string(kBuiltinPrefix).size());
-    return RobotModel::Builtin(name);
-  }
-  return RobotModel::FromUrdfFile(model);
-}
-
-std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config) {
-  RobotModel model = LoadModel(config.model);
-  if (!config.trajectory_file.empty()) {
-    return std::make_unique<TrajectoryPlayer>(std::move(model), config.trajectory_file);
-  }
-  return std::make_unique<GaitWalker>(std::move(model), config);
-}
 
 // The farthest any point within radius_m of center_L (link frame) moves when
 // the link goes from X_WL_ref to X_WL: the centre's travel plus the rotation's
@@ -52,9 +32,9 @@ double MaxTravel_m(const Pose& X_WL_ref, const Pose& X_WL, const Vec3& center_L,
 
 }  // namespace
 
-RobotInScene::RobotInScene(const RobotConfig& config, RayCaster& caster, std::int32_t first_object_id)
-    : locomotion_(MakeLocomotion(config)), caster_(caster) {
-  const RobotModel& robot = model();
+RobotInScene::RobotInScene(const RobotModel& model, RayCaster& caster, std::int32_t first_object_id)
+    : model_(model), caster_(caster) {
+  const RobotModel& robot = model_;
   link_body_.assign(robot.link_count(), -1);
   link_samples_.resize(robot.link_count());
   X_WL_.assign(robot.link_count(), Pose::Identity());
@@ -81,47 +61,16 @@ RobotInScene::RobotInScene(const RobotConfig& config, RayCaster& caster, std::in
       samples.center_L = (lo + hi) / 2;
       for (const Vec3& p : samples.points_L) samples.radius_m = std::max(samples.radius_m, (p - samples.center_L).norm());
     }
-    if (robot.link_name(link).find("foot") != std::string::npos) foot_links_.push_back(link);
   }
 }
 
 RobotInScene::~RobotInScene() = default;
 
-void RobotInScene::MoveTo(double t_s) {
-  state_ = locomotion_->Advance(t_s);
-  model().ForwardKinematics(state_.X_WP, state_.q, X_WL_);
+void RobotInScene::Place(const RobotState& state) {
+  model_.ForwardKinematics(state.X_WP, state.q, X_WL_);
   for (int link = 0; link < static_cast<int>(link_body_.size()); ++link) {
     if (link_body_[link] >= 0) caster_.SetBodyPose(link_body_[link], X_WL_[link]);
   }
-}
-
-RobotSelfKnowledge RobotInScene::SelfKnowledge() const {
-  RobotSelfKnowledge self;
-  // heading: the pelvis's +x, made horizontal
-  Vec3 heading = state_.X_WP.linear().col(0);
-  heading.z() = 0;
-  self.heading_W = heading.norm() > 1e-9 ? heading.normalized() : Vec3::UnitX();
-  // the feet (or the whole robot, for a model without feet): leading point and lowest point
-  const std::vector<int>* links = &foot_links_;
-  std::vector<int> all;
-  if (foot_links_.empty()) {
-    for (int link = 0; link < static_cast<int>(link_samples_.size()); ++link) all.push_back(link);
-    links = &all;
-  }
-  double front = -std::numeric_limits<double>::infinity();
-  double lowest = std::numeric_limits<double>::infinity();
-  for (int link : *links) {
-    for (const Vec3& p_L : link_samples_[link].points_L) {
-      const Vec3 p_W = X_WL_[link] * p_L;
-      if (p_W.dot(self.heading_W) > front) {
-        front = p_W.dot(self.heading_W);
-        self.p_W_front = p_W;
-      }
-      lowest = std::min(lowest, p_W.z());
-    }
-  }
-  self.ground_z_m = std::isfinite(lowest) ? lowest : 0.0;
-  return self;
 }
 
 double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_ids, double below_m) {

@@ -1,8 +1,9 @@
-// The robot as part of the simulated world: its motion source (the gait or a
-// replayed trajectory), its links as moving bodies in the ray caster (so a
-// sensor on one tibia can see the other leg), the link poses at each sample,
-// what the robot knows of itself (for strategies), and its true minimum
-// clearance to the scene (for the summary, never for strategies).
+// The robot's body in the simulated world: its links as moving bodies in the
+// ray caster (so a sensor on one tibia can see the other leg), placed by
+// forward kinematics from the robot's state at each sample, points sampled on
+// their surfaces, and the robot's true minimum clearance to the scene (for
+// the summary, never for strategies). What moves the robot (gait/Locomotion)
+// lives outside.
 //
 // Frames: W world, P pelvis (the root link), L a link.
 #pragma once
@@ -14,31 +15,31 @@
 
 #include "gait/locomotion.h"
 #include "io/scene_json.h"
-#include "io/scenario.h"
 #include "raycast/ray_caster.h"
-#include "sim/stop_before_obstacle.h"
+#include "robot/robot_model.h"
 
 namespace proxsim {
 
 class RobotInScene {
  public:
-  /// Loads the robot and its motion; adds one body per link to `caster`, with
-  /// object ids first_object_id + link index. Throws InputError on a bad robot.
-  RobotInScene(const RobotConfig& config, RayCaster& caster, std::int32_t first_object_id);
+  /// Adds one body per link of `model` (which must outlive this) to `caster`,
+  /// with object ids first_object_id + link index.
+  RobotInScene(const RobotModel& model, RayCaster& caster, std::int32_t first_object_id);
   ~RobotInScene();
 
-  /// Moves the robot to time t_s (non-decreasing) and its bodies with it; the
-  /// caller commits the ray caster.
-  void MoveTo(double t_s);
+  /// Places every link where forward kinematics puts it for `state`, and its
+  /// body with it; the caller commits the ray caster.
+  void Place(const RobotState& state);
 
-  const RobotState& state() const { return state_; }
   const Pose& X_WL(int link) const { return X_WL_[link]; }
   const std::vector<Pose>& X_WL() const { return X_WL_; }
-  const RobotModel& model() const { return locomotion_->model(); }
-  Locomotion& locomotion() { return *locomotion_; }
+  const RobotModel& model() const { return model_; }
 
-  /// Where the robot heads, its leading toe and its stance ground height, from its own kinematics.
-  RobotSelfKnowledge SelfKnowledge() const;
+  /// Points on a link's surface, every 2 cm, in the link frame (empty for a link without shapes).
+  const std::vector<Vec3>& surface_points_L(int link) const { return link_samples_[link].points_L; }
+
+  /// Forgets ClearanceTo's bounds (a new episode: the measure starts afresh).
+  void ForgetClearanceBounds() { clearance_bounds_.clear(); }
 
   /// Least distance between the robot's surface (sampled every 2 cm) and any
   /// world object of its ray caster other than the excluded ones (the floor it
@@ -68,15 +69,13 @@ class RobotInScene {
     std::vector<Vec3> p_W_ref;
   };
 
-  std::unique_ptr<Locomotion> locomotion_;
+  const RobotModel& model_;
   RayCaster& caster_;
   std::vector<int> link_body_;  // body index of each link in the caster (-1: no shapes)
   std::vector<LinkSamples> link_samples_;
   // ClearanceTo's memory: bounds per link, and the exclude list they hold for
   std::vector<ClearanceBounds> clearance_bounds_;
   std::vector<std::int32_t> bounds_exclude_ids_;
-  std::vector<int> foot_links_;
-  RobotState state_;
   std::vector<Pose> X_WL_;
 };
 

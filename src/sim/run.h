@@ -10,11 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "io/scenario.h"
+#include "sim/run_recorder.h"
 
 namespace proxsim {
-
-/// How the readings are written: readings.csv, or one .npy per column in readings/.
-enum class ReadingsFormat { kCsv, kNpy };
 
 struct RunOptions {
   std::string out_dir = "proxsim-out";
@@ -37,5 +35,9 @@ struct RunResult {
 
 /// Runs a validated scenario; throws std::runtime_error on I/O failure.
 RunResult RunScenario(const Scenario& scenario, const RunOptions& options);
+
+/// timings.json: wall times and simulated seconds per wall second.
+void WriteTimings(const std::string& out_dir, double wall_s, double loop_wall_s, int threads, std::int64_t samples,
+                  double rate_hz);
 
 }  // namespace proxsim

@@ -1,313 +1,205 @@
 #include "sim/simulation.h"
 
-#include <algorithm>
 #include <cmath>
-#include <string>
+#include <cstdio>
+#include <stdexcept>
 
-#include "core/input_error.h"
-#include "io/nearest_key.h"
-#include "sensors/noise.h"
+#include "gait/make_locomotion.h"
+#include "sim/robot_knowledge.h"
+#include "strategy/make_strategy.h"
 
 namespace proxsim {
 
-Simulation::Simulation(const Scenario& scenario, int threads)
-    : scenario_(scenario), sample_count_(scenario.SampleCount()), runner_(threads) {
-  // the static world: one body, one shape per scene object, ids = scene order
-  std::vector<BodyShape> world_shapes;
-  world_shapes.reserve(scenario.scene.objects.size());
-  for (const SceneObject& object : scenario.scene.objects) {
-    world_shapes.push_back({object.shape, object.X_WO, static_cast<std::int32_t>(object_names_.size())});
-    object_names_.push_back(object.name);
-  }
-  caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
-  first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
-  for (std::size_t id = 0; id < object_names_.size(); ++id) {
-    if (object_names_[id].starts_with("floor")) ground_ids_.push_back(static_cast<std::int32_t>(id));
-  }
-
-  // the robot: its links are bodies too, with object ids after the scene's
-  if (scenario.robot) {
-    robot_ = std::make_unique<RobotInScene>(*scenario.robot, caster_, static_cast<std::int32_t>(object_names_.size()));
-    for (int link = 0; link < robot_->model().link_count(); ++link) object_names_.push_back(robot_->model().link_name(link));
-    if (scenario.robot->stop_distance_m) stop_rule_ = StopRule{.stop_distance_m = *scenario.robot->stop_distance_m};
-  }
-
-  // every sensor's link must exist
-  std::vector<std::string> problems;
-  for (const SensorConfig& sensor : scenario.sensors) {
-    int link = -1;
-    if (sensor.link != "world") {
-      link = robot_ ? robot_->model().LinkIndex(sensor.link) : -1;
-      if (link < 0) {
-        std::string known;
-        std::vector<std::string> names;
-        for (int i = 0; robot_ && i < robot_->model().link_count(); ++i) {
-          names.push_back(robot_->model().link_name(i));
-          known += (i ? ", " : "") + names.back();
-        }
-        const auto nearest = NearestKey(sensor.link, names);
-        const std::string where =
-            scenario.source + (sensor.link_line > 0 ? ":" + std::to_string(sensor.link_line) : std::string());
-        problems.push_back(where + ": sensors." + sensor.name + ".link: unknown link '" + sensor.link + "'" +
-                           (nearest ? " (did you mean '" + *nearest + "'?)" : "") + "; expected world" +
-                           (known.empty() ? "" : " or one of " + known));
-      }
+// The robot's commands: forwarded to the locomotion, the first stop recorded.
+class Simulation::Commands : public RobotCommands {
+ public:
+  explicit Commands(Simulation& sim) : sim_(sim) {}
+  void Stop() override {
+    if (!sim_.outcome_.stop_requested) {
+      sim_.outcome_.stop_requested = true;
+      sim_.outcome_.stop_request_t_s = sim_.frame_.t_s;
     }
-    sensor_link_.push_back(link);
+    sim_.locomotion_->RequestStop();
   }
-  if (!problems.empty()) throw InputError(problems);
-
-  caster_.set_threads(threads);
-  caster_.Commit();
-  // the clearance truth's point-query structure over the scene without the
-  // ground is built here with the other structures, not at the first sample
-  if (robot_) caster_.DistanceToWorld(Vec3::Zero(), ground_ids_);
-
-  // buffers sized once; every step overwrites them in place. Sensor i owns the
-  // rays [ray_begin_[i], ray_begin_[i + 1]): one for the paper's sensors, a beam's otherwise.
-  const std::size_t sensor_count = scenario.sensors.size();
-  ray_begin_.push_back(0);
-  for (const SensorConfig& sensor : scenario.sensors) {
-    const std::vector<BeamRay> beam = MakeBeamRays(sensor.spec.beam);
-    beam_rays_.insert(beam_rays_.end(), beam.begin(), beam.end());
-    ray_begin_.push_back(beam_rays_.size());
-  }
-  rays_.resize(beam_rays_.size());
-  ray_dir_W_.resize(beam_rays_.size());
-  hits_.resize(beam_rays_.size());
-  echoes_.resize(beam_rays_.size());
-  frame_.sensors.resize(sensor_count);
-  p_WS_previous_.assign(sensor_count, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
-  for (std::size_t i = 0; i < sensor_count; ++i) {
-    for (std::size_t r = ray_begin_[i]; r < ray_begin_[i + 1]; ++r) {
-      rays_[r].max_range_m = static_cast<float>(scenario.sensors[i].spec.max_range_m);
-      rays_[r].see_robot = scenario.sensors[i].see_robot;
+  void Resume() override { sim_.locomotion_->Resume(); }
+  void SetStride(double stride_m) override {
+    if (!(stride_m > 0) || !std::isfinite(stride_m)) {
+      throw std::invalid_argument("SetStride: the stride must be a finite number of metres > 0, got " +
+                                  std::to_string(stride_m));
     }
+    sim_.locomotion_->SetStride(stride_m);
+  }
+  void SetPath(std::vector<Vec2> waypoints_m) override {
+    for (const Vec2& p : waypoints_m) {
+      if (!p.allFinite()) throw std::invalid_argument("SetPath: every waypoint must be a finite [x, y] in metres");
+    }
+    sim_.locomotion_->SetPath(std::move(waypoints_m));
   }
 
-  // latency: a ring per sensor long enough for every reading still in flight
-  pending_.resize(sensor_count);
-  for (std::size_t i = 0; i < sensor_count; ++i) {
-    const double latency_s = scenario.sensors[i].latency_s;
-    if (latency_s > 0) latency_ = true;
-    pending_[i].ring.resize(static_cast<std::size_t>(std::ceil(latency_s * scenario.rate_hz)) + 2);
+ private:
+  Simulation& sim_;
+};
+
+// The event log: every entry stamped with the last sample's time.
+class Simulation::Events : public EventLog {
+ public:
+  explicit Events(Simulation& sim) : sim_(sim) {}
+  void Log(std::string event, std::string detail) override {
+    sim_.events_.push_back({sim_.frame_.t_s, std::move(event), std::move(detail)});
   }
-  delivered_.sensors.resize(sensor_count);
+
+ private:
+  Simulation& sim_;
+};
+
+Simulation::Simulation(Scenario scenario, int threads)
+    : scenario_(std::move(scenario)), sample_count_(scenario_.SampleCount()), runner_(threads) {
+  std::unique_ptr<Strategy> strategy;
+  if (scenario_.robot && scenario_.robot->strategy) strategy = MakeStrategy(*scenario_.robot->strategy);
+  Build(threads, nullptr, std::move(strategy));
+}
+
+Simulation::Simulation(Scenario scenario, int threads, std::unique_ptr<Locomotion> locomotion,
+                       std::unique_ptr<Strategy> strategy)
+    : scenario_(std::move(scenario)), sample_count_(scenario_.SampleCount()), runner_(threads) {
+  Build(threads, std::move(locomotion), std::move(strategy));
 }
 
 Simulation::~Simulation() = default;
 
+const SampleFrame& Simulation::delivered() const { return delivery_->active() ? delivered_ : frame_; }
+
+RobotCommands* Simulation::commands() { return commands_.get(); }
+
+void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy) {
+  locomotion_ = std::move(locomotion);
+  if (!locomotion_ && scenario_.robot) locomotion_ = MakeLocomotion(*scenario_.robot);
+  world_ = std::make_unique<World>(scenario_, locomotion_ ? &locomotion_->model() : nullptr, threads);
+  reader_ = std::make_unique<SensorReader>(scenario_, *world_);
+  delivery_ = std::make_unique<DeliveryQueue>(scenario_.sensors, scenario_.rate_hz);
+  event_log_ = std::make_unique<Events>(*this);
+  for (const SensorConfig& sensor : scenario_.sensors) {
+    sensor_info_.push_back({sensor.name, sensor.spec.type, sensor.spec.min_range_m, sensor.spec.max_range_m, sensor.link});
+  }
+  if (locomotion_) {
+    commands_ = std::make_unique<Commands>(*this);
+    strategy_ = std::move(strategy);
+    feet_ = locomotion_->Feet();
+    half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
+    if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
+      goal_m_ = scenario_.robot->waypoints_m.back();
+      goal_tolerance_m_ = 0.5 * scenario_.robot->gait.stride_m;
+    }
+  }
+  frame_.sensors.resize(scenario_.sensors.size());
+  delivered_.sensors.resize(scenario_.sensors.size());
+  outputs_.resize(scenario_.sensors.size());
+  if (strategy_) strategy_->Reset(MakeSetup());
+}
+
+StrategySetup Simulation::MakeSetup() const {
+  StrategySetup setup;
+  setup.sensors = sensor_info_;
+  if (scenario_.robot) setup.path_m = scenario_.robot->waypoints_m;
+  setup.rate_hz = scenario_.rate_hz;
+  return setup;
+}
+
+void Simulation::Reset(std::uint64_t seed) {
+  scenario_.seed = seed;
+  next_sample_ = 0;
+  frame_.sample = 0;
+  frame_.t_s = 0;
+  frame_.robot = RobotSample{};
+  reader_->Reset();
+  delivery_->Clear();
+  outcome_ = RobotOutcome{};
+  events_.clear();
+  state_ = RobotState{};
+  if (locomotion_) {
+    locomotion_->Reset();
+    world_->robot()->ForgetClearanceBounds();
+  }
+  if (strategy_) strategy_->Reset(MakeSetup());
+}
+
 const SampleFrame& Simulation::Step() {
+  if (done()) throw std::logic_error("Simulation::Step: every sample of the episode has been taken");
   frame_.sample = next_sample_++;
   frame_.t_s = static_cast<double>(frame_.sample) / scenario_.rate_hz;
-  if (robot_) {
+  RobotInScene* robot = world_->robot();
+  if (locomotion_) {
     // every link at its pose of this very sample time
-    robot_->MoveTo(frame_.t_s);
-    caster_.Commit();
+    state_ = locomotion_->Advance(frame_.t_s);
+    robot->Place(state_);
+    world_->caster().Commit();
+    frame_.robot = {.present = true,
+                    .gait_phase = state_.gait_phase,
+                    .support = state_.support,
+                    .stopped = state_.stopped,
+                    .distance_walked_m = state_.distance_walked_m};
   }
   // the robot's clearance truth depends on its pose only, not on the
   // readings: it is measured while the sensors are read
   double clearance_m = std::numeric_limits<double>::infinity();
-  runner_.Invoke([this] { ReadSensors(); },
+  runner_.Invoke([this] { reader_->Read(frame_, runner_); },
                  [&] {
-                   if (robot_) clearance_m = robot_->ClearanceTo(ground_ids_, outcome_.min_clearance_m);
+                   if (locomotion_) clearance_m = robot->ClearanceTo(world_->ground_ids(), outcome_.min_clearance_m);
                  });
-  if (latency_) Deliver();
-  if (robot_) UpdateRobot(clearance_m);
+  if (delivery_->active()) delivery_->Deliver(frame_, delivered_);
+  if (locomotion_) KnowRobot(state_, *robot, feet_, half_width_m_, knowledge_);
+  FillObservation();
+  if (locomotion_) UpdateRobot(clearance_m);
   return frame_;
 }
 
-bool Simulation::IsSensorSample(std::size_t sensor, std::int64_t sample) const {
-  const double rate_hz = scenario_.sensors[sensor].rate_hz;
-  if (!(rate_hz > 0) || sample == 0) return true;
-  // the first run sample in each of the sensor's periods (1e-9: t_k·rate on an exact multiple)
-  const auto period = [&](std::int64_t k) {
-    return std::floor(static_cast<double>(k) * rate_hz / scenario_.rate_hz + 1e-9);
-  };
-  return period(sample) > period(sample - 1);
-}
-
-void Simulation::Deliver() {
-  delivered_.sample = frame_.sample;
-  delivered_.t_s = frame_.t_s;
-  delivered_.robot = frame_.robot;
-  for (std::size_t i = 0; i < frame_.sensors.size(); ++i) {
-    Pending& pending = pending_[i];
-    const SensorSample& taken = frame_.sensors[i];
-    if (taken.reading.status != ReadingStatus::kNotSampled) {
-      // the ring holds every reading still in flight (sized for the latency)
-      pending.ring[(pending.head + pending.count) % pending.ring.size()] = taken;
-      ++pending.count;
-    }
-    SensorSample& out = delivered_.sensors[i];
-    const SensorSample& oldest = pending.ring[pending.head];
-    if (pending.count > 0 && oldest.t_reported_s <= frame_.t_s + 1e-9) {
-      out = oldest;
-      pending.head = (pending.head + 1) % pending.ring.size();
-      --pending.count;
+void Simulation::FillObservation() {
+  const SampleFrame& delivered = this->delivered();
+  for (std::size_t i = 0; i < outputs_.size(); ++i) {
+    const SensorSample& sample = delivered.sensors[i];
+    SensorOutput& out = outputs_[i];
+    out.fresh = sample.reading.status != ReadingStatus::kNotSampled;
+    out.detected = sample.reading.detected();
+    if (out.fresh) {
+      out.d_m = sample.reading.d_m;
+      out.signal = sample.reading.signal;
+      out.output = sample.reading.output;
+      out.t_reported_s = sample.t_reported_s;
+      out.p_WS = sample.p_WS;
+      out.dir_W = sample.dir_W;
     } else {
-      out = SensorSample{};
-      out.reading.status = ReadingStatus::kNotSampled;
-      out.ray = -1;
+      // no news: the device shows its maximum range, at the pose the kinematics give now
+      out.d_m = scenario_.sensors[i].spec.max_range_m;
+      out.signal = out.output = out.t_reported_s = std::numeric_limits<double>::quiet_NaN();
+      out.p_WS = frame_.sensors[i].p_WS;
+      out.dir_W = frame_.sensors[i].dir_W;
     }
   }
-}
-
-void Simulation::PlaceSensor(std::size_t i) {
-  const Pose& X_LS = scenario_.sensors[i].X_LS;
-  const Pose X_WS = sensor_link_[i] < 0 ? X_LS : robot_->X_WL(sensor_link_[i]) * X_LS;
-  SensorSample& out = frame_.sensors[i];
-  out.p_WS = X_WS.translation();
-  out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
-  for (std::size_t r = ray_begin_[i]; r < ray_begin_[i + 1]; ++r) {
-    rays_[r].origin_W = out.p_WS.cast<float>();
-    // the axis ray is exactly the sensor's +x, as in the paper's single-ray model
-    const BeamRay& beam_ray = beam_rays_[r];
-    ray_dir_W_[r] = beam_ray.off_axis_deg == 0.0 ? out.dir_W : Vec3(X_WS.linear() * beam_ray.dir_S);
-    rays_[r].direction_W = ray_dir_W_[r].cast<float>();
-  }
-}
-
-void Simulation::ReadSensors() {
-  // sensors are independent (each owns its rays, hits, echoes and output
-  // slot), so a sample with many rays is shared out by sensor, in one fork:
-  // each thread places a sensor's rays, casts them and reads them while they
-  // are in its cache. A sensor's rays are always cast on their own, in the same packets,
-  // and the noise is keyed, so the readings are the same whatever the thread count.
-  const std::size_t sensor_count = scenario_.sensors.size();
-  const auto read = [this](std::size_t begin_sensor, std::size_t end_sensor) {
-    for (std::size_t sensor = begin_sensor; sensor < end_sensor; ++sensor) {
-      const std::size_t begin = ray_begin_[sensor], count = ray_begin_[sensor + 1] - begin;
-      PlaceSensor(sensor);
-      caster_.Cast(std::span(rays_).subspan(begin, count), std::span(hits_).subspan(begin, count));
-      MeasureSensor(sensor);
-    }
-  };
-  if (rays_.size() >= kParallelReadRays) {
-    runner_.For(sensor_count, kSensorsPerTask, read);
-  } else {
-    read(0, sensor_count);
-  }
-}
-
-void Simulation::MeasureSensor(std::size_t i) {
-  const SensorConfig& sensor = scenario_.sensors[i];
-  const SensorSpec& spec = sensor.spec;
-  SensorSample& out = frame_.sensors[i];
-  out.t_reported_s = frame_.t_s + sensor.latency_s;
-  const Vec3 p_WS_previous = p_WS_previous_[i];
-  p_WS_previous_[i] = out.p_WS;
-
-  // between the sensor's own samples: no reading
-  if (!IsSensorSample(i, frame_.sample)) {
-    out.reading = Reading{};
-    out.reading.status = ReadingStatus::kNotSampled;
-    out.reading.d_m = spec.max_range_m;
-    out.echo = Echo{};
-    out.object_id = -1;
-    out.ray = -1;
-    out.truth_ray = 0;
-    out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
-    return;
-  }
-
-  // the sensor's velocity over the last sample, for the echo's flight
-  Vec3 v_W = Vec3::Zero();
-  if (sensor.flight_time && frame_.sample > 0 && p_WS_previous.allFinite()) {
-    v_W = (out.p_WS - p_WS_previous) * scenario_.rate_hz;
-  }
-  const double c_m_s = sensor.wave_speed_m_s > 0 ? sensor.wave_speed_m_s
-                       : spec.type == SensorType::kUltrasonic ? 343.0
-                                                               : 299792458.0;
-
-  // every ray's echo, with its material
-  const std::size_t begin = ray_begin_[i];
-  const std::size_t end = ray_begin_[i + 1];
-  for (std::size_t r = begin; r < end; ++r) {
-    const Hit& hit = hits_[r];
-    Echo& echo = echoes_[r];
-    echo = Echo{};
-    if (hit.is_hit()) {
-      echo.distance_m = hit.distance_m;
-      // the robot's links come after the scene's objects (and have the default material)
-      echo.from_robot = hit.object_id >= first_robot_object_id_;
-      if (!echo.from_robot) {
-        const Material& material = scenario_.scene.objects[hit.object_id].material;
-        echo.ir_albedo = material.ir_albedo.value_or(material.albedo);
-        echo.acoustic_reflectivity = material.acoustic_reflectivity.value_or(1.0);
-        echo.specular = material.specular;
-      }
-      const Vec3& dir_W = ray_dir_W_[r];
-      const Vec3 normal_W = hit.normal_W.cast<double>();
-      echo.incidence_deg = IncidenceDeg(dir_W.x(), dir_W.y(), dir_W.z(), normal_W.x(), normal_W.y(), normal_W.z());
-      if (sensor.flight_time) {
-        echo.flight_shift_m = FlightTimeShift(out.p_WS, v_W, out.p_WS + echo.distance_m * dir_W, echo.distance_m, c_m_s);
-      }
-    }
-  }
-
-  // keyed draws per (seed, sensor, sample, ray): thread- and order-independent,
-  // made only for the ray the reading needs; the dropout's uniform has its
-  // own key (the ray's top bit set)
-  const DrawOfRay draw = [&](int ray) {
-    const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(i), static_cast<std::uint64_t>(frame_.sample),
-                       static_cast<std::uint32_t>(ray)};
-    NoiseDraw d;
-    d.gaussian_g = KeyedGaussian(key);
-    if (spec.noise.dropout > 0) {
-      NoiseKey dropout_key = key;
-      dropout_key.ray |= 0x80000000u;
-      d.uniform = KeyedUniforms(dropout_key).u1;
-    }
-    return d;
-  };
-
-  // the reading: the paper's single ray, or the beam's combination
-  if (end - begin == 1) {
-    out.reading = Measure(spec, echoes_[begin], draw);
-    out.truth_ray = 0;
-    out.ray = (out.reading.status == ReadingStatus::kOk || out.reading.status == ReadingStatus::kSelf) ? 0 : -1;
-  } else {
-    const BeamReading beam = MeasureBeam(spec, std::span(echoes_).subspan(begin, end - begin),
-                                         std::span(beam_rays_).subspan(begin, end - begin),
-                                         draw);
-    out.reading = beam.reading;
-    out.truth_ray = beam.truth_ray;
-    out.ray = beam.ray;
-  }
-
-  // the truth beside it: the echo, object and hit point of the ray it came from
-  const std::size_t truth = begin + static_cast<std::size_t>(out.truth_ray);
-  out.echo = echoes_[truth];
-  out.object_id = hits_[truth].object_id;
-  if (hits_[truth].is_hit()) {
-    out.p_WH = out.p_WS + out.echo.distance_m * ray_dir_W_[truth];
-  } else {
-    out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
-  }
+  observation_ = Observation{.t_s = frame_.t_s,
+                             .sample = frame_.sample,
+                             .sensors = outputs_,
+                             .robot = locomotion_ ? &knowledge_ : nullptr};
 }
 
 void Simulation::UpdateRobot(double clearance_m) {
-  const RobotState& state = robot_->state();
-  frame_.robot = {.present = true,
-                  .gait_phase = state.gait_phase,
-                  .support = state.support,
-                  .stopped = state.stopped,
-                  .distance_walked_m = state.distance_walked_m};
+  // the strategy sees what the robot knows and nothing else
+  if (strategy_) strategy_->Decide(observation_, *commands_, *event_log_);
 
-  // the built-in strategy sees readings and the robot's own kinematics only
-  if (stop_rule_ && !outcome_.stop_requested) {
-    const int trigger = FindStopTrigger(delivered(), robot_->SelfKnowledge(), *stop_rule_);
-    if (trigger >= 0) {
-      robot_->locomotion().RequestStop();
-      outcome_.stop_requested = true;
-      outcome_.stop_request_t_s = frame_.t_s;
-      outcome_.stop_trigger_sensor = trigger;
-    }
-  }
-  if (outcome_.stop_requested && state.stopped && !outcome_.stopped) {
+  char detail[160];
+  if (outcome_.stop_requested && state_.stopped && !outcome_.stopped) {
     outcome_.stopped = true;
     outcome_.stop_t_s = frame_.t_s;
+    std::snprintf(detail, sizeof detail, "standing, both feet down, after the stop commanded at t = %.2f s",
+                  outcome_.stop_request_t_s);
+    event_log_->Log("stopped", detail);
+  }
+  if (goal_m_ && !outcome_.reached_goal &&
+      (state_.X_WP.translation().head<2>() - *goal_m_).norm() <= goal_tolerance_m_) {
+    outcome_.reached_goal = true;
+    outcome_.reached_goal_t_s = frame_.t_s;
+    std::snprintf(detail, sizeof detail, "pelvis within %.2f m of the last waypoint (%.2f, %.2f)", goal_tolerance_m_,
+                  goal_m_->x(), goal_m_->y());
+    event_log_->Log("goal_reached", detail);
   }
 
   // the truth, for the summary only

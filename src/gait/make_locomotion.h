@@ -1,0 +1,17 @@
+// The motion a scenario's robot section asks for: its model loaded (built-in
+// or URDF), walked by the kinematic gait or replaying a recorded trajectory.
+// A free function, so that a caller can build its own Locomotion instead and
+// hand it to the simulation.
+#pragma once
+
+#include <memory>
+
+#include "gait/locomotion.h"
+#include "io/scenario.h"
+
+namespace proxsim {
+
+/// Throws InputError on a bad robot, gait or trajectory.
+std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config);
+
+}  // namespace proxsim

@@ -1,0 +1,101 @@
+#include "sim/run_summary.h"
+
+#include <cmath>
+
+#include <assimp/version.h>
+#include <embree3/rtcore_config.h>
+
+
+namespace proxsim {
+
+namespace {
+
+nlohmann::json NullUnless(bool known, const nlohmann::json& value) { return known ? value : nlohmann::json(nullptr); }
+
+nlohmann::json StrategyJson(const StrategyConfig& config) {
+  if (const auto* stop = std::get_if<StopConfig>(&config)) {
+    return {{"name", "stop"},
+            {"stop_distance_m", stop->stop_distance_m},
+            {"min_height_m", stop->min_height_m},
+            {"corridor_half_width_m", stop->corridor_half_width_m}};
+  }
+  const auto& c = std::get<CircumventConfig>(config);
+  return {{"name", "circumvent"},          {"margin_m", c.margin_m},
+          {"detect_distance_m", c.detect_distance_m}, {"stop_distance_m", c.stop_distance_m},
+          {"min_height_m", c.min_height_m},  {"max_detour_m", c.max_detour_m},
+          {"assumed_depth_m", c.assumed_depth_m}, {"rejoin_m", c.rejoin_m}};
+}
+
+}  // namespace
+
+nlohmann::json VersionsJson() {
+  return {{"proxsim", PROXSIM_VERSION},
+          {"embree", RTC_VERSION_STRING},
+          {"assimp", std::to_string(aiGetVersionMajor()) + "." + std::to_string(aiGetVersionMinor()) + "." +
+                         std::to_string(aiGetVersionPatch())},
+          {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
+                        std::to_string(EIGEN_MINOR_VERSION)}};
+}
+
+nlohmann::json InputsJson(const Scenario& scenario) {
+  nlohmann::json sensors = nlohmann::json::array();
+  for (const SensorConfig& sensor : scenario.sensors) {
+    const Vec3 rpy_deg = RpyFromRotation(sensor.X_LS.linear()) * (180.0 / kPi);
+    const Vec3& xyz = sensor.X_LS.translation();
+    sensors.push_back({{"name", sensor.name},
+                       {"type", SensorTypeName(sensor.spec.type)},
+                       {"link", sensor.link},
+                       {"pose", {{"xyz_m", {xyz.x(), xyz.y(), xyz.z()}}, {"rpy_deg", {rpy_deg.x(), rpy_deg.y(), rpy_deg.z()}}}},
+                       {"range_m", {sensor.spec.min_range_m, sensor.spec.max_range_m}},
+                       {"max_incidence_deg", sensor.spec.max_incidence_deg},
+                       {"noise", {{"sigma", sensor.spec.noise.sigma}, {"mean", sensor.spec.noise.mean}}},
+                       {"see_robot", sensor.see_robot}});
+  }
+  nlohmann::json objects = nlohmann::json::array();
+  for (const SceneObject& object : scenario.scene.objects) objects.push_back(object.name);
+  nlohmann::json robot = nullptr;
+  if (scenario.robot) {
+    const RobotConfig& r = *scenario.robot;
+    nlohmann::json waypoints = nlohmann::json::array();
+    for (const Vec2& p : r.waypoints_m) waypoints.push_back({p.x(), p.y()});
+    robot = {{"model", r.model},
+             {"start", {{"xyz_m", {r.start_xyz_m.x(), r.start_xyz_m.y(), r.start_xyz_m.z()}},
+                        {"yaw_deg", RadToDeg(r.start_yaw_rad)}}},
+             {"gait", {{"stride_m", r.gait.stride_m}, {"period_s", r.gait.period_s}}},
+             {"path", {{"waypoints_m", waypoints}}},
+             {"strategy", r.strategy ? StrategyJson(*r.strategy) : nlohmann::json(nullptr)},
+             {"trajectory", NullUnless(!r.trajectory_file.empty(), r.trajectory_file)}};
+  }
+  return {{"source", scenario.source},
+          {"seed", scenario.seed},
+          {"robot", robot},
+          {"duration_s", scenario.duration_s},
+          {"rate_hz", scenario.rate_hz},
+          {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}}},
+          {"sensors", sensors}};
+}
+
+nlohmann::json RobotOutcomeJson(const Simulation& sim) {
+  const Simulation::RobotOutcome& outcome = sim.robot_outcome();
+  const RobotState& state = *sim.robot_state();
+  const bool has_goal = sim.scenario().robot && sim.scenario().robot->trajectory_file.empty() &&
+                        !sim.scenario().robot->waypoints_m.empty();
+  nlohmann::json events = nlohmann::json::array();
+  for (const StrategyEvent& event : sim.events()) {
+    events.push_back({{"t_s", event.t_s}, {"event", event.event}, {"detail", event.detail}});
+  }
+  return {{"model", sim.robot()->model().source()},
+          {"strategy", sim.strategy() ? nlohmann::json(sim.strategy()->name()) : nlohmann::json(nullptr)},
+          {"stopped", outcome.stopped},
+          {"stop_t_s", NullUnless(outcome.stopped, outcome.stop_t_s)},
+          {"stop_requested_t_s", NullUnless(outcome.stop_requested, outcome.stop_request_t_s)},
+          {"reached_goal", NullUnless(has_goal, outcome.reached_goal)},
+          {"reached_goal_t_s", NullUnless(outcome.reached_goal, outcome.reached_goal_t_s)},
+          {"min_clearance_m", NullUnless(std::isfinite(outcome.min_clearance_m), outcome.min_clearance_m)},
+          {"min_clearance_t_s", outcome.min_clearance_t_s},
+          {"distance_walked_m", state.distance_walked_m},
+          {"standing_at_end", state.stopped},
+          {"events", events}};
+}
+
+}  // namespace proxsim

@@ -1,0 +1,174 @@
+#include "sim/sensor_reader.h"
+
+#include <cmath>
+#include <limits>
+
+#include "sensors/noise.h"
+
+namespace proxsim {
+
+SensorReader::SensorReader(const Scenario& scenario, World& world) : scenario_(scenario), world_(world) {
+  const std::size_t ray_count = world.ray_count();
+  rays_.resize(ray_count);
+  ray_dir_W_.resize(ray_count);
+  hits_.resize(ray_count);
+  echoes_.resize(ray_count);
+  for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
+    for (std::size_t r = world.ray_begin(i); r < world.ray_begin(i + 1); ++r) {
+      rays_[r].max_range_m = static_cast<float>(scenario.sensors[i].spec.max_range_m);
+      rays_[r].see_robot = scenario.sensors[i].see_robot;
+    }
+  }
+  Reset();
+}
+
+void SensorReader::Reset() {
+  p_WS_previous_.assign(scenario_.sensors.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+}
+
+void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
+  // sensors are independent (each owns its rays, hits, echoes and output
+  // slot), so a sample with many rays is shared out by sensor, in one fork:
+  // each thread places a sensor's rays, casts them and reads them while they
+  // are in its cache. A sensor's rays are always cast on their own, in the same packets,
+  // and the noise is keyed, so the readings are the same whatever the thread count.
+  const std::size_t sensor_count = scenario_.sensors.size();
+  frame.sensors.resize(sensor_count);
+  const auto read = [this, &frame](std::size_t begin_sensor, std::size_t end_sensor) {
+    for (std::size_t sensor = begin_sensor; sensor < end_sensor; ++sensor) {
+      const std::size_t begin = world_.ray_begin(sensor), count = world_.ray_begin(sensor + 1) - begin;
+      PlaceSensor(sensor, frame);
+      world_.caster().Cast(std::span(rays_).subspan(begin, count), std::span(hits_).subspan(begin, count));
+      MeasureSensor(sensor, frame);
+    }
+  };
+  if (rays_.size() >= kParallelReadRays) {
+    runner.For(sensor_count, kSensorsPerTask, read);
+  } else {
+    read(0, sensor_count);
+  }
+}
+
+bool SensorReader::IsSensorSample(std::size_t sensor, std::int64_t sample) const {
+  const double rate_hz = scenario_.sensors[sensor].rate_hz;
+  if (!(rate_hz > 0) || sample == 0) return true;
+  // the first run sample in each of the sensor's periods (1e-9: t_k·rate on an exact multiple)
+  const auto period = [&](std::int64_t k) {
+    return std::floor(static_cast<double>(k) * rate_hz / scenario_.rate_hz + 1e-9);
+  };
+  return period(sample) > period(sample - 1);
+}
+
+void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame) {
+  const Pose& X_LS = scenario_.sensors[i].X_LS;
+  const int link = world_.sensor_link(i);
+  const Pose X_WS = link < 0 ? X_LS : world_.robot()->X_WL(link) * X_LS;
+  SensorSample& out = frame.sensors[i];
+  out.p_WS = X_WS.translation();
+  out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
+  for (std::size_t r = world_.ray_begin(i); r < world_.ray_begin(i + 1); ++r) {
+    rays_[r].origin_W = out.p_WS.cast<float>();
+    // the axis ray is exactly the sensor's +x, as in the paper's single-ray model
+    const BeamRay& beam_ray = world_.beam_rays()[r];
+    ray_dir_W_[r] = beam_ray.off_axis_deg == 0.0 ? out.dir_W : Vec3(X_WS.linear() * beam_ray.dir_S);
+    rays_[r].direction_W = ray_dir_W_[r].cast<float>();
+  }
+}
+
+void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
+  const SensorConfig& sensor = scenario_.sensors[i];
+  const SensorSpec& spec = sensor.spec;
+  SensorSample& out = frame.sensors[i];
+  out.t_reported_s = frame.t_s + sensor.latency_s;
+  const Vec3 p_WS_previous = p_WS_previous_[i];
+  p_WS_previous_[i] = out.p_WS;
+
+  // between the sensor's own samples: no reading
+  if (!IsSensorSample(i, frame.sample)) {
+    out.reading = Reading{};
+    out.reading.status = ReadingStatus::kNotSampled;
+    out.reading.d_m = spec.max_range_m;
+    out.echo = Echo{};
+    out.object_id = -1;
+    out.ray = -1;
+    out.truth_ray = 0;
+    out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+
+  // the sensor's velocity over the last sample, for the echo's flight
+  Vec3 v_W = Vec3::Zero();
+  if (sensor.flight_time && frame.sample > 0 && p_WS_previous.allFinite()) {
+    v_W = (out.p_WS - p_WS_previous) * scenario_.rate_hz;
+  }
+  const double c_m_s = sensor.wave_speed_m_s > 0 ? sensor.wave_speed_m_s
+                       : spec.type == SensorType::kUltrasonic ? 343.0
+                                                               : 299792458.0;
+
+  // every ray's echo, with its material
+  const std::size_t begin = world_.ray_begin(i);
+  const std::size_t end = world_.ray_begin(i + 1);
+  for (std::size_t r = begin; r < end; ++r) {
+    const Hit& hit = hits_[r];
+    Echo& echo = echoes_[r];
+    echo = Echo{};
+    if (hit.is_hit()) {
+      echo.distance_m = hit.distance_m;
+      // the robot's links come after the scene's objects (and have the default material)
+      echo.from_robot = hit.object_id >= world_.first_robot_object_id();
+      if (!echo.from_robot) {
+        const Material& material = scenario_.scene.objects[hit.object_id].material;
+        echo.ir_albedo = material.ir_albedo.value_or(material.albedo);
+        echo.acoustic_reflectivity = material.acoustic_reflectivity.value_or(1.0);
+        echo.specular = material.specular;
+      }
+      const Vec3& dir_W = ray_dir_W_[r];
+      const Vec3 normal_W = hit.normal_W.cast<double>();
+      echo.incidence_deg = IncidenceDeg(dir_W.x(), dir_W.y(), dir_W.z(), normal_W.x(), normal_W.y(), normal_W.z());
+      if (sensor.flight_time) {
+        echo.flight_shift_m = FlightTimeShift(out.p_WS, v_W, out.p_WS + echo.distance_m * dir_W, echo.distance_m, c_m_s);
+      }
+    }
+  }
+
+  // keyed draws per (seed, sensor, sample, ray): thread- and order-independent,
+  // made only for the ray the reading needs; the dropout's uniform has its
+  // own key (the ray's top bit set)
+  const DrawOfRay draw = [&](int ray) {
+    const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(i), static_cast<std::uint64_t>(frame.sample),
+                       static_cast<std::uint32_t>(ray)};
+    NoiseDraw d;
+    d.gaussian_g = KeyedGaussian(key);
+    if (spec.noise.dropout > 0) {
+      NoiseKey dropout_key = key;
+      dropout_key.ray |= 0x80000000u;
+      d.uniform = KeyedUniforms(dropout_key).u1;
+    }
+    return d;
+  };
+
+  // the reading: the paper's single ray, or the beam's combination
+  if (end - begin == 1) {
+    out.reading = Measure(spec, echoes_[begin], draw);
+    out.truth_ray = 0;
+    out.ray = (out.reading.status == ReadingStatus::kOk || out.reading.status == ReadingStatus::kSelf) ? 0 : -1;
+  } else {
+    const BeamReading beam = MeasureBeam(spec, std::span(echoes_).subspan(begin, end - begin),
+                                         std::span(world_.beam_rays()).subspan(begin, end - begin), draw);
+    out.reading = beam.reading;
+    out.truth_ray = beam.truth_ray;
+    out.ray = beam.ray;
+  }
+
+  // the truth beside it: the echo, object and hit point of the ray it came from
+  const std::size_t truth = begin + static_cast<std::size_t>(out.truth_ray);
+  out.echo = echoes_[truth];
+  out.object_id = hits_[truth].object_id;
+  if (hits_[truth].is_hit()) {
+    out.p_WH = out.p_WS + out.echo.distance_m * ray_dir_W_[truth];
+  } else {
+    out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
+}
+
+}  // namespace proxsim

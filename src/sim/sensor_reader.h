@@ -1,0 +1,57 @@
+// One sample's sensing: place every sensor in the world (X_WS) from its link's
+// pose, cast its rays, and turn each sensor's hits into a reading with the
+// paper's model (sensors/). A sensor with a beam owns a contiguous range of
+// rays and is read with MeasureBeam. A sensor with its own rate_hz is read
+// only at the first run sample of each of its periods (status not_sampled
+// otherwise); with flight_time the receive point is the sensor's origin at the
+// echo's return, extrapolated at the velocity it had between the last two
+// samples.
+//
+// Frames: W world, L the link a sensor is fixed on, S a sensor.
+#pragma once
+
+#include <vector>
+
+#include "core/parallel.h"
+#include "io/scenario.h"
+#include "sim/sample_frame.h"
+#include "sim/world.h"
+
+namespace proxsim {
+
+class SensorReader {
+ public:
+  /// `scenario` and `world` must outlive the reader; the scenario's seed is read at every sample.
+  SensorReader(const Scenario& scenario, World& world);
+
+  /// Reads every sensor into frame.sensors (sized to the sensor count) at
+  /// frame.sample / frame.t_s, with the world's bodies as last committed;
+  /// `runner` shares a sample with many rays out over its threads.
+  void Read(SampleFrame& frame, ParallelRunner& runner);
+
+  /// A new episode: the sensors have no previous position.
+  void Reset();
+
+ private:
+  // place a sensor where its link is and fill its rays
+  void PlaceSensor(std::size_t sensor, SampleFrame& frame);
+  // one sensor's hits into its reading
+  void MeasureSensor(std::size_t sensor, SampleFrame& frame);
+  // whether sample k is one of the sensor's own samples
+  bool IsSensorSample(std::size_t sensor, std::int64_t sample) const;
+  // below this many rays a sample is read on one thread (a fork costs more)
+  static constexpr std::size_t kParallelReadRays = 512;
+  // sensors read by one task: enough rays to outweigh the task's cost
+  static constexpr std::size_t kSensorsPerTask = 4;
+
+  const Scenario& scenario_;
+  World& world_;
+  // per-ray buffers, sized once and overwritten every sample
+  std::vector<Ray> rays_;
+  std::vector<Vec3> ray_dir_W_;  // each ray's direction in double precision
+  std::vector<Hit> hits_;
+  std::vector<Echo> echoes_;
+  std::vector<Vec3> p_WS_previous_;  // each sensor's origin at the previous sample, for flight_time
+};
+
+}  // namespace proxsim

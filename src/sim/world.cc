@@ -1,0 +1,74 @@
+#include "sim/world.h"
+
+#include "core/input_error.h"
+#include "io/nearest_key.h"
+
+namespace proxsim {
+
+namespace {
+
+// "scenario.yaml:12: sensors.NAME.link: unknown link ..." with the nearest name suggested
+std::string UnknownLinkProblem(const Scenario& scenario, const SensorConfig& sensor, const RobotModel* model) {
+  std::string known;
+  std::vector<std::string> names;
+  for (int i = 0; model != nullptr && i < model->link_count(); ++i) {
+    names.push_back(model->link_name(i));
+    known += (i ? ", " : "") + names.back();
+  }
+  const auto nearest = NearestKey(sensor.link, names);
+  const std::string where =
+      scenario.source + (sensor.link_line > 0 ? ":" + std::to_string(sensor.link_line) : std::string());
+  return where + ": sensors." + sensor.name + ".link: unknown link '" + sensor.link + "'" +
+         (nearest ? " (did you mean '" + *nearest + "'?)" : "") + "; expected world" +
+         (known.empty() ? "" : " or one of " + known);
+}
+
+}  // namespace
+
+World::World(const Scenario& scenario, const RobotModel* robot_model, int threads) {
+  // the static world: one body, one shape per scene object, ids = scene order
+  std::vector<BodyShape> world_shapes;
+  world_shapes.reserve(scenario.scene.objects.size());
+  for (const SceneObject& object : scenario.scene.objects) {
+    world_shapes.push_back({object.shape, object.X_WO, static_cast<std::int32_t>(object_names_.size())});
+    object_names_.push_back(object.name);
+  }
+  caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
+  first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
+  for (std::size_t id = 0; id < object_names_.size(); ++id) {
+    if (object_names_[id].starts_with("floor")) ground_ids_.push_back(static_cast<std::int32_t>(id));
+  }
+
+  // the robot: its links are bodies too, with object ids after the scene's
+  if (robot_model != nullptr) {
+    robot_ = std::make_unique<RobotInScene>(*robot_model, caster_, first_robot_object_id_);
+    for (int link = 0; link < robot_model->link_count(); ++link) object_names_.push_back(robot_model->link_name(link));
+  }
+
+  // every sensor's link must exist
+  std::vector<std::string> problems;
+  for (const SensorConfig& sensor : scenario.sensors) {
+    const int link = sensor.link == "world" || robot_model == nullptr ? -1 : robot_model->LinkIndex(sensor.link);
+    if (sensor.link != "world" && link < 0) problems.push_back(UnknownLinkProblem(scenario, sensor, robot_model));
+    sensor_link_.push_back(link);
+  }
+  if (!problems.empty()) throw InputError(problems);
+
+  caster_.set_threads(threads);
+  caster_.Commit();
+  // the clearance truth's point-query structure over the scene without the
+  // ground is built here with the other structures, not at the first sample
+  if (robot_) caster_.DistanceToWorld(Vec3::Zero(), ground_ids_);
+
+  // the beams, sensor after sensor: one ray for the paper's sensors
+  ray_begin_.push_back(0);
+  for (const SensorConfig& sensor : scenario.sensors) {
+    const std::vector<BeamRay> beam = MakeBeamRays(sensor.spec.beam);
+    beam_rays_.insert(beam_rays_.end(), beam.begin(), beam.end());
+    ray_begin_.push_back(beam_rays_.size());
+  }
+}
+
+World::~World() = default;
+
+}  // namespace proxsim

@@ -1,0 +1,69 @@
+// The world a simulation builds once and keeps across episodes: the scene's
+// objects and the robot's links as bodies in the ray caster (with their
+// acceleration structures), the object table that names what a ray hits, the
+// link each sensor is fixed on, and the beams' rays in their sensor frames.
+// An episode (sim/simulation.h) moves the robot's bodies; nothing here is
+// rebuilt between episodes.
+//
+// Frames: W world, L a link, S a sensor.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "io/scenario.h"
+#include "raycast/ray_caster.h"
+#include "robot/robot_model.h"
+#include "sensors/beam.h"
+#include "sim/robot_in_scene.h"
+
+namespace proxsim {
+
+class World {
+ public:
+  /// Builds the scene's and the robot's bodies (robot_model null: no robot)
+  /// and commits them. Throws InputError when a sensor names a link the robot
+  /// does not have. `scenario` and `robot_model` must outlive the world.
+  World(const Scenario& scenario, const RobotModel* robot_model, int threads);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  RayCaster& caster() { return caster_; }
+  const RayCaster& caster() const { return caster_; }
+
+  /// Object ids: the scene's objects in scenario order, then the robot's links.
+  const std::string& object_name(std::int32_t object_id) const { return object_names_.at(object_id); }
+  const std::vector<std::string>& object_names() const { return object_names_; }
+  /// Object ids from here on are robot links.
+  std::int32_t first_robot_object_id() const { return first_robot_object_id_; }
+  /// The objects the feet stand on, left out of the clearance.
+  std::span<const std::int32_t> ground_ids() const { return ground_ids_; }
+
+  /// The robot's bodies, or null without a robot.
+  RobotInScene* robot() { return robot_.get(); }
+  const RobotInScene* robot() const { return robot_.get(); }
+
+  /// The link sensor i is fixed on; -1 for world.
+  int sensor_link(std::size_t sensor) const { return sensor_link_[sensor]; }
+  /// Sensor i owns rays [ray_begin(i), ray_begin(i + 1)) of every per-ray buffer.
+  std::size_t ray_begin(std::size_t sensor) const { return ray_begin_[sensor]; }
+  std::size_t ray_count() const { return beam_rays_.size(); }
+  /// Every sensor's rays in its own frame, sensor after sensor.
+  const std::vector<BeamRay>& beam_rays() const { return beam_rays_; }
+
+ private:
+  RayCaster caster_;
+  std::vector<std::string> object_names_;
+  std::int32_t first_robot_object_id_ = 0;
+  std::vector<std::int32_t> ground_ids_;
+  std::unique_ptr<RobotInScene> robot_;
+  std::vector<int> sensor_link_;
+  std::vector<std::size_t> ray_begin_;
+  std::vector<BeamRay> beam_rays_;
+};
+
+}  // namespace proxsim

@@ -1,0 +1,244 @@
+#include "strategy/circumvent_strategy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <limits>
+#include <set>
+#include <string>
+
+namespace proxsim {
+
+namespace {
+
+// before the near end and after the far end, the detour runs parallel to the
+// path this far, so that the corners the gait cuts (it passes a waypoint
+// within half a stride) lie outside the obstacle's extent
+constexpr double kRunUp_m = 0.3;
+// a replan is worth it when the plan moves by more than this
+constexpr double kReplanTolerance_m = 0.03;
+// back on the path: the pelvis within this of the path line
+constexpr double kRejoined_m = 0.1;
+// the safety stop looks this much wider than the robot's own half-width
+constexpr double kSafetyWidthMargin_m = 0.05;
+
+std::string Format(const char* format, double a, double b = 0, double c = 0, double d = 0) {
+  char text[200];
+  std::snprintf(text, sizeof text, format, a, b, c, d);
+  return text;
+}
+
+Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
+
+}  // namespace
+
+void CircumventStrategy::Reset(const StrategySetup& setup) {
+  path_m_ = setup.path_m;
+  started_ = false;
+  mode_ = Mode::kFollowing;
+  points_.clear();
+  extent_.reset();
+  detour_.clear();
+  shift_m_ = 0;
+  passed_ = false;
+}
+
+CircumventStrategy::Cell CircumventStrategy::CellOf(const Vec3& p_W) const {
+  return {static_cast<std::int64_t>(std::floor(p_W.x() / kCell_m)),
+          static_cast<std::int64_t>(std::floor(p_W.y() / kCell_m))};
+}
+
+Vec2 CircumventStrategy::ToWorld(double s, double l) const {
+  return segment_.origin + s * segment_.u + l * Left(segment_.u);
+}
+
+void CircumventStrategy::KeepPoints(const Observation& observation) {
+  const RobotKnowledge& self = *observation.robot;
+  for (const SensorOutput& sensor : observation.sensors) {
+    if (!sensor.fresh || !sensor.detected) continue;
+    const Vec3 p_W = sensor.p_W_measured();
+    if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;  // the floor
+    points_[CellOf(p_W)] = p_W;
+  }
+}
+
+std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observation, double look_ahead_m,
+                                                       double lateral_m) const {
+  const RobotKnowledge& self = *observation.robot;
+  const Vec3 lateral_W = Vec3::UnitZ().cross(self.heading_W);
+  for (const SensorOutput& sensor : observation.sensors) {
+    if (!sensor.fresh || !sensor.detected) continue;
+    const Vec3 p_W = sensor.p_W_measured();
+    if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;
+    const Vec3 from_front = p_W - self.p_W_front;
+    const double ahead_m = from_front.dot(self.heading_W);
+    if (ahead_m <= look_ahead_m && std::abs(from_front.dot(lateral_W)) <= lateral_m) return p_W;
+  }
+  return std::nullopt;
+}
+
+CircumventStrategy::Segment CircumventStrategy::SegmentNear(const Vec2& p_W) const {
+  // the path segment whose line passes nearest the point (between its ends)
+  Segment best;
+  double best_distance_m = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < path_m_.size(); ++i) {
+    const Vec2 a = path_m_[i], b = path_m_[i + 1];
+    const double length_m = (b - a).norm();
+    if (length_m < 1e-6) continue;
+    const Vec2 u = (b - a) / length_m;
+    const double s = std::clamp((p_W - a).dot(u), 0.0, length_m);
+    const double distance_m = (p_W - (a + s * u)).norm();
+    if (distance_m < best_distance_m) {
+      best_distance_m = distance_m;
+      best.origin = a;
+      best.u = u;
+      best.rest.assign(path_m_.begin() + static_cast<std::ptrdiff_t>(i + 1), path_m_.end());
+    }
+  }
+  return best;
+}
+
+CircumventStrategy::Extent CircumventStrategy::MeasureCluster(const Cell& seed, const Segment& segment) const {
+  // breadth-first over the kept cells, linking those closer than kClusterLink_m
+  const auto reach = static_cast<std::int64_t>(std::ceil(kClusterLink_m / kCell_m));
+  std::set<Cell> seen = {seed};
+  std::deque<Cell> queue = {seed};
+  Extent extent{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  const Vec2 left = Left(segment.u);
+  while (!queue.empty()) {
+    const Cell cell = queue.front();
+    queue.pop_front();
+    const auto point = points_.find(cell);
+    if (point == points_.end()) continue;
+    const Vec2 d = point->second.head<2>() - segment.origin;
+    extent.s_min = std::min(extent.s_min, d.dot(segment.u));
+    extent.s_max = std::max(extent.s_max, d.dot(segment.u));
+    extent.l_min = std::min(extent.l_min, d.dot(left));
+    extent.l_max = std::max(extent.l_max, d.dot(left));
+    for (auto it = points_.lower_bound({cell.first - reach, std::numeric_limits<std::int64_t>::min()});
+         it != points_.end() && it->first.first <= cell.first + reach; ++it) {
+      if (std::abs(it->first.second - cell.second) > reach || seen.contains(it->first)) continue;
+      if ((it->second.head<2>() - point->second.head<2>()).norm() > kClusterLink_m) continue;
+      seen.insert(it->first);
+      queue.push_back(it->first);
+    }
+  }
+  return extent;
+}
+
+bool CircumventStrategy::PlanDetour(const Extent& extent, std::vector<Vec2>* waypoints, double* shift_m) const {
+  // pass on the side that needs the smaller shift, half-width + margin clear of the extent
+  const double clear_m = half_width_m_ + config_.margin_m;
+  const double left_m = extent.l_max + clear_m;
+  const double right_m = extent.l_min - clear_m;
+  *shift_m = std::abs(left_m) <= std::abs(right_m) ? left_m : right_m;
+  if (std::abs(*shift_m) > config_.max_detour_m) return false;
+
+  // beside the near end, beside the far end (the far side unseen: assumed_depth_m behind), back on the path
+  const double s_far = std::max(extent.s_max, extent.s_min + config_.assumed_depth_m);
+  const double s_near = extent.s_min - clear_m - kRunUp_m;
+  const double s_after = s_far + clear_m + kRunUp_m;
+  double s_rejoin = s_after + config_.rejoin_m;
+  waypoints->clear();
+  waypoints->push_back(ToWorld(s_near, *shift_m));
+  waypoints->push_back(ToWorld(s_after, *shift_m));
+  // the rest of the path beyond the rejoining point (the goal at least)
+  std::vector<Vec2> rest;
+  for (std::size_t i = 0; i < segment_.rest.size(); ++i) {
+    const double s = (segment_.rest[i] - segment_.origin).dot(segment_.u);
+    if (i > 0 || s > s_rejoin) rest.push_back(segment_.rest[i]);
+    else if (i == 0) s_rejoin = std::min(s_rejoin, s);  // the segment ends before: rejoin at its end
+  }
+  waypoints->push_back(ToWorld(s_rejoin, 0.0));
+  waypoints->insert(waypoints->end(), rest.begin(), rest.end());
+  return true;
+}
+
+void CircumventStrategy::Decide(const Observation& observation, RobotCommands& robot, EventLog& events) {
+  if (observation.robot == nullptr) return;
+  const RobotKnowledge& self = *observation.robot;
+  if (!started_) {
+    // the path starts where the robot stands when it was given without its start
+    started_ = true;
+    half_width_m_ = self.half_width_m;
+    const Vec2 p_start = self.X_WP.translation().head<2>();
+    if (path_m_.empty() || (path_m_.front() - p_start).norm() > 0.05) path_m_.insert(path_m_.begin(), p_start);
+  }
+  if (mode_ == Mode::kStopped) return;
+  KeepPoints(observation);
+
+  // whatever the plan, something right in front of the feet stops the robot
+  const double own_width_m = half_width_m_ + kSafetyWidthMargin_m;
+  if (const auto p_W = PointInTheWay(observation, config_.stop_distance_m, own_width_m)) {
+    robot.Stop();
+    mode_ = Mode::kStopped;
+    events.Log("blocked", Format("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
+                                 (*p_W - self.p_W_front).dot(self.heading_W)));
+    return;
+  }
+  if (mode_ == Mode::kBlocked) return;
+
+  const Vec2 p_WP = self.X_WP.translation().head<2>();
+  if (mode_ == Mode::kFollowing) {
+    const auto p_W = PointInTheWay(observation, config_.detect_distance_m, half_width_m_ + config_.margin_m);
+    if (!p_W) return;
+    seed_ = CellOf(*p_W);
+    segment_ = SegmentNear(p_W->head<2>());
+    extent_ = MeasureCluster(seed_, segment_);
+    events.Log("obstacle_seen", Format("a point at (%.2f, %.2f, %.2f) m, %.2f m ahead of the leading toe", p_W->x(),
+                                       p_W->y(), p_W->z(), (*p_W - self.p_W_front).dot(self.heading_W)));
+    if (!PlanDetour(*extent_, &detour_, &shift_m_)) {
+      mode_ = Mode::kBlocked;
+      detour_.clear();
+      events.Log("no_way_around", Format("a detour would shift %.2f m, more than max_detour_m = %.2f m", shift_m_,
+                                         config_.max_detour_m));
+      return;
+    }
+    robot.SetPath(detour_);
+    mode_ = Mode::kDetouring;
+    passed_ = false;
+    events.Log("detour_planned", std::string(shift_m_ > 0 ? "to the left" : "to the right") +
+                                     Format(" of the path, %.2f m aside; obstacle s in [%.2f, %.2f] m, l in [%.2f, %.2f] m",
+                                            std::abs(shift_m_), extent_->s_min, extent_->s_max, extent_->l_min) +
+                                     Format(" (l_max %.2f m)", extent_->l_max));
+    return;
+  }
+
+  // detouring: more of the obstacle seen moves the plan
+  if (!passed_) {
+    const Extent extent = MeasureCluster(seed_, segment_);
+    std::vector<Vec2> detour;
+    double shift_m = 0;
+    if (!PlanDetour(extent, &detour, &shift_m)) {
+      mode_ = Mode::kBlocked;
+      events.Log("no_way_around", Format("the obstacle grew: a detour would shift %.2f m, more than %.2f m", shift_m,
+                                         config_.max_detour_m));
+      return;
+    }
+    bool moved = detour.size() != detour_.size();
+    for (std::size_t i = 0; !moved && i < detour.size(); ++i) moved = (detour[i] - detour_[i]).norm() > kReplanTolerance_m;
+    extent_ = extent;
+    if (moved) {
+      detour_ = detour;
+      shift_m_ = shift_m;
+      robot.SetPath(detour_);
+      events.Log("detour_replanned", Format("more of the obstacle seen: s in [%.2f, %.2f] m, l in [%.2f, %.2f] m",
+                                            extent.s_min, extent.s_max, extent.l_min, extent.l_max));
+    }
+  }
+  const Vec2 d = p_WP - segment_.origin;
+  const double s_WP = d.dot(segment_.u);
+  const double s_far = std::max(extent_->s_max, extent_->s_min + config_.assumed_depth_m);
+  if (!passed_ && s_WP > s_far + half_width_m_ + config_.margin_m) {
+    passed_ = true;
+    events.Log("obstacle_passed", Format("pelvis %.2f m past the obstacle's far end", s_WP - s_far));
+  }
+  if (passed_ && std::abs(d.dot(Left(segment_.u))) < kRejoined_m) {
+    mode_ = Mode::kFollowing;
+    events.Log("rejoined", Format("back on the path at (%.2f, %.2f) m", p_WP.x(), p_WP.y()));
+  }
+}
+
+}  // namespace proxsim

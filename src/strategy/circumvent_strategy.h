@@ -1,0 +1,96 @@
+// The built-in strategy `circumvent`: walk around an obstacle on the path and
+// reach the goal, from the readings alone (the paper's abstract: "strategies
+// to avoid and circumvent an obstacle").
+//
+// What it does, every sample:
+//  1. Keeps the measured points of fresh detections that stand at least
+//     min_height_m above the ground the robot stands on, one per 2 cm cell of
+//     the floor plane (so memory grows with the area seen, not with time).
+//  2. Following the path: a point within detect_distance_m ahead of the leading
+//     toe and within the robot's half-width plus margin_m of its heading line
+//     is an obstacle. Its extent is the cluster of kept points connected to it
+//     (cells closer than kClusterLink_m), measured in the frame of the path
+//     segment it sits on (s along the path, l to its left).
+//  3. The detour passes on the side needing the smaller sideways shift,
+//     keeping half-width + margin_m from the extent: waypoints beside the
+//     near and far ends (the far end at least assumed_depth_m behind the near
+//     one until more is seen), then back onto the path rejoin_m further on,
+//     then the rest of the path. As more of the obstacle is seen the extent
+//     grows and the detour is replanned.
+//  4. A shift beyond max_detour_m means no way around is seen (a wall): from
+//     then on it stops as `stop` would. Whatever the state, a point within
+//     stop_distance_m ahead of the toe inside the robot's own width stops it.
+// Events: obstacle_seen, detour_planned, detour_replanned, obstacle_passed,
+// rejoined, no_way_around, blocked.
+//
+// Frames: W world; the path frame: origin at the segment's start, s along it,
+// l to its left, both in metres on the floor plane.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "strategy/strategy.h"
+#include "strategy/strategy_config.h"
+
+namespace proxsim {
+
+class CircumventStrategy : public Strategy {
+ public:
+  explicit CircumventStrategy(CircumventConfig config) : config_(config) {}
+
+  std::string name() const override { return "circumvent"; }
+  void Reset(const StrategySetup& setup) override;
+  void Decide(const Observation& observation, RobotCommands& robot, EventLog& events) override;
+
+  /// The obstacle's extent in the path frame, as last measured (for tests and viewers).
+  struct Extent {
+    double s_min = 0, s_max = 0, l_min = 0, l_max = 0;
+  };
+  const std::optional<Extent>& extent() const { return extent_; }
+  /// The detour last commanded (world x-y), empty when none.
+  const std::vector<Vec2>& detour() const { return detour_; }
+
+  /// Cells closer than this belong to one obstacle, m.
+  static constexpr double kClusterLink_m = 0.12;
+  /// Side of the cells that keep one point each, m.
+  static constexpr double kCell_m = 0.02;
+
+ private:
+  enum class Mode { kFollowing, kDetouring, kBlocked, kStopped };
+  using Cell = std::pair<std::int64_t, std::int64_t>;
+  struct Segment {
+    Vec2 origin = Vec2::Zero();
+    Vec2 u = Vec2::UnitX();          // unit, along the path
+    std::vector<Vec2> rest;          // the path's waypoints after this segment's start
+  };
+
+  void KeepPoints(const Observation& observation);
+  // the first fresh point in the robot's way within look_ahead_m, inside lateral_m of its heading line
+  std::optional<Vec3> PointInTheWay(const Observation& observation, double look_ahead_m, double lateral_m) const;
+  // the kept points connected to the seed cell, as an extent in the segment's frame
+  Extent MeasureCluster(const Cell& seed, const Segment& segment) const;
+  Segment SegmentNear(const Vec2& p_W) const;
+  // the detour around `extent`; false (no waypoints) when the shift would exceed max_detour_m
+  bool PlanDetour(const Extent& extent, std::vector<Vec2>* waypoints, double* shift_m) const;
+  Cell CellOf(const Vec3& p_W) const;
+  Vec2 ToWorld(double s, double l) const;
+
+  CircumventConfig config_;
+  std::vector<Vec2> path_m_;
+  bool started_ = false;
+  Mode mode_ = Mode::kFollowing;
+  double half_width_m_ = 0;
+  std::map<Cell, Vec3> points_;  // the kept points, one per cell
+  Cell seed_{};
+  Segment segment_;
+  std::optional<Extent> extent_;
+  double shift_m_ = 0;  // the detour's sideways shift, signed (> 0: to the left)
+  std::vector<Vec2> detour_;
+  bool passed_ = false;
+};
+
+}  // namespace proxsim

@@ -1,0 +1,134 @@
+// A strategy: the robot's decision-making in the closed loop. Every sample,
+// after the sensors' readings are delivered (latency applied), the
+// simulation hands the strategy what the robot knows — what its devices
+// output and where its own kinematics put its sensors and feet — and the
+// strategy commands the robot through RobotCommands.
+//
+// What the robot does not know cannot be reached from here: the types below
+// carry no reading status, no true distance, hit point, object or clearance
+// (SampleFrame in sim/ holds those, for outputs and scoring). A test checks
+// that these types have no such member.
+//
+// Frames: W world, P pelvis (the robot's root link), S a sensor.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/geometry.h"
+#include "gait/locomotion.h"
+#include "sensors/sensor_spec.h"
+
+namespace proxsim {
+
+/// What one sensor device delivered at a sample: its outputs, and where the
+/// robot's kinematics put the sensor when it measured.
+struct SensorOutput {
+  bool fresh = false;      ///< a reading arrived at this sample; otherwise the fields below hold no news
+  bool detected = false;   ///< the device reports an echo (d_m < its range)
+  double d_m = 0.0;        ///< the reported distance; the maximum range when nothing was detected
+  double signal = std::numeric_limits<double>::quiet_NaN();  ///< reflectance signal s; NaN for time of flight
+  double output = std::numeric_limits<double>::quiet_NaN();  ///< a lookup sensor's output; NaN otherwise
+  double t_reported_s = std::numeric_limits<double>::quiet_NaN();  ///< when the reading was reported
+  Vec3 p_WS = Vec3::Zero();    ///< the sensor's origin when it measured
+  Vec3 dir_W = Vec3::UnitX();  ///< its axis (unit) when it measured
+
+  /// The point the reading puts in the world: origin + d_m along the axis.
+  Vec3 p_W_measured() const { return p_WS + d_m * dir_W; }
+};
+
+/// What the robot's datasheets and mounting tell it about one sensor.
+struct SensorInfo {
+  std::string name;
+  SensorType type = SensorType::kIdeal;
+  double min_range_m = 0.0;
+  double max_range_m = 0.0;
+  std::string link;  ///< the link it is fixed on ("world" for a fixed sensor)
+};
+
+/// One foot's contact points, from the robot's kinematics.
+struct FootKnowledge {
+  Vec3 p_W_sole = Vec3::Zero();  ///< the sole point under the ankle
+  Vec3 p_W_toe = Vec3::Zero();   ///< the sole's front end, on the foot's centre line
+  Vec3 p_W_heel = Vec3::Zero();  ///< the sole's back end
+};
+
+/// The robot's knowledge of itself at a sample (odometry and joint encoders).
+struct RobotKnowledge {
+  Pose X_WP = Pose::Identity();  ///< pelvis pose
+  double yaw_rad = 0.0;          ///< pelvis heading about z
+  std::vector<double> q;         ///< joint positions by joint index (rad, or m for prismatic)
+  double gait_phase = 0.0;       ///< left leg's phase in [0, 1), 0 at its heel strike
+  SupportLeg support = SupportLeg::kDouble;
+  bool has_feet = false;                  ///< false for a robot whose locomotion names no feet
+  std::array<FootKnowledge, 2> feet;      ///< [0] left, [1] right
+  Vec3 heading_W = Vec3::UnitX();         ///< unit, horizontal: the walking direction
+  bool stopped = false;                   ///< standing still
+  double distance_walked_m = 0.0;
+  // derived from the above, as every strategy needs them
+  Vec3 p_W_front = Vec3::Zero();  ///< the foremost toe along the heading
+  double ground_z_m = 0.0;        ///< height of the ground the robot stands on: its lowest sole or toe point
+  double half_width_m = 0.0;      ///< the robot's half-width about its pelvis's sagittal plane (at start)
+};
+
+/// Everything a strategy sees at one sample.
+struct Observation {
+  double t_s = 0.0;
+  std::int64_t sample = 0;
+  std::span<const SensorOutput> sensors;  ///< one per sensor, in scenario order
+  const RobotKnowledge* robot = nullptr;  ///< null when the scenario has no robot
+};
+
+/// What a strategy knows before the first sample of an episode.
+struct StrategySetup {
+  std::span<const SensorInfo> sensors;  ///< in scenario order
+  std::vector<Vec2> path_m;             ///< the path the robot was given (world x-y), its goal last
+  double rate_hz = 0.0;                 ///< samples per second
+};
+
+/// The commands a strategy (or a script driving the simulation) gives the robot.
+/// They take effect from the next sample on.
+class RobotCommands {
+ public:
+  virtual ~RobotCommands() = default;
+  /// Stop at the next double support and stand there, both feet down.
+  virtual void Stop() = 0;
+  /// Walk again after a stop.
+  virtual void Resume() = 0;
+  /// Stride (heel strike to heel strike of one foot) from the next step on, m > 0.
+  virtual void SetStride(double stride_m) = 0;
+  /// Replaces the rest of the path (world x-y, metres); the gait turns toward
+  /// it at heel strikes. A robot that stood at the end of its path walks again.
+  virtual void SetPath(std::vector<Vec2> waypoints_m) = 0;
+};
+
+/// Something a strategy noticed or decided, for summary.json `robot.events`.
+struct StrategyEvent {
+  double t_s = 0.0;
+  std::string event;   ///< short snake_case name: obstacle_seen, detour_planned, rejoined, stopped...
+  std::string detail;  ///< one line for a person
+};
+
+/// Where a strategy writes its events.
+class EventLog {
+ public:
+  virtual ~EventLog() = default;
+  virtual void Log(std::string event, std::string detail) = 0;
+};
+
+class Strategy {
+ public:
+  virtual ~Strategy() = default;
+  /// "stop", "circumvent", or a user strategy's own name.
+  virtual std::string name() const = 0;
+  /// A new episode starts: forget the last one.
+  virtual void Reset(const StrategySetup& setup) = 0;
+  /// One sample: look at what the robot knows, command it, log what matters.
+  virtual void Decide(const Observation& observation, RobotCommands& robot, EventLog& events) = 0;
+};
+
+}  // namespace proxsim
