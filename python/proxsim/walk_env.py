@@ -10,6 +10,8 @@ Observation (float32, shape (3·n_sensors + 6,)): for each sensor, in scenario
 order, [d_m, detected, fresh]; then [pelvis x_m, pelvis y_m, yaw_rad,
 gait_phase, stopped, distance_walked_m]. Sensors only, never the truth.
 
+The agent drives the robot: the scenario's own strategy is dropped.
+
 Action (float32, shape (2,)): [walk, stride_m]: walk >= 0.5 walks (a robot
 that stood resumes), < 0.5 stops at the next double support; stride_m, clipped
 to [min_stride_m, max_stride_m], is the stride from the next step on.
@@ -32,9 +34,9 @@ class WalkEnv:
 
     def __init__(self, scenario, *, threads=1, min_stride_m=0.3, max_stride_m=1.0, collision_penalty=10.0):
         if isinstance(scenario, str) and scenario.startswith("builtin:"):
-            self._sim = Simulation.builtin(scenario[len("builtin:"):], threads=threads)
+            self._sim = Simulation.builtin(scenario[len("builtin:"):], threads=threads, scenario_strategy=False)
         else:
-            self._sim = Simulation(scenario, threads=threads)
+            self._sim = Simulation(scenario, threads=threads, scenario_strategy=False)
         if self._sim.robot is None:
             raise ValueError("WalkEnv needs a scenario with a robot section (its sensors ride the robot)")
         if not 0 < min_stride_m <= max_stride_m:
