@@ -27,6 +27,9 @@ foreach(source ${python_sources})
 endforeach()
 add_custom_target(proxsim_python_package ALL DEPENDS ${python_copies})
 add_dependencies(proxsim_python proxsim_python_package)
+# `proxsim bench` drives the paper run from Python too (bench/python_loop.py)
+target_compile_definitions(proxsim_bench PRIVATE PROXSIM_PYTHON_DIR="${CMAKE_BINARY_DIR}/python")
+add_dependencies(proxsim proxsim_python)
 
 if(PROXSIM_BUILD_TESTS)
   set(python_test_environment
@@ -44,5 +47,4 @@ if(PROXSIM_BUILD_TESTS)
   add_test(NAME python_package
            COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_SOURCE_DIR}/tests/python)
   set_tests_properties(python_package PROPERTIES ENVIRONMENT "${python_test_environment}" TIMEOUT 600)
-  add_dependencies(proxsim_python proxsim)
 endif()
