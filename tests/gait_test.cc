@@ -15,12 +15,12 @@ namespace {
 
 constexpr double kRate_hz = 200.0;
 
-// The 8 corners of a foot's sole box in the world.
+// The 4 corners of a foot's sole in the world.
 std::vector<Vec3> SoleCorners(const BipedLegs& legs, Side side, const std::vector<Pose>& X_WL) {
   const LegGeometry& g = legs.leg(side);
   std::vector<Vec3> corners;
-  for (double x : {g.heel_x_m, g.toe_x_m})
-    for (double y : {-g.half_width_m, g.half_width_m}) corners.push_back(X_WL[g.foot_link] * Vec3(x, y, g.sole_z_m));
+  for (const Vec3& end : {g.p_L_heel, g.p_L_toe})
+    for (double y : {-g.half_width_m, g.half_width_m}) corners.push_back(X_WL[g.foot_link] * (end + Vec3(0, y, 0)));
   return corners;
 }
 
@@ -35,9 +35,9 @@ std::pair<Vec3, Vec3> PivotNowAndLatched(const BipedLegs& legs, const StepPlan& 
                                          const std::vector<Pose>& X_WL) {
   const LegGeometry& g = legs.leg(plan.stance);
   const Pose& X_WF = X_WL[g.foot_link];
-  if (p < FootFlatPhase()) return {X_WF * Vec3(g.heel_x_m, 0, g.sole_z_m), plan.p_W_heel};
-  const double x = p <= HeelOffPhase() ? 0.0 : g.toe_x_m;
-  return {X_WF * Vec3(x, 0, g.sole_z_m), plan.X_WF * Vec3(x, 0, g.sole_z_m)};
+  if (p < FootFlatPhase()) return {X_WF * g.p_L_heel, plan.p_W_heel};
+  const Vec3& p_L = p <= HeelOffPhase() ? g.p_L_sole : g.p_L_toe;
+  return {X_WF * p_L, plan.X_WF * p_L};
 }
 
 RobotConfig StraightConfig(double stride_m, double period_s) {
