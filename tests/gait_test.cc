@@ -70,7 +70,8 @@ TEST(GaitCurves, PassThroughKeyPointsAndArePeriodicC1) {
 }
 
 struct WalkFigures {
-  double max_pivot_slip_m = 0, lowest_sole_m = 1e9, max_pelvis_dz_m = 0, max_q_period_diff = 0;
+  double max_pivot_slip_m = 0, max_trailing_toe_slip_m = 0, lowest_sole_m = 1e9, max_pelvis_dz_m = 0,
+         max_q_period_diff = 0, min_shank_deg = 1e9;
   std::vector<double> left_strike_x;
   double distance_per_cycle_m = 0;
 };
@@ -91,6 +92,13 @@ WalkFigures WalkStraight(double stride_m, double period_s, int cycles) {
     const double p = walker.step_phase();
     const auto [now, latched] = PivotNowAndLatched(legs, plan, p, X_WL);
     f.max_pivot_slip_m = std::max(f.max_pivot_slip_m, (now - latched).norm());
+    // the other foot, planted on its toe through the double support
+    if (p < kDoubleSupportEnd) {
+      const Vec3 toe = X_WL[legs.leg(plan.swing).foot_link] * legs.leg(plan.swing).p_L_toe;
+      f.max_trailing_toe_slip_m = std::max(f.max_trailing_toe_slip_m, (toe - plan.p_W_trailing_toe).norm());
+    }
+    for (const Side side : {Side::kLeft, Side::kRight})
+      f.min_shank_deg = std::min(f.min_shank_deg, RadToDeg(legs.ReadJoints(side, s.q).hip - legs.ReadJoints(side, s.q).knee));
     f.lowest_sole_m = std::min({f.lowest_sole_m, LowestSoleZ(legs, Side::kLeft, X_WL), LowestSoleZ(legs, Side::kRight, X_WL)});
     if (!std::isnan(last_z)) f.max_pelvis_dz_m = std::max(f.max_pelvis_dz_m, std::abs(s.X_WP.translation().z() - last_z));
     last_z = s.X_WP.translation().z();
@@ -110,12 +118,13 @@ WalkFigures WalkStraight(double stride_m, double period_s, int cycles) {
 TEST(GaitWalker, PlantedFootNoPenetrationContinuousPeriodicStride) {
   for (const auto& [stride, period] : {std::pair{0.6, 1.2}, std::pair{1.0, 1.1}, std::pair{0.4, 1.0}}) {
     const WalkFigures f = WalkStraight(stride, period, 6);
-    std::printf("[ measured ] stride %.2f m period %.2f s: pivot slip %.3g mm, lowest sole %.3g mm, "
-                "max pelvis dz %.3g mm / 5 ms, q periodicity %.3g rad, stride %.6f m, pelvis per cycle %.6f m\n",
-                stride, period, 1e3 * f.max_pivot_slip_m, 1e3 * f.lowest_sole_m, 1e3 * f.max_pelvis_dz_m,
-                f.max_q_period_diff, f.left_strike_x.back() - f.left_strike_x[f.left_strike_x.size() - 2],
+    std::printf("[ measured ] stride %.2f m period %.2f s: pivot slip %.3g mm, trailing toe slip %.3g mm, lowest sole %.3g mm, "
+                "max pelvis dz %.3g mm / 5 ms, q periodicity %.3g rad, min shank %.1f deg, stride %.6f m, pelvis per cycle %.6f m\n",
+                stride, period, 1e3 * f.max_pivot_slip_m, 1e3 * f.max_trailing_toe_slip_m, 1e3 * f.lowest_sole_m, 1e3 * f.max_pelvis_dz_m,
+                f.max_q_period_diff, f.min_shank_deg, f.left_strike_x.back() - f.left_strike_x[f.left_strike_x.size() - 2],
                 f.distance_per_cycle_m);
     EXPECT_LT(f.max_pivot_slip_m, 1e-3);
+    EXPECT_LT(f.max_trailing_toe_slip_m, 1e-3);
     EXPECT_GT(f.lowest_sole_m, -1e-3);
     EXPECT_LT(f.max_pelvis_dz_m, 3e-3);
     EXPECT_LT(f.max_q_period_diff, 1e-9);
