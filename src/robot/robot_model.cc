@@ -10,7 +10,6 @@
 #include <mutex>
 #include <optional>
 #include <queue>
-#include <set>
 #include <sstream>
 
 #include <console_bridge/console.h>
@@ -61,8 +60,9 @@ Pose PoseFromUrdf(const urdf::Pose& p) {
   return X;
 }
 
-// The meshes of one URDF: each file found once (robot/mesh_uri.h) and loaded
-// once per scale, however many links name it.
+// The meshes of one URDF: each file found (robot/mesh_uri.h) and read once,
+// however many links name it, at whatever scales (a scaled copy is made from
+// the file's triangles, not read again).
 class UrdfMeshes {
  public:
   UrdfMeshes(const std::string& source, const UrdfOptions& options)
@@ -80,32 +80,55 @@ class UrdfMeshes {
       problems->push_back(where + ": mesh '" + m.filename + "' not found: " + lookup.problem);
       return std::nullopt;
     }
+    // the file, read once
     std::error_code error;
     const std::filesystem::path canonical = std::filesystem::weakly_canonical(*lookup.path, error);
-    const auto key = std::make_pair(error ? lookup.path->string() : canonical.string(),
-                                    std::array<double, 3>{scale.x(), scale.y(), scale.z()});
-    auto it = loaded_.find(key);
-    if (it == loaded_.end()) {
+    const std::string file = error ? lookup.path->string() : canonical.string();
+    auto raw = read_.find(file);
+    if (raw == read_.end()) {
       std::shared_ptr<const TriangleMesh> data;
+      std::string why;
       try {
-        data = LoadMeshFile(lookup.path->string(), scale);
+        data = LoadMeshFile(lookup.path->string(), Vec3::Ones());
       } catch (const InputError& e) {
-        for (const std::string& why : e.problems()) problems->push_back(where + ": mesh '" + m.filename + "': " + why);
-        return std::nullopt;
+        for (const std::string& line : e.problems()) why += (why.empty() ? "" : "; ") + line;
       }
-      it = loaded_.emplace(key, std::move(data)).first;
-      files_.insert(key.first);
+      raw = read_.emplace(file, FileRead{std::move(data), std::move(why)}).first;
     }
-    return Mesh{.file = m.filename, .scale = scale, .data = it->second};
+    if (!raw->second.data) {
+      problems->push_back(where + ": mesh '" + m.filename + "': " + raw->second.why);
+      return std::nullopt;
+    }
+    if (scale == Vec3::Ones()) return Mesh{.file = m.filename, .scale = scale, .data = raw->second.data};
+    // a scale: one scaled copy per file and scale
+    const auto key = std::make_pair(file, std::array<double, 3>{scale.x(), scale.y(), scale.z()});
+    auto scaled = scaled_.find(key);
+    if (scaled == scaled_.end()) {
+      auto copy = std::make_shared<TriangleMesh>(*raw->second.data);
+      for (Vec3f& v : copy->vertices_O) {
+        v = (v.cast<double>().cwiseProduct(scale)).cast<float>();
+        if (!v.allFinite()) {
+          problems->push_back(where + ": mesh '" + m.filename + "': a vertex is not finite after scaling");
+          return std::nullopt;
+        }
+      }
+      scaled = scaled_.emplace(key, std::move(copy)).first;
+    }
+    return Mesh{.file = m.filename, .scale = scale, .data = scaled->second};
   }
 
-  std::size_t file_count() const { return files_.size(); }
+  /// Mesh files read (successfully or not).
+  std::size_t file_count() const { return read_.size(); }
 
  private:
+  struct FileRead {
+    std::shared_ptr<const TriangleMesh> data;  // null when the file could not be read
+    std::string why;                           // and why
+  };
   const UrdfOptions& options_;
   std::filesystem::path urdf_dir_;
-  std::map<std::pair<std::string, std::array<double, 3>>, std::shared_ptr<const TriangleMesh>> loaded_;
-  std::set<std::string> files_;
+  std::map<std::string, FileRead> read_;
+  std::map<std::pair<std::string, std::array<double, 3>>, std::shared_ptr<const TriangleMesh>> scaled_;
 };
 
 // A URDF geometry as a proxsim shape; adds a problem and returns false when unsupported.
