@@ -158,6 +158,48 @@ TEST(GaitWalker, FollowsWaypointsWithATurnAndStopsAtTheLast) {
   EXPECT_GT(lowest, -1e-3);
 }
 
+// Every stride from 0.3 to 1.0 m reaches the last waypoint (the pelvis within
+// half a stride of it, standing) of paths given with or without the start
+// point, straight and with turns, and one that starts behind the robot. At
+// strides of 0.42 to 0.55 m the start point used to be passed only if the
+// pelvis was within half a stride of it at the first heel strike, and the
+// robot walked in circles back to it.
+TEST(GaitWalker, ReachesTheLastWaypointForEveryStrideAndPath) {
+  const std::vector<std::pair<const char*, std::vector<Vec2>>> paths = {
+      {"straight", {Vec2(0, 0), Vec2(4, 0)}},
+      {"straight, no start point", {Vec2(4, 0)}},
+      {"a right angle", {Vec2(0, 0), Vec2(3, 0), Vec2(3, 2)}},
+      {"a right angle, no start point", {Vec2(3, 0), Vec2(3, 2)}},
+      {"zigzag", {Vec2(0, 0), Vec2(1.5, 1), Vec2(3, -1), Vec2(4.5, 0)}},
+      {"behind", {Vec2(-2, 1)}}};
+  constexpr double kSweepRate_hz = 50, kLimit_s = 60;
+  double worst_ratio = 0, slowest_s = 0;
+  for (int step = 0; step <= 14; ++step) {
+    const double stride = 0.30 + 0.05 * step;
+    for (const auto& [name, waypoints] : paths) {
+      SCOPED_TRACE(std::string(name) + ", stride " + std::to_string(stride));
+      RobotConfig c = StraightConfig(stride, 1.2);
+      c.waypoints_m = waypoints;
+      GaitWalker walker(RobotModel::Builtin("biped"), c);
+      RobotState s;
+      double max_abs_y = 0;
+      for (int i = 0; i <= kLimit_s * kSweepRate_hz && !s.stopped; ++i) {
+        s = walker.Advance(i / kSweepRate_hz);
+        max_abs_y = std::max(max_abs_y, std::abs(s.X_WP.translation().y()));
+      }
+      ASSERT_TRUE(walker.path_done()) << "still walking after " << kLimit_s << " s, at " << s.X_WP.translation().transpose();
+      const double miss_m = (s.X_WP.translation().head<2>() - waypoints.back()).norm();
+      EXPECT_LT(miss_m, 0.5 * stride);
+      if (std::ranges::all_of(waypoints, [](const Vec2& w) { return w.y() == 0; }))
+        EXPECT_LT(max_abs_y, 0.05) << "a straight path walked off its line";
+      worst_ratio = std::max(worst_ratio, miss_m / stride);
+      slowest_s = std::max(slowest_s, s.t_s);
+    }
+  }
+  std::printf("[ measured ] strides 0.30-1.00 m, %zu paths: every last waypoint reached, farthest stop %.2f strides "
+              "from it, slowest %.1f s\n", paths.size(), worst_ratio, slowest_s);
+}
+
 TEST(GaitWalker, RequestStopStandsStillInDoubleSupportThenResumes) {
   GaitWalker walker(RobotModel::Builtin("biped"), StraightConfig(0.6, 1.2));
   const BipedLegs legs(walker.model());
