@@ -44,11 +44,13 @@ if(PROXSIM_BUILD_TESTS)
            COMMAND ${report_python} -m unittest discover -s ${CMAKE_SOURCE_DIR}/tests/report -v)
 
   # The browser test opens the report of real runs: the default paper run
-  # (walking robot) and the world-mounted sensor demo (no robot). `proxsim run`
+  # (walking robot), the world-mounted sensor demo (no robot) and the
+  # circumvent example (the path walked and the strategy's events). `proxsim run`
   # draws the report itself.
   set(e2e_scenario_walk "")
   set(e2e_scenario_no_robot ${CMAKE_SOURCE_DIR}/data/scenarios/world_sensors_demo.yaml)
-  foreach(kind walk no_robot)
+  set(e2e_scenario_circumvent ${CMAKE_SOURCE_DIR}/data/scenarios/circumvent_obstacle.yaml)
+  foreach(kind walk no_robot circumvent)
     set(run_dir ${CMAKE_BINARY_DIR}/viewer_e2e/${kind})
     add_test(NAME viewer_e2e_${kind}_run
              COMMAND $<TARGET_FILE:proxsim> run ${e2e_scenario_${kind}} --out ${run_dir})

@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libbullet-dev libmujoco-dev
   python3-matplotlib python3-numpy
+  python3-dev pybind11-dev python3-pytest
   nodejs npm
 )
 # Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test,

@@ -46,6 +46,17 @@ class Run:
     sensors: list            # SensorSeries, in scene order
     poses: dict              # link name -> (t_s N, p N×3, quat_wxyz N×4); empty when no robot
     profile: dict            # x, y, z, sensor, t_s, object: 1-D arrays (detections, world frame)
+    events: list = None      # summary.json robot.events: [{t_s, event, detail}], [] without a robot
+
+
+def _read_events(out_dir):
+    """The strategy's and the episode's events, from summary.json (none when absent)."""
+    try:
+        with open(os.path.join(out_dir, "summary.json")) as f:
+            robot = json.load(f).get("robot") or {}
+    except (OSError, ValueError):
+        return []
+    return list(robot.get("events") or [])
 
 
 def _floats(rows, key):
@@ -239,4 +250,4 @@ def load_run(out_dir):
     """Reads a finished run; raises RunError naming the file when one is unreadable."""
     scene = _read_scene(out_dir)
     return Run(out_dir=out_dir, scene=scene, sensors=_read_readings(out_dir, scene),
-               poses=_read_poses(out_dir), profile=_read_profile(out_dir))
+               poses=_read_poses(out_dir), profile=_read_profile(out_dir), events=_read_events(out_dir))

@@ -59,6 +59,7 @@ def viewer_data(run):
         "poses": poses,
         "sensors": sensors,
         "profile": profile,
+        "events": [{"t": e["t_s"], "event": e["event"], "detail": e.get("detail", "")} for e in (run.events or [])],
     }
 
 

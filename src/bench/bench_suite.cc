@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bench/bench_scene.h"
+#include "bench/closed_loop_bench.h"
 #include "bench/peers.h"
 #include "core/parallel.h"
 #include "sensors/noise.h"
@@ -513,6 +514,7 @@ json RunBench(const BenchOptions& options) {
     result["heavy_ray_ratio_vs_embree_2t"] = h["ray_ratio_vs_embree_2t"];
     result["heavy_steps_only_realtime_factor_2t"] = h["steps_only_realtime_factor_2t"];
     result["heavy_steps_only_ratio_vs_embree_2t"] = h["steps_only_ratio_vs_embree_2t"];
+    result["closed_loop"] = ClosedLoopSection(heavy, tmp.string(), options.quick ? 1 : 3);
   }
   std::filesystem::remove_all(tmp);
 
@@ -585,6 +587,7 @@ std::string BenchReport(const json& r) {
                 h.at("steps_only_realtime_factor_1t").get<double>(), h.at("steps_only_realtime_factor_2t").get<double>(),
                 M(h.at("steps_only_rays_per_s_1t")), M(h.at("steps_only_rays_per_s_2t")), r.at("bench_wall_s").get<double>());
   out << line;
+  if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
   return out.str();
 }
 

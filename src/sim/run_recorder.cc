@@ -68,6 +68,8 @@ struct RunRecorder::Writers {
 RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, ReadingsFormat format,
                          std::function<void(const std::string&)> warn)
     : sim_(sim), out_dir_(out_dir), format_(format), warn_(std::move(warn)), writers_(std::make_unique<Writers>()) {
+  writers_->statistics.emplace(sim.scenario().sensors.size());
+  if (out_dir_.empty()) return;
   std::filesystem::create_directories(out_dir_);
   const std::filesystem::path out(out_dir_);
   const Scenario& scenario = sim.scenario();
@@ -79,7 +81,6 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
   }
   writers_->profile.emplace((out / "profile.ply").string());
   if (sim.robot()) writers_->poses.emplace((out / "poses.csv").string(), sim.robot()->model());
-  writers_->statistics.emplace(scenario.sensors.size());
 }
 
 RunRecorder::~RunRecorder() = default;
@@ -92,18 +93,16 @@ void RunRecorder::Add(const SampleFrame& frame) {
     if (warn_)
       for (const std::string& warning : warnings_) warn_(warning);
   }
+  writers_->statistics->Add(frame);
+  for (const SensorSample& sample : frame.sensors) profile_points_ += sample.reading.detected() ? 1 : 0;
+  if (out_dir_.empty()) return;
   if (writers_->readings_npy) writers_->readings_npy->Append(frame); else writers_->readings_csv->Append(frame);
   writers_->profile->Append(frame);
-  writers_->statistics->Add(frame);
   if (writers_->poses) writers_->poses->Append(frame.t_s, sim_.robot()->X_WL());
 }
 
-nlohmann::json RunRecorder::Finish(bool interrupted) {
+nlohmann::json RunRecorder::Summary(bool interrupted) const {
   const bool npy = format_ == ReadingsFormat::kNpy;
-  if (npy) writers_->readings_npy->Commit(); else writers_->readings_csv->Commit();
-  writers_->profile->Commit();
-  if (writers_->poses) writers_->poses->Commit();
-
   const Scenario& scenario = sim_.scenario();
   std::vector<std::string> sensor_names;
   for (const SensorConfig& sensor : scenario.sensors) sensor_names.push_back(sensor.name);
@@ -113,7 +112,7 @@ nlohmann::json RunRecorder::Finish(bool interrupted) {
       {"inputs", InputsJson(scenario)},
       {"samples", samples_},
       {"interrupted", interrupted},
-      {"profile_points", writers_->profile->point_count()},
+      {"profile_points", profile_points_},
       {"sensors", writers_->statistics->ToJson(sensor_names, sim_.world().object_names())},
       {"outputs", {npy ? "readings/" : "readings.csv", "profile.ply", "scene.json", "summary.json", "timings.json"}}};
   summary["warnings"] = warnings_;
@@ -126,6 +125,16 @@ nlohmann::json RunRecorder::Finish(bool interrupted) {
     summary["robot"] = RobotOutcomeJson(sim_);
     summary["outputs"].push_back("poses.csv");
   }
+  return summary;
+}
+
+nlohmann::json RunRecorder::Finish(bool interrupted) {
+  const nlohmann::json summary = Summary(interrupted);
+  if (out_dir_.empty()) return summary;
+  if (writers_->readings_npy) writers_->readings_npy->Commit(); else writers_->readings_csv->Commit();
+  writers_->profile->Commit();
+  if (writers_->poses) writers_->poses->Commit();
+  const Scenario& scenario = sim_.scenario();
   const std::filesystem::path out(out_dir_);
   const auto links = sim_.robot() ? sim_.robot()->LinkGeometry() : std::vector<LinkGeometryJson>{};
   WriteFileAtomically((out / "scene.json").string(), SceneJsonText(scenario, links));

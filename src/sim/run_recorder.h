@@ -21,8 +21,9 @@ enum class ReadingsFormat { kCsv, kNpy };
 
 class RunRecorder {
  public:
-  /// Creates `out_dir` and opens the streamed files; `sim` must outlive the
-  /// recorder. `warn` receives warnings about suspicious but legal input.
+  /// Creates `out_dir` and opens the streamed files (an empty out_dir: no
+  /// files, the statistics only); `sim` must outlive the recorder. `warn`
+  /// receives warnings about suspicious but legal input.
   RunRecorder(const Simulation& sim, const std::string& out_dir, ReadingsFormat format,
               std::function<void(const std::string&)> warn = {});
   ~RunRecorder();
@@ -32,8 +33,11 @@ class RunRecorder {
   /// Streams the sample just taken (the simulation's frame()).
   void Add(const SampleFrame& frame);
 
-  /// Commits every file, writes scene.json and summary.json and returns the
-  /// summary; `interrupted`: the episode ended before its last sample.
+  /// summary.json's content for the samples added so far; `interrupted`: the
+  /// episode ended before its last sample.
+  nlohmann::json Summary(bool interrupted) const;
+
+  /// Commits every file, writes scene.json and summary.json and returns the summary.
   nlohmann::json Finish(bool interrupted);
 
   std::int64_t samples() const { return samples_; }
@@ -47,6 +51,7 @@ class RunRecorder {
   std::unique_ptr<Writers> writers_;
   std::vector<std::string> warnings_;
   std::int64_t samples_ = 0;
+  std::int64_t profile_points_ = 0;  // detections: the points profile.ply holds
   double last_t_s_ = 0;
 };
 

@@ -12,10 +12,11 @@ namespace proxsim {
 
 namespace {
 
-// before the near end and after the far end, the detour runs parallel to the
-// path this far, so that the corners the gait cuts (it passes a waypoint
-// within half a stride) lie outside the obstacle's extent
-constexpr double kRunUp_m = 0.3;
+// after the far end the detour runs parallel to the path this much further
+// before it turns back, so that the robot's trailing foot clears the corner
+constexpr double kRunOut_m = 0.2;
+// a detour waypoint counts as passed once the pelvis is this close to it along the path
+constexpr double kPassed_m = 0.15;
 // a replan is worth it when the plan moves by more than this
 constexpr double kReplanTolerance_m = 0.03;
 // back on the path: the pelvis within this of the path line
@@ -41,6 +42,9 @@ void CircumventStrategy::Reset(const StrategySetup& setup) {
   extent_.reset();
   detour_.clear();
   shift_m_ = 0;
+  side_ = 0;
+  next_waypoint_ = 0;
+  detour_waypoints_ = 0;
   passed_ = false;
 }
 
@@ -71,11 +75,38 @@ std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observa
     if (!sensor.fresh || !sensor.detected) continue;
     const Vec3 p_W = sensor.p_W_measured();
     if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;
-    const Vec3 from_front = p_W - self.p_W_front;
-    const double ahead_m = from_front.dot(self.heading_W);
-    if (ahead_m <= look_ahead_m && std::abs(from_front.dot(lateral_W)) <= lateral_m) return p_W;
+    // ahead of the leading toe, aside of the pelvis (the toe leads on one side)
+    const double ahead_m = (p_W - self.p_W_front).dot(self.heading_W);
+    const double aside_m = (p_W - self.X_WP.translation()).dot(lateral_W);
+    if (ahead_m <= look_ahead_m && std::abs(aside_m) <= lateral_m) return p_W;
   }
   return std::nullopt;
+}
+
+std::optional<Vec3> CircumventStrategy::PointOnThePath(const Observation& observation) const {
+  const RobotKnowledge& self = *observation.robot;
+  const double clear_m = half_width_m_ + config_.margin_m;
+  for (const SensorOutput& sensor : observation.sensors) {
+    if (!sensor.fresh || !sensor.detected) continue;
+    const Vec3 p_W = sensor.p_W_measured();
+    if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;
+    const double ahead_m = (p_W - self.p_W_front).dot(self.heading_W);
+    if (ahead_m < 0 || ahead_m > config_.detect_distance_m) continue;
+    // nearer the path than the robot may pass: in the way (beyond the goal: not)
+    if (DistanceToPath_m(p_W.head<2>()) <= clear_m) return p_W;
+  }
+  return std::nullopt;
+}
+
+double CircumventStrategy::DistanceToPath_m(const Vec2& p_W) const {
+  double best_m = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < path_m_.size(); ++i) {
+    const Vec2 a = path_m_[i], b = path_m_[i + 1];
+    const double length_m = (b - a).norm();
+    const double s = length_m > 1e-9 ? std::clamp((p_W - a).dot(b - a) / length_m, 0.0, length_m) : 0.0;
+    best_m = std::min(best_m, (p_W - (a + (length_m > 1e-9 ? s / length_m : 0.0) * (b - a))).norm());
+  }
+  return best_m;
 }
 
 CircumventStrategy::Segment CircumventStrategy::SegmentNear(const Vec2& p_W) const {
@@ -129,17 +160,28 @@ CircumventStrategy::Extent CircumventStrategy::MeasureCluster(const Cell& seed, 
 }
 
 bool CircumventStrategy::PlanDetour(const Extent& extent, std::vector<Vec2>* waypoints, double* shift_m) const {
-  // pass on the side that needs the smaller shift, half-width + margin clear of the extent
+  // pass half-width + margin clear of the extent: on the side chosen first
+  // (a detour that flips sides as more is seen would zigzag into the
+  // obstacle), else on the side that needs the smaller shift
   const double clear_m = half_width_m_ + config_.margin_m;
   const double left_m = extent.l_max + clear_m;
   const double right_m = extent.l_min - clear_m;
-  *shift_m = std::abs(left_m) <= std::abs(right_m) ? left_m : right_m;
-  if (std::abs(*shift_m) > config_.max_detour_m) return false;
+  const bool fits_left = left_m <= config_.max_detour_m;
+  const bool fits_right = -right_m <= config_.max_detour_m;
+  if (side_ > 0 && fits_left) {
+    *shift_m = left_m;
+  } else if (side_ < 0 && fits_right) {
+    *shift_m = right_m;
+  } else {
+    *shift_m = std::abs(left_m) <= std::abs(right_m) ? left_m : right_m;
+    if (!fits_left && !fits_right) return false;
+    *shift_m = !fits_right || (fits_left && std::abs(left_m) <= std::abs(right_m)) ? left_m : right_m;
+  }
 
   // beside the near end, beside the far end (the far side unseen: assumed_depth_m behind), back on the path
   const double s_far = std::max(extent.s_max, extent.s_min + config_.assumed_depth_m);
-  const double s_near = extent.s_min - clear_m - kRunUp_m;
-  const double s_after = s_far + clear_m + kRunUp_m;
+  const double s_near = extent.s_min - clear_m;
+  const double s_after = s_far + clear_m + kRunOut_m;
   double s_rejoin = s_after + config_.rejoin_m;
   waypoints->clear();
   waypoints->push_back(ToWorld(s_near, *shift_m));
@@ -153,7 +195,23 @@ bool CircumventStrategy::PlanDetour(const Extent& extent, std::vector<Vec2>* way
   }
   waypoints->push_back(ToWorld(s_rejoin, 0.0));
   waypoints->insert(waypoints->end(), rest.begin(), rest.end());
+  static_assert(kDetourWaypoints == 3, "beside the near end, beside the far end, back on the path");
   return true;
+}
+
+std::vector<Vec2> CircumventStrategy::Remaining() const {
+  return {detour_.begin() + static_cast<std::ptrdiff_t>(std::min(next_waypoint_, detour_.size())), detour_.end()};
+}
+
+std::string CircumventStrategy::DescribeDetour() const {
+  std::string text = std::string(shift_m_ > 0 ? "to the left" : "to the right") +
+                     Format(" of the path, %.2f m aside; obstacle s in [%.2f, %.2f] m,", std::abs(shift_m_),
+                            extent_->s_min, extent_->s_max) +
+                     Format(" l in [%.2f, %.2f] m; via", extent_->l_min, extent_->l_max);
+  for (std::size_t i = 0; i < detour_.size(); ++i) {
+    text += Format(i == 0 ? " (%.2f, %.2f)" : ", (%.2f, %.2f)", detour_[i].x(), detour_[i].y());
+  }
+  return text;
 }
 
 void CircumventStrategy::Decide(const Observation& observation, RobotCommands& robot, EventLog& events) {
@@ -182,7 +240,7 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
 
   const Vec2 p_WP = self.X_WP.translation().head<2>();
   if (mode_ == Mode::kFollowing) {
-    const auto p_W = PointInTheWay(observation, config_.detect_distance_m, half_width_m_ + config_.margin_m);
+    const auto p_W = PointOnThePath(observation);
     if (!p_W) return;
     seed_ = CellOf(*p_W);
     segment_ = SegmentNear(p_W->head<2>());
@@ -196,13 +254,13 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
                                          config_.max_detour_m));
       return;
     }
+    side_ = shift_m_ > 0 ? 1 : -1;
+    next_waypoint_ = 0;
+    detour_waypoints_ = kDetourWaypoints;
     robot.SetPath(detour_);
     mode_ = Mode::kDetouring;
     passed_ = false;
-    events.Log("detour_planned", std::string(shift_m_ > 0 ? "to the left" : "to the right") +
-                                     Format(" of the path, %.2f m aside; obstacle s in [%.2f, %.2f] m, l in [%.2f, %.2f] m",
-                                            std::abs(shift_m_), extent_->s_min, extent_->s_max, extent_->l_min) +
-                                     Format(" (l_max %.2f m)", extent_->l_max));
+    events.Log("detour_planned", DescribeDetour());
     return;
   }
 
@@ -223,19 +281,26 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
     if (moved) {
       detour_ = detour;
       shift_m_ = shift_m;
-      robot.SetPath(detour_);
-      events.Log("detour_replanned", Format("more of the obstacle seen: s in [%.2f, %.2f] m, l in [%.2f, %.2f] m",
-                                            extent.s_min, extent.s_max, extent.l_min, extent.l_max));
+      side_ = shift_m_ > 0 ? 1 : -1;
+      robot.SetPath(Remaining());
+      events.Log("detour_replanned", "more of the obstacle seen: " + DescribeDetour());
     }
   }
   const Vec2 d = p_WP - segment_.origin;
   const double s_WP = d.dot(segment_.u);
+  // the gait is given only the waypoints still ahead
+  const std::size_t before = next_waypoint_;
+  while (next_waypoint_ < detour_waypoints_ &&
+         (detour_[next_waypoint_] - segment_.origin).dot(segment_.u) - s_WP < kPassed_m) {
+    ++next_waypoint_;
+  }
+  if (next_waypoint_ != before) robot.SetPath(Remaining());
   const double s_far = std::max(extent_->s_max, extent_->s_min + config_.assumed_depth_m);
   if (!passed_ && s_WP > s_far + half_width_m_ + config_.margin_m) {
     passed_ = true;
     events.Log("obstacle_passed", Format("pelvis %.2f m past the obstacle's far end", s_WP - s_far));
   }
-  if (passed_ && std::abs(d.dot(Left(segment_.u))) < kRejoined_m) {
+  if (passed_ && next_waypoint_ >= detour_waypoints_ && std::abs(d.dot(Left(segment_.u))) < kRejoined_m) {
     mode_ = Mode::kFollowing;
     events.Log("rejoined", Format("back on the path at (%.2f, %.2f) m", p_WP.x(), p_WP.y()));
   }

@@ -7,16 +7,19 @@
 //     min_height_m above the ground the robot stands on, one per 2 cm cell of
 //     the floor plane (so memory grows with the area seen, not with time).
 //  2. Following the path: a point within detect_distance_m ahead of the leading
-//     toe and within the robot's half-width plus margin_m of its heading line
-//     is an obstacle. Its extent is the cluster of kept points connected to it
+//     toe and within the robot's half-width plus margin_m of the path is an
+//     obstacle (a wall beyond the goal is not). Its extent is the cluster of kept points connected to it
 //     (cells closer than kClusterLink_m), measured in the frame of the path
 //     segment it sits on (s along the path, l to its left).
-//  3. The detour passes on the side needing the smaller sideways shift,
+//  3. The detour passes on the side needing the smaller sideways shift (and
+//     stays on it as more is seen, unless that side no longer fits),
 //     keeping half-width + margin_m from the extent: waypoints beside the
 //     near and far ends (the far end at least assumed_depth_m behind the near
 //     one until more is seen), then back onto the path rejoin_m further on,
 //     then the rest of the path. As more of the obstacle is seen the extent
-//     grows and the detour is replanned.
+//     grows and the detour is replanned. The gait is given only the detour's
+//     waypoints still ahead (a waypoint counts as passed once the pelvis is
+//     kPassed_m from it along the path), so it never turns back to one.
 //  4. A shift beyond max_detour_m means no way around is seen (a wall): from
 //     then on it stops as `stop` would. Whatever the state, a point within
 //     stop_distance_m ahead of the toe inside the robot's own width stops it.
@@ -69,14 +72,21 @@ class CircumventStrategy : public Strategy {
   };
 
   void KeepPoints(const Observation& observation);
-  // the first fresh point in the robot's way within look_ahead_m, inside lateral_m of its heading line
+  // the first fresh point within look_ahead_m ahead of the leading toe, inside lateral_m of the pelvis's heading line
   std::optional<Vec3> PointInTheWay(const Observation& observation, double look_ahead_m, double lateral_m) const;
+  // the first fresh point ahead within detect_distance_m and within half-width + margin of the path
+  std::optional<Vec3> PointOnThePath(const Observation& observation) const;
+  double DistanceToPath_m(const Vec2& p_W) const;
   // the kept points connected to the seed cell, as an extent in the segment's frame
   Extent MeasureCluster(const Cell& seed, const Segment& segment) const;
   Segment SegmentNear(const Vec2& p_W) const;
   // the detour around `extent`; false (no waypoints) when the shift would exceed max_detour_m
   bool PlanDetour(const Extent& extent, std::vector<Vec2>* waypoints, double* shift_m) const;
   Cell CellOf(const Vec3& p_W) const;
+  // the detour's waypoints still ahead of the robot
+  std::vector<Vec2> Remaining() const;
+  // "to the left of the path, 0.46 m aside; obstacle s in [...]; via (x, y), ..."
+  std::string DescribeDetour() const;
   Vec2 ToWorld(double s, double l) const;
 
   CircumventConfig config_;
@@ -90,6 +100,10 @@ class CircumventStrategy : public Strategy {
   std::optional<Extent> extent_;
   double shift_m_ = 0;  // the detour's sideways shift, signed (> 0: to the left)
   std::vector<Vec2> detour_;
+  static constexpr std::size_t kDetourWaypoints = 3;  // detour_ starts with these, then the rest of the path
+  std::size_t next_waypoint_ = 0;    // detour_ before this one are behind the robot
+  std::size_t detour_waypoints_ = 0;  // of detour_, the ones the strategy steers through
+  int side_ = 0;                   // +1 left, -1 right, 0 not chosen yet
   bool passed_ = false;
 };
 

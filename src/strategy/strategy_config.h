@@ -18,12 +18,12 @@ struct StopConfig {
 /// `{name: circumvent}`: walk around an obstacle seen ahead, back to the path.
 struct CircumventConfig {
   double margin_m = 0.15;            ///< kept between the robot's half-width and the obstacle, >= 0
-  double detect_distance_m = 1.2;    ///< an obstacle this close ahead of the leading toe is avoided, > 0
+  double detect_distance_m = 1.5;    ///< an obstacle this close ahead of the leading toe is avoided, > 0
   double stop_distance_m = 0.3;      ///< safety: stop when a point is this close in the walking corridor, > 0
   double min_height_m = 0.03;        ///< a point this far above the stance ground is an obstacle, > 0
   double max_detour_m = 1.5;         ///< largest sideways shift of a detour; beyond it the way is blocked, > 0
   double assumed_depth_m = 0.3;      ///< depth given to an obstacle whose far side has not been seen, >= 0
-  double rejoin_m = 0.6;             ///< path length past the obstacle over which the detour rejoins, > 0
+  double rejoin_m = 1.0;             ///< path length past the obstacle over which the detour rejoins, > 0
 };
 
 using StrategyConfig = std::variant<StopConfig, CircumventConfig>;

@@ -112,6 +112,20 @@ try {
   }
   check(late.points >= early.points && late.points > 0, `the profile accumulates (${early.points} → ${late.points} points)`);
 
+  // the strategy's events: a marker and a list row each, shown once their time has come
+  const events = await page.evaluate(([a, b]) => {
+    const v = window.proxsimViewer;
+    const total = (window.PROXSIM_DATA.events || []).length;
+    v.setTime(a);
+    const atStart = v.eventsShown();
+    v.setTime(b);
+    return { total, atStart, atEnd: v.eventsShown(), rows: document.querySelectorAll('.proxsim-event').length,
+      past: document.querySelectorAll('.proxsim-event-past').length };
+  }, [tStart, tEnd]);
+  check(events.atEnd === events.total && events.rows === events.total && events.past === events.total,
+    `every strategy event is marked and listed by the end (${events.atEnd}/${events.rows}/${events.total})`);
+  check(events.total === 0 || events.atStart < events.total, `events appear with time (${events.atStart} at the start)`);
+
   // a sensor toggle hides that sensor's ray (its segment collapses to its origin);
   // clicked from the page: playwright's own click waits for steady frames, slow
   // under software rendering

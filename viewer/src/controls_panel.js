@@ -48,6 +48,18 @@ export class ControlsPanel {
         el('span', { class: 'proxsim-swatch proxsim-ray', style: `background:${data.statusColors[k]}` }),
         document.createTextNode(` ${data.statusLabels[k]}`)]));
     });
+    // the strategy's events: click one to go to its time
+    this.events = [];
+    if ((data.events || []).length) {
+      side.appendChild(el('h3', { text: 'Strategy events' }));
+      for (const e of data.events) {
+        const row = el('div', { class: 'proxsim-row proxsim-event', title: e.detail,
+          text: `${e.t.toFixed(2)} s  ${e.event.replace(/_/g, ' ')}` });
+        row.addEventListener('click', () => handlers.onSeek(e.t));
+        side.appendChild(row);
+        this.events.push([e.t, row]);
+      }
+    }
     side.appendChild(el('p', { class: 'proxsim-hint',
       text: 'Dots: profile points, coloured by object. Drag to orbit, wheel to zoom, right-drag to pan.' }));
   }
@@ -57,5 +69,6 @@ export class ControlsPanel {
     this.slider.value = String(t);
     this.readout.textContent = `t = ${t.toFixed(2)} s / ${this.span[1].toFixed(2)} s`;
     this.playButton.textContent = playing ? '❚❚ Pause' : '▶ Play';
+    for (const [te, row] of this.events) row.classList.toggle('proxsim-event-past', te <= t);
   }
 }

@@ -12,6 +12,7 @@ import { RaysView } from './rays_view.js';
 import { RobotView } from './robot_view.js';
 import { SceneView } from './scene_view.js';
 import { timeSpan, timeStep } from './timeline.js';
+import { WalkView } from './walk_view.js';
 
 function injectCss(text) {
   const style = document.createElement('style');
@@ -69,6 +70,8 @@ function start() {
   const robot = new RobotView(stage.scene, data.scene.robot, data.poses);
   const rays = new RaysView(stage.scene, data.sensors, data.statusColors);
   const profile = new ProfileView(stage.scene, data.profile, data.sensors, data.objectColors);
+  const rootLink = robot.rootLink();
+  const walk = new WalkView(stage.scene, data.poses, rootLink ? rootLink.name : null, data.events);
   rays.resize(stage.size);
 
   const state = { t: span[0], playing: false, speed: 1, follow: Boolean(data.poses),
@@ -83,6 +86,7 @@ function start() {
     if (followed && state.follow) stage.translate(followed.position.clone().sub(lastRoot));
     rays.update(state.t, state.visible);
     profile.update(state.t, state.visible);
+    walk.update(state.t);
     curves.update(state.t);
     panel.show(state.t, state.playing);
     state.dirty = false;
@@ -140,6 +144,7 @@ function start() {
     get frameCount() { return frameCount; },
     rayEndpoints: () => rays.endpoints(),
     profilePointsShown: () => profile.shownCount(),
+    eventsShown: () => walk.eventsShown(),
     play: () => setPlaying(true),
     pause: () => setPlaying(false),
     isPlaying: () => state.playing,

@@ -1,0 +1,50 @@
+# The Python package (included by CMakeLists.txt): `proxsim` in
+# ${CMAKE_BINARY_DIR}/python/proxsim, importable with
+# PYTHONPATH=build/<preset>/python by Debian's /usr/bin/python3 (pybind11-dev,
+# python3-dev, python3-numpy; scripts/install-deps.sh installs them). The
+# package's .py files are copied next to the compiled core at every build.
+# Tests: tests/python through pytest (python3-pytest), as one CTest test.
+
+set(Python_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "Debian's Python, for which pybind11-dev and python3-numpy are installed")
+set(PYBIND11_FINDPYTHON ON)
+find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)
+find_package(pybind11 CONFIG REQUIRED)
+
+set(python_package_dir ${CMAKE_BINARY_DIR}/python/proxsim)
+pybind11_add_module(proxsim_python MODULE python/bindings/module.cc)
+set_target_properties(proxsim_python PROPERTIES OUTPUT_NAME _core LIBRARY_OUTPUT_DIRECTORY ${python_package_dir})
+target_link_libraries(proxsim_python PRIVATE proxsim_lib)
+target_compile_options(proxsim_python PRIVATE -Wall -Wextra)
+
+file(GLOB python_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/python/proxsim/*.py)
+set(python_copies "")
+foreach(source ${python_sources})
+  get_filename_component(name ${source} NAME)
+  add_custom_command(OUTPUT ${python_package_dir}/${name}
+                     COMMAND ${CMAKE_COMMAND} -E copy_if_different ${source} ${python_package_dir}/${name}
+                     DEPENDS ${source} VERBATIM)
+  list(APPEND python_copies ${python_package_dir}/${name})
+endforeach()
+add_custom_target(proxsim_python_package ALL DEPENDS ${python_copies})
+add_dependencies(proxsim_python proxsim_python_package)
+# `proxsim bench` drives the paper run from Python too (bench/python_loop.py)
+target_compile_definitions(proxsim_bench PRIVATE PROXSIM_PYTHON_DIR="${CMAKE_BINARY_DIR}/python")
+add_dependencies(proxsim proxsim_python)
+
+if(PROXSIM_BUILD_TESTS)
+  set(python_test_environment
+      "PYTHONPATH=${CMAKE_BINARY_DIR}/python"
+      "PROXSIM_BINARY=$<TARGET_FILE:proxsim>"
+      "PROXSIM_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
+  # Under the sanitizers the interpreter must load ASan's runtime first; its
+  # own allocations are not ours to judge, so leak checking is off there.
+  if(CMAKE_CXX_FLAGS MATCHES "sanitize=address")
+    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libasan.so
+                    OUTPUT_VARIABLE asan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
+    list(APPEND python_test_environment "LD_PRELOAD=${asan_runtime}"
+         "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
+  endif()
+  add_test(NAME python_package
+           COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_SOURCE_DIR}/tests/python)
+  set_tests_properties(python_package PROPERTIES ENVIRONMENT "${python_test_environment}" TIMEOUT 600)
+endif()

@@ -1,0 +1,330 @@
+// The Python package's core, `proxsim._core` (pybind11): the same Simulation
+// as `proxsim run`, stepped from a script. A step returns what the robot
+// knows (the devices' outputs and its own kinematics) as NumPy arrays; the
+// truth is apart, in truth(); commands go through sim.robot. With out=DIR
+// the run's files are written exactly as `proxsim run` writes them.
+//
+// Errors: a bad scenario raises proxsim.InputError (a ValueError) whose
+// `problems` lists the CLI's messages; a wrong value (threads < 1, a stride
+// <= 0, a malformed path) raises ValueError; a step after the last sample or
+// after close() raises RuntimeError. Nothing here aborts the interpreter.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/input_error.h"
+#include "io/scenario.h"
+#include "sim/run.h"
+#include "sim/run_recorder.h"
+#include "sim/simulation.h"
+
+namespace py = pybind11;
+
+namespace proxsim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// proxsim.InputError, created at import and raised for every InputError
+PyObject* g_input_error = nullptr;
+
+py::array_t<double> Vector(const Vec3& v) {
+  py::array_t<double> a(3);
+  auto out = a.mutable_unchecked<1>();
+  for (int k = 0; k < 3; ++k) out(k) = v[k];
+  return a;
+}
+
+py::object JsonToPython(const nlohmann::json& json) {
+  return py::module_::import("json").attr("loads")(json.dump());
+}
+
+// Commands for scripts: the simulation's own RobotCommands
+class PyRobot {
+ public:
+  explicit PyRobot(RobotCommands* commands) : commands_(commands) {}
+  void Stop() { commands_->Stop(); }
+  void Resume() { commands_->Resume(); }
+  void SetStride(double stride_m) { commands_->SetStride(stride_m); }
+  void SetPath(const py::object& waypoints) {
+    // any sequence of [x, y] pairs, or an (n, 2) array
+    const py::array_t<double, py::array::c_style | py::array::forcecast> array(waypoints);
+    if (array.ndim() != 2 || array.shape(1) != 2) {
+      throw std::invalid_argument("set_path: expected a list of [x, y] waypoints in metres (shape (n, 2))");
+    }
+    std::vector<Vec2> path;
+    const auto a = array.unchecked<2>();
+    for (py::ssize_t i = 0; i < a.shape(0); ++i) path.emplace_back(a(i, 0), a(i, 1));
+    commands_->SetPath(std::move(path));
+  }
+
+ private:
+  RobotCommands* commands_;
+};
+
+class PySimulation {
+ public:
+  PySimulation(Scenario scenario, std::optional<std::uint64_t> seed, int threads, std::optional<std::string> out,
+               bool scenario_strategy)
+      : out_dir_(out.value_or("")), threads_(threads) {
+    if (threads < 1) throw std::invalid_argument("threads must be >= 1, got " + std::to_string(threads));
+    if (seed) scenario.seed = *seed;
+    // a script that drives the robot itself drops the scenario's strategy
+    if (!scenario_strategy && scenario.robot) scenario.robot->strategy.reset();
+    initial_seed_ = scenario.seed;
+    sim_ = std::make_unique<Simulation>(std::move(scenario), threads);
+    if (sim_->commands() != nullptr) robot_ = std::make_unique<PyRobot>(sim_->commands());
+    StartRecording();
+  }
+
+  static std::unique_ptr<PySimulation> FromFile(const std::string& path, std::optional<std::uint64_t> seed,
+                                                int threads, std::optional<std::string> out, bool scenario_strategy) {
+    return std::make_unique<PySimulation>(LoadScenarioFile(path), seed, threads, std::move(out), scenario_strategy);
+  }
+
+  static std::unique_ptr<PySimulation> Builtin(const std::string& name, std::optional<std::uint64_t> seed,
+                                               int threads, std::optional<std::string> out, bool scenario_strategy) {
+    return std::make_unique<PySimulation>(LoadBuiltinScenario(name), seed, threads, std::move(out),
+                                          scenario_strategy);
+  }
+
+  py::dict Step() {
+    if (closed_) throw std::runtime_error("step: the simulation is closed");
+    if (sim_->done()) {
+      throw std::runtime_error("step: every sample of the episode has been taken (sim.done); call reset() for another");
+    }
+    if (samples_ == 0) loop_start_ = Clock::now();
+    {
+      py::gil_scoped_release release;
+      recorder_->Add(sim_->Step());
+    }
+    ++samples_;
+    return ObservationDict();
+  }
+
+  py::dict Truth() const {
+    const SampleFrame& frame = sim_->frame();
+    const std::size_t n = frame.sensors.size();
+    py::list status, object;
+    py::array_t<double> d_true(n), incidence(n), hit({static_cast<py::ssize_t>(n), py::ssize_t{3}});
+    auto d = d_true.mutable_unchecked<1>();
+    auto a = incidence.mutable_unchecked<1>();
+    auto h = hit.mutable_unchecked<2>();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t i = 0; i < n; ++i) {
+      const SensorSample& s = frame.sensors[i];
+      const bool hit_something = s.object_id >= 0;
+      status.append(ReadingStatusName(s.reading.status));
+      object.append(hit_something ? py::object(py::str(sim_->object_name(s.object_id))) : py::object(py::none()));
+      d(i) = hit_something ? s.echo.distance_m : nan;
+      a(i) = hit_something ? s.echo.incidence_deg : nan;
+      for (int k = 0; k < 3; ++k) h(i, k) = s.p_WH[k];
+    }
+    py::dict truth;
+    truth["t_s"] = frame.t_s;
+    truth["status"] = status;
+    truth["d_true_m"] = d_true;
+    truth["incidence_deg"] = incidence;
+    truth["hit_W"] = hit;
+    truth["object"] = object;
+    if (sim_->robot() != nullptr) {
+      const auto& outcome = sim_->robot_outcome();
+      truth["min_clearance_m"] = outcome.min_clearance_m;
+      truth["reached_goal"] = outcome.reached_goal;
+    }
+    return truth;
+  }
+
+  void Reset(std::optional<std::uint64_t> seed) {
+    if (closed_) throw std::runtime_error("reset: the simulation is closed");
+    recorder_.reset();  // an unfinished episode's files are dropped (their temporary names removed)
+    sim_->Reset(seed.value_or(initial_seed_));
+    StartRecording();
+  }
+
+  py::object Summary() const { return JsonToPython(recorder_->Summary(!sim_->done())); }
+
+  void Close() {
+    if (closed_) return;
+    closed_ = true;
+    if (out_dir_.empty()) return;
+    const double loop_wall_s = samples_ > 0 ? std::chrono::duration<double>(Clock::now() - loop_start_).count() : 0.0;
+    recorder_->Finish(!sim_->done());
+    WriteTimings(out_dir_, std::chrono::duration<double>(Clock::now() - start_).count(), loop_wall_s, threads_,
+                 recorder_->samples(), sim_->scenario().rate_hz);
+  }
+
+  bool done() const { return sim_->done(); }
+  double t_s() const { return sim_->frame().t_s; }
+  std::int64_t sample_count() const { return sim_->sample_count(); }
+  std::uint64_t seed() const { return sim_->scenario().seed; }
+  py::object robot(py::object self) const {
+    // the commands object lives as long as the simulation that owns it
+    return robot_ ? py::cast(robot_.get(), py::return_value_policy::reference_internal, self) : py::none();
+  }
+  std::vector<std::string> sensor_names() const {
+    std::vector<std::string> names;
+    for (const SensorConfig& sensor : sim_->scenario().sensors) names.push_back(sensor.name);
+    return names;
+  }
+
+ private:
+  void StartRecording() {
+    recorder_ = std::make_unique<RunRecorder>(*sim_, out_dir_, ReadingsFormat::kCsv);
+    samples_ = 0;
+    start_ = Clock::now();
+  }
+
+  py::dict ObservationDict() const {
+    const Observation& obs = sim_->observation();
+    const std::size_t n = obs.sensors.size();
+    py::array_t<double> d_m(n), signal(n), output(n), t_reported(n);
+    py::array_t<bool> detected(n), fresh(n);
+    py::array_t<double> origin({static_cast<py::ssize_t>(n), py::ssize_t{3}}),
+        dir({static_cast<py::ssize_t>(n), py::ssize_t{3}});
+    auto d = d_m.mutable_unchecked<1>();
+    auto sg = signal.mutable_unchecked<1>();
+    auto op = output.mutable_unchecked<1>();
+    auto tr = t_reported.mutable_unchecked<1>();
+    auto de = detected.mutable_unchecked<1>();
+    auto fr = fresh.mutable_unchecked<1>();
+    auto o = origin.mutable_unchecked<2>();
+    auto u = dir.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < n; ++i) {
+      const SensorOutput& s = obs.sensors[i];
+      d(i) = s.d_m;
+      sg(i) = s.signal;
+      op(i) = s.output;
+      tr(i) = s.t_reported_s;
+      de(i) = s.detected;
+      fr(i) = s.fresh;
+      for (int k = 0; k < 3; ++k) {
+        o(i, k) = s.p_WS[k];
+        u(i, k) = s.dir_W[k];
+      }
+    }
+    py::dict readings;
+    readings["d_m"] = d_m;
+    readings["detected"] = detected;
+    readings["fresh"] = fresh;
+    readings["signal"] = signal;
+    readings["output"] = output;
+    readings["t_reported_s"] = t_reported;
+    readings["origin_W"] = origin;
+    readings["dir_W"] = dir;
+
+    py::dict result;
+    result["t_s"] = obs.t_s;
+    result["readings"] = readings;
+    result["robot"] = obs.robot != nullptr ? py::object(RobotDict(*obs.robot)) : py::object(py::none());
+    return result;
+  }
+
+  py::dict RobotDict(const RobotKnowledge& self) const {
+    const RobotModel& model = sim_->robot()->model();
+    py::dict joints;
+    for (int j = 0; j < model.joint_count(); ++j) {
+      if (model.joint(j).type != JointType::kFixed) joints[py::str(model.joint_name(j))] = self.q[j];
+    }
+    py::dict soles, toes;
+    soles["left"] = Vector(self.feet[0].p_W_sole);
+    soles["right"] = Vector(self.feet[1].p_W_sole);
+    toes["left"] = Vector(self.feet[0].p_W_toe);
+    toes["right"] = Vector(self.feet[1].p_W_toe);
+    py::dict robot;
+    robot["pelvis_W"] = Vector(self.X_WP.translation());
+    robot["yaw_deg"] = RadToDeg(self.yaw_rad);
+    robot["joints_rad"] = joints;
+    robot["gait_phase"] = self.gait_phase;
+    robot["support_leg"] = SupportLegName(self.support);
+    robot["has_feet"] = self.has_feet;
+    robot["soles_W"] = soles;
+    robot["toes_W"] = toes;
+    robot["heading_W"] = Vector(self.heading_W);
+    robot["stopped"] = self.stopped;
+    robot["distance_walked_m"] = self.distance_walked_m;
+    robot["half_width_m"] = self.half_width_m;
+    return robot;
+  }
+
+  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<PyRobot> robot_;
+  std::unique_ptr<RunRecorder> recorder_;
+  std::string out_dir_;
+  int threads_ = 1;
+  std::uint64_t initial_seed_ = 0;
+  std::int64_t samples_ = 0;
+  bool closed_ = false;
+  Clock::time_point start_{}, loop_start_{};
+};
+
+}  // namespace
+}  // namespace proxsim
+
+PYBIND11_MODULE(_core, m) {
+  using proxsim::PyRobot;
+  using proxsim::PySimulation;
+  m.doc() = "proxsim's simulation core; import the package `proxsim`, not this module";
+
+  // proxsim.InputError(ValueError): str() gives every problem, .problems lists them
+  proxsim::g_input_error = PyErr_NewExceptionWithDoc(
+      "proxsim.InputError", "A bad scenario, robot or argument: .problems lists every problem, as the CLI prints them.",
+      PyExc_ValueError, nullptr);
+  m.attr("InputError") = py::handle(proxsim::g_input_error);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const proxsim::InputError& error) {
+      std::string message;
+      py::list problems;
+      for (const std::string& problem : error.problems()) {
+        message += (message.empty() ? "" : "\n") + problem;
+        problems.append(problem);
+      }
+      py::object exception = py::reinterpret_steal<py::object>(
+          PyObject_CallFunction(proxsim::g_input_error, "s", message.c_str()));
+      exception.attr("problems") = problems;
+      PyErr_SetObject(proxsim::g_input_error, exception.ptr());
+    }
+  });
+
+  py::class_<PyRobot>(m, "Robot", "Commands to the simulated robot; they take effect from the next step on.")
+      .def("stop", &PyRobot::Stop, "Stop at the next double support and stand there.")
+      .def("resume", &PyRobot::Resume, "Walk again after a stop.")
+      .def("set_stride", &PyRobot::SetStride, py::arg("stride_m"), "Stride in metres (> 0) from the next step on.")
+      .def("set_path", &PyRobot::SetPath, py::arg("waypoints"),
+           "Replace the rest of the path with [[x, y], ...] in metres (world frame).");
+
+  py::class_<PySimulation>(m, "Simulation",
+                           "A scenario's simulation, stepped sample by sample (see the package documentation).")
+      .def(py::init(&PySimulation::FromFile), py::arg("scenario"), py::arg("seed") = py::none(),
+           py::arg("threads") = 1, py::arg("out") = py::none(), py::kw_only(), py::arg("scenario_strategy") = true,
+           "scenario: a YAML file; seed: the noise's (default: the scenario's); out: a folder for the run's files; "
+           "scenario_strategy=False: drop the scenario's built-in strategy (the script drives the robot).")
+      .def_static("builtin", &PySimulation::Builtin, py::arg("name") = "paper", py::arg("seed") = py::none(),
+                  py::arg("threads") = 1, py::arg("out") = py::none(), py::kw_only(),
+                  py::arg("scenario_strategy") = true,
+                  "A built-in scenario: 'paper' (the default `proxsim run`) or 'world_demo'.")
+      .def("step", &PySimulation::Step, "Take the next sample; returns what the robot knows (obs).")
+      .def("truth", &PySimulation::Truth, "The last sample's truth, for analysis and scoring only.")
+      .def("reset", &PySimulation::Reset, py::arg("seed") = py::none(),
+           "Start a new episode on the same world (seed: the noise's; default the first one).")
+      .def("summary", &PySimulation::Summary, "summary.json's content for the episode so far, as a dict.")
+      .def("close", &PySimulation::Close, "With out=DIR: write the run's files. Further steps raise.")
+      .def("__enter__", [](py::object self) { return self; })
+      .def("__exit__", [](PySimulation& self, py::object, py::object, py::object) { self.Close(); })
+      .def_property_readonly("done", &PySimulation::done)
+      .def_property_readonly("t_s", &PySimulation::t_s)
+      .def_property_readonly("sample_count", &PySimulation::sample_count)
+      .def_property_readonly("seed", &PySimulation::seed)
+      .def_property_readonly("sensor_names", &PySimulation::sensor_names)
+      .def_property_readonly("robot", [](py::object self) { return self.cast<const PySimulation&>().robot(self); },
+                             "The robot's commands (None without a robot).");
+}

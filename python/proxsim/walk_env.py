@@ -1,0 +1,112 @@
+"""A Gymnasium-style environment around proxsim.Simulation: a biped walks a
+scenario's path while an agent decides, at every sample, whether it walks and
+with what stride, from what its sensors and its own kinematics tell it.
+
+    env = proxsim.WalkEnv("data/scenarios/paper_dining_room.yaml")
+    obs, info = env.reset(seed=3)
+    obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+
+Observation (float32, shape (3·n_sensors + 6,)): for each sensor, in scenario
+order, [d_m, detected, fresh]; then [pelvis x_m, pelvis y_m, yaw_rad,
+gait_phase, stopped, distance_walked_m]. Sensors only, never the truth.
+
+The agent drives the robot: the scenario's own strategy is dropped.
+
+Action (float32, shape (2,)): [walk, stride_m]: walk >= 0.5 walks (a robot
+that stood resumes), < 0.5 stops at the next double support; stride_m, clipped
+to [min_stride_m, max_stride_m], is the stride from the next step on.
+
+Reward: the metres gained toward the path's last waypoint since the last step,
+minus collision_penalty when the robot touches an obstacle (the truth's
+clearance at or below 0), which also terminates the episode; reaching the goal
+terminates it too. An episode is truncated at the scenario's duration_s.
+The reward and termination use the truth; the agent's observation never does.
+"""
+import numpy as np
+
+from ._core import Simulation
+from .spaces import Box
+
+
+class WalkEnv:
+    metadata = {"render_modes": []}
+    render_mode = None
+
+    def __init__(self, scenario, *, threads=1, min_stride_m=0.3, max_stride_m=1.0, collision_penalty=10.0):
+        if isinstance(scenario, str) and scenario.startswith("builtin:"):
+            self._sim = Simulation.builtin(scenario[len("builtin:"):], threads=threads, scenario_strategy=False)
+        else:
+            self._sim = Simulation(scenario, threads=threads, scenario_strategy=False)
+        if self._sim.robot is None:
+            raise ValueError("WalkEnv needs a scenario with a robot section (its sensors ride the robot)")
+        if not 0 < min_stride_m <= max_stride_m:
+            raise ValueError(f"expected 0 < min_stride_m <= max_stride_m, got {min_stride_m}, {max_stride_m}")
+        self._min_stride_m = float(min_stride_m)
+        self._max_stride_m = float(max_stride_m)
+        self._collision_penalty = float(collision_penalty)
+        n = len(self._sim.sensor_names)
+        inf = np.inf
+        low = np.array([0.0, 0.0, 0.0] * n + [-inf, -inf, -np.pi, 0.0, 0.0, 0.0], dtype=np.float32)
+        high = np.array([inf, 1.0, 1.0] * n + [inf, inf, np.pi, 1.0, 1.0, inf], dtype=np.float32)
+        self.observation_space = Box(low, high, dtype=np.float32)
+        self.action_space = Box(np.array([0.0, min_stride_m], dtype=np.float32),
+                                np.array([1.0, max_stride_m], dtype=np.float32), dtype=np.float32)
+        self._goal = None
+        self._last_distance = None
+        self._walking = True
+
+    @property
+    def simulation(self):
+        """The proxsim.Simulation underneath (for its truth(), summary() and sensor_names)."""
+        return self._sim
+
+    def _vector(self, obs):
+        r = obs["readings"]
+        robot = obs["robot"]
+        per_sensor = np.stack([r["d_m"], r["detected"], r["fresh"]], axis=1).ravel()
+        own = [robot["pelvis_W"][0], robot["pelvis_W"][1], np.radians(robot["yaw_deg"]), robot["gait_phase"],
+               float(robot["stopped"]), robot["distance_walked_m"]]
+        return np.concatenate([per_sensor, own]).astype(np.float32)
+
+    def _distance_to_goal(self, obs):
+        if self._goal is None:
+            return 0.0
+        return float(np.hypot(*(obs["robot"]["pelvis_W"][:2] - self._goal)))
+
+    def reset(self, *, seed=None, options=None):
+        self._sim.reset(seed=seed)
+        if seed is not None:
+            self.action_space.seed(seed)
+        summary = self._sim.summary()
+        waypoints = summary["inputs"]["robot"]["path"]["waypoints_m"]
+        self._goal = np.array(waypoints[-1], dtype=float) if waypoints else None
+        self._walking = True
+        obs = self._sim.step()
+        self._last_distance = self._distance_to_goal(obs)
+        return self._vector(obs), {"t_s": obs["t_s"], "raw": obs}
+
+    def step(self, action):
+        action = np.asarray(action, dtype=float)
+        if action.shape != (2,) or not np.all(np.isfinite(action)):
+            raise ValueError(f"expected an action [walk, stride_m] of shape (2,), got {action!r}")
+        walk = action[0] >= 0.5
+        robot = self._sim.robot
+        if walk != self._walking:
+            robot.resume() if walk else robot.stop()
+            self._walking = walk
+        robot.set_stride(float(np.clip(action[1], self._min_stride_m, self._max_stride_m)))
+        obs = self._sim.step()
+        truth = self._sim.truth()
+        distance = self._distance_to_goal(obs)
+        reward = self._last_distance - distance
+        self._last_distance = distance
+        collided = truth["min_clearance_m"] <= 0.0
+        if collided:
+            reward -= self._collision_penalty
+        terminated = bool(collided or truth["reached_goal"])
+        truncated = bool(self._sim.done and not terminated)
+        info = {"t_s": obs["t_s"], "raw": obs, "collided": collided, "reached_goal": truth["reached_goal"]}
+        return self._vector(obs), float(reward), terminated, truncated, info
+
+    def close(self):
+        self._sim.close()

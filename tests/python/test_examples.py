@@ -1,0 +1,36 @@
+"""The shipped examples run, and the Python stop rule equals the built-in one."""
+import os
+import subprocess
+import sys
+
+import pytest
+
+import proxsim
+from conftest import SOURCE_DIR, scenario
+
+EXAMPLES = os.path.join(SOURCE_DIR, "examples", "python")
+sys.path.insert(0, EXAMPLES)
+
+import stop_rule  # noqa: E402
+
+
+def test_python_stop_rule_stops_when_the_builtin_rule_does():
+    with proxsim.Simulation.builtin("paper") as sim:
+        while not sim.done:
+            sim.step()
+        builtin = sim.summary()["robot"]
+    python = stop_rule.run()["robot"]
+    assert python["strategy"] is None
+    assert python["stop_requested_t_s"] == builtin["stop_requested_t_s"] == pytest.approx(3.54)
+    assert python["stop_t_s"] == builtin["stop_t_s"]
+    assert python["distance_walked_m"] == builtin["distance_walked_m"]
+
+
+@pytest.mark.parametrize("script", ["stop_rule.py", "circumvent.py"])
+def test_example_scripts_run(script, tmp_path):
+    done = subprocess.run([sys.executable, os.path.join(EXAMPLES, script), "--out", str(tmp_path / "out")],
+                          capture_output=True, text=True, timeout=300, env=os.environ.copy())
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "out" / "summary.json").exists()
+    if script == "circumvent.py":
+        assert "reached the goal: True" in done.stdout

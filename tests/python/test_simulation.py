@@ -1,0 +1,186 @@
+"""The Python contract of proxsim.Simulation, against the real package and CLI."""
+import math
+import os
+
+import numpy as np
+import pytest
+
+import proxsim
+from conftest import SCENARIOS, read_tree, run_cli, scenario
+
+READING_KEYS = {"d_m", "detected", "fresh", "signal", "output", "t_reported_s", "origin_W", "dir_W"}
+ROBOT_KEYS = {"pelvis_W", "yaw_deg", "joints_rad", "gait_phase", "support_leg", "soles_W", "toes_W", "heading_W",
+              "stopped", "distance_walked_m"}
+
+
+def test_step_returns_what_the_robot_knows(paper_sim):
+    obs = paper_sim.step()
+    assert obs["t_s"] == 0.0
+    readings = obs["readings"]
+    assert READING_KEYS <= set(readings)
+    n = len(paper_sim.sensor_names)
+    assert paper_sim.sensor_names == ["ideal", "laser", "ultrasonic", "reflectance"]
+    for key in ("d_m", "detected", "signal", "output", "t_reported_s"):
+        assert readings[key].shape == (n,), key
+    assert readings["origin_W"].shape == (n, 3) and readings["dir_W"].shape == (n, 3)
+    assert readings["detected"].dtype == bool
+    # the axis is a unit vector; a time-of-flight sensor has no signal, the reflectance one has
+    np.testing.assert_allclose(np.linalg.norm(readings["dir_W"], axis=1), 1.0, rtol=1e-12)
+    assert math.isnan(readings["signal"][1]) and not math.isnan(readings["signal"][3])
+    robot = obs["robot"]
+    assert ROBOT_KEYS <= set(robot)
+    assert robot["pelvis_W"].shape == (3,) and robot["heading_W"].shape == (3,)
+    assert set(robot["soles_W"]) == {"left", "right"} and robot["toes_W"]["left"].shape == (3,)
+    assert robot["support_leg"] in ("left", "right", "double")
+    assert "left_knee_pitch" in robot["joints_rad"]
+    # no truth in what the robot knows
+    for forbidden in ("status", "d_true_m", "hit_W", "object", "incidence_deg"):
+        assert forbidden not in readings and forbidden not in robot
+
+
+def test_truth_is_apart_and_agrees_with_the_readings(paper_sim):
+    obs = paper_sim.step()
+    truth = paper_sim.truth()
+    assert truth["status"][0] == "ok" and truth["object"][0] == "floor"
+    # the ideal sensor reports the true distance
+    assert obs["readings"]["d_m"][0] == pytest.approx(truth["d_true_m"][0], abs=1e-12)
+    # its hit point lies at that distance along its axis
+    r = obs["readings"]
+    np.testing.assert_allclose(truth["hit_W"][0], r["origin_W"][0] + truth["d_true_m"][0] * r["dir_W"][0], atol=1e-9)
+
+
+def test_steps_to_the_end_then_raises(paper_sim):
+    count = 0
+    while not paper_sim.done:
+        paper_sim.step()
+        count += 1
+    assert count == paper_sim.sample_count == 500
+    assert paper_sim.t_s == pytest.approx(4.99)
+    with pytest.raises(RuntimeError, match="every sample"):
+        paper_sim.step()
+
+
+def test_out_writes_the_same_files_as_the_cli(tmp_path):
+    cli_out, py_out = tmp_path / "cli", tmp_path / "py"
+    done = run_cli("run", scenario("circumvent_obstacle.yaml"), "--seed", "5", "--out", str(cli_out), "--no-report")
+    assert done.returncode == 0, done.stderr
+    with proxsim.Simulation(scenario("circumvent_obstacle.yaml"), seed=5, out=str(py_out)) as sim:
+        while not sim.done:
+            sim.step()
+    cli_files, py_files = read_tree(cli_out), read_tree(py_out)
+    assert sorted(cli_files) == sorted(py_files)
+    for name in cli_files:
+        assert cli_files[name] == py_files[name], name
+    assert os.path.exists(py_out / "timings.json")
+
+
+def test_reset_gives_the_files_of_a_fresh_simulation(tmp_path):
+    fresh, reused = tmp_path / "fresh", tmp_path / "reused"
+    with proxsim.Simulation.builtin("paper", seed=9, out=str(fresh)) as sim:
+        while not sim.done:
+            sim.step()
+    with proxsim.Simulation.builtin("paper", seed=3, out=str(reused)) as sim:
+        for _ in range(321):  # part of another episode, with commands
+            sim.step()
+        sim.robot.set_stride(0.4)
+        sim.reset(seed=9)
+        assert sim.seed == 9 and not sim.done
+        while not sim.done:
+            sim.step()
+    a, b = read_tree(fresh), read_tree(reused)
+    assert sorted(a) == sorted(b)
+    for name in a:
+        assert a[name] == b[name], name
+
+
+def test_summary_has_the_robot_outcome_and_events(paper_sim):
+    while not paper_sim.done:
+        paper_sim.step()
+    robot = paper_sim.summary()["robot"]
+    assert robot["strategy"] == "stop"
+    assert robot["stopped"] and robot["stop_t_s"] == pytest.approx(3.6)
+    assert [e["event"] for e in robot["events"]] == ["obstacle_ahead", "stopped"]
+    assert robot["reached_goal"] is False
+
+
+def test_commands_change_the_walk():
+    with proxsim.Simulation.builtin("paper", scenario_strategy=False) as sim:
+        assert sim.summary()["robot"]["strategy"] is None
+        for _ in range(100):
+            obs = sim.step()
+        sim.robot.stop()
+        for _ in range(150):
+            obs = sim.step()
+        assert obs["robot"]["stopped"]
+        x_stopped = obs["robot"]["pelvis_W"][0]
+        sim.robot.resume()
+        sim.robot.set_path([[x_stopped + 0.5, 1.0], [x_stopped + 1.0, 1.5]])
+        for _ in range(200):
+            obs = sim.step()
+        assert not obs["robot"]["stopped"] or obs["robot"]["pelvis_W"][1] > 0.5
+        assert obs["robot"]["pelvis_W"][1] > 0.3  # it turned toward the new path (y > 0)
+
+
+def test_world_sensors_have_no_robot():
+    with proxsim.Simulation(scenario("world_sensors_demo.yaml")) as sim:
+        obs = sim.step()
+        assert obs["robot"] is None and sim.robot is None
+        assert obs["readings"]["d_m"].shape == (len(sim.sensor_names),)
+
+
+def test_bad_scenario_raises_input_error_with_the_cli_messages(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("proxsim: 1\nduration_s: -1\nsensors:\n  - {name: a, type: lazer, link: world}\n")
+    with pytest.raises(proxsim.InputError) as error:
+        proxsim.Simulation(str(bad))
+    cli = run_cli("validate", str(bad))
+    assert cli.returncode == 2
+    assert len(error.value.problems) >= 2
+    for problem in error.value.problems:
+        assert problem in cli.stderr
+    assert isinstance(error.value, ValueError)
+    with pytest.raises(proxsim.InputError, match="no such file"):
+        proxsim.Simulation(str(tmp_path / "missing.yaml"))
+    with pytest.raises(proxsim.InputError):
+        proxsim.Simulation.builtin("no_such_builtin")
+
+
+def test_wrong_arguments_raise_type_and_value_errors(paper_sim):
+    with pytest.raises(TypeError):
+        proxsim.Simulation(42)
+    with pytest.raises(TypeError):
+        proxsim.Simulation.builtin("paper", seed="seven")
+    with pytest.raises(ValueError):
+        proxsim.Simulation.builtin("paper", threads=0)
+    with pytest.raises(ValueError):
+        paper_sim.robot.set_stride(-0.5)
+    with pytest.raises(ValueError):
+        paper_sim.robot.set_stride(float("nan"))
+    with pytest.raises(ValueError):
+        paper_sim.robot.set_path([[1.0, 2.0, 3.0]])
+    with pytest.raises(ValueError):
+        paper_sim.robot.set_path([[1.0, float("inf")]])
+    with pytest.raises(TypeError):
+        paper_sim.robot.set_stride("long")
+
+
+def test_closed_simulation_refuses_to_step(tmp_path):
+    sim = proxsim.Simulation.builtin("paper", out=str(tmp_path / "o"))
+    sim.step()
+    sim.close()
+    sim.close()  # twice is harmless
+    with pytest.raises(RuntimeError, match="closed"):
+        sim.step()
+    # closed before the end: the files say so
+    import json
+
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["interrupted"] is True and summary["samples"] == 1
+
+
+def test_threads_do_not_change_the_readings():
+    runs = []
+    for threads in (1, 2):
+        with proxsim.Simulation.builtin("paper", threads=threads) as sim:
+            runs.append(np.array([sim.step()["readings"]["d_m"] for _ in range(200)]))
+    np.testing.assert_array_equal(runs[0], runs[1])
