@@ -44,13 +44,19 @@ if(PROXSIM_BUILD_TESTS)
            COMMAND ${report_python} -m unittest discover -s ${CMAKE_SOURCE_DIR}/tests/report -v)
 
   # The browser test opens the report of real runs: the default paper run
-  # (walking robot), the world-mounted sensor demo (no robot) and the
-  # circumvent example (the path walked and the strategy's events). `proxsim run`
+  # (walking robot), the world-mounted sensor demo (no robot), the
+  # circumvent example (the path walked and the strategy's events) and the H1's. `proxsim run`
   # draws the report itself.
   set(e2e_scenario_walk "")
   set(e2e_scenario_no_robot ${CMAKE_SOURCE_DIR}/data/scenarios/world_sensors_demo.yaml)
   set(e2e_scenario_circumvent ${CMAKE_SOURCE_DIR}/data/scenarios/circumvent_obstacle.yaml)
-  foreach(kind walk no_robot circumvent)
+  set(e2e_kinds walk no_robot circumvent)
+  # and the Unitree H1's example (its meshes drawn), when ../shared/robots holds it
+  if(EXISTS ${CMAKE_SOURCE_DIR}/../shared/robots/h1_description/urdf/h1.urdf)
+    set(e2e_scenario_h1 ${CMAKE_SOURCE_DIR}/data/scenarios/h1_dining_room.yaml)
+    list(APPEND e2e_kinds h1)
+  endif()
+  foreach(kind ${e2e_kinds})
     set(run_dir ${CMAKE_BINARY_DIR}/viewer_e2e/${kind})
     add_test(NAME viewer_e2e_${kind}_run
              COMMAND $<TARGET_FILE:proxsim> run ${e2e_scenario_${kind}} --out ${run_dir})

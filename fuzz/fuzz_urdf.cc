@@ -1,4 +1,6 @@
-// libFuzzer target: the URDF loader (RobotModel::FromUrdfText, urdfdom inside).
+// libFuzzer target: the URDF loader (RobotModel::FromUrdfText, urdfdom inside),
+// and through it the mesh URIs (relative paths resolve from fuzz/corpus/urdf/, so
+// the tests' tetrahedron.stl is found and read; package:// and file:// are looked up).
 // Any input must either load or throw InputError.
 #include <cstddef>
 #include <cstdint>
@@ -10,7 +12,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    proxsim::RobotModel::FromUrdfText(text, "fuzz.urdf");
+    proxsim::RobotModel::FromUrdfText(text, PROXSIM_SOURCE_DIR "/fuzz/corpus/urdf/fuzz.urdf");
   } catch (const proxsim::InputError&) {
   }
   return 0;

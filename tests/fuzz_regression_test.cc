@@ -77,7 +77,14 @@ TEST(FuzzRegressionTest, Scenario) {
 }
 
 TEST(FuzzRegressionTest, Urdf) {
-  ReplayTarget("urdf", [](const std::string& text) { RobotModel::FromUrdfText(text, "fuzz.urdf"); });
+  ReplayTarget("urdf", [](const std::string& text) {
+    RobotModel::FromUrdfText(text, PROXSIM_SOURCE_DIR "/fuzz/corpus/urdf/fuzz.urdf");
+  });
+  // the corpus reaches the meshes: one of its URDFs reads a mesh file at three scales
+  const RobotModel meshes = RobotModel::FromUrdfText(ReadBytes(kFuzzDir / "corpus/urdf/meshes_loaded.urdf"),
+                                                     PROXSIM_SOURCE_DIR "/fuzz/corpus/urdf/fuzz.urdf");
+  EXPECT_EQ(meshes.MeshFileCount(), 1u);
+  EXPECT_EQ(meshes.MeshTriangleCount(), 12u);
 }
 
 TEST(FuzzRegressionTest, Trajectory) {

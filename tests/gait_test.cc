@@ -15,12 +15,12 @@ namespace {
 
 constexpr double kRate_hz = 200.0;
 
-// The 8 corners of a foot's sole box in the world.
+// The 4 corners of a foot's sole in the world.
 std::vector<Vec3> SoleCorners(const BipedLegs& legs, Side side, const std::vector<Pose>& X_WL) {
   const LegGeometry& g = legs.leg(side);
   std::vector<Vec3> corners;
-  for (double x : {g.heel_x_m, g.toe_x_m})
-    for (double y : {-g.half_width_m, g.half_width_m}) corners.push_back(X_WL[g.foot_link] * Vec3(x, y, g.sole_z_m));
+  for (const Vec3& end : {g.p_L_heel, g.p_L_toe})
+    for (double y : {-g.half_width_m, g.half_width_m}) corners.push_back(X_WL[g.foot_link] * (end + Vec3(0, y, 0)));
   return corners;
 }
 
@@ -35,9 +35,9 @@ std::pair<Vec3, Vec3> PivotNowAndLatched(const BipedLegs& legs, const StepPlan& 
                                          const std::vector<Pose>& X_WL) {
   const LegGeometry& g = legs.leg(plan.stance);
   const Pose& X_WF = X_WL[g.foot_link];
-  if (p < FootFlatPhase()) return {X_WF * Vec3(g.heel_x_m, 0, g.sole_z_m), plan.p_W_heel};
-  const double x = p <= HeelOffPhase() ? 0.0 : g.toe_x_m;
-  return {X_WF * Vec3(x, 0, g.sole_z_m), plan.X_WF * Vec3(x, 0, g.sole_z_m)};
+  if (p < FootFlatPhase()) return {X_WF * g.p_L_heel, plan.p_W_heel};
+  const Vec3& p_L = p <= HeelOffPhase() ? g.p_L_sole : g.p_L_toe;
+  return {X_WF * p_L, plan.X_WF * p_L};
 }
 
 RobotConfig StraightConfig(double stride_m, double period_s) {
@@ -70,7 +70,8 @@ TEST(GaitCurves, PassThroughKeyPointsAndArePeriodicC1) {
 }
 
 struct WalkFigures {
-  double max_pivot_slip_m = 0, lowest_sole_m = 1e9, max_pelvis_dz_m = 0, max_q_period_diff = 0;
+  double max_pivot_slip_m = 0, max_trailing_toe_slip_m = 0, lowest_sole_m = 1e9, max_pelvis_dz_m = 0,
+         max_q_period_diff = 0, min_shank_deg = 1e9;
   std::vector<double> left_strike_x;
   double distance_per_cycle_m = 0;
 };
@@ -91,6 +92,13 @@ WalkFigures WalkStraight(double stride_m, double period_s, int cycles) {
     const double p = walker.step_phase();
     const auto [now, latched] = PivotNowAndLatched(legs, plan, p, X_WL);
     f.max_pivot_slip_m = std::max(f.max_pivot_slip_m, (now - latched).norm());
+    // the other foot, planted on its toe through the double support
+    if (p < kDoubleSupportEnd) {
+      const Vec3 toe = X_WL[legs.leg(plan.swing).foot_link] * legs.leg(plan.swing).p_L_toe;
+      f.max_trailing_toe_slip_m = std::max(f.max_trailing_toe_slip_m, (toe - plan.p_W_trailing_toe).norm());
+    }
+    for (const Side side : {Side::kLeft, Side::kRight})
+      f.min_shank_deg = std::min(f.min_shank_deg, RadToDeg(legs.ReadJoints(side, s.q).hip - legs.ReadJoints(side, s.q).knee));
     f.lowest_sole_m = std::min({f.lowest_sole_m, LowestSoleZ(legs, Side::kLeft, X_WL), LowestSoleZ(legs, Side::kRight, X_WL)});
     if (!std::isnan(last_z)) f.max_pelvis_dz_m = std::max(f.max_pelvis_dz_m, std::abs(s.X_WP.translation().z() - last_z));
     last_z = s.X_WP.translation().z();
@@ -110,12 +118,13 @@ WalkFigures WalkStraight(double stride_m, double period_s, int cycles) {
 TEST(GaitWalker, PlantedFootNoPenetrationContinuousPeriodicStride) {
   for (const auto& [stride, period] : {std::pair{0.6, 1.2}, std::pair{1.0, 1.1}, std::pair{0.4, 1.0}}) {
     const WalkFigures f = WalkStraight(stride, period, 6);
-    std::printf("[ measured ] stride %.2f m period %.2f s: pivot slip %.3g mm, lowest sole %.3g mm, "
-                "max pelvis dz %.3g mm / 5 ms, q periodicity %.3g rad, stride %.6f m, pelvis per cycle %.6f m\n",
-                stride, period, 1e3 * f.max_pivot_slip_m, 1e3 * f.lowest_sole_m, 1e3 * f.max_pelvis_dz_m,
-                f.max_q_period_diff, f.left_strike_x.back() - f.left_strike_x[f.left_strike_x.size() - 2],
+    std::printf("[ measured ] stride %.2f m period %.2f s: pivot slip %.3g mm, trailing toe slip %.3g mm, lowest sole %.3g mm, "
+                "max pelvis dz %.3g mm / 5 ms, q periodicity %.3g rad, min shank %.1f deg, stride %.6f m, pelvis per cycle %.6f m\n",
+                stride, period, 1e3 * f.max_pivot_slip_m, 1e3 * f.max_trailing_toe_slip_m, 1e3 * f.lowest_sole_m, 1e3 * f.max_pelvis_dz_m,
+                f.max_q_period_diff, f.min_shank_deg, f.left_strike_x.back() - f.left_strike_x[f.left_strike_x.size() - 2],
                 f.distance_per_cycle_m);
     EXPECT_LT(f.max_pivot_slip_m, 1e-3);
+    EXPECT_LT(f.max_trailing_toe_slip_m, 1e-3);
     EXPECT_GT(f.lowest_sole_m, -1e-3);
     EXPECT_LT(f.max_pelvis_dz_m, 3e-3);
     EXPECT_LT(f.max_q_period_diff, 1e-9);
@@ -147,6 +156,48 @@ TEST(GaitWalker, FollowsWaypointsWithATurnAndStopsAtTheLast) {
   EXPECT_LT((end - Vec2(3, 2)).norm(), 0.3);  // half a stride
   EXPECT_GT(RadToDeg(RpyFromRotation(s.X_WP.linear()).z()), 60.0);  // it turned left
   EXPECT_GT(lowest, -1e-3);
+}
+
+// Every stride from 0.3 to 1.0 m reaches the last waypoint (the pelvis within
+// half a stride of it, standing) of paths given with or without the start
+// point, straight and with turns, and one that starts behind the robot. At
+// strides of 0.42 to 0.55 m the start point used to be passed only if the
+// pelvis was within half a stride of it at the first heel strike, and the
+// robot walked in circles back to it.
+TEST(GaitWalker, ReachesTheLastWaypointForEveryStrideAndPath) {
+  const std::vector<std::pair<const char*, std::vector<Vec2>>> paths = {
+      {"straight", {Vec2(0, 0), Vec2(4, 0)}},
+      {"straight, no start point", {Vec2(4, 0)}},
+      {"a right angle", {Vec2(0, 0), Vec2(3, 0), Vec2(3, 2)}},
+      {"a right angle, no start point", {Vec2(3, 0), Vec2(3, 2)}},
+      {"zigzag", {Vec2(0, 0), Vec2(1.5, 1), Vec2(3, -1), Vec2(4.5, 0)}},
+      {"behind", {Vec2(-2, 1)}}};
+  constexpr double kSweepRate_hz = 50, kLimit_s = 60;
+  double worst_ratio = 0, slowest_s = 0;
+  for (int step = 0; step <= 14; ++step) {
+    const double stride = 0.30 + 0.05 * step;
+    for (const auto& [name, waypoints] : paths) {
+      SCOPED_TRACE(std::string(name) + ", stride " + std::to_string(stride));
+      RobotConfig c = StraightConfig(stride, 1.2);
+      c.waypoints_m = waypoints;
+      GaitWalker walker(RobotModel::Builtin("biped"), c);
+      RobotState s;
+      double max_abs_y = 0;
+      for (int i = 0; i <= kLimit_s * kSweepRate_hz && !s.stopped; ++i) {
+        s = walker.Advance(i / kSweepRate_hz);
+        max_abs_y = std::max(max_abs_y, std::abs(s.X_WP.translation().y()));
+      }
+      ASSERT_TRUE(walker.path_done()) << "still walking after " << kLimit_s << " s, at " << s.X_WP.translation().transpose();
+      const double miss_m = (s.X_WP.translation().head<2>() - waypoints.back()).norm();
+      EXPECT_LT(miss_m, 0.5 * stride);
+      if (std::ranges::all_of(waypoints, [](const Vec2& w) { return w.y() == 0; }))
+        EXPECT_LT(max_abs_y, 0.05) << "a straight path walked off its line";
+      worst_ratio = std::max(worst_ratio, miss_m / stride);
+      slowest_s = std::max(slowest_s, s.t_s);
+    }
+  }
+  std::printf("[ measured ] strides 0.30-1.00 m, %zu paths: every last waypoint reached, farthest stop %.2f strides "
+              "from it, slowest %.1f s\n", paths.size(), worst_ratio, slowest_s);
 }
 
 TEST(GaitWalker, RequestStopStandsStillInDoubleSupportThenResumes) {

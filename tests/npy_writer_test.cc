@@ -137,7 +137,7 @@ sensors:
     link: left_tibia
     pose: &mount {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 15, 0]}
     see_robot: false
-    beam: {aperture_deg: 60, rays: 37, pattern: {gaussian: {width_deg: 12}}}
+    beam: {aperture_deg: 60, rays: 37, pattern: {gaussian: {width_deg: 15}}}
   - name: sharp
     type: sharp_gp2y0a21
     link: left_tibia

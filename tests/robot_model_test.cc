@@ -128,12 +128,12 @@ TEST(RobotModel, BrokenUrdfsAreInputErrorsNamingTheFile) {
   // not XML at all
   const std::string not_xml = ErrorOf([] { RobotModel::FromUrdfText("this is not xml <", "junk.urdf"); });
   EXPECT_NE(not_xml.find("junk.urdf"), std::string::npos) << not_xml;
-  // a mesh link, a missing file, an unknown built-in
+  // a mesh that is not there (robot_mesh_test.cc has the rest), a missing file, an unknown built-in
   const std::string mesh = ErrorOf([] {
     RobotModel::FromUrdfText(R"(<robot name="r"><link name="a"><visual><geometry><mesh filename="a.stl"/></geometry></visual></link></robot>)",
-                             "mesh.urdf");
+                             "/nonexistent/mesh.urdf");
   });
-  EXPECT_NE(mesh.find("not yet supported"), std::string::npos) << mesh;
+  EXPECT_NE(mesh.find("/nonexistent/mesh.urdf: link 'a' (visual): mesh 'a.stl' not found"), std::string::npos) << mesh;
   EXPECT_NE(ErrorOf([] { RobotModel::FromUrdfFile("/nonexistent/robot.urdf"); }).find("/nonexistent/robot.urdf"),
             std::string::npos);
   EXPECT_NE(ErrorOf([] { RobotModel::Builtin("quadruped"); }).find("builtin:quadruped"), std::string::npos);

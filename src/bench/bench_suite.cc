@@ -20,6 +20,7 @@
 
 #include "bench/bench_scene.h"
 #include "bench/closed_loop_bench.h"
+#include "bench/robot_bench.h"
 #include "bench/peers.h"
 #include "core/parallel.h"
 #include "sensors/noise.h"
@@ -383,6 +384,7 @@ json RunBench(const BenchOptions& options) {
   result["thread_scaling"] = s["100k"]["thread_scaling"];
   result["thread_scaling_1m"] = s["1m"]["thread_scaling"];
   }
+  if (options.robots) result["robots"] = RobotsSection(options.quick);
   if (!options.end_to_end) {
     result["bench_wall_s"] = Since(bench_start);
     return result;
@@ -588,6 +590,7 @@ std::string BenchReport(const json& r) {
                 M(h.at("steps_only_rays_per_s_1t")), M(h.at("steps_only_rays_per_s_2t")), r.at("bench_wall_s").get<double>());
   out << line;
   if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
+  if (r.contains("robots")) out << RobotsReport(r.at("robots"));
   return out.str();
 }
 

@@ -159,8 +159,9 @@ int main(int argc, char** argv) {
   bench->add_option("--from", bench_from, "print the Markdown tables of a run saved with --json, without running")
       ->check(CLI::ExistingFile);
   std::string bench_only = "all";
-  bench->add_option("--only", bench_only, "run one part: rays (the engines) or e2e (paper and heavy runs)")
-      ->check(CLI::IsMember({"all", "rays", "e2e"}))
+  bench->add_option("--only", bench_only,
+                    "run one part: rays (the engines), e2e (paper and heavy runs) or robots (the H1 against the biped)")
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -193,7 +194,11 @@ int main(int argc, char** argv) {
     }
     if (*bench) {
       const nlohmann::json result = proxsim::bench::RunBench(
-          {.quick = bench_quick, .progress = true, .rays = bench_only != "e2e", .end_to_end = bench_only != "rays"});
+          {.quick = bench_quick,
+           .progress = true,
+           .rays = bench_only == "all" || bench_only == "rays",
+           .end_to_end = bench_only == "all" || bench_only == "e2e",
+           .robots = bench_only == "all" || bench_only == "robots"});
       const bool whole = bench_only == "all";
       std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
                  stdout);

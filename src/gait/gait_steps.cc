@@ -7,6 +7,9 @@ namespace proxsim {
 
 namespace {
 
+// Phase step of the finite difference that gives the planted ankle's velocity at toe-off.
+constexpr double kRateStep = 1e-5;
+
 double Smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);
   return x * x * (3 - 2 * x);
@@ -19,8 +22,14 @@ Pose PelvisPose(const Vec3& p_WP, double yaw) {
   return X;
 }
 
-// A sagittal point of a leg as a 3D point in the pelvis frame (at the hip's y).
-Vec3 InPelvis(const LegGeometry& g, const Vec2xz& p) { return {p.x(), g.p_PH.y(), p.y()}; }
+// Swing progress from toe-off (0) to heel strike (1).
+double SwingProgress(double p) { return std::clamp((p - kDoubleSupportEnd) / (0.5 - kDoubleSupportEnd), 0.0, 1.0); }
+
+// The lowest of the swing sole's heel and toe below the ankle, at a pitch.
+double LowestSoleBelowAnkle(const BipedLegs& legs, Side side, double pitch) {
+  return std::min(RotateSagittal(pitch, legs.FootOffset(side, FootPoint::kHeel)).y(),
+                  RotateSagittal(pitch, legs.FootOffset(side, FootPoint::kToe)).y());
+}
 
 }  // namespace
 
@@ -38,71 +47,95 @@ LegAnglesRad StepPlanner::StanceAngles(const StepPlan& plan, double p) const {
 }
 
 Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRad& stance) const {
-  const LegGeometry& g = legs_.leg(plan.stance);
   // heel rocker: pivot on the latched heel while the heading turns
   if (p < FootFlatPhase() || !plan.flat_latched) {
     const double yaw = plan.yaw_from + (plan.yaw_to - plan.yaw_from) * Smoothstep(p / FootFlatPhase());
     const Rotation R = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
-    const Vec3 p_P_heel = InPelvis(g, legs_.Point(plan.stance, stance, FootPoint::kHeel));
+    const Vec3 p_P_heel = legs_.Point3(plan.stance, stance, FootPoint::kHeel);
     return PelvisPose(plan.p_W_heel - R * p_P_heel, yaw);
   }
   // flat foot, then toe rocker: pivot on a point of the latched foot frame F
   const FootPoint which = p <= HeelOffPhase() ? FootPoint::kMid : FootPoint::kToe;
-  const Vec2xz off = legs_.FootOffset(plan.stance, which);
-  const Vec3 p_W_pivot = plan.X_WF * Vec3(off.x(), 0, off.y());
+  const Vec3 p_W_pivot = plan.X_WF * legs_.FootPoint_L(plan.stance, which);
   const Rotation R = Eigen::AngleAxisd(plan.yaw_to, Vec3::UnitZ()).toRotationMatrix();
-  const Vec3 p_P_pivot = InPelvis(g, legs_.Point(plan.stance, stance, which));
+  const Vec3 p_P_pivot = legs_.Point3(plan.stance, stance, which);
   return PelvisPose(p_W_pivot - R * p_P_pivot, plan.yaw_to);
 }
 
-std::pair<Vec2xz, double> StepPlanner::SwingTarget(const StepPlan& plan, double p) const {
-  const double u = std::clamp(p / 0.5, 0.0, 1.0);
-  const double s = Smoothstep(u);
+double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
+  const double s = Smoothstep(std::clamp(p / 0.5, 0.0, 1.0));
+  return CurveLegAngles(p + 0.5, Amplitude(plan, p)).pitch + plan.swing_start_pitch * (1 - s);
+}
+
+Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {
+  // the latched toe in the pelvis frame, the ankle behind it at the foot's pitch
+  const Vec3 p_P_toe = X_WP.inverse() * plan.p_W_trailing_toe;
+  const Vec2xz toe_from_ankle = RotateSagittal(SwingPitch(plan, p), legs_.FootOffset(plan.swing, FootPoint::kToe));
+  Vec2xz p_PA(p_P_toe.x(), p_P_toe.z());
+  p_PA -= toe_from_ankle;
+  return p_PA;
+}
+
+Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p) const {
+  const double u = SwingProgress(p);
+  // cubic Hermite from (delta, rate) at toe-off to (end delta, 0) at heel strike
+  const double h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u, h01 = 3 * u * u - 2 * u * u * u;
   const LegAnglesRad curve = CurveLegAngles(p + 0.5, Amplitude(plan, p));
   const double bump = std::pow(std::sin(kPi * u), 2);
-  const Vec2xz p_PA = legs_.Ankle(plan.swing, curve) + plan.swing_start_delta * (1 - s) +
-                      plan.swing_end_delta * s + Vec2xz(0, plan.clearance_bump_m * bump);
-  return {p_PA, curve.pitch + plan.swing_start_pitch * (1 - s)};
+  return legs_.Ankle(plan.swing, curve) + plan.swing_toe_off_delta * h00 + plan.swing_toe_off_rate * h10 +
+         plan.swing_end_delta * h01 + Vec2xz(0, plan.clearance_bump_m * bump);
 }
 
 StepPose StepPlanner::Evaluate(const StepPlan& plan, double p) const {
   StepPose pose;
   pose.stance = StanceAngles(plan, p);
   pose.X_WP = StancePelvis(plan, p, pose.stance);
-  auto [p_PA, pitch] = SwingTarget(plan, p);
-  // floor guard: lift the swing foot if its lowest sole corner would be below the floor
-  const double lowest = std::min(RotateSagittal(pitch, legs_.FootOffset(plan.swing, FootPoint::kHeel)).y(),
-                                 RotateSagittal(pitch, legs_.FootOffset(plan.swing, FootPoint::kToe)).y());
-  const double deficit = plan.floor_z_m - (pose.X_WP.translation().z() + p_PA.y() + lowest);
-  if (deficit > 0 && p > 0) p_PA.y() += deficit;
+  const double pitch = SwingPitch(plan, p);
+  Vec2xz p_PA = Vec2xz::Zero();
+  if (p < kDoubleSupportEnd) {
+    // double support: the trailing foot stays planted on its toe
+    p_PA = PlantedAnkle(plan, p, pose.X_WP);
+  } else {
+    // swing, with a floor guard: lift the foot if its lowest sole point would be below the floor
+    p_PA = SwingAnkle(plan, p);
+    const double deficit =
+        plan.floor_z_m - (pose.X_WP.translation().z() + p_PA.y() + LowestSoleBelowAnkle(legs_, plan.swing, pitch));
+    if (deficit > 0) p_PA.y() += deficit;
+  }
   pose.swing = legs_.SolveAnkle(plan.swing, p_PA, pitch);
   return pose;
 }
 
 void StepPlanner::Finish(StepPlan* plan) const {
-  const LegGeometry& g = legs_.leg(plan->stance);
-  // the flat foot frame: the stance foot at foot-flat (pitch exactly 0)
+  // the flat foot frame: the stance foot link at foot-flat (pitch exactly 0)
   {
     const double p = FootFlatPhase();
     const LegAnglesRad stance = StanceAngles(*plan, p);
     const Pose X_WP = StancePelvis(*plan, p, stance);
-    plan->X_WF = X_WP * Eigen::Translation3d(InPelvis(g, legs_.Ankle(plan->stance, stance)));
+    plan->X_WF = X_WP * legs_.FootPose_P(plan->stance, stance);
     plan->flat_latched = true;
+  }
+  // toe-off: where the planted foot leaves the swing path, and how fast it
+  // moves there against the curves' own ankle path
+  {
+    const auto offset = [&](double p) -> Vec2xz {
+      const Pose X_WP = StancePelvis(*plan, p, StanceAngles(*plan, p));
+      return PlantedAnkle(*plan, p, X_WP) - legs_.Ankle(plan->swing, CurveLegAngles(p + 0.5, Amplitude(*plan, p)));
+    };
+    const Vec2xz at_toe_off = offset(kDoubleSupportEnd);
+    plan->swing_toe_off_delta = at_toe_off;
+    plan->swing_toe_off_rate = (at_toe_off - offset(kDoubleSupportEnd - kRateStep)) / kRateStep * (0.5 - kDoubleSupportEnd);
   }
   // landing: at p = 0.5 the swing heel must touch the floor with the curves'
   // knee and pitch; solve the hip angle (forward branch) for that
   {
     const double k = plan->k_to;
-    const StepPose end = [&] {
-      StepPose e;
-      e.stance = StanceAngles(*plan, 0.5);
-      e.X_WP = StancePelvis(*plan, 0.5, e.stance);
-      return e;
-    }();
+    const LegAnglesRad end_stance = StanceAngles(*plan, 0.5);
+    const Pose end_X_WP = StancePelvis(*plan, 0.5, end_stance);
     const LegGeometry& sg = legs_.leg(plan->swing);
     const LegAnglesRad curve = CurveLegAngles(1.0, k);
     LegAnglesRad land = curve;
-    const double z_target = plan->floor_z_m - end.X_WP.translation().z();  // heel z in P
+    const double z_target = plan->floor_z_m - end_X_WP.translation().z();  // heel z in P
     const double o_z = RotateSagittal(curve.pitch, legs_.FootOffset(plan->swing, FootPoint::kHeel)).y();
     for (int attempt = 0; attempt < 2; ++attempt) {
       const double kn = land.knee;
@@ -122,12 +155,11 @@ void StepPlanner::Finish(StepPlan* plan) const {
     plan->clearance_bump_m = 0;
     double c = 0;
     for (int i = 0; i <= 40; ++i) {
-      const double u = 0.15 + 0.7 * i / 40.0, p = 0.5 * u;
+      const double u = 0.15 + 0.7 * i / 40.0;
+      const double p = kDoubleSupportEnd + u * (0.5 - kDoubleSupportEnd);
       const double pelvis_z = StancePelvis(*plan, p, StanceAngles(*plan, p)).translation().z();
-      const auto [p_PA, pitch] = SwingTarget(*plan, p);
-      const double lowest = std::min(RotateSagittal(pitch, legs_.FootOffset(plan->swing, FootPoint::kHeel)).y(),
-                                     RotateSagittal(pitch, legs_.FootOffset(plan->swing, FootPoint::kToe)).y());
-      const double z = pelvis_z + p_PA.y() + lowest - plan->floor_z_m;
+      const double z = pelvis_z + SwingAnkle(*plan, p).y() + LowestSoleBelowAnkle(legs_, plan->swing, SwingPitch(*plan, p)) -
+                       plan->floor_z_m;
       const double b = std::pow(std::sin(kPi * u), 2);
       c = std::max(c, kSwingClearance_m - z / b);
     }
@@ -145,13 +177,15 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   plan.floor_z_m = p_W_start.z();
   const LegAnglesRad stance = CurveLegAngles(0.0, k);
   const Rotation R = Eigen::AngleAxisd(yaw_rad, Vec3::UnitZ()).toRotationMatrix();
-  const Vec3 p_P_heel = InPelvis(legs_.leg(Side::kLeft), legs_.Point(Side::kLeft, stance, FootPoint::kHeel));
+  const Vec3 p_P_heel = legs_.Point3(Side::kLeft, stance, FootPoint::kHeel);
   const Vec3 p_WP(p_W_start.x(), p_W_start.y(), p_W_start.z() - p_P_heel.z());
   plan.p_W_heel = p_WP + R * p_P_heel;
-  // the trailing foot starts on its curve, lifted onto the floor if the curve puts it below
-  const LegAnglesRad trailing = CurveLegAngles(0.5, k);
+  // the trailing foot starts on its curve, lifted onto the floor if the curve
+  // puts it below, and stays there until toe-off
+  LegAnglesRad trailing = CurveLegAngles(0.5, k);
   const double below = p_W_start.z() - (p_WP.z() + legs_.LowestSoleZ(Side::kRight, trailing));
-  if (below > 0) plan.swing_start_delta = Vec2xz(0, below);
+  if (below > 0) trailing = legs_.SolveAnkle(Side::kRight, legs_.Ankle(Side::kRight, trailing) + Vec2xz(0, below), trailing.pitch);
+  plan.p_W_trailing_toe = PelvisPose(p_WP, yaw_rad) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
   Finish(&plan);
   return plan;
 }
@@ -168,17 +202,17 @@ StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to)
   plan.yaw_from = prev.yaw_to;
   plan.yaw_to = yaw_to;
   plan.floor_z_m = prev.floor_z_m;
-  // latch the new stance heel where it struck
-  const Vec3 p_P_heel = InPelvis(legs_.leg(plan.stance), legs_.Point(plan.stance, strike.swing, FootPoint::kHeel));
-  plan.p_W_heel = strike.X_WP * p_P_heel;
+  // latch the new stance heel where it struck, on the floor
+  plan.p_W_heel = strike.X_WP * legs_.Point3(plan.stance, strike.swing, FootPoint::kHeel);
+  plan.p_W_heel.z() = plan.floor_z_m;
+  // and the old stance foot's toe, where it pivots (its latched toe)
+  plan.p_W_trailing_toe = prev.X_WF * legs_.FootPoint_L(prev.stance, FootPoint::kToe);
   // stance: what the curves do not explain at heel strike, blended out
   const LegAnglesRad stance_curve = CurveLegAngles(0.0, plan.k_from);
   plan.stance_offset.hip = strike.swing.hip - stance_curve.hip;
   plan.stance_offset.knee = strike.swing.knee - stance_curve.knee;
-  // swing: start from where the old stance foot is
-  const LegAnglesRad swing_curve = CurveLegAngles(0.5, plan.k_from);
-  plan.swing_start_delta = legs_.Ankle(plan.swing, strike.stance) - legs_.Ankle(plan.swing, swing_curve);
-  plan.swing_start_pitch = strike.stance.pitch - swing_curve.pitch;
+  // swing: its pitch starts from where the old stance foot is
+  plan.swing_start_pitch = strike.stance.pitch - CurveLegAngles(0.5, plan.k_from).pitch;
   Finish(&plan);
   return plan;
 }

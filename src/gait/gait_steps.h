@@ -4,8 +4,8 @@
 // construction:
 //  - The stance foot pivots on its heel until foot-flat, lies flat until
 //    heel-off, then pivots on its toe. Each pivot is latched in the world: the
-//    heel at heel strike, then the flat foot frame F (which gives the sole point
-//    under the ankle and the toe exactly). The pelvis is the pivot minus the
+//    heel at heel strike, then the flat foot's link frame F (which gives the sole
+//    point under the ankle and the toe exactly). The pelvis is the pivot minus the
 //    pivot's position in the pelvis frame (FK of the stance leg), so the
 //    contact point never slides and the pelvis height follows from geometry.
 //  - The pelvis is upright; its heading turns toward the next waypoint while
@@ -19,18 +19,26 @@
 //    foot's pitch after heel-off is then scaled by a gain g ≤ 1 chosen so that
 //    at the other foot's heel strike the pelvis is no higher than the curves'
 //    landing posture allows (PushOffGain).
-//  - The swing leg's ankle follows the curves' ankle path in the pelvis frame,
-//    plus two blended corrections and a clearance bump, solved by planar
-//    two-link IK. The corrections join the path's start to where the foot
-//    actually was at the other foot's heel strike, and its end to a landing
-//    pose whose heel touches the floor exactly at the next heel strike (the
-//    pelvis height there is known: the stance foot is then on its latched toe).
-//    The bump is sized once per step so that the sole clears the floor by
-//    kSwingClearance_m in mid-swing; a per-sample guard lifts the foot if a
-//    sample would still go below the floor (trailing toe at push-off).
-// Departures from a real gait: no hip roll or yaw (the trailing toe slides
-// sideways during a turn), the trailing toe may slide a little during double
-// support, the pelvis does not sway sideways.
+//  - The other foot stays planted through the double support that follows
+//    the heel strike (p < kDoubleSupportEnd): its toe is latched in the world
+//    where it was at heel strike and the foot pitches about it (heel rising)
+//    as the curves' toe-off does; the leg's hip and knee come from two-link
+//    inverse kinematics to the ankle that this puts under the toe.
+//  - From toe-off the swing leg's ankle follows the curves' ankle path in the
+//    pelvis frame plus a correction and a clearance bump, solved by planar
+//    two-link IK. The correction is a cubic Hermite blend from where the
+//    planted foot left off at toe-off (position and velocity, so the joint
+//    motion has no kink there) to a landing pose whose heel touches the floor
+//    exactly at the next heel strike (the pelvis height there is known: the
+//    stance foot is then on its latched toe). The bump is sized once per step
+//    so that the sole clears the floor by kSwingClearance_m in mid-swing; a
+//    per-sample guard lifts the foot if a sample would still go below the floor.
+//  - Contact points are the legs' exact 3D foot points (BipedLegs::Point3),
+//    so the latched pivots hold whatever the robot's joint offsets; the heel
+//    strike is latched on the floor.
+// Departures from a real gait: no hip roll or yaw (so during a turn the
+// trailing toe, planted while the pelvis turns on the stance heel, slides
+// sideways), the pelvis does not sway sideways.
 #pragma once
 
 #include "gait/leg_kinematics.h"
@@ -52,10 +60,12 @@ struct StepPlan {
   double floor_z_m = 0;                 ///< floor height
   Vec3 p_W_heel = Vec3::Zero();         ///< stance heel latched at heel strike
   LegAnglesRad stance_offset;           ///< stance hip/knee minus curves at heel strike
-  Pose X_WF = Pose::Identity();         ///< stance foot frame once flat (foot-flat to toe-off)
+  Pose X_WF = Pose::Identity();         ///< stance foot link's frame once flat (foot-flat to toe-off)
   bool flat_latched = false;            ///< X_WF is set (always, once a plan is finished)
-  Vec2xz swing_start_delta = Vec2xz::Zero();  ///< swing ankle correction at p = 0, pelvis frame
+  Vec3 p_W_trailing_toe = Vec3::Zero();       ///< the other foot's toe, latched at heel strike, planted until toe-off
   double swing_start_pitch = 0;               ///< swing foot pitch correction at p = 0
+  Vec2xz swing_toe_off_delta = Vec2xz::Zero();  ///< swing ankle correction at toe-off, pelvis frame
+  Vec2xz swing_toe_off_rate = Vec2xz::Zero();   ///< its rate over the swing (d/du, u from 0 at toe-off to 1 at heel strike)
   Vec2xz swing_end_delta = Vec2xz::Zero();    ///< swing ankle correction at p = 0.5
   double clearance_bump_m = 0;                ///< height of the mid-swing bump
 };
@@ -86,8 +96,12 @@ class StepPlanner {
   double Amplitude(const StepPlan& plan, double p) const;
   LegAnglesRad StanceAngles(const StepPlan& plan, double p) const;
   Pose StancePelvis(const StepPlan& plan, double p, const LegAnglesRad& stance) const;
-  // The swing ankle target and pitch before the floor guard.
-  std::pair<Vec2xz, double> SwingTarget(const StepPlan& plan, double p) const;
+  // The swing foot's pitch at p.
+  double SwingPitch(const StepPlan& plan, double p) const;
+  // The ankle (P) that keeps the planted trailing toe at its latched point, pelvis at X_WP.
+  Vec2xz PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const;
+  // The swing ankle target (P) from toe-off on, before the floor guard.
+  Vec2xz SwingAnkle(const StepPlan& plan, double p) const;
   // Latches X_WF, the landing correction and the clearance bump.
   void Finish(StepPlan* plan) const;
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "gait/held_joints.h"
 
 namespace proxsim {
 
@@ -27,11 +28,22 @@ const char* SupportLegName(SupportLeg s) {
 GaitWalker::GaitWalker(RobotModel model, const RobotConfig& config)
     : initial_(config), model_(std::make_unique<RobotModel>(std::move(model))), gait_(config.gait) {
   std::vector<std::string> problems;
-  if (!(gait_.period_s > 0)) problems.push_back(model_->source() + ": gait period_s must be > 0");
-  if (!(gait_.stride_m > 0)) problems.push_back(model_->source() + ": gait stride_m must be > 0");
+  if (!config.gait.derive_period_from_legs && !(gait_.period_s > 0))
+    problems.push_back(model_->source() + ": gait period_s must be > 0");
+  if (!config.gait.derive_stride_from_legs && !(gait_.stride_m > 0))
+    problems.push_back(model_->source() + ": gait stride_m must be > 0");
   if (!problems.empty()) throw InputError(problems);
-  legs_ = std::make_unique<BipedLegs>(*model_);
+  q_held_ = HeldJointAngles(*model_, config.joints_rad, config.legs.value_or(BuiltinBipedLegs()));
+  legs_ = std::make_unique<BipedLegs>(*model_, config.legs, q_held_);
   planner_ = std::make_unique<StepPlanner>(*legs_);
+  // stride and period not given: the built-in biped's, scaled to these legs
+  // (the ratio is exactly 1 for the built-in biped, whose defaults stay exact)
+  const double length_ratio = std::abs(legs_->leg_length_m() - kReferenceLegLength_m) < 1e-9
+                                  ? 1.0
+                                  : legs_->leg_length_m() / kReferenceLegLength_m;
+  if (config.gait.derive_stride_from_legs) initial_.gait.stride_m = kReferenceStride_m * length_ratio;
+  if (config.gait.derive_period_from_legs) initial_.gait.period_s = kReferencePeriod_s * std::sqrt(length_ratio);
+  gait_ = initial_.gait;
   // the amplitude search runs once; Reset() reuses its answer
   SetStride(initial_.gait.stride_m);
   initial_k_ = k_target_;
@@ -43,6 +55,7 @@ void GaitWalker::Start() {
   gait_ = initial_.gait;
   waypoints_m_ = initial_.waypoints_m;
   next_waypoint_ = 0;
+  path_origin_m_ = initial_.start_xyz_m.head<2>();
   k_target_ = initial_k_;
   achieved_stride_m_ = initial_achieved_stride_m_;
   plan_ = planner_->FirstStep(initial_.start_xyz_m, initial_.start_yaw_rad, k_target_);
@@ -83,28 +96,51 @@ void GaitWalker::Resume() {
   stop_requested_ = false;
 }
 
+bool GaitWalker::Passed(std::size_t i, const Vec2& p) const {
+  const Vec2& waypoint = waypoints_m_[i];
+  if ((waypoint - p).norm() < 0.5 * achieved_stride_m_) return true;
+  // the way it is approached: from the previous waypoint, or from where the
+  // path began; along the path when it begins on it
+  Vec2 approach = waypoint - (i == 0 ? path_origin_m_ : waypoints_m_[i - 1]);
+  if (approach.norm() < 1e-9 && i + 1 < waypoints_m_.size()) approach = waypoints_m_[i + 1] - waypoint;
+  return approach.norm() < 1e-9 || (p - waypoint).dot(approach) >= 0;
+}
+
 bool GaitWalker::DecideAtHeelStrike(const Pose& X_WP, double* yaw_to) {
   *yaw_to = plan_.yaw_to;
   if (stop_requested_) return true;
   if (waypoints_m_.empty()) return false;
   const Vec2 p = X_WP.translation().head<2>();
-  const double stride = achieved_stride_m_;
-  // pass waypoints that are within half a stride
-  while (next_waypoint_ + 1 < waypoints_m_.size() && (waypoints_m_[next_waypoint_] - p).norm() < 0.5 * stride)
-    ++next_waypoint_;
+  const double stride = achieved_stride_m_, step = 0.5 * stride;
+  while (next_waypoint_ + 1 < waypoints_m_.size() && Passed(next_waypoint_, p)) ++next_waypoint_;
   const Vec2 to = waypoints_m_[next_waypoint_] - p;
+
+  // turn toward the waypoint; more sharply when it lies inside the circle
+  // that steps of the usual turn walk (they would circle around it): as
+  // sharply as the circle through it tangent to the heading needs, or (the
+  // waypoint behind) the sharpest turn
+  const double bearing = WrapAngle(std::atan2(to.y(), to.x()) - plan_.yaw_to);
+  double limit = kMaxTurnPerStep_rad;
+  const double radius_m = step / (2 * std::sin(kMaxTurnPerStep_rad / 2));
+  const Vec2 left(-std::sin(plan_.yaw_to), std::cos(plan_.yaw_to));
+  const Vec2 centre = p + (bearing >= 0 ? radius_m : -radius_m) * left;
+  if ((waypoints_m_[next_waypoint_] - centre).norm() < radius_m) {
+    const double chord = step * std::abs(std::sin(bearing)) / std::max(to.norm(), 1e-9);
+    limit = std::abs(bearing) < kPi / 2 && chord < 1 ? std::clamp(2 * std::asin(chord), limit, kMaxSharpTurnPerStep_rad)
+                                                     : kMaxSharpTurnPerStep_rad;
+  }
+  const double turn = std::clamp(bearing, -limit, limit);
+
   if (next_waypoint_ + 1 == waypoints_m_.size()) {
-    const Vec2 heading(std::cos(plan_.yaw_to), std::sin(plan_.yaw_to));
-    // the last one: stop within a quarter stride, or when one more step (half
-    // a stride along the heading) would not bring the pelvis closer
-    const bool closer = (to - 0.5 * stride * heading).norm() < to.norm();
+    // the last one: stop within a quarter stride, or within a stride when one
+    // more step along the turned heading would not bring the pelvis closer
+    const Vec2 heading(std::cos(plan_.yaw_to + turn), std::sin(plan_.yaw_to + turn));
+    const bool closer = (to - step * heading).norm() < to.norm();
     if (to.norm() < 0.25 * stride || (to.norm() < stride && !closer)) {
       path_done_ = true;
       return true;
     }
   }
-  const double turn = std::clamp(WrapAngle(std::atan2(to.y(), to.x()) - plan_.yaw_to), -kMaxTurnPerStep_rad,
-                                 kMaxTurnPerStep_rad);
   *yaw_to = plan_.yaw_to + turn;
   return false;
 }
@@ -139,7 +175,7 @@ RobotState GaitWalker::Advance(double t_s) {
   RobotState state;
   state.t_s = t_s;
   state.X_WP = pose.X_WP;
-  state.q.assign(model_->joint_count(), 0.0);
+  state.q = q_held_;
   legs_->WriteJoints(plan_.stance, pose.stance, state.q);
   legs_->WriteJoints(plan_.swing, pose.swing, state.q);
   // the left leg's phase, from the step so that it agrees with the support leg
@@ -164,6 +200,7 @@ void GaitWalker::Reset() { Start(); }
 void GaitWalker::SetPath(std::vector<Vec2> waypoints_m) {
   waypoints_m_ = std::move(waypoints_m);
   next_waypoint_ = 0;
+  path_origin_m_ = has_last_p_WP_ ? Vec2(last_p_WP_.head<2>()) : initial_.start_xyz_m.head<2>();
   // a robot that stood at the end of its old path walks on to the new one
   if (path_done_) {
     path_done_ = false;
@@ -175,10 +212,7 @@ std::vector<FootFrame> GaitWalker::Feet() const {
   std::vector<FootFrame> feet;
   for (const Side side : {Side::kLeft, Side::kRight}) {
     const LegGeometry& leg = legs_->leg(side);
-    feet.push_back({.link = leg.foot_link,
-                    .p_L_sole = Vec3(0, 0, leg.sole_z_m),
-                    .p_L_toe = Vec3(leg.toe_x_m, 0, leg.sole_z_m),
-                    .p_L_heel = Vec3(leg.heel_x_m, 0, leg.sole_z_m)});
+    feet.push_back({.link = leg.foot_link, .p_L_sole = leg.p_L_sole, .p_L_toe = leg.p_L_toe, .p_L_heel = leg.p_L_heel});
   }
   return feet;
 }

@@ -1,10 +1,25 @@
-// Kinematic walking of a biped along a path of waypoints (DESIGN.md "Robot and
-// gait"; GAIT.md): the steps of gait_steps.h chained in time, with the cycle
-// time `period_s` and the curve amplitude chosen so that the stride is
-// `stride_m`, heading changes at heel strikes (at most kMaxTurnPerStep_rad per
-// step, toward the current waypoint), and a stop at a heel strike — a double
-// support with both feet down — when asked or when the last waypoint is
-// reached.
+// Kinematic walking of any biped along a path of waypoints (DESIGN.md "Robot
+// and gait"; GAIT.md): the steps of gait_steps.h chained in time, on the legs
+// that robot.legs maps (gait/leg_kinematics.h) with every other joint held
+// (robot.joints_deg), with the cycle time `period_s` and the curve amplitude
+// chosen so that the stride is `stride_m`, heading changes at heel strikes
+// (toward the current waypoint, at most kMaxTurnPerStep_rad per step, or up
+// to kMaxSharpTurnPerStep_rad when the waypoint lies inside the circle the
+// smaller turns would walk), and a stop at a heel strike — a double support
+// with both feet down — when asked or when the last waypoint is reached.
+//
+// Waypoints: the current one is passed at a heel strike when the pelvis is
+// within half a stride of it or has gone past it, i.e. beyond the line
+// through it square to the way it was approached (from the previous
+// waypoint; for the first, from where the robot started, or along the path
+// when it starts on it). The last is reached when the pelvis is within a
+// quarter stride of it, or within a stride and one more step (toward it)
+// would not bring the pelvis closer.
+//
+// Stride and period: as the gait section gives them, or, where it does not,
+// the built-in biped's 0.6 m and 1.2 s scaled to this robot's leg length L
+// (hip joint to sole) by dynamic similarity (the same Froude number):
+// stride ∝ L, period ∝ √L.
 //
 // Time: a gait clock runs while walking and stands still while stopped; the
 // left leg's phase is clock / period_s, 0 at its heel strike. The walk starts at
@@ -28,11 +43,18 @@ namespace proxsim {
 
 /// Largest heading change per step, rad.
 constexpr double kMaxTurnPerStep_rad = DegToRad(15.0);
+/// Largest heading change per step toward a waypoint that kMaxTurnPerStep_rad cannot reach, rad.
+constexpr double kMaxSharpTurnPerStep_rad = DegToRad(45.0);
+/// The built-in biped's leg length (hip joint to sole), stride and period: the reference of the scaled defaults.
+constexpr double kReferenceLegLength_m = 0.98;
+constexpr double kReferenceStride_m = 0.6;
+constexpr double kReferencePeriod_s = 1.2;
 
 class GaitWalker : public Locomotion {
  public:
-  /// Walks `model` as `config` says (start, gait, waypoints). Throws InputError
-  /// when the model is not a biped the gait can drive or the gait is invalid.
+  /// Walks `model` as `config` says (legs, held joints, start, gait,
+  /// waypoints). Throws InputError when the legs' map or the held joints do not
+  /// fit the model (BipedLegs, HeldJointAngles) or the gait is invalid.
   GaitWalker(RobotModel model, const RobotConfig& config);
 
   RobotState Advance(double t_s) override;
@@ -41,6 +63,7 @@ class GaitWalker : public Locomotion {
   void SetStride(double stride_m) override;
   void SetPath(std::vector<Vec2> waypoints_m) override;
   std::vector<FootFrame> Feet() const override;
+  std::optional<GaitCycle> gait_cycle() const override { return GaitCycle{achieved_stride_m_, gait_.period_s}; }
   void Reset() override;
   const RobotModel& model() const override { return *model_; }
 
@@ -54,10 +77,14 @@ class GaitWalker : public Locomotion {
   const StepPlan& current_step() const { return plan_; }
   /// Stance phase in [0, 0.5] of the current step at the last Advance().
   double step_phase() const { return step_phase_; }
+  /// The legs as the gait reads them from the model.
+  const BipedLegs& legs() const { return *legs_; }
 
  private:
   // At the heel strike ending the current step: decide heading and stopping.
   bool DecideAtHeelStrike(const Pose& X_WP, double* yaw_to);
+  // Whether waypoint i counts as passed with the pelvis at p.
+  bool Passed(std::size_t i, const Vec2& p) const;
 
   // the episode's beginning, for Reset()
   RobotConfig initial_;
@@ -69,8 +96,10 @@ class GaitWalker : public Locomotion {
   std::unique_ptr<BipedLegs> legs_;
   std::unique_ptr<StepPlanner> planner_;
   GaitConfig gait_;
+  std::vector<double> q_held_;  // every joint's angle when the gait does not drive it
   std::vector<Vec2> waypoints_m_;
   std::size_t next_waypoint_ = 0;
+  Vec2 path_origin_m_ = Vec2::Zero();  // where the robot was when its path was given
   double k_target_ = 1;
   double achieved_stride_m_ = 0;
   StepPlan plan_;

@@ -2,73 +2,262 @@
 
 #include <algorithm>
 #include <cmath>
-#include <variant>
+#include <cstdio>
+#include <limits>
+#include <queue>
+#include <tuple>
 
 #include "core/input_error.h"
+#include "io/nearest_key.h"
+#include "scene/shape_points.h"
 
 namespace proxsim {
 
 namespace {
 
-// A revolute joint about ±y with no rotation in its origin; returns the sign of its axis' y.
-double PitchAxisSign(const RobotModel& m, int j, std::vector<std::string>* problems) {
-  const RobotJoint& joint = m.joint(j);
-  const bool ok = (joint.type == JointType::kRevolute || joint.type == JointType::kContinuous) &&
-                  std::abs(std::abs(joint.axis_J.y()) - 1) < 1e-9 &&
-                  joint.X_PJ.linear().isApprox(Rotation::Identity(), 1e-9);
-  if (!ok) problems->push_back(m.source() + ": joint '" + joint.name + "' must be revolute about ±y with no origin rotation");
-  return joint.axis_J.y() > 0 ? 1.0 : -1.0;
+// Points this close above the lowest one make up the sole: a flat sole
+// meshed or modelled within 2 mm is one plane.
+constexpr double kSoleBand_m = 0.002;
+// Shortest thigh or shank the planar chain accepts.
+constexpr double kMinSegment_m = 0.01;
+// Largest difference between the legs' lengths, and the most any other link
+// may hang below the soles at the reference pose.
+constexpr double kReachTolerance_m = 0.01;
+
+const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
+
+// Every link from `link` down (itself first), breadth first.
+std::vector<int> Subtree(const RobotModel& model, int link) {
+  std::vector<int> links;
+  std::queue<int> todo;
+  todo.push(link);
+  while (!todo.empty()) {
+    const int l = todo.front();
+    todo.pop();
+    links.push_back(l);
+    for (const int j : model.link(l).child_joints) todo.push(model.joint(j).child_link);
+  }
+  return links;
+}
+
+// The outline points of a link's geometry, in P at the reference pose.
+void AddLinkPoints_P(const RobotModel& model, int link, const std::vector<Pose>& X_PL, std::vector<Vec3>* points) {
+  for (const LinkShape& shape : model.link(link).shapes) {
+    const Pose X_PO = X_PL[link] * shape.X_LO;
+    for (const Vec3& p_O : ShapeOutlinePoints_O(shape.shape)) points->push_back(X_PO * p_O);
+  }
+}
+
+// Joints from the root to `link`, parents first.
+std::vector<int> ChainTo(const RobotModel& model, int link) {
+  std::vector<int> chain;
+  for (int l = link; model.link(l).parent_joint >= 0; l = model.joint(model.link(l).parent_joint).parent_link)
+    chain.push_back(model.link(l).parent_joint);
+  std::reverse(chain.begin(), chain.end());
+  return chain;
+}
+
+// A segment's angle from the downward vertical (lower end forward +) and length, in the sagittal plane.
+std::pair<double, double> SagittalSegment(const Vec3& upper, const Vec3& lower) {
+  const Vec2xz d(lower.x() - upper.x(), lower.z() - upper.z());
+  return {std::atan2(d.x(), -d.y()), d.norm()};
 }
 
 }  // namespace
 
-BipedLegs::BipedLegs(const RobotModel& m) {
+std::array<LegNames, 2> BuiltinBipedLegs() {
+  return {LegNames{"left_hip_pitch", "left_knee_pitch", "left_ankle_pitch", "left_foot"},
+          LegNames{"right_hip_pitch", "right_knee_pitch", "right_ankle_pitch", "right_foot"}};
+}
+
+BipedLegs::BipedLegs(const RobotModel& model) : BipedLegs(model, std::nullopt, std::vector<double>(model.joint_count(), 0.0)) {}
+
+BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegNames, 2>>& given,
+                     std::span<const double> q_reference)
+    : model_(m), q_reference_(q_reference.begin(), q_reference.end()) {
+  const std::string& source = m.source();
+  const std::array<LegNames, 2> names = given.value_or(BuiltinBipedLegs());
   std::vector<std::string> problems;
+
+  // without a map, a robot that is not built like the built-in biped gets one message
+  if (!given) {
+    std::string missing;
+    for (const LegNames& leg : names) {
+      for (const std::string& joint : {leg.hip, leg.knee, leg.ankle})
+        if (m.JointIndex(joint) < 0) missing += (missing.empty() ? "" : ", ") + joint;
+      if (m.LinkIndex(leg.foot) < 0) missing += (missing.empty() ? "" : ", ") + leg.foot;
+    }
+    if (!missing.empty()) {
+      throw InputError(source + ": robot.legs is not given and the robot lacks the built-in biped's " + missing +
+                       "; map the gait onto its legs: robot.legs: {left: {hip: JOINT, knee: JOINT, ankle: JOINT, "
+                       "foot: LINK}, right: {...}}");
+    }
+  }
+  std::vector<std::string> joint_names, link_names;
+  for (int j = 0; j < m.joint_count(); ++j) joint_names.push_back(m.joint_name(j));
+  for (int l = 0; l < m.link_count(); ++l) link_names.push_back(m.link_name(l));
+  const auto unknown = [&](const std::string& key, const std::string& what, const std::string& name,
+                           const std::vector<std::string>& candidates) {
+    const auto nearest = NearestKey(name, candidates);
+    problems.push_back(source + ": " + key + ": no " + what + " '" + name + "' in the URDF" +
+                       (nearest ? " (did you mean '" + *nearest + "'?)" : ""));
+  };
+
+  const std::vector<Pose> X_PL = m.ForwardKinematics(Pose::Identity(), q_reference_);
+  std::vector<int> feet_subtrees;
+  double lowest_sole_P = std::numeric_limits<double>::infinity();
+  bool legs_ok = true;
   for (const Side side : {Side::kLeft, Side::kRight}) {
-    const std::string prefix = side == Side::kLeft ? "left_" : "right_";
+    const LegNames& name = names[static_cast<int>(side)];
+    const std::string key = std::string("robot.legs.") + SideName(side);
     LegGeometry& g = legs_[static_cast<int>(side)];
-    g.hip_joint = m.JointIndex(prefix + "hip_pitch");
-    g.knee_joint = m.JointIndex(prefix + "knee_pitch");
-    g.ankle_joint = m.JointIndex(prefix + "ankle_pitch");
-    if (g.hip_joint < 0 || g.knee_joint < 0 || g.ankle_joint < 0) {
-      problems.push_back(m.source() + ": the gait needs joints " + prefix + "hip_pitch, " + prefix +
-                         "knee_pitch and " + prefix + "ankle_pitch");
+    const std::size_t problems_before = problems.size();
+
+    // the names: three revolute joints and a link
+    int* const joint_of[3] = {&g.hip_joint, &g.knee_joint, &g.ankle_joint};
+    const std::string* const joint_name[3] = {&name.hip, &name.knee, &name.ankle};
+    const char* const joint_key[3] = {"hip", "knee", "ankle"};
+    for (int k = 0; k < 3; ++k) {
+      *joint_of[k] = m.JointIndex(*joint_name[k]);
+      if (*joint_of[k] < 0) {
+        unknown(key + "." + joint_key[k], "joint", *joint_name[k], joint_names);
+        continue;
+      }
+      const JointType type = m.joint(*joint_of[k]).type;
+      if (type != JointType::kRevolute && type != JointType::kContinuous)
+        problems.push_back(source + ": " + key + "." + joint_key[k] + ": joint '" + *joint_name[k] +
+                           "' is not revolute; the gait turns the leg's pitch joints");
+    }
+    g.foot_link = m.LinkIndex(name.foot);
+    if (g.foot_link < 0) unknown(key + ".foot", "link", name.foot, link_names);
+    if (problems.size() > problems_before) {
+      legs_ok = false;
       continue;
     }
-    // hip and ankle flex about −y, the knee about +y (see robot_model.h)
-    g.hip_sign = -PitchAxisSign(m, g.hip_joint, &problems);
-    g.knee_sign = PitchAxisSign(m, g.knee_joint, &problems);
-    g.ankle_sign = -PitchAxisSign(m, g.ankle_joint, &problems);
-    if (m.joint(g.hip_joint).parent_link != m.root_link())
-      problems.push_back(m.source() + ": " + prefix + "hip_pitch must hang from the root link");
-    if (m.joint(g.knee_joint).parent_link != m.joint(g.hip_joint).child_link ||
-        m.joint(g.ankle_joint).parent_link != m.joint(g.knee_joint).child_link)
-      problems.push_back(m.source() + ": " + prefix + "hip, knee and ankle must form one chain");
-    g.p_PH = m.joint(g.hip_joint).X_PJ.translation();
-    const Vec3 knee = m.joint(g.knee_joint).X_PJ.translation();
-    const Vec3 ankle = m.joint(g.ankle_joint).X_PJ.translation();
-    if (knee.head<2>().norm() > 1e-9 || ankle.head<2>().norm() > 1e-9 || knee.z() >= 0 || ankle.z() >= 0)
-      problems.push_back(m.source() + ": " + prefix + "knee and ankle origins must lie straight below (0 0 −L)");
-    g.thigh_m = -knee.z();
-    g.shank_m = -ankle.z();
-    g.foot_link = m.joint(g.ankle_joint).child_link;
-    // The sole: the lowest box on the foot link.
-    bool found = false;
-    for (const LinkShape& s : m.link(g.foot_link).shapes) {
-      const Box* box = std::get_if<Box>(&s.shape);
-      if (!box || !s.X_LO.linear().isApprox(Rotation::Identity(), 1e-9)) continue;
-      const Vec3 o = s.X_LO.translation();
-      const double sole = o.z() - box->size_m.z() / 2;
-      if (found && sole >= g.sole_z_m) continue;
-      found = true;
-      g.sole_z_m = sole;
-      g.heel_x_m = o.x() - box->size_m.x() / 2;
-      g.toe_x_m = o.x() + box->size_m.x() / 2;
-      g.half_width_m = box->size_m.y() / 2;
+
+    // one chain from the root: hip, knee, ankle, foot in that order
+    chain_[static_cast<int>(side)] = ChainTo(m, g.foot_link);
+    const std::vector<int>& chain = chain_[static_cast<int>(side)];
+    std::ptrdiff_t at[3];
+    for (int k = 0; k < 3; ++k) at[k] = std::find(chain.begin(), chain.end(), *joint_of[k]) - chain.begin();
+    for (int k = 0; k < 3; ++k) {
+      if (at[k] == static_cast<std::ptrdiff_t>(chain.size())) {
+        problems.push_back(source + ": " + key + "." + joint_key[k] + ": joint '" + *joint_name[k] +
+                           "' is not on the chain from the root link to the foot '" + name.foot + "'");
+      }
     }
-    if (!found) problems.push_back(m.source() + ": link '" + m.link_name(g.foot_link) + "' needs an axis-aligned box as its sole");
-    else if (g.heel_x_m >= 0 || g.toe_x_m <= 0 || g.sole_z_m >= 0)
-      problems.push_back(m.source() + ": the sole box of '" + m.link_name(g.foot_link) + "' must reach behind and in front of the ankle, below it");
+    if (problems.size() == problems_before && !(at[0] < at[1] && at[1] < at[2])) {
+      problems.push_back(source + ": " + key + ": the chain from the root to the foot must pass the hip, then the "
+                         "knee, then the ankle; it passes '" + *joint_name[0] + "' at joint " + std::to_string(at[0] + 1) +
+                         ", '" + *joint_name[1] + "' at " + std::to_string(at[1] + 1) + ", '" + *joint_name[2] +
+                         "' at " + std::to_string(at[2] + 1));
+    }
+
+    // the pitch axes, at the reference pose: within the tolerance of ±y_P
+    double* const sign_of[3] = {&g.hip_sign, &g.knee_sign, &g.ankle_sign};
+    Vec3 p_P[3];
+    for (int k = 0; k < 3; ++k) {
+      const RobotJoint& joint = m.joint(*joint_of[k]);
+      const Pose& X_PJ = X_PL[joint.child_link];  // the child frame is the joint frame moved by q
+      const Vec3 axis_P = X_PJ.linear() * joint.axis_J;
+      p_P[k] = X_PJ.translation();
+      *sign_of[k] = axis_P.y() >= 0 ? 1.0 : -1.0;
+      const double tilt_deg = RadToDeg(std::acos(std::min(1.0, std::abs(axis_P.y()))));
+      if (tilt_deg > kMaxPitchAxisTilt_deg) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "'s axis is %.1f° off the sagittal normal (the root link's y axis) at the reference pose; "
+                      "a pitch axis must be within %.0f°",
+                      tilt_deg, kMaxPitchAxisTilt_deg);
+        problems.push_back(source + ": " + key + "." + joint_key[k] + ": joint '" + *joint_name[k] + "'" + text);
+      }
+    }
+    g.p_PH = p_P[0];
+    std::tie(g.thigh0_rad, g.thigh_m) = SagittalSegment(p_P[0], p_P[1]);
+    std::tie(g.shank0_rad, g.shank_m) = SagittalSegment(p_P[1], p_P[2]);
+    if (g.thigh_m < kMinSegment_m || g.shank_m < kMinSegment_m) {
+      char text[200];
+      std::snprintf(text, sizeof text, ": the legs cannot reach the ground: thigh %.3f m and shank %.3f m in the "
+                    "sagittal plane; each must be at least %.2f m", g.thigh_m, g.shank_m, kMinSegment_m);
+      problems.push_back(source + ": " + key + text);
+    }
+
+    // the sole: the lowest points of the foot and what hangs from it
+    const std::vector<int> foot_links = Subtree(m, g.foot_link);
+    feet_subtrees.insert(feet_subtrees.end(), foot_links.begin(), foot_links.end());
+    std::vector<Vec3> points_P;
+    for (const int link : foot_links) AddLinkPoints_P(m, link, X_PL, &points_P);
+    if (points_P.empty()) {
+      problems.push_back(source + ": " + key + ".foot: link '" + name.foot +
+                         "' (and the links below it) has no geometry; the gait stands on its lowest points");
+      legs_ok = false;
+      continue;
+    }
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : points_P) lowest = std::min(lowest, p.z());
+    double heel = std::numeric_limits<double>::infinity(), toe = -heel, y_min = heel, y_max = -heel;
+    for (const Vec3& p : points_P) {
+      if (p.z() > lowest + kSoleBand_m) continue;
+      heel = std::min(heel, p.x());
+      toe = std::max(toe, p.x());
+      y_min = std::min(y_min, p.y());
+      y_max = std::max(y_max, p.y());
+    }
+    const Vec3& p_PA = p_P[2];
+    g.sole_z_m = lowest - p_PA.z();
+    g.heel_x_m = heel - p_PA.x();
+    g.toe_x_m = toe - p_PA.x();
+    g.sole_y_m = 0.5 * (y_min + y_max);
+    g.half_width_m = 0.5 * (y_max - y_min);
+    if (!(g.heel_x_m < 0 && g.toe_x_m > 0 && g.sole_z_m < 0)) {
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "' has its sole (its lowest points, within %.0f mm) from %.3f to %.3f m along x and %.3f m "
+                    "below the ankle joint; the sole must reach behind and in front of the ankle, below it",
+                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m);
+      problems.push_back(source + ": " + key + ".foot: link '" + name.foot + text);
+    }
+    lowest_sole_P = std::min(lowest_sole_P, lowest);
+    // the foot points in the foot link's own frame
+    const Pose X_LP = X_PL[g.foot_link].inverse();
+    g.p_L_heel = X_LP * Vec3(heel, g.sole_y_m, lowest);
+    g.p_L_sole = X_LP * Vec3(p_PA.x(), g.sole_y_m, lowest);
+    g.p_L_toe = X_LP * Vec3(toe, g.sole_y_m, lowest);
+  }
+  if (!problems.empty() || !legs_ok) throw InputError(problems);
+
+  // standing straight: both legs must reach the floor, nothing else below it
+  const LegAnglesRad straight;
+  double standing[2];
+  for (const Side side : {Side::kLeft, Side::kRight}) {
+    LegGeometry& g = legs_[static_cast<int>(side)];
+    standing[static_cast<int>(side)] = -Point(side, straight, FootPoint::kMid).y();
+    g.leg_length_m = g.p_PH.z() + standing[static_cast<int>(side)];
+  }
+  standing_height_m_ = std::min(standing[0], standing[1]);
+  if (std::abs(legs_[0].leg_length_m - legs_[1].leg_length_m) > kReachTolerance_m) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  ": the legs cannot both reach the ground: standing straight, the left sole is %.3f m and the right "
+                  "%.3f m below the pelvis (they may differ by %.0f mm at most)",
+                  standing[0], standing[1], 1e3 * kReachTolerance_m);
+    problems.push_back(source + ": robot.legs" + text);
+  }
+  std::sort(feet_subtrees.begin(), feet_subtrees.end());
+  for (int link = 0; link < m.link_count(); ++link) {
+    if (std::binary_search(feet_subtrees.begin(), feet_subtrees.end(), link)) continue;
+    std::vector<Vec3> points_P;
+    AddLinkPoints_P(m, link, X_PL, &points_P);
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : points_P) lowest = std::min(lowest, p.z());
+    if (lowest < lowest_sole_P - kReachTolerance_m) {
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "' hangs %.3f m below the soles at the reference pose, so the feet cannot reach the ground "
+                    "(hold its joints with robot.joints_deg, or map the legs to the lowest links)",
+                    lowest_sole_P - lowest);
+      problems.push_back(source + ": robot.legs: link '" + m.link_name(link) + text);
+    }
   }
   if (!problems.empty()) throw InputError(problems);
 }
@@ -112,20 +301,46 @@ LegAnglesRad BipedLegs::SolveAnkle(Side s, const Vec2xz& p_PA, double pitch) con
   return a;
 }
 
+Pose BipedLegs::FootPose_P(Side s, const LegAnglesRad& a) const {
+  const LegGeometry& g = leg(s);
+  Pose X_PL = Pose::Identity();
+  for (const int j : chain_[static_cast<int>(s)]) {
+    double q = q_reference_[j];
+    if (j == g.hip_joint) q = g.hip_sign * (g.thigh0_rad - a.hip);
+    if (j == g.knee_joint) q = g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad));
+    if (j == g.ankle_joint) q = g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch);
+    X_PL = X_PL * model_.JointTransform(j, q);
+  }
+  return X_PL;
+}
+
+const Vec3& BipedLegs::FootPoint_L(Side s, FootPoint which) const {
+  const LegGeometry& g = leg(s);
+  switch (which) {
+    case FootPoint::kHeel: return g.p_L_heel;
+    case FootPoint::kToe: return g.p_L_toe;
+    case FootPoint::kMid: break;
+  }
+  return g.p_L_sole;
+}
+
+Vec3 BipedLegs::Point3(Side s, const LegAnglesRad& a, FootPoint which) const {
+  return FootPose_P(s, a) * FootPoint_L(s, which);
+}
+
 void BipedLegs::WriteJoints(Side s, const LegAnglesRad& a, std::span<double> q) const {
   const LegGeometry& g = leg(s);
-  q[g.hip_joint] = g.hip_sign * a.hip;
-  q[g.knee_joint] = g.knee_sign * a.knee;
-  // ankle dorsiflexion = foot pitch − shank angle
-  q[g.ankle_joint] = g.ankle_sign * (a.pitch - (a.hip - a.knee));
+  q[g.hip_joint] = g.hip_sign * (g.thigh0_rad - a.hip);
+  q[g.knee_joint] = g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad));
+  q[g.ankle_joint] = g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch);
 }
 
 LegAnglesRad BipedLegs::ReadJoints(Side s, std::span<const double> q) const {
   const LegGeometry& g = leg(s);
   LegAnglesRad a;
-  a.hip = q[g.hip_joint] / g.hip_sign;
-  a.knee = q[g.knee_joint] / g.knee_sign;
-  a.pitch = q[g.ankle_joint] / g.ankle_sign + (a.hip - a.knee);
+  a.hip = g.thigh0_rad - q[g.hip_joint] / g.hip_sign;
+  a.knee = q[g.knee_joint] / g.knee_sign + (g.thigh0_rad - g.shank0_rad);
+  a.pitch = (a.hip - a.knee) - g.shank0_rad - q[g.ankle_joint] / g.ankle_sign;
   return a;
 }
 

@@ -1,17 +1,36 @@
-// The legs of a biped seen by the gait: each leg as a planar hip–knee–ankle
-// chain in the pelvis's sagittal plane, its foot as a sole rectangle, read from
-// a RobotModel that follows the biped convention of robot/robot_model.h
-// (joints <side>_{hip,knee,ankle}_pitch about ±y, tibia and foot hanging along
-// −z at q = 0, a box on each foot link). Planar forward and inverse kinematics
-// in the pelvis frame P: a point is (x forward, z up); angles as in
-// gait/gait_curves.h (hip flexion, knee flexion, foot pitch toe-up).
+// The legs of a biped seen by the gait, read from any URDF through a leg map
+// (robot.legs: each leg's hip, knee and ankle pitch joints and its foot link).
+// Nothing comes from names: at the reference pose (the gait's joints at 0,
+// every other joint at its held angle) the model gives each pitch axis and
+// its sign, the hip, knee and ankle points, the thigh and shank lengths in
+// the sagittal plane and their angles from the vertical, and the sole: the
+// lowest points of the foot link's geometry (and of the links hanging from
+// it), whose front and back ends along x are the toe and the heel.
+//
+// Each leg is then a planar hip–knee–ankle chain in the pelvis's sagittal
+// plane (x forward, z up) for the gait's planning and inverse kinematics, and
+// its own chain of joints from the root for the exact 3D pose of the foot
+// (which places the pelvis from a latched contact point, so that a planted
+// foot stays planted even when a pitch axis is a few degrees off).
+//
+// Angles as in gait/gait_curves.h: thigh angle θT = hip flexion, shank angle
+// θS = θT − knee, foot pitch ψ (toe up +), all 0 when standing straight. A
+// pitch axis a = s·y_P (s = ±1, the sign) turns its segment by −s·q, so with
+// θT0, θS0 the segments' angles at the reference pose:
+//   q_hip = s_h·(θT0 − θT),  q_knee = s_k·(knee − (θT0 − θS0)),  q_ankle = s_a·(θS − θS0 − ψ).
+//
+// Frames: P pelvis (the root link; x forward, y left, z up), L the foot link.
 #pragma once
 
 #include <array>
+#include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "core/geometry.h"
 #include "gait/gait_curves.h"
+#include "io/scenario.h"
 #include "robot/robot_model.h"
 
 namespace proxsim {
@@ -21,17 +40,29 @@ enum class Side { kLeft = 0, kRight = 1 };
 /// A point in the pelvis sagittal plane: x forward, z up, metres.
 using Vec2xz = Eigen::Vector2d;
 
+/// Largest angle between a pitch axis and the pelvis's y axis (the sagittal normal), degrees.
+constexpr double kMaxPitchAxisTilt_deg = 5.0;
+
+/// The built-in biped's leg map (the default of robot.legs).
+std::array<LegNames, 2> BuiltinBipedLegs();
+
+/// One leg at the reference pose, in the pelvis frame P.
 struct LegGeometry {
   int hip_joint = -1, knee_joint = -1, ankle_joint = -1;
   int foot_link = -1;
-  double hip_sign = 1, knee_sign = 1, ankle_sign = 1;  ///< q = sign × clinical angle
-  Vec3 p_PH = Vec3::Zero();  ///< hip joint in the pelvis frame
-  double thigh_m = 0.45;     ///< hip → knee
-  double shank_m = 0.45;     ///< knee → ankle
-  double heel_x_m = -0.06;   ///< sole rectangle in the foot frame (x), heel end
-  double toe_x_m = 0.20;     ///< toe end
-  double sole_z_m = -0.08;   ///< sole plane below the ankle
-  double half_width_m = 0.05;
+  double hip_sign = 1, knee_sign = 1, ankle_sign = 1;  ///< s: each pitch axis is (about) s·y_P
+  double thigh0_rad = 0;     ///< thigh angle θT0 from the downward vertical at the reference pose
+  double shank0_rad = 0;     ///< shank angle θS0
+  Vec3 p_PH = Vec3::Zero();  ///< hip pitch joint
+  double thigh_m = 0;        ///< hip → knee, in the sagittal plane
+  double shank_m = 0;        ///< knee → ankle
+  double heel_x_m = 0;       ///< sole's back end, along x from the ankle joint
+  double toe_x_m = 0;        ///< its front end
+  double sole_z_m = 0;       ///< sole below the ankle joint (< 0)
+  double sole_y_m = 0;       ///< y of the sole's centre line in P
+  double half_width_m = 0;   ///< half the sole's width
+  Vec3 p_L_heel = Vec3::Zero(), p_L_sole = Vec3::Zero(), p_L_toe = Vec3::Zero();  ///< in the foot link frame
+  double leg_length_m = 0;   ///< hip joint above the sole, standing straight
 };
 
 /// Where a foot touches: heel edge, sole point under the ankle, toe edge.
@@ -40,22 +71,44 @@ enum class FootPoint { kHeel, kMid, kToe };
 /// Both legs of a biped model.
 class BipedLegs {
  public:
-  /// Throws InputError naming the model's source when it lacks the biped convention.
+  /// Reads the legs `names` (nullopt: the built-in biped's) from `model` at the
+  /// reference pose `q_reference` (one value per joint: the held angles, 0 for
+  /// the legs' pitch joints). Throws InputError naming the URDF, the map's key
+  /// and why: a missing joint or link, a joint that is not revolute, joints not
+  /// in hip → knee → ankle → foot order on one chain from the root, a pitch
+  /// axis more than kMaxPitchAxisTilt_deg off the sagittal normal, a foot
+  /// without geometry or whose sole does not reach behind and in front of the
+  /// ankle, or legs that cannot reach the ground (zero-length segments, legs of
+  /// unequal length, another link hanging below the soles). `model` must outlive this.
+  BipedLegs(const RobotModel& model, const std::optional<std::array<LegNames, 2>>& names,
+            std::span<const double> q_reference);
+  /// The built-in map, every joint at 0.
   explicit BipedLegs(const RobotModel& model);
 
   const LegGeometry& leg(Side s) const { return legs_[static_cast<int>(s)]; }
+  /// Mean of the legs' lengths (hip joint above the sole), m.
+  double leg_length_m() const { return 0.5 * (legs_[0].leg_length_m + legs_[1].leg_length_m); }
+  /// Pelvis above the floor when standing straight (the lower of the legs), m.
+  double standing_height_m() const { return standing_height_m_; }
 
-  /// Ankle in P for the hip/knee angles.
+  /// Ankle in P for the hip/knee angles (sagittal plane).
   Vec2xz Ankle(Side s, const LegAnglesRad& a) const;
-  /// A foot point in P (its y is the hip's).
+  /// A foot point in P (sagittal plane).
   Vec2xz Point(Side s, const LegAnglesRad& a, FootPoint which) const;
-  /// Lowest z over the sole rectangle's corners, in P.
+  /// Lowest z of the sole's heel and toe, in P.
   double LowestSoleZ(Side s, const LegAnglesRad& a) const;
   /// Hip and knee (knee ≥ 0) putting the ankle at p_PA with the given foot
   /// pitch; out of reach, the leg points at the target as far as it goes.
   LegAnglesRad SolveAnkle(Side s, const Vec2xz& p_PA, double pitch) const;
-  /// Foot-frame offset (x, z) of a foot point.
+  /// Offset (x, z) of a foot point from the ankle at foot pitch 0.
   Vec2xz FootOffset(Side s, FootPoint which) const;
+
+  /// The foot link's pose in P through the leg's own joint chain (exact, 3D).
+  Pose FootPose_P(Side s, const LegAnglesRad& a) const;
+  /// A foot point in P, exact (3D).
+  Vec3 Point3(Side s, const LegAnglesRad& a, FootPoint which) const;
+  /// A foot point in the foot link frame.
+  const Vec3& FootPoint_L(Side s, FootPoint which) const;
 
   /// Writes the three pitch joints of a leg into q (by joint index).
   void WriteJoints(Side s, const LegAnglesRad& a, std::span<double> q) const;
@@ -63,7 +116,11 @@ class BipedLegs {
   LegAnglesRad ReadJoints(Side s, std::span<const double> q) const;
 
  private:
+  const RobotModel& model_;
   std::array<LegGeometry, 2> legs_;
+  std::array<std::vector<int>, 2> chain_;  // joints from the root to the foot link, parents first
+  std::vector<double> q_reference_;
+  double standing_height_m_ = 0;
 };
 
 /// Rotates a sagittal vector by a segment angle (positive: lower end forward / toe up).

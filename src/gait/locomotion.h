@@ -4,6 +4,7 @@
 // for a new episode. Strategies command it through strategy/RobotCommands.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/geometry.h"
@@ -35,6 +36,12 @@ struct FootFrame {
   Vec3 p_L_heel = Vec3::Zero();  ///< its back end
 };
 
+/// One gait cycle as walked.
+struct GaitCycle {
+  double stride_m = 0;  ///< heel strike to heel strike of one foot
+  double period_s = 0;  ///< the cycle's duration
+};
+
 /// What moves the robot. Advance() is called with non-decreasing times.
 class Locomotion {
  public:
@@ -53,6 +60,9 @@ class Locomotion {
   virtual void SetPath(std::vector<Vec2> waypoints_m) = 0;
   /// The feet, left then right; empty when the motion does not know them.
   virtual std::vector<FootFrame> Feet() const = 0;
+  /// The stride and period being walked (after defaults and limits); nullopt
+  /// for a motion without a gait cycle (a replayed trajectory).
+  virtual std::optional<GaitCycle> gait_cycle() const { return std::nullopt; }
   virtual const RobotModel& model() const = 0;
 };
 

@@ -9,15 +9,17 @@ namespace {
 
 constexpr const char* kBuiltinPrefix = "builtin:";
 
-RobotModel LoadModel(const std::string& model) {
-  if (model.starts_with(kBuiltinPrefix)) return RobotModel::Builtin(model.substr(std::string(kBuiltinPrefix).size()));
-  return RobotModel::FromUrdfFile(model);
+RobotModel LoadModel(const RobotConfig& config) {
+  const UrdfOptions options{.geometry = config.geometry, .package_paths = config.package_paths};
+  if (config.model.starts_with(kBuiltinPrefix))
+    return RobotModel::Builtin(config.model.substr(std::string(kBuiltinPrefix).size()), options);
+  return RobotModel::FromUrdfFile(config.model, options);
 }
 
 }  // namespace
 
 std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config) {
-  RobotModel model = LoadModel(config.model);
+  RobotModel model = LoadModel(config);
   if (!config.trajectory_file.empty()) {
     return std::make_unique<TrajectoryPlayer>(std::move(model), config.trajectory_file);
   }

@@ -3,11 +3,13 @@
 // the file and radians in these structs.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "robot/urdf_options.h"
 #include "scene/scene.h"
 #include "sensors/sensor_spec.h"
 #include "strategy/strategy_config.h"
@@ -31,6 +33,21 @@ struct SensorConfig {
 struct GaitConfig {
   double stride_m = 0.6;  ///< distance between two heel strikes of the same foot, > 0
   double period_s = 1.2;  ///< duration of one gait cycle (a stride), > 0
+  /// true: stride_m is not used; the gait scales the built-in biped's stride
+  /// with the robot's leg length (the scenario gave no stride_m)
+  bool derive_stride_from_legs = false;
+  /// true: period_s is not used; the gait scales the built-in biped's period
+  /// with the square root of the leg length (the scenario gave no period_s)
+  bool derive_period_from_legs = false;
+};
+
+/// One leg as the gait drives it (`robot.legs.left` / `.right`): the revolute
+/// joints of its hip, knee and ankle pitch, and its foot link.
+struct LegNames {
+  std::string hip;
+  std::string knee;
+  std::string ankle;
+  std::string foot;
 };
 
 struct RobotConfig {
@@ -41,6 +58,14 @@ struct RobotConfig {
   std::vector<Vec2> waypoints_m;            ///< path on the floor, world x-y; empty: straight ahead
   std::optional<StrategyConfig> strategy;  ///< the built-in strategy (`robot.strategy`, or `stop_distance_m` for stop); none when absent
   std::string trajectory_file;              ///< recorded trajectory CSV to replay instead of the gait
+  LinkGeometryKind geometry = LinkGeometryKind::kVisual;  ///< `robot.geometry`: what the links' surfaces are made of
+  std::vector<std::string> package_paths;   ///< `robot.package_paths`: folders for package:// URIs (resolved paths)
+  /// `robot.legs`: the gait's joints on this robot, left then right; absent:
+  /// the built-in biped's (left_hip_pitch, left_knee_pitch, left_ankle_pitch, left_foot, ...)
+  std::optional<std::array<LegNames, 2>> legs;
+  /// `robot.joints_deg` in radians: joints the gait does not drive, held at
+  /// these angles (every other one at 0), in the file's order
+  std::vector<std::pair<std::string, double>> joints_rad;
 };
 
 struct Scenario {

@@ -1,10 +1,14 @@
-// The `robot` section: which robot (the built-in biped or a URDF file), where
-// it starts, how it walks (gait, path of waypoints, or a recorded trajectory)
+// The `robot` section: which robot (the built-in biped or a URDF file), which
+// of its geometries stands for its surface and where its package:// meshes
+// are, how the gait maps onto its legs and which angles its other joints
+// hold, where it starts, how it walks (gait, path of waypoints, or a recorded trajectory)
 // and its built-in strategy (`strategy: {name: stop | circumvent, ...}`, or
 // the shorthand `stop_distance_m: D` for `{name: stop, stop_distance_m: D}`). The URDF itself is loaded elsewhere
 // (robot/); here we only check that a named file exists, so that a typo in a
 // path is reported with the scenario's other problems.
+#include <algorithm>
 #include <system_error>
+#include <tuple>
 
 #include "io/nearest_key.h"
 #include "io/scenario_sections.h"
@@ -28,6 +32,61 @@ std::optional<std::string> ReadExistingFile(YamlReader& reader, const Field& fie
     return std::nullopt;
   }
   return path.string();
+}
+
+// legs: {left: {hip, knee, ankle, foot}, right: {...}}, every name required
+std::optional<std::array<LegNames, 2>> ReadLegs(YamlReader& reader, const Field& field) {
+  if (!field) return std::nullopt;
+  const auto legs = reader.Map(field, {"left", "right"});
+  if (!legs) return std::nullopt;
+  std::array<LegNames, 2> names;
+  bool complete = true;
+  for (const auto& [side, leg] : {std::pair{"left", &names[0]}, std::pair{"right", &names[1]}}) {
+    const Field side_field = (*legs)[side];
+    if (!reader.Require(side_field, std::string(side) + ": {hip, knee, ankle, foot}, the leg's joints and foot link")) {
+      complete = false;
+      continue;
+    }
+    const auto map = reader.Map(side_field, {"hip", "knee", "ankle", "foot"});
+    if (!map) {
+      complete = false;
+      continue;
+    }
+    for (const auto& [key, value, what] :
+         {std::tuple{"hip", &leg->hip, "the hip pitch joint's name"}, std::tuple{"knee", &leg->knee, "the knee joint's name"},
+          std::tuple{"ankle", &leg->ankle, "the ankle pitch joint's name"}, std::tuple{"foot", &leg->foot, "the foot link's name"}}) {
+      const Field name = (*map)[key];
+      const auto text = reader.Require(name, std::string(key) + ", " + what) ? reader.String(name) : std::nullopt;
+      if (text) *value = *text;
+      else complete = false;
+    }
+  }
+  if (!complete) return std::nullopt;
+  return names;
+}
+
+// joints_deg: {JOINT: angle, ...}, any joint names (checked against the URDF when it loads)
+std::vector<std::pair<std::string, double>> ReadJointAngles(YamlReader& reader, const Field& field) {
+  std::vector<std::pair<std::string, double>> angles;
+  if (!field || field.node.IsNull()) return angles;
+  if (!field.node.IsMap()) {
+    reader.Fail(field, "expected a map {JOINT_NAME: angle in degrees, ...}, got " + DescribeNode(field.node));
+    return angles;
+  }
+  for (const auto& entry : field.node) {
+    const std::string name = entry.first.IsScalar() ? entry.first.Scalar() : "";
+    const Field value{entry.second, JoinPath(field.path, name), true};
+    if (name.empty()) {
+      reader.Fail(value, "expected a joint name as the key");
+      continue;
+    }
+    if (std::ranges::any_of(angles, [&](const auto& a) { return a.first == name; })) {
+      reader.Fail(value, "joint '" + name + "' is given twice");
+      continue;
+    }
+    if (const auto deg = reader.Number(value, AnyNumber())) angles.emplace_back(name, DegToRad(*deg));
+  }
+  return angles;
 }
 
 // `strategy: {name, ...}`: the keys allowed depend on the name.
@@ -76,7 +135,8 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
 
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir) {
   RobotConfig robot;
-  const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory"});
+  const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
+                                      "geometry", "package_paths", "legs", "joints_deg"});
   if (!map) return robot;
 
   // model: builtin:NAME, or a URDF file
@@ -87,14 +147,48 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     robot.model = *urdf;
   }
 
+  // geometry: visual | collision
+  if (const Field geometry = (*map)["geometry"]) {
+    const auto kind = reader.String(geometry);
+    if (kind == "visual") {
+      robot.geometry = LinkGeometryKind::kVisual;
+    } else if (kind == "collision") {
+      robot.geometry = LinkGeometryKind::kCollision;
+    } else if (kind) {
+      reader.Fail(geometry, "expected visual or collision, got " + DescribeNode(geometry.node));
+    }
+  }
+
+  // package_paths: [folder, ...], relative to the scenario's folder
+  if (const auto folders = reader.List((*map)["package_paths"], "a list of folders holding ROS packages")) {
+    for (const Field& folder : *folders) {
+      const auto text = reader.String(folder);
+      if (!text) continue;
+      const std::filesystem::path path = ResolveScenarioPath(base_dir, *text);
+      std::error_code error;
+      if (!std::filesystem::is_directory(path, error)) {
+        reader.Fail(folder, "expected a folder (relative paths start from the scenario's folder), but '" +
+                                path.string() + "' is not one");
+        continue;
+      }
+      robot.package_paths.push_back(path.string());
+    }
+  }
+
+  robot.legs = ReadLegs(reader, (*map)["legs"]);
+  robot.joints_rad = ReadJointAngles(reader, (*map)["joints_deg"]);
+
   // start: {xyz_m, yaw_deg}
   if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg"})) {
     robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
     robot.start_yaw_rad = DegToRad(reader.Number((*start)["yaw_deg"]).value_or(0.0));
   }
 
-  // gait: {stride_m, period_s}
+  // gait: {stride_m, period_s}; either one absent scales with the legs
+  robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
   if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s"})) {
+    robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
+    robot.gait.derive_period_from_legs = !gait->Has("period_s");
     robot.gait.stride_m = reader.Number((*gait)["stride_m"], PositiveNumber("m")).value_or(robot.gait.stride_m);
     robot.gait.period_s = reader.Number((*gait)["period_s"], PositiveNumber("s")).value_or(robot.gait.period_s);
   }

@@ -1,8 +1,25 @@
 #include "io/scene_json.h"
 
+#include <cctype>
+#include <charconv>
+#include <string_view>
+#include <cstdlib>
+
 namespace proxsim {
 
 namespace {
+
+// A float vertex coordinate as the double of its shortest decimal form, so
+// that the JSON holds "0.0123457" and not the float's 17-digit double
+// expansion: half the size for a robot of meshes, and still exactly the
+// float the ray caster uses.
+double ShortestDecimal(float value) {
+  char text[32];
+  const auto [end, error] = std::to_chars(text, text + sizeof text - 1, value);
+  if (error != std::errc()) return value;
+  *end = '\0';
+  return std::strtod(text, nullptr);
+}
 template <typename... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
@@ -24,7 +41,8 @@ nlohmann::json ShapeToJson(const Shape& shape, const Pose& X) {
                  [&](const Plane&) {},
                  [&](const Mesh& mesh) {
                    nlohmann::json vertices = nlohmann::json::array();
-                   for (const Vec3f& v : mesh.data->vertices_O) vertices.push_back({v.x(), v.y(), v.z()});
+                   for (const Vec3f& v : mesh.data->vertices_O)
+                     vertices.push_back({ShortestDecimal(v.x()), ShortestDecimal(v.y()), ShortestDecimal(v.z())});
                    j["vertices_m"] = std::move(vertices);
                    j["triangles"] = mesh.data->triangles;
                    j["file"] = mesh.file;
@@ -76,6 +94,51 @@ nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkGeome
   }
   doc["sensors"] = std::move(sensors);
   return doc;
+}
+
+std::string SceneJsonText(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links) {
+  nlohmann::json doc = SceneToJson(scenario, robot_links);
+  // each mesh list is swapped for a numbered placeholder string, the
+  // document indented, then the placeholders replaced by the compact lists
+  std::vector<std::string> compact;
+  const auto swap_out = [&](nlohmann::json& shape) {
+    for (const char* key : {"vertices_m", "triangles"}) {
+      if (!shape.contains(key)) continue;
+      compact.push_back(shape[key].dump());
+      std::string placeholder(1, '\x01');
+      placeholder += std::to_string(compact.size() - 1);
+      placeholder += '\x01';
+      shape[key] = placeholder;
+    }
+  };
+  for (auto& object : doc["objects"]) swap_out(object);
+  if (doc["robot"].is_object())
+    for (auto& link : doc["robot"]["links"])
+      for (auto& shape : link["shapes"]) swap_out(shape);
+  const std::string indented = doc.dump(1);
+  std::string text;
+  text.reserve(indented.size() + 16);
+  constexpr std::string_view kOpen = "\"\\u0001", kClose = "\\u0001\"";
+  for (std::size_t i = 0; i < indented.size();) {
+    const std::size_t at = indented.find(kOpen, i);
+    if (at == std::string::npos) {
+      text.append(indented, i, std::string::npos);
+      break;
+    }
+    text.append(indented, i, at - i);
+    // a placeholder is "\u0001N\u0001" with N a list's number; anything else is copied as it is
+    std::size_t end = at + kOpen.size(), n = 0;
+    while (end < indented.size() && std::isdigit(static_cast<unsigned char>(indented[end])) && end - at < 20)
+      n = 10 * n + static_cast<std::size_t>(indented[end++] - '0');
+    if (end > at + kOpen.size() && n < compact.size() && indented.compare(end, kClose.size(), kClose) == 0) {
+      text += compact[n];
+      i = end + kClose.size();
+    } else {
+      text += indented[at];
+      i = at + 1;
+    }
+  }
+  return text + "\n";
 }
 
 }  // namespace proxsim

@@ -26,4 +26,9 @@ struct LinkGeometryJson {
 /// The whole scene.json document; `robot_links` empty when there is no robot.
 nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links);
 
+/// scene.json's text: the document indented, except each mesh's vertex and
+/// triangle lists, one line each (a robot of meshes would otherwise put a
+/// million numbers on a million lines).
+std::string SceneJsonText(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links);
+
 }  // namespace proxsim

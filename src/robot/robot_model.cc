@@ -3,8 +3,12 @@
 // console_bridge; we capture those lines and put them in the InputError.
 #include "robot/robot_model.h"
 
+#include <array>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
+#include <optional>
 #include <queue>
 #include <sstream>
 
@@ -13,6 +17,8 @@
 
 #include "core/embedded_files.h"
 #include "core/input_error.h"
+#include "robot/mesh_uri.h"
+#include "scene/mesh_loader.h"
 
 namespace proxsim {
 
@@ -54,8 +60,79 @@ Pose PoseFromUrdf(const urdf::Pose& p) {
   return X;
 }
 
+// The meshes of one URDF: each file found (robot/mesh_uri.h) and read once,
+// however many links name it, at whatever scales (a scaled copy is made from
+// the file's triangles, not read again).
+class UrdfMeshes {
+ public:
+  UrdfMeshes(const std::string& source, const UrdfOptions& options)
+      : options_(options), urdf_dir_(std::filesystem::path(source).parent_path()) {}
+
+  /// The mesh shape for a URDF <mesh>; nullopt after adding a problem.
+  std::optional<Mesh> Load(const urdf::Mesh& m, const std::string& where, std::vector<std::string>* problems) {
+    const Vec3 scale(m.scale.x, m.scale.y, m.scale.z);
+    if (!scale.allFinite() || (scale.array() == 0).any()) {
+      problems->push_back(where + ": mesh '" + m.filename + "' has a zero or non-finite scale");
+      return std::nullopt;
+    }
+    const MeshLookup lookup = ResolveMeshUri(m.filename, urdf_dir_, options_.package_paths);
+    if (!lookup.path) {
+      problems->push_back(where + ": mesh '" + m.filename + "' not found: " + lookup.problem);
+      return std::nullopt;
+    }
+    // the file, read once
+    std::error_code error;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(*lookup.path, error);
+    const std::string file = error ? lookup.path->string() : canonical.string();
+    auto raw = read_.find(file);
+    if (raw == read_.end()) {
+      std::shared_ptr<const TriangleMesh> data;
+      std::string why;
+      try {
+        data = LoadMeshFile(lookup.path->string(), Vec3::Ones());
+      } catch (const InputError& e) {
+        for (const std::string& line : e.problems()) why += (why.empty() ? "" : "; ") + line;
+      }
+      raw = read_.emplace(file, FileRead{std::move(data), std::move(why)}).first;
+    }
+    if (!raw->second.data) {
+      problems->push_back(where + ": mesh '" + m.filename + "': " + raw->second.why);
+      return std::nullopt;
+    }
+    if (scale == Vec3::Ones()) return Mesh{.file = m.filename, .scale = scale, .data = raw->second.data};
+    // a scale: one scaled copy per file and scale
+    const auto key = std::make_pair(file, std::array<double, 3>{scale.x(), scale.y(), scale.z()});
+    auto scaled = scaled_.find(key);
+    if (scaled == scaled_.end()) {
+      auto copy = std::make_shared<TriangleMesh>(*raw->second.data);
+      for (Vec3f& v : copy->vertices_O) {
+        v = (v.cast<double>().cwiseProduct(scale)).cast<float>();
+        if (!v.allFinite()) {
+          problems->push_back(where + ": mesh '" + m.filename + "': a vertex is not finite after scaling");
+          return std::nullopt;
+        }
+      }
+      scaled = scaled_.emplace(key, std::move(copy)).first;
+    }
+    return Mesh{.file = m.filename, .scale = scale, .data = scaled->second};
+  }
+
+  /// Mesh files read (successfully or not).
+  std::size_t file_count() const { return read_.size(); }
+
+ private:
+  struct FileRead {
+    std::shared_ptr<const TriangleMesh> data;  // null when the file could not be read
+    std::string why;                           // and why
+  };
+  const UrdfOptions& options_;
+  std::filesystem::path urdf_dir_;
+  std::map<std::string, FileRead> read_;
+  std::map<std::pair<std::string, std::array<double, 3>>, std::shared_ptr<const TriangleMesh>> scaled_;
+};
+
 // A URDF geometry as a proxsim shape; adds a problem and returns false when unsupported.
-bool ShapeFromUrdf(const urdf::Geometry& g, const std::string& where, Shape* out,
+bool ShapeFromUrdf(const urdf::Geometry& g, const std::string& where, UrdfMeshes& meshes, Shape* out,
                    std::vector<std::string>* problems) {
   switch (g.type) {
     case urdf::Geometry::BOX: {
@@ -86,10 +163,10 @@ bool ShapeFromUrdf(const urdf::Geometry& g, const std::string& where, Shape* out
       return true;
     }
     case urdf::Geometry::MESH: {
-      const auto& m = static_cast<const urdf::Mesh&>(g);
-      problems->push_back(where + ": mesh geometry ('" + m.filename +
-                          "') is not yet supported on robot links; use box, sphere or cylinder");
-      return false;
+      auto mesh = meshes.Load(static_cast<const urdf::Mesh&>(g), where, problems);
+      if (!mesh) return false;
+      *out = std::move(*mesh);
+      return true;
     }
   }
   problems->push_back(where + ": unknown geometry type");
@@ -114,23 +191,28 @@ Pose JointMotion(const RobotJoint& j, double q) {
 
 }  // namespace
 
-RobotModel RobotModel::FromUrdfFile(const std::string& path) {
+const char* LinkGeometryKindName(LinkGeometryKind kind) {
+  return kind == LinkGeometryKind::kCollision ? "collision" : "visual";
+}
+
+RobotModel RobotModel::FromUrdfFile(const std::string& path, const UrdfOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the URDF file (missing or unreadable)");
   std::stringstream text;
   text << in.rdbuf();
-  return FromUrdfText(text.str(), path);
+  return FromUrdfText(text.str(), path, options);
 }
 
-RobotModel RobotModel::Builtin(const std::string& name) {
+RobotModel RobotModel::Builtin(const std::string& name, const UrdfOptions& options) {
   const std::string key = "data/robots/" + name + ".urdf";
   const auto& files = EmbeddedFiles();
   const auto it = files.find(key);
   if (it == files.end()) throw InputError("builtin:" + name + ": no built-in robot of that name (known: biped)");
-  return FromUrdfText(std::string(it->second), "builtin:" + name);
+  return FromUrdfText(std::string(it->second), "builtin:" + name, options);
 }
 
-RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::string& source) {
+RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::string& source,
+                                    const UrdfOptions& options) {
   std::vector<std::string> messages;
   const urdf::ModelInterfaceSharedPtr urdf = ParseCapturingErrors(urdf_text, &messages);
   if (!urdf) {
@@ -158,6 +240,7 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
   model.name_ = urdf->getName();
   model.source_ = source;
   std::vector<std::string> problems;
+  UrdfMeshes meshes(source, options);
 
   // Breadth-first from the root: link 0 is the root, every joint comes after
   // its parent link, so joint order is a valid forward-kinematics order.
@@ -174,17 +257,20 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
     RobotLink link;
     link.name = ul->name;
     if (ul->inertial) link.mass_kg = ul->inertial->mass;
-    // Geometry: collision elements, else visual ones.
-    std::vector<std::pair<urdf::GeometrySharedPtr, urdf::Pose>> geoms;
+    // Geometry: the kind asked for, else the other one.
+    std::vector<std::pair<urdf::GeometrySharedPtr, urdf::Pose>> visual, collision;
+    for (const auto& v : ul->visual_array)
+      if (v && v->geometry) visual.emplace_back(v->geometry, v->origin);
     for (const auto& c : ul->collision_array)
-      if (c && c->geometry) geoms.emplace_back(c->geometry, c->origin);
-    if (geoms.empty())
-      for (const auto& v : ul->visual_array)
-        if (v && v->geometry) geoms.emplace_back(v->geometry, v->origin);
-    for (const auto& [g, origin] : geoms) {
+      if (c && c->geometry) collision.emplace_back(c->geometry, c->origin);
+    const bool want_visual = options.geometry == LinkGeometryKind::kVisual;
+    const bool use_visual = want_visual ? !visual.empty() : collision.empty();
+    link.shapes_kind = use_visual ? LinkGeometryKind::kVisual : LinkGeometryKind::kCollision;
+    for (const auto& [g, origin] : use_visual ? visual : collision) {
       Shape shape;
-      if (ShapeFromUrdf(*g, source + ": link '" + ul->name + "'", &shape, &problems))
-        link.shapes.push_back({shape, PoseFromUrdf(origin)});
+      const std::string where =
+          source + ": link '" + ul->name + "' (" + LinkGeometryKindName(link.shapes_kind) + ")";
+      if (ShapeFromUrdf(*g, where, meshes, &shape, &problems)) link.shapes.push_back({shape, PoseFromUrdf(origin)});
     }
     if (ul->parent_joint) link.parent_joint = model.JointIndex(ul->parent_joint->name);
     model.links_.push_back(std::move(link));
@@ -242,6 +328,7 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
   }
   if (!problems.empty()) throw InputError(problems);
   model.root_link_ = 0;
+  model.mesh_file_count_ = meshes.file_count();
   model.joint_order_.resize(model.joints_.size());
   for (int j = 0; j < model.joint_count(); ++j) model.joint_order_[j] = j;
   return model;
@@ -257,6 +344,14 @@ int RobotModel::JointIndex(const std::string& name) const {
   for (int i = 0; i < joint_count(); ++i)
     if (joints_[i].name == name) return i;
   return -1;
+}
+
+std::size_t RobotModel::MeshTriangleCount() const {
+  std::size_t triangles = 0;
+  for (const RobotLink& link : links_)
+    for (const LinkShape& shape : link.shapes)
+      if (const auto* mesh = std::get_if<Mesh>(&shape.shape)) triangles += mesh->data->triangles.size();
+  return triangles;
 }
 
 double RobotModel::TotalMass_kg() const {
@@ -275,6 +370,11 @@ void RobotModel::ForwardKinematics(const Pose& X_WRoot, std::span<const double> 
     const RobotJoint& joint = joints_[j];
     X_WL_out[joint.child_link] = X_WL_out[joint.parent_link] * joint.X_PJ * JointMotion(joint, q_by_joint_index[j]);
   }
+}
+
+Pose RobotModel::JointTransform(int joint, double q) const {
+  const RobotJoint& j = joints_.at(joint);
+  return j.X_PJ * JointMotion(j, q);
 }
 
 std::vector<Pose> RobotModel::ForwardKinematics(const Pose& X_WRoot, std::span<const double> q_by_joint_index) const {

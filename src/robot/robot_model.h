@@ -1,23 +1,27 @@
 // A robot as a tree of rigid links joined by 1-DoF joints, read from URDF
-// (urdfdom), with the links' collision shapes so that the robot is geometry in
-// the scene, and forward kinematics over the tree.
+// (urdfdom), with the links' geometry so that the robot is geometry in the
+// scene, and forward kinematics over the tree.
 //
 // Frames: W world, L a link frame (URDF: a link's frame is its parent joint's
 // frame), J a joint frame, O a shape's own frame in its link. X_PJ is a joint's
 // origin in its parent link; the child link frame C is J moved by the joint
 // value q along/about the joint axis (expressed in J), so X_PC = X_PJ·M(q).
 //
-// Geometry comes from each link's <collision> elements, or its <visual> ones
-// when it has none. Boxes, spheres and cylinders map to proxsim shapes;
-// meshes are refused with an InputError for now (scene/mesh_loader is not wired
-// into robots yet).
+// Geometry: each link's <visual> elements, or its <collision> ones, as
+// UrdfOptions::geometry says (a link without any of that kind uses the other).
+// Boxes, spheres and cylinders map to proxsim shapes; meshes (any format the
+// mesh loader reads, with the URDF's scale) are found as robot/mesh_uri.h
+// says and loaded once per file and scale, however many links use them. A
+// mesh that cannot be found or read is an InputError naming the URDF, the
+// link, the URI and the folders searched.
 //
-// The built-in biped (data/robots/biped.urdf) follows this convention, which
-// src/gait relies on: at q = 0 the legs hang straight down; thigh frames at the
-// hips, tibia frames at the knees (tibia along −z), foot frames at the ankles;
-// positive *_hip_pitch = hip flexion (axis 0 −1 0), *_knee_pitch = knee
-// flexion (axis 0 1 0), *_ankle_pitch = dorsiflexion (axis 0 −1 0). Standing
-// at q = 0 with the pelvis 0.98 m above the floor puts the soles at z = 0.
+// The built-in biped (data/robots/biped.urdf) is sized like the paper's robot:
+// at q = 0 the legs hang straight down; thigh frames at the hips, tibia frames
+// at the knees (tibia along −z), foot frames at the ankles; positive
+// *_hip_pitch = hip flexion (axis 0 −1 0), *_knee_pitch = knee flexion (axis
+// 0 1 0), *_ankle_pitch = dorsiflexion (axis 0 −1 0). Standing at q = 0 with
+// the pelvis 0.98 m above the floor puts the soles at z = 0. The gait does
+// not rely on any of this: it reads what it needs from the model (gait/leg_kinematics.h).
 #pragma once
 
 #include <span>
@@ -25,6 +29,7 @@
 #include <vector>
 
 #include "core/geometry.h"
+#include "robot/urdf_options.h"
 #include "scene/shape.h"
 
 namespace proxsim {
@@ -39,7 +44,8 @@ struct RobotLink {
   std::string name;
   int parent_joint = -1;            ///< index of the joint whose child this is; −1 for the root
   std::vector<int> child_joints;    ///< joints whose parent this is
-  std::vector<LinkShape> shapes;    ///< collision geometry (or visual when no collision)
+  std::vector<LinkShape> shapes;    ///< the geometry UrdfOptions chose (or the other kind when the link has none)
+  LinkGeometryKind shapes_kind = LinkGeometryKind::kVisual;  ///< which kind `shapes` came from
   double mass_kg = 0.0;             ///< 0 when the URDF gives no <inertial>
 };
 
@@ -59,16 +65,19 @@ struct RobotJoint {
 /// A URDF robot: links, joints, shapes and forward kinematics.
 class RobotModel {
  public:
-  /// Reads a URDF file. Throws InputError naming the file when it is missing,
-  /// not a valid URDF (urdfdom refuses it: bad XML, a missing link, a cycle,
-  /// no root), or uses unsupported geometry.
-  static RobotModel FromUrdfFile(const std::string& path);
+  /// Reads a URDF file and its meshes. Throws InputError naming the file when
+  /// it is missing, not a valid URDF (urdfdom refuses it: bad XML, a missing
+  /// link, a cycle, no root), has invalid geometry, or names a mesh that
+  /// cannot be found or read.
+  static RobotModel FromUrdfFile(const std::string& path, const UrdfOptions& options = {});
 
-  /// Parses URDF text; `source` names it in messages and resolves relative mesh paths.
-  static RobotModel FromUrdfText(const std::string& urdf_text, const std::string& source);
+  /// Parses URDF text; `source` names it in messages and its folder resolves
+  /// relative mesh paths and starts the search for packages.
+  static RobotModel FromUrdfText(const std::string& urdf_text, const std::string& source,
+                                 const UrdfOptions& options = {});
 
   /// A robot shipped inside the binary: "biped" (data/robots/biped.urdf).
-  static RobotModel Builtin(const std::string& name);
+  static RobotModel Builtin(const std::string& name, const UrdfOptions& options = {});
 
   const std::string& name() const { return name_; }
   const std::string& source() const { return source_; }
@@ -88,11 +97,19 @@ class RobotModel {
   /// Total mass of the links, kg.
   double TotalMass_kg() const;
 
+  /// Triangles of the links' meshes (each link counts its own, shared files included).
+  std::size_t MeshTriangleCount() const;
+  /// Distinct mesh files loaded (a file used by several links counts once).
+  std::size_t MeshFileCount() const { return mesh_file_count_; }
+
   /// Poses of every link in W given the root link's pose X_WRoot and one value
   /// per joint (rad or m, indexed like joint(i); fixed joints ignore theirs).
   /// Both spans are sized joint_count() and link_count().
   void ForwardKinematics(const Pose& X_WRoot, std::span<const double> q_by_joint_index,
                          std::span<Pose> X_WL_out) const;
+
+  /// X_PC of joint j at value q: its child link's frame in its parent link's (X_PJ·M(q)).
+  Pose JointTransform(int joint, double q) const;
 
   /// Convenience: the same returning a vector.
   std::vector<Pose> ForwardKinematics(const Pose& X_WRoot, std::span<const double> q_by_joint_index) const;
@@ -104,6 +121,7 @@ class RobotModel {
   std::vector<RobotJoint> joints_;
   std::vector<int> joint_order_;  ///< joints parents-first, for forward kinematics
   int root_link_ = -1;
+  std::size_t mesh_file_count_ = 0;
 };
 
 }  // namespace proxsim

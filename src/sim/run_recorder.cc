@@ -137,7 +137,7 @@ nlohmann::json RunRecorder::Finish(bool interrupted) {
   const Scenario& scenario = sim_.scenario();
   const std::filesystem::path out(out_dir_);
   const auto links = sim_.robot() ? sim_.robot()->LinkGeometry() : std::vector<LinkGeometryJson>{};
-  WriteFileAtomically((out / "scene.json").string(), SceneToJson(scenario, links).dump(1) + "\n");
+  WriteFileAtomically((out / "scene.json").string(), SceneJsonText(scenario, links));
   WriteFileAtomically((out / "summary.json").string(), summary.dump(2) + "\n");
   return summary;
 }

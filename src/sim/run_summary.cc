@@ -61,7 +61,7 @@ nlohmann::json InputsJson(const Scenario& scenario) {
     robot = {{"model", r.model},
              {"start", {{"xyz_m", {r.start_xyz_m.x(), r.start_xyz_m.y(), r.start_xyz_m.z()}},
                         {"yaw_deg", RadToDeg(r.start_yaw_rad)}}},
-             {"gait", {{"stride_m", r.gait.stride_m}, {"period_s", r.gait.period_s}}},
+             {"gait", {{"stride_m", NullUnless(!r.gait.derive_stride_from_legs, r.gait.stride_m)}, {"period_s", NullUnless(!r.gait.derive_period_from_legs, r.gait.period_s)}}},
              {"path", {{"waypoints_m", waypoints}}},
              {"strategy", r.strategy ? StrategyJson(*r.strategy) : nlohmann::json(nullptr)},
              {"trajectory", NullUnless(!r.trajectory_file.empty(), r.trajectory_file)}};
@@ -93,6 +93,7 @@ nlohmann::json RobotOutcomeJson(const Simulation& sim) {
           {"reached_goal_t_s", NullUnless(outcome.reached_goal, outcome.reached_goal_t_s)},
           {"min_clearance_m", NullUnless(std::isfinite(outcome.min_clearance_m), outcome.min_clearance_m)},
           {"min_clearance_t_s", outcome.min_clearance_t_s},
+          {"gait", sim.locomotion()->gait_cycle() ? nlohmann::json{{"stride_m", sim.locomotion()->gait_cycle()->stride_m}, {"period_s", sim.locomotion()->gait_cycle()->period_s}} : nlohmann::json(nullptr)},
           {"distance_walked_m", state.distance_walked_m},
           {"standing_at_end", state.stopped},
           {"events", events}};

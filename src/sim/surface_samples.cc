@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene/mesh_samples.h"
+
 namespace proxsim {
 
 namespace {
@@ -77,6 +79,7 @@ std::vector<Vec3> SurfaceSamples_O(const Shape& shape, double spacing_m) {
   if (const auto* box = std::get_if<Box>(&shape)) BoxSamples(*box, spacing_m, points);
   if (const auto* cylinder = std::get_if<Cylinder>(&shape)) CylinderSamples(*cylinder, spacing_m, points);
   if (const auto* sphere = std::get_if<Sphere>(&shape)) SphereSamples(*sphere, spacing_m, points);
+  if (const auto* mesh = std::get_if<Mesh>(&shape)) points = MeshSurfaceSamples_O(*mesh->data, spacing_m);
   return points;
 }
 

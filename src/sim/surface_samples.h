@@ -10,7 +10,7 @@
 namespace proxsim {
 
 /// Points on the surface of `shape` (in its own frame O), about `spacing_m`
-/// apart, corners and edges included. Planes and meshes give no points.
+/// apart, corners and edges included (meshes: scene/mesh_samples.h). Planes give no points.
 std::vector<Vec3> SurfaceSamples_O(const Shape& shape, double spacing_m);
 
 }  // namespace proxsim
