@@ -36,12 +36,16 @@ if(PROXSIM_BUILD_TESTS)
       "PYTHONPATH=${CMAKE_BINARY_DIR}/python"
       "PROXSIM_BINARY=$<TARGET_FILE:proxsim>"
       "PROXSIM_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
-  # Under the sanitizers the interpreter must load ASan's runtime first; its
-  # own allocations are not ours to judge, so leak checking is off there.
+  # Under the sanitizers the interpreter must load ASan's runtime first, and
+  # the C++ runtime with it (ASan's throw interceptor needs the real
+  # __cxa_throw at start, which python3 itself does not link); the
+  # interpreter's own allocations are not ours to judge, so no leak checking.
   if(CMAKE_CXX_FLAGS MATCHES "sanitize=address")
     execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libasan.so
                     OUTPUT_VARIABLE asan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
-    list(APPEND python_test_environment "LD_PRELOAD=${asan_runtime}"
+    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libstdc++.so.6
+                    OUTPUT_VARIABLE cxx_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
+    list(APPEND python_test_environment "LD_PRELOAD=${asan_runtime}:${cxx_runtime}"
          "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
   endif()
   add_test(NAME python_package

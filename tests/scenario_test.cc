@@ -629,3 +629,45 @@ TEST(ScenarioNearestKeyTest, SuggestsOnlyPlausibleTypos) {
 
 }  // namespace
 }  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// ---------------------------------------------------------------------------
+// robot.strategy
+
+TEST(ScenarioStrategyTest, ReadsEachBuiltInStrategyWithItsParameters) {
+  const Scenario stop = LoadScenarioText(
+      WithHeader("robot:\n  strategy: {name: stop, stop_distance_m: 0.4, corridor_half_width_m: 0.2}\n"), "s.yaml");
+  ASSERT_TRUE(stop.robot && stop.robot->strategy);
+  const auto& s = std::get<StopConfig>(*stop.robot->strategy);
+  EXPECT_DOUBLE_EQ(s.stop_distance_m, 0.4);
+  EXPECT_DOUBLE_EQ(s.corridor_half_width_m, 0.2);
+  EXPECT_DOUBLE_EQ(s.min_height_m, StopConfig{}.min_height_m);
+
+  const Scenario circumvent =
+      LoadScenarioText(WithHeader("robot:\n  strategy: {name: circumvent, margin_m: 0.2, max_detour_m: 1}\n"), "c.yaml");
+  const auto& c = std::get<CircumventConfig>(*circumvent.robot->strategy);
+  EXPECT_DOUBLE_EQ(c.margin_m, 0.2);
+  EXPECT_DOUBLE_EQ(c.max_detour_m, 1.0);
+  EXPECT_DOUBLE_EQ(c.rejoin_m, CircumventConfig{}.rejoin_m);
+}
+
+TEST(ScenarioStrategyTest, BadStrategiesAreReportedAllAtOnce) {
+  const auto unknown = ProblemsOf(WithHeader("robot:\n  strategy: {name: circumvnet}\n"));
+  EXPECT_TRUE(HasProblem(unknown, {"robot.strategy:", "unknown strategy 'circumvnet'", "did you mean 'circumvent'"}));
+
+  const auto both = ProblemsOf(WithHeader("robot:\n  stop_distance_m: 0.5\n  strategy: {name: stop}\n"));
+  EXPECT_TRUE(HasProblem(both, {"robot.stop_distance_m:", "not both"}));
+
+  // a key of another strategy, and a bad value, in one message list
+  const auto keys = ProblemsOf(WithHeader("robot:\n  strategy: {name: stop, margin_m: 0.1, stop_distance_m: 0}\n"));
+  EXPECT_TRUE(HasProblem(keys, {"robot.strategy", "margin_m"}));
+  EXPECT_TRUE(HasProblem(keys, {"robot.strategy.stop_distance_m:", "> 0 m, got 0"}));
+
+  const auto nameless = ProblemsOf(WithHeader("robot:\n  strategy: {margin_m: 0.1}\n"));
+  EXPECT_TRUE(HasProblem(nameless, {"robot.strategy:", "name: stop or name: circumvent"}));
+}
+
+}  // namespace
+}  // namespace proxsim

@@ -13,6 +13,14 @@ ROBOT_KEYS = {"pelvis_W", "yaw_deg", "joints_rad", "gait_phase", "support_leg", 
               "stopped", "distance_walked_m"}
 
 
+def assert_same_files(a_dir, b_dir):
+    """The two folders hold the same files, byte for byte (timings.json and the report aside)."""
+    a, b = read_tree(a_dir), read_tree(b_dir)
+    assert sorted(a) == sorted(b)
+    for name in a:
+        assert a[name] == b[name], name
+
+
 def test_step_returns_what_the_robot_knows(paper_sim):
     obs = paper_sim.step()
     assert obs["t_s"] == 0.0
@@ -67,10 +75,7 @@ def test_out_writes_the_same_files_as_the_cli(tmp_path):
     with proxsim.Simulation(scenario("circumvent_obstacle.yaml"), seed=5, out=str(py_out)) as sim:
         while not sim.done:
             sim.step()
-    cli_files, py_files = read_tree(cli_out), read_tree(py_out)
-    assert sorted(cli_files) == sorted(py_files)
-    for name in cli_files:
-        assert cli_files[name] == py_files[name], name
+    assert_same_files(cli_out, py_out)
     assert os.path.exists(py_out / "timings.json")
 
 
@@ -87,10 +92,7 @@ def test_reset_gives_the_files_of_a_fresh_simulation(tmp_path):
         assert sim.seed == 9 and not sim.done
         while not sim.done:
             sim.step()
-    a, b = read_tree(fresh), read_tree(reused)
-    assert sorted(a) == sorted(b)
-    for name in a:
-        assert a[name] == b[name], name
+    assert_same_files(fresh, reused)
 
 
 def test_summary_has_the_robot_outcome_and_events(paper_sim):
