@@ -104,6 +104,21 @@ TEST(BadInputTest, UrdfWithAMissingLink) {
   ExpectRefusedFile("missing_link_urdf.yaml", {"missing_link.urdf", "thigh"});
 }
 
+TEST(BadInputTest, RobotMeshNotFound) {
+  ExpectRefusedFile("missing_robot_mesh.yaml",
+                    {"missing_robot_mesh.urdf: link 'pelvis' (visual): mesh 'package://no_such_package/meshes/pelvis.stl' "
+                     "not found: package 'no_such_package' not found; searched robot.package_paths: ",
+                     "ROS_PACKAGE_PATH: ", "the URDF's folder and its ancestors: "});
+}
+
+TEST(BadInputTest, LegMapThatDoesNotFitTheRobot) {
+  ExpectRefusedFile(
+      "bad_legs.yaml", {"builtin:biped: robot.joints_deg.neck_joint: the joint is not revolute",
+                        "builtin:biped: robot.legs.left.hip: no joint 'left_hip_pich' in the URDF (did you mean 'left_hip_pitch'?)",
+                        "builtin:biped: robot.legs.right.knee: joint 'left_knee_pitch' is not on the chain from the root "
+                        "link to the foot 'right_foot'"});
+}
+
 TEST(BadInputTest, TrajectoryWithMissingColumns) {
   const auto result = ExpectRefusedFile("trajectory_missing_columns.yaml",
                                         {"missing_columns.csv:1:", "missing column 'z_m'", "'roll_deg'", "'pitch_deg'"});

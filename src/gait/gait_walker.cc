@@ -33,8 +33,19 @@ GaitWalker::GaitWalker(RobotModel model, const RobotConfig& config)
   if (!config.gait.derive_stride_from_legs && !(gait_.stride_m > 0))
     problems.push_back(model_->source() + ": gait stride_m must be > 0");
   if (!problems.empty()) throw InputError(problems);
-  q_held_ = HeldJointAngles(*model_, config.joints_rad, config.legs.value_or(BuiltinBipedLegs()));
-  legs_ = std::make_unique<BipedLegs>(*model_, config.legs, q_held_);
+  // the held joints and the legs, their problems reported together
+  try {
+    q_held_ = HeldJointAngles(*model_, config.joints_rad, config.legs.value_or(BuiltinBipedLegs()));
+  } catch (const InputError& error) {
+    problems = error.problems();
+    q_held_.assign(model_->joint_count(), 0.0);
+  }
+  try {
+    legs_ = std::make_unique<BipedLegs>(*model_, config.legs, q_held_);
+  } catch (const InputError& error) {
+    problems.insert(problems.end(), error.problems().begin(), error.problems().end());
+  }
+  if (!problems.empty()) throw InputError(problems);
   planner_ = std::make_unique<StepPlanner>(*legs_);
   // stride and period not given: the built-in biped's, scaled to these legs
   // (the ratio is exactly 1 for the built-in biped, whose defaults stay exact)
