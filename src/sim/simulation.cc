@@ -88,7 +88,9 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
     if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
       goal_m_ = scenario_.robot->waypoints_m.back();
-      goal_tolerance_m_ = 0.5 * scenario_.robot->gait.stride_m;
+      // half the stride walked (the legs may set it rather than the scenario)
+      const auto cycle = locomotion_->gait_cycle();
+      goal_tolerance_m_ = 0.5 * (cycle ? cycle->stride_m : scenario_.robot->gait.stride_m);
     }
   }
   frame_.sensors.resize(scenario_.sensors.size());
