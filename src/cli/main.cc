@@ -135,14 +135,13 @@ int Study(const std::string& study_path, const std::string& out_dir, int threads
   const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path);
   bool writer = false;
   const proxsim::StudyResults results = proxsim::RunStudy(
-      study, {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = isatty(STDERR_FILENO) != 0},
+      study, {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true},
       &writer);
   if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
   const nlohmann::json selection = proxsim::WriteStudyAnswers(study, results, out_dir);
-  std::printf("proxsim study: %s — %zu candidates x %zu scenes x %zu seeds = %zu runs\n", study_path.c_str(),
-              study.candidates.size(), study.variants.size(), study.seeds.size(),
+  std::printf("proxsim study: %s — %zu runs\n", study_path.c_str(),
               study.candidates.size() * study.variants.size() * study.seeds.size());
-  std::printf("best %d sensors (greedy hazard coverage over %zu items):\n", study.select_sensors,
+  std::printf("best %d sensors (greedy, hazards covered then lead, over %zu items):\n", study.select_sensors,
               selection["items"].get<std::size_t>());
   for (const auto& pick : selection["chosen"]) {
     std::printf("  %-48s detection rate %.3f, mean lead %s m\n", pick["added"].get<std::string>().c_str(),

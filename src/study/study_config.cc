@@ -1,5 +1,6 @@
 #include "study/study_config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -67,6 +68,7 @@ std::optional<SensorSpec> SpecOf(const std::string& type) {
 Candidate MakeCandidate(const SensorSpec& spec, const std::string& type, const std::string& link, double along_m,
                         double forward_m, double pitch_deg, double yaw_deg) {
   Candidate c;
+  c.type = type;
   c.id = type + "@" + link + ":z" + Format("%+.3g", along_m) + ":x" + Format("%.3g", forward_m) + ":p" +
          Format("%.3g", pitch_deg) + ":y" + Format("%.3g", yaw_deg);
   c.sensor.name = c.id;
@@ -273,10 +275,18 @@ StudyConfig LoadStudyFile(const std::string& path) {
   } else {
     study.hazards = {"obstacle"};
   }
-  if (const auto select = reader.Map((*top)["select"], {"sensors"})) {
+  if (const auto select = reader.Map((*top)["select"], {"sensors", "types"})) {
     if (const auto k = reader.Count((*select)["sensors"])) {
       if (*k < 1) reader.Fail((*select)["sensors"], "expected at least 1 sensor to select");
       study.select_sensors = static_cast<int>(*k);
+    }
+    if ((*select)["types"]) {
+      study.select_types = TextAxis(reader, (*select)["types"], "the sensor types or parts to choose from");
+      for (const std::string& type : study.select_types) {
+        const bool studied = std::any_of(study.candidates.begin(), study.candidates.end(),
+                                         [&](const Candidate& c) { return c.type == type; });
+        if (!studied) reader.Fail((*select)["types"], "'" + type + "' is not the type of any candidate");
+      }
     }
   }
   if (!reader.HasProblems() && study.candidates.empty()) reader.Fail((*top)["candidates"], "no candidate to study");

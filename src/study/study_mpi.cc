@@ -1,7 +1,9 @@
 #include "study/study_mpi.h"
 
+#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
+#include <thread>
 
 #ifdef PROXSIM_HAVE_MPI
 #include <mpi.h>
@@ -51,8 +53,15 @@ void StudyMpi::ServeWorkers([[maybe_unused]] const std::function<long()>& take,
   int active = size_ - 1;
   std::string buffer;
   while (active > 0) {
+    // poll, sleeping in between: a blocking probe spins on its core, which
+    // this rank's own worker thread needs
     MPI_Status status;
-    MPI_Probe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &status);
+    int arrived = 0;
+    for (;;) {
+      MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &arrived, &status);
+      if (arrived) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
     int length = 0;
     MPI_Get_count(&status, MPI_CHAR, &length);
     buffer.resize(static_cast<std::size_t>(length));
