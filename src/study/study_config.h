@@ -11,7 +11,7 @@
 //       link: [left_tibia, left_thigh]
 //       along_m: [-0.35, -0.20]    # along the link's z (its length), from its frame
 //       forward_m: 0.06            # in front of the link's axis (one value or a list)
-//       pitch_deg: [0, 15, 30]     # down from the link's forward normal
+//       pitch_deg: {from: 0, to: 30, step: 15}   # a range: 0, 15, 30 (any axis of numbers, and seeds)
 //       yaw_deg: [0]
 //     list:                        # and/or mountings one by one
 //       - {type: laser, link: right_tibia, xyz_m: [0.06, 0, -0.3], rpy_deg: [0, 10, 0]}
