@@ -20,6 +20,7 @@
 
 #include "bench/bench_scene.h"
 #include "bench/closed_loop_bench.h"
+#include "bench/study_bench.h"
 #include "bench/robot_bench.h"
 #include "bench/peers.h"
 #include "core/parallel.h"
@@ -385,6 +386,12 @@ json RunBench(const BenchOptions& options) {
   result["thread_scaling_1m"] = s["1m"]["thread_scaling"];
   }
   if (options.robots) result["robots"] = RobotsSection(options.quick);
+  if (options.study) {
+    const auto study_tmp =
+        std::filesystem::temp_directory_path() / ("proxsim-bench-study-" + std::to_string(::getpid()));
+    result["study"] = StudySection(options.quick, study_tmp.string());
+    std::filesystem::remove_all(study_tmp);
+  }
   if (!options.end_to_end) {
     result["bench_wall_s"] = Since(bench_start);
     return result;
@@ -591,6 +598,7 @@ std::string BenchReport(const json& r) {
   out << line;
   if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
   if (r.contains("robots")) out << RobotsReport(r.at("robots"));
+  if (r.contains("study")) out << StudyReport(r.at("study"));
   return out.str();
 }
 
