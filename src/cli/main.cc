@@ -148,6 +148,9 @@ int Study(const std::string& study_path, const std::string& out_dir, int threads
                 pick["detection_rate"].get<double>(),
                 pick["mean_lead_m"].is_null() ? "n/a" : std::to_string(pick["mean_lead_m"].get<double>()).c_str());
   }
+  if (selection["chosen"].size() < static_cast<std::size_t>(study.select_sensors)) {
+    std::printf("  (no further sensor detects another hazard or sees one farther ahead)\n");
+  }
   std::printf("outputs in %s/ (results.csv, ranking.csv, selection.json)\n", out_dir.c_str());
   std::fflush(stdout);
   if (!report) return 0;

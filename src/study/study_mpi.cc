@@ -18,8 +18,11 @@ constexpr int kTagJob = 2;     // rank 0 → worker: a job index, -1 for none
 
 StudyMpi::StudyMpi() {
 #ifdef PROXSIM_HAVE_MPI
+  // launched by mpirun with several ranks, or by a PMI launcher (srun)
   const char* world_size = std::getenv("OMPI_COMM_WORLD_SIZE");
-  if (world_size == nullptr || std::atoi(world_size) < 2) return;
+  const bool by_mpirun = world_size != nullptr && std::atoi(world_size) >= 2;
+  const bool by_pmi = std::getenv("PMIX_RANK") != nullptr || std::getenv("PMI_RANK") != nullptr;
+  if (!by_mpirun && !by_pmi) return;
   int provided = 0;
   // only rank 0's dispatcher thread calls MPI while other threads run
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);

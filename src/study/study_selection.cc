@@ -68,7 +68,7 @@ std::vector<std::size_t> GreedySelection(const Coverage& coverage, std::size_t k
         pick_gain = gain;
       }
     }
-    if (pick == n || pick_gain <= 0) break;  // nothing left adds anything
+    if (pick == n || pick_gain * coverage.lead_scale_m <= kNegligibleLeadGain_m) break;  // nothing left adds anything
     chosen[pick] = true;
     order.push_back(pick);
     for (std::size_t j = 0; j < coverage.covers[pick].size(); ++j) {

@@ -36,8 +36,12 @@ Coverage CoverageOf(const StudyConfig& study, const StudyResults& results);
 /// value(S) of the top of this file.
 double SelectionValue(const Coverage& coverage, const std::vector<std::size_t>& set);
 
+/// Below this, a sensor's improvement of the leads (summed over items) is noise, not a reason to add it.
+constexpr double kNegligibleLeadGain_m = 1e-3;
+
 /// The greedy order of up to k candidates among the eligible ones; stops
-/// early when no candidate adds any value. `rank` breaks ties (lower first).
+/// early when no candidate covers a new item or lengthens the leads by more
+/// than kNegligibleLeadGain_m. `rank` breaks ties (lower first).
 std::vector<std::size_t> GreedySelection(const Coverage& coverage, std::size_t k, const std::vector<std::size_t>& rank,
                                          const std::vector<bool>& eligible);
 
