@@ -19,6 +19,7 @@
 
 #include "bench/bench_suite.h"
 #include "core/input_error.h"
+#include "io/run_manifest.h"
 #include "io/scenario.h"
 #include "report/report_runner.h"
 #include "sim/run.h"
@@ -251,7 +252,18 @@ int main(int argc, char** argv) {
                  stdout);
       return 0;
     }
-    if (*plot) return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
+    if (*plot) {
+      // the files must be one run's: a figure of two runs' files would mislead
+      const std::vector<std::string> problems = proxsim::RunFolderProblems(plot_dir);
+      if (!problems.empty()) {
+        std::vector<std::string> lines;
+        for (const std::string& problem : problems) lines.push_back(plot_dir + "/" + problem);
+        lines.push_back(plot_dir + ": its files are not one run's; run the scenario again into this folder "
+                                   "(or another) to get a consistent set");
+        throw proxsim::InputError(lines);
+      }
+      return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
+    }
     if (*validate) return Validate(validate_path);
     if (*study) return Study(study_path, study_out, study_threads, study_resume, !study_no_report);
   } catch (const proxsim::InputError& error) {
