@@ -357,7 +357,7 @@ json RunBench(const BenchOptions& options) {
     if (bullet) size["agreement"]["bullet"] = Agreement(d_proxsim, d_bullet);
     if (mujoco) size["agreement"]["mujoco"] = Agreement(d_proxsim, d_mujoco);
 
-    // the ratios of the issue: proxsim's pipeline over each peer, incoherent rays
+    // the ratios the targets are stated in: proxsim's pipeline over each peer, incoherent rays
     const json& inc = size["incoherent"];
     for (const char* t : {"1t", "2t"}) {
       const double p = inc[std::string("proxsim_rays_per_s_") + t];

@@ -1,8 +1,8 @@
 // `proxsim bench`: proxsim's pipeline against bare Embree, Bullet and MuJoCo
 // in one process, on one generated dining room at ~10k, 100k and 1M
 // triangles and the same rays; then the default paper run and the heavy
-// scenario end to end; then a real robot of meshes against the built-in biped; then placement studies. Every figure is measured in this run; the README
-// ("Performance") documents every key of the result.
+// scenario end to end; then a real robot of meshes against the built-in biped; then placement studies. Every figure is measured in this run;
+// docs/performance.md documents every key of the result.
 #pragma once
 
 #include <nlohmann/json.hpp>

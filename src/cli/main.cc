@@ -1,8 +1,8 @@
-// The proxsim command line (DESIGN.md "CLI"):
+// The proxsim command line (docs/cli.md):
 //   proxsim run [SCENARIO.yaml] [--out DIR] [--seed N] [--threads N]
 //   proxsim validate SCENARIO.yaml
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
-//   proxsim bench [--json] [--quick] (the performance suite, README "Performance")
+//   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
 #include <signal.h>
