@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
 
   bool bench_json = false, bench_quick = false;
   CLI::App* bench = app.add_subcommand("bench", "race proxsim against bare Embree, Bullet and MuJoCo (a few minutes)");
-  bench->add_flag("--json", bench_json, "print one JSON object with every figure (keys: README, Performance)");
+  bench->add_flag("--json", bench_json, "print one JSON object with every figure (keys: docs/performance.md)");
   bench->add_flag("--quick", bench_quick, "fewer rays and a shorter heavy run: a smoke test");
   std::string bench_from;
   bench->add_option("--from", bench_from, "print the Markdown tables of a run saved with --json, without running")
