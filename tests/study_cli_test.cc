@@ -90,7 +90,7 @@ TEST_F(StudyCliTest, FilesAreByteIdenticalWithOneThreadTwoThreadsAndTwoMpiRanks)
   }
 }
 
-// A study long enough to be killed in the middle: 40 jobs of one scene and seed each.
+// A study long enough to be killed in the middle: 24 jobs of one scene and seed each.
 const std::string kLongStudy =
     "proxsim_study: 1\nbase: " + std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/paper_dining_room.yaml\n"
     "candidates:\n  axes:\n    type: [laser, ultrasonic, reflectance]\n    link: left_tibia\n"
@@ -103,7 +103,7 @@ TEST_F(StudyCliTest, KilledWithSigkillAndResumedGivesTheSameFilesWithoutRedoingA
   const std::string study = (dir_ / "long.yaml").string();
   ASSERT_EQ(RunProxsim("study " + study + " --no-report --threads 1 --out " + (dir_ / "whole").string()).exit_code, 0);
   const std::size_t jobs = LineCount(dir_ / "whole" / "journal.jsonl") - 1;
-  ASSERT_EQ(jobs, 40u);
+  ASSERT_EQ(jobs, 24u);
 
   // start it again and kill it once a few jobs are journaled
   const fs::path cut = dir_ / "cut";
