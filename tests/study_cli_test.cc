@@ -95,7 +95,7 @@ const std::string kLongStudy =
     "proxsim_study: 1\nbase: " + std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/paper_dining_room.yaml\n"
     "candidates:\n  axes:\n    type: [laser, ultrasonic, reflectance]\n    link: left_tibia\n"
     "    along_m: -0.35\n    forward_m: 0.06\n    pitch_deg: [0, 15]\n"
-    "seeds: {from: 1, to: 40}\nhazards: [obstacle]\n";
+    "seeds: {from: 1, to: 24}\nhazards: [obstacle]\n";
 
 TEST_F(StudyCliTest, KilledWithSigkillAndResumedGivesTheSameFilesWithoutRedoingAJob) {
   fs::create_directories(dir_);
