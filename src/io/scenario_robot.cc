@@ -184,13 +184,15 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     robot.start_yaw_rad = DegToRad(reader.Number((*start)["yaw_deg"]).value_or(0.0));
   }
 
-  // gait: {stride_m, period_s}; either one absent scales with the legs
+  // gait: {stride_m, period_s, max_step_m}; stride or period absent scales with
+  // the legs, max_step_m absent comes from them
   robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
-  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s"})) {
+  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m"})) {
     robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
     robot.gait.derive_period_from_legs = !gait->Has("period_s");
     robot.gait.stride_m = reader.Number((*gait)["stride_m"], PositiveNumber("m")).value_or(robot.gait.stride_m);
     robot.gait.period_s = reader.Number((*gait)["period_s"], PositiveNumber("s")).value_or(robot.gait.period_s);
+    robot.gait.max_step_m = reader.Number((*gait)["max_step_m"], PositiveNumber("m")).value_or(0.0);
   }
 
   // path: {waypoints_m: [[x, y], ...]}
