@@ -95,13 +95,14 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
   const YAML::Node name_node = field.node.IsMap() ? field.node["name"] : YAML::Node();
   const std::string name = name_node && name_node.IsScalar() ? name_node.Scalar() : "";
   if (name == "stop") {
-    const auto map = reader.Map(field, {"name", "stop_distance_m", "min_height_m", "corridor_half_width_m"});
+    const auto map = reader.Map(field, {"name", "stop_distance_m", "min_height_m", "corridor_half_width_m", "max_drop_m"});
     if (!map) return std::nullopt;
     StopConfig stop;
     stop.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(stop.stop_distance_m);
     stop.min_height_m = reader.Number((*map)["min_height_m"], PositiveNumber("m")).value_or(stop.min_height_m);
     stop.corridor_half_width_m =
         reader.Number((*map)["corridor_half_width_m"], PositiveNumber("m")).value_or(stop.corridor_half_width_m);
+    stop.max_drop_m = reader.Number((*map)["max_drop_m"], PositiveNumber("m")).value_or(stop.max_drop_m);
     return stop;
   }
   if (name == "circumvent") {
