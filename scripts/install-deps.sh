@@ -11,6 +11,7 @@ packages=(
   libbullet-dev libmujoco-dev
   python3-matplotlib python3-numpy
   python3-dev pybind11-dev python3-pytest
+  libopenmpi-dev openmpi-bin
   nodejs npm
 )
 # Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test,
