@@ -26,10 +26,18 @@ int FindObstacleAhead(const Observation& observation, const StopConfig& rule) {
   return -1;
 }
 
+namespace {
+
+// Fresh readings in a row that must show the floor missing.
+constexpr int kFloorMissingReadings = 2;
+
+}  // namespace
+
 void StopStrategy::Reset(const StrategySetup& setup) {
   stopping_ = false;
   sensors_.assign(setup.sensors.begin(), setup.sensors.end());
   max_drop_m_ = config_.max_drop_m > 0 ? config_.max_drop_m : setup.max_step_m;
+  floor_missing_streak_.assign(sensors_.size(), 0);
 }
 
 void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, EventLog& events) {
@@ -47,20 +55,28 @@ void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, 
     events.Log("obstacle_ahead", detail);
     return;
   }
-  const DropSign drop = FindDropAhead(observation, sensors_, config_, max_drop_m_);
-  if (drop.sensor < 0) return;
-  if (drop.floor_missing) {
-    std::snprintf(detail, sizeof detail, "%s reports nothing where the floor should be, %.3f m ahead of the leading "
-                  "toe: a drop deeper than %.2f m or a hole", sensors_.at(drop.sensor).name.c_str(), drop.ahead_m,
-                  max_drop_m_);
-  } else {
-    std::snprintf(detail, sizeof detail, "%s reports a point %.3f m ahead of the leading toe, %.3f m below the ground: "
-                  "a drop deeper than %.2f m", sensors_.at(drop.sensor).name.c_str(), drop.ahead_m, drop.below_m,
-                  max_drop_m_);
+  for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
+    const SensorOutput& sensor = observation.sensors[i];
+    if (!sensor.fresh) continue;  // no news: the streak stands
+    const std::optional<DropSign> drop = SeeDropAhead(sensor, sensors_[i], self, config_, max_drop_m_);
+    floor_missing_streak_[i] = drop && drop->floor_missing ? floor_missing_streak_[i] + 1 : 0;
+    if (!drop || (drop->floor_missing && floor_missing_streak_[i] < kFloorMissingReadings)) continue;
+    if (drop->floor_missing) {
+      std::snprintf(detail, sizeof detail,
+                    "%s reports nothing where the floor should be: its axis passes %.3f m below the ground %.3f m "
+                    "ahead of the leading toe with nothing in the way, a drop deeper than %.2f m",
+                    sensors_[i].name.c_str(), drop->below_m, drop->ahead_m, max_drop_m_);
+    } else {
+      std::snprintf(detail, sizeof detail,
+                    "%s reports a point %.3f m ahead of the leading toe, %.3f m below the ground: a drop deeper "
+                    "than %.2f m",
+                    sensors_[i].name.c_str(), drop->ahead_m, drop->below_m, max_drop_m_);
+    }
+    robot.Stop();
+    stopping_ = true;
+    events.Log("drop_ahead", detail);
+    return;
   }
-  robot.Stop();
-  stopping_ = true;
-  events.Log("drop_ahead", detail);
 }
 
 }  // namespace proxsim

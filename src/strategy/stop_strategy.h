@@ -4,9 +4,10 @@
 // corridor it walks along and within stop_distance_m ahead of its leading toe
 // (an obstacle), or a drop deeper than max_drop_m (by default the legs'
 // gait.max_step_m) seen there (strategy/drop_ahead.h: a point well below the
-// ground, or the floor missing where a sensor should see it), makes the robot
-// stop at its next double support. Events: `obstacle_ahead`, `drop_ahead`. It
-// stops once and stays stopped.
+// ground, or the floor missing where a sensor should see it, on two fresh
+// readings in a row of the same sensor, so that one lost echo, a dropout, does
+// not stop the robot), makes the robot stop at its next double support.
+// Events: `obstacle_ahead`, `drop_ahead`. It stops once and stays stopped.
 #pragma once
 
 #include <vector>
@@ -36,6 +37,7 @@ class StopStrategy : public Strategy {
   StopConfig config_;
   std::vector<SensorInfo> sensors_;
   double max_drop_m_ = 0;  // NaN: the legs' step is not known, no drop rule
+  std::vector<int> floor_missing_streak_;  // per sensor: fresh readings in a row with the floor missing
   bool stopping_ = false;
 };
 
