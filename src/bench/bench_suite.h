@@ -15,6 +15,7 @@ struct BenchOptions {
   bool rays = true;       ///< the engines on the ray sets
   bool end_to_end = true; ///< the paper run and the heavy scenario
   bool robots = true;     ///< loading the Unitree H1 and its cost per sample against the built-in biped
+  bool terrain = true;    ///< planning footsteps on the stairs course against a paper-like sample
 };
 
 /// Runs the whole suite and returns its figures.
