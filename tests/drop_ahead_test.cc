@@ -1,4 +1,4 @@
-// The stop rule on drops (issue 13): a drop deeper than the legs step down,
+// The stop rule on drops (docs/terrain.md): a drop deeper than the legs step down,
 // seen from the readings alone.
 //  - SeeDropAhead on outputs written here, for a sensor 0.3 m above the
 //    ground looking down at a known angle: the deep point, the beam's highest

@@ -1,4 +1,4 @@
-// The gait on uneven ground (issue 13): the built-in biped walks courses of
+// The gait on uneven ground (docs/terrain.md): the built-in biped walks courses of
 // steps and holes described in the test as level pieces along x, whose true
 // surface and edges the test computes itself; every 5 ms it checks, with the
 // robot's own 3D forward kinematics, that no sole goes below the surface,

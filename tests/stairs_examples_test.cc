@@ -1,6 +1,6 @@
-// The shipped uneven-ground examples through the real CLI (issue 13, "Done
-// when"): stairs_walk.yaml climbs to the landing, descends, steps over the
-// small hole and stands before the wide one with `cannot_step`, each of its
+// The shipped uneven-ground examples through the real CLI (docs/terrain.md):
+// stairs_walk.yaml climbs to the landing, descends, steps over the small hole
+// and stands before the wide one with `cannot_step`, each of its
 // tibia sensors detecting the steps and a hole's wall; stairs_hole.yaml walks
 // on over the small hole; hole_stop_rule.yaml is stopped before it by the
 // built-in stop rule from the readings alone. Positions come from poses.csv,

@@ -1,4 +1,4 @@
-// `proxsim bench`, the terrain section (issue 13): what planning footsteps on
+// `proxsim bench`, the terrain section (docs/terrain.md): what planning footsteps on
 // the scene's true surface costs, against a paper-like sample's time. The
 // gait plans a step at each heel strike (terrain queries through the world's
 // ray caster, the ground profile, the foothold, the swing arc); between heel

@@ -40,7 +40,7 @@
 // trailing toe, planted while the pelvis turns on the stance heel, slides
 // sideways), the pelvis does not sway sideways.
 //
-// Uneven ground (issue 13; gait_steps_terrain.cc). With a terrain (the
+// Uneven ground (docs/terrain.md; gait_steps_terrain.cc). With a terrain (the
 // scene's true surface, gait/terrain_query.h), every step first finds its
 // foothold on the ground profile along the swing foot's line
 // (gait/footstep_planner.h), nearest the heel the curves would land. When
@@ -103,7 +103,7 @@ struct StepPlan {
   Vec2xz swing_toe_off_rate = Vec2xz::Zero();   ///< its rate over the swing (d/du, u from 0 at toe-off to 1 at heel strike)
   Vec2xz swing_end_delta = Vec2xz::Zero();    ///< swing ankle correction at p = 0.5
   double clearance_bump_m = 0;                ///< height of the mid-swing bump
-  // uneven ground (issue 13)
+  // uneven ground (docs/terrain.md)
   double landing_z_m = 0;        ///< height of the tread the swing heel lands on (floor_z_m on flat ground)
   bool natural_landing = true;   ///< the swing lands where the curves put it, on the stance's level
   bool terrain = false;          ///< a terrain step (see above); false: the flat-floor step

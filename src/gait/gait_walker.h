@@ -32,7 +32,7 @@
 // clamped: achieved_stride_m() says what is walked. A new stride takes effect
 // at the next heel strike, ramped in over the double support.
 //
-// Uneven ground (issue 13): with a terrain (SetTerrain), every step lands on a
+// Uneven ground (docs/terrain.md): with a terrain (SetTerrain), every step lands on a
 // foothold planned on the scene's true surface (gait_steps.h, "Uneven
 // ground"), and the robot stands on the surface below its start point (a
 // start above no surface walks on a flat floor at its start height, as

@@ -4,7 +4,7 @@
 // ground still comes only from its sensors (strategies never see this).
 // sim/caster_terrain.h answers it with the world's ray caster, the robot's own
 // links transparent; a gait without a terrain walks on a flat floor at its
-// start height, as before issue 13.
+// start height, as before the gait walked uneven ground.
 //
 // Frames: W world (z up).
 #pragma once

@@ -14,7 +14,7 @@
 //   obstacle   0.20 (x) × 0.30 (y) × 0.15 (z) m box centred at (2.5, 0) on the
 //              floor: in the robot's way
 //
-// stairs (the course of issue 13, walked along +x; every piece spans
+// stairs (the uneven-ground course of docs/terrain.md, walked along +x; every piece spans
 // y −1.5…1.5, and every top is a box's upper face):
 //   floor              z = 0      x −1.0 … 1.0   (the robot starts at x = 0)
 //   floor_stair_up_1   z = 0.15   x 1.0 … 1.3    4 steps up: 0.15 m rises,
