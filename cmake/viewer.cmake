@@ -45,12 +45,15 @@ if(PROXSIM_BUILD_TESTS)
 
   # The browser test opens the report of real runs: the default paper run
   # (walking robot), the world-mounted sensor demo (no robot), the
-  # circumvent example (the path walked and the strategy's events) and the H1's. `proxsim run`
-  # draws the report itself.
+  # circumvent example (the path walked and the strategy's events), the
+  # stairs course (the robot shown climbs to the 0.6 m landing) and the H1's.
+  # `proxsim run` draws the report itself.
   set(e2e_scenario_walk "")
   set(e2e_scenario_no_robot ${CMAKE_SOURCE_DIR}/data/scenarios/world_sensors_demo.yaml)
   set(e2e_scenario_circumvent ${CMAKE_SOURCE_DIR}/data/scenarios/circumvent_obstacle.yaml)
-  set(e2e_kinds walk no_robot circumvent)
+  set(e2e_scenario_stairs ${CMAKE_SOURCE_DIR}/data/scenarios/stairs_walk.yaml)
+  set(e2e_options_stairs --climb-m 0.55)
+  set(e2e_kinds walk no_robot circumvent stairs)
   # and the Unitree H1's example (its meshes drawn), when the H1's description (Unitree's,
   # not part of this repository) is beside the repository in ../shared/robots
   if(EXISTS ${CMAKE_SOURCE_DIR}/../shared/robots/h1_description/urdf/h1.urdf)
@@ -63,7 +66,7 @@ if(PROXSIM_BUILD_TESTS)
              COMMAND $<TARGET_FILE:proxsim> run ${e2e_scenario_${kind}} --out ${run_dir})
     add_test(NAME viewer_e2e_${kind}
              COMMAND ${PROXSIM_NODE} ${CMAKE_SOURCE_DIR}/tests/viewer_e2e/viewer_e2e.mjs ${run_dir}
-                     --viewer-dir ${viewer_dir})
+                     --viewer-dir ${viewer_dir} ${e2e_options_${kind}})
     set_tests_properties(viewer_e2e_${kind}_run PROPERTIES FIXTURES_SETUP e2e_${kind}_run TIMEOUT 180)
     set_tests_properties(viewer_e2e_${kind} PROPERTIES
       FIXTURES_REQUIRED e2e_${kind}_run SKIP_RETURN_CODE 77 TIMEOUT 240

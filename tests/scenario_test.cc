@@ -638,12 +638,18 @@ namespace {
 
 TEST(ScenarioStrategyTest, ReadsEachBuiltInStrategyWithItsParameters) {
   const Scenario stop = LoadScenarioText(
-      WithHeader("robot:\n  strategy: {name: stop, stop_distance_m: 0.4, corridor_half_width_m: 0.2}\n"), "s.yaml");
+      WithHeader("robot:\n  strategy: {name: stop, stop_distance_m: 0.4, corridor_half_width_m: 0.2, max_drop_m: 0.25}\n"),
+      "s.yaml");
   ASSERT_TRUE(stop.robot && stop.robot->strategy);
   const auto& s = std::get<StopConfig>(*stop.robot->strategy);
   EXPECT_DOUBLE_EQ(s.stop_distance_m, 0.4);
   EXPECT_DOUBLE_EQ(s.corridor_half_width_m, 0.2);
+  EXPECT_DOUBLE_EQ(s.max_drop_m, 0.25);
   EXPECT_DOUBLE_EQ(s.min_height_m, StopConfig{}.min_height_m);
+  // without max_drop_m, the legs' gait.max_step_m (0: from the legs)
+  EXPECT_EQ(StopConfig{}.max_drop_m, 0.0);
+  EXPECT_TRUE(HasProblem(ProblemsOf(WithHeader("robot:\n  strategy: {name: stop, max_drop_m: -1}\n")),
+                         {"max_drop_m"}));
 
   const Scenario circumvent =
       LoadScenarioText(WithHeader("robot:\n  strategy: {name: circumvent, margin_m: 0.2, max_detour_m: 1}\n"), "c.yaml");

@@ -149,63 +149,75 @@ TEST(SceneTest, DiningRoomRaysFindFloorObstacleAndWalls) {
   EXPECT_NEAR(hit.distance_m, 5.0, 1e-5);
 }
 
-TEST(SceneTest, StairsHaveFloorHoleAndSteps) {
+TEST(SceneTest, StairsHaveTheCoursePieces) {
   const Scene scene = MakeBuiltinScene("stairs");
-  for (const char* name : {"floor", "hole_bottom", "step_up", "step_down"}) {
+  for (const char* name : {"floor", "floor_stair_up_1", "floor_landing", "floor_stair_down_3", "hole_bottom",
+                           "floor_between_holes", "wide_hole_bottom", "floor_end"}) {
     EXPECT_NE(Find(scene, name), nullptr) << name;
   }
 }
 
 TEST(SceneTest, StairsRaysStraightDownFindTheTrueHeights) {
-  // hole: x 1.3–1.7, |y| < 0.5, bottom z = −0.3; platform: x 3.0–4.5, z = 0.15; else floor z = 0
+  // the course as builtin_scenes.cc documents it: [x0, x1) at height z
+  struct Level {
+    double x0, x1, z;
+    const char* name;
+  };
+  const Level course[] = {{-1.0, 1.0, 0.0, "floor"},
+                          {1.0, 1.3, 0.15, "floor_stair_up_1"},
+                          {1.3, 1.6, 0.30, "floor_stair_up_2"},
+                          {1.6, 1.9, 0.45, "floor_stair_up_3"},
+                          {1.9, 3.1, 0.60, "floor_landing"},
+                          {3.1, 3.4, 0.45, "floor_stair_down_1"},
+                          {3.4, 3.7, 0.30, "floor_stair_down_2"},
+                          {3.7, 4.0, 0.15, "floor_stair_down_3"},
+                          {4.0, 5.0, 0.0, "floor_after_stairs"},
+                          {5.0, 5.25, -0.5, "hole_bottom"},
+                          {5.25, 6.5, 0.0, "floor_between_holes"},
+                          {6.5, 7.1, -0.5, "wide_hole_bottom"},
+                          {7.1, 9.0, 0.0, "floor_end"}};
   const Scene scene = MakeBuiltinScene("stairs");
   RayCaster caster;
   LoadIntoCaster(scene, &caster);
-  int in_hole = 0, on_platform = 0, on_floor = 0;
-  for (double x = -0.975; x < 6.0; x += 0.1) {
-    for (double y = -1.975; y < 2.0; y += 0.1) {
+  int checked = 0;
+  for (double x = -0.975; x < 9.0; x += 0.05) {
+    for (double y = -1.45; y < 1.5; y += 0.3) {
+      const Level* level = nullptr;
+      for (const Level& l : course) if (x >= l.x0 && x < l.x1) level = &l;
+      ASSERT_NE(level, nullptr);
       const auto [z, name] = HeightBelow(caster, scene, x, y);
-      if (x > 1.3 && x < 1.7 && std::abs(y) < 0.5) {
-        ++in_hole;
-        EXPECT_NEAR(z, -0.3, 1e-5) << x << ", " << y;
-        EXPECT_EQ(name, "hole_bottom");
-      } else if (x > 3.0 && x < 4.5) {
-        ++on_platform;
-        EXPECT_NEAR(z, 0.15, 1e-5) << x << ", " << y;
-        EXPECT_EQ(name, x < 3.75 ? "step_up" : "step_down");
-      } else {
-        ++on_floor;
-        EXPECT_NEAR(z, 0.0, 1e-5) << x << ", " << y;
-        EXPECT_EQ(name.rfind("floor", 0), 0u) << name << " at " << x << ", " << y;
-      }
+      EXPECT_NEAR(z, level->z, 1e-5) << x << ", " << y;
+      EXPECT_EQ(name, level->name) << x << ", " << y;
+      ++checked;
     }
   }
-  EXPECT_GT(in_hole, 10);
-  EXPECT_GT(on_platform, 100);
-  EXPECT_GT(on_floor, 1000);
-  // the piece the robot starts on is `floor` itself
-  EXPECT_EQ(HeightBelow(caster, scene, 0.0, 0.0).second, "floor");
+  EXPECT_GT(checked, 1500);
 }
 
-TEST(SceneTest, StairsStepEdgesFaceTheRobot) {
-  // at ankle height along +x: the rising edge at x = 3; back along −x: the falling edge at x = 4.5
+TEST(SceneTest, StairsRisersAndHoleWallsFaceTheRobot) {
+  // along +x at 0.1 m above each level: the first riser at x = 1.0, the hole's far wall at 5.25;
+  // along −x from the landing, 0.1 m above the floor: the last riser down at x = 4.0
   const Scene scene = MakeBuiltinScene("stairs");
   RayCaster caster;
   LoadIntoCaster(scene, &caster);
-  Ray ray;
-  ray.origin_W = Vec3f(2.0f, 0, 0.075f);
-  ray.max_range_m = 5;
-  Hit hit;
-  caster.Cast(std::span<const Ray>(&ray, 1), std::span<Hit>(&hit, 1));
-  ASSERT_TRUE(hit.is_hit());
-  EXPECT_EQ(scene.objects[hit.object_id].name, "step_up");
-  EXPECT_NEAR(hit.distance_m, 1.0, 1e-5);
-  ray.origin_W = Vec3f(5.0f, 0, 0.075f);
-  ray.direction_W = -Vec3f::UnitX();
-  caster.Cast(std::span<const Ray>(&ray, 1), std::span<Hit>(&hit, 1));
-  ASSERT_TRUE(hit.is_hit());
-  EXPECT_EQ(scene.objects[hit.object_id].name, "step_down");
-  EXPECT_NEAR(hit.distance_m, 0.5, 1e-5);
+  const auto cast = [&](Vec3f origin, Vec3f direction) {
+    Ray ray;
+    ray.origin_W = origin;
+    ray.direction_W = direction;
+    ray.max_range_m = 5;
+    Hit hit;
+    caster.Cast(std::span<const Ray>(&ray, 1), std::span<Hit>(&hit, 1));
+    return std::pair{hit.distance_m, hit.is_hit() ? scene.objects[hit.object_id].name : std::string()};
+  };
+  auto [d, name] = cast(Vec3f(0.5f, 0, 0.1f), Vec3f::UnitX());
+  EXPECT_EQ(name, "floor_stair_up_1");
+  EXPECT_NEAR(d, 0.5, 1e-5);
+  std::tie(d, name) = cast(Vec3f(5.1f, 0, -0.1f), Vec3f::UnitX());
+  EXPECT_EQ(name, "floor_between_holes");
+  EXPECT_NEAR(d, 0.15, 1e-5);
+  std::tie(d, name) = cast(Vec3f(4.5f, 0, 0.1f), -Vec3f::UnitX());
+  EXPECT_EQ(name, "floor_stair_down_3");
+  EXPECT_NEAR(d, 0.5, 1e-5);
 }
 
 }  // namespace

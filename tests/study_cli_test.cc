@@ -61,7 +61,7 @@ TEST_F(StudyCliTest, TheExampleRanksPicksThreePartsAndDrawsIt) {
   for (const auto& pick : selection["chosen"]) {
     EXPECT_FALSE(pick["added"].get<std::string>().starts_with("ideal@")) << "select.types excludes the ideal sensor";
   }
-  // the obstacle in three variants and the stairs' step and hole, each with three seeds
+  // the obstacle in three variants and the stairs course's steps up and down, each with three seeds
   EXPECT_EQ(selection["items"], 15);
   for (const char* file : {"lead_heatmap.png", "lead_heatmap.svg", "pareto.png", "pareto.svg", "index.html"}) {
     EXPECT_TRUE(fs::is_regular_file(out / file)) << file;

@@ -1,6 +1,7 @@
 """The paper's comparison (Figs 8–15 side by side): one column per sensor type
 (ideal, laser, ultrasonic, reflectance), the distance curve above the profile."""
 from .curve_figure import draw_curve
+from .figure_legend import fit_bottom_legend
 from .profile_figure import draw_profile, object_legend_handles
 from .run_data import STATUSES
 from .style import PAPER_TYPE_ORDER, STATUS_COLORS, STATUS_LABELS, TYPE_LABELS
@@ -20,10 +21,10 @@ def paper_sensors(sensors):
 def paper_figure(plt, run, path, has_robot):
     from matplotlib.lines import Line2D
     cols = paper_sensors(run.sensors)
-    fig, axes = plt.subplots(2, max(len(cols), 1), figsize=(4.3 * max(len(cols), 1), 6.8),
-                             squeeze=False)
-    # fixed margins: a layout engine costs seconds here, and the grid is regular
-    fig.subplots_adjust(left=0.055, right=0.99, top=0.86, bottom=0.17, hspace=0.5, wspace=0.28)
+    n = max(len(cols), 1)
+    # margins in inches, so that one or two columns keep their y-labels
+    width_in, plots_in = 4.3 * n, 6.2
+    fig, axes = plt.subplots(2, n, figsize=(width_in, plots_in), squeeze=False)
     ids = set()
     for j, sensor in enumerate(cols):
         draw_curve(axes[0, j], sensor, compact=True)
@@ -36,7 +37,14 @@ def paper_figure(plt, run, path, has_robot):
     status_handles.append(Line2D([], [], color="#222222", lw=0.8, label="noise-free"))
     status_handles.append(Line2D([], [], color="#b03030", ls="--", lw=0.9, label="d_max"))
     status_handles.append(Line2D([], [], color="#777777", lw=0.6, label="sensor track"))
-    fig.legend(handles=status_handles + object_legend_handles(run, ids), loc="lower center",
-               ncol=len(status_handles) + len(ids) + 2, fontsize=8, frameon=False, bbox_to_anchor=(0.5, 0.0))
-    fig.suptitle("Distance curves (top) and profiles (bottom) per sensor type", fontsize=13)
+    legend_in = fit_bottom_legend(fig, status_handles + object_legend_handles(run, ids))
+    # the legend's rows below the plots: the figure grows by them
+    title_in, xlabel_in = 0.95, 0.55
+    height_in = plots_in + legend_in + 0.1
+    fig.set_size_inches(width_in, height_in)
+    # fixed margins: a layout engine costs seconds here, and the grid is regular
+    fig.subplots_adjust(left=0.75 / width_in, right=1 - 0.12 / width_in, top=1 - title_in / height_in,
+                        bottom=(legend_in + 0.1 + xlabel_in) / height_in, hspace=0.5, wspace=0.28)
+    fig.suptitle("Distance curves (top) and profiles (bottom) per sensor type" if n > 1 else
+                 "Distance curve (top) and profile (bottom)", fontsize=13 if n > 1 else 11)
     return fig

@@ -37,9 +37,16 @@ def draw_profile(ax, run, path, has_robot, sensor, compact=False):
         s_hi = max(s_hi, s_org.max() + sensor.d_max_m + 0.15)
     s = np.linspace(s_lo, s_hi, 900)
 
-    # the true cross-section, grey
+    # the true cross-section, grey; the lowest it shows: the floor plane's top,
+    # and every object's bottom under the path (a hole's floor, the steps'
+    # feet), but not more than 1 m below the lowest top (a deep foundation)
     floor_z = -0.05
+    tops, bottoms = [], []
     for cut in cut_scene(run.scene, path, s, lateral):
+        if cut.wall_s is None and np.isfinite(cut.top).any():
+            tops.append(np.nanmin(cut.top))
+            if not cut.solid_below:
+                bottoms.append(np.nanmin(cut.bottom))
         if cut.wall_s is not None:
             x0, x1 = (cut.wall_s, s_hi) if cut.wall_solid_after else (s_lo, cut.wall_s)
             ax.axvspan(x0, x1, color=SECTION_FILL, alpha=0.6, lw=0, zorder=0)
@@ -65,7 +72,8 @@ def draw_profile(ax, run, path, has_robot, sensor, compact=False):
     # the height shown: what the sensor saw and where it went (walls run off the top)
     z_hi = max([0.3] + ([pts[:, 2].max()] if len(pts) else []) +
                ([origins[:, 2].max() + 0.1] if len(origins) else []))
-    z_lo = min([floor_z] + ([pts[:, 2].min() - 0.05] if len(pts) else []))
+    z_lo = min([floor_z] + ([pts[:, 2].min() - 0.05] if len(pts) else []) +
+               ([max(min(bottoms), min(tops) - 1.0) - 0.05] if bottoms else []))
     ax.set_xlim(s_lo, s_hi)
     ax.set_ylim(z_lo, z_hi + 0.08)
     ax.set_xlabel("distance along the path (m)" if has_robot else "x (m)")
@@ -93,7 +101,8 @@ def profile_legend_handles(run, ids):
 
 def profile_figure(plt, run, path, has_robot, sensor):
     fig, ax = plt.subplots(figsize=(10.5, 3.6))
-    fig.subplots_adjust(left=0.065, right=0.8, bottom=0.14, top=0.9)   # the legend goes right
+    # the legend goes right; 0.85 in on the left for tick labels like "-0.25" and the y-label
+    fig.subplots_adjust(left=0.85 / 10.5, right=0.8, bottom=0.14, top=0.9)
     ids = draw_profile(ax, run, path, has_robot, sensor)
     ax.legend(handles=profile_legend_handles(run, ids), loc="upper left", bbox_to_anchor=(1.01, 1.0),
               fontsize=8, frameon=False)

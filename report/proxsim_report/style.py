@@ -17,9 +17,12 @@ TYPE_LABELS = {"ideal": "ideal sensor", "laser": "laser range finder",
                "lookup": "lookup-table sensor"}
 PAPER_TYPE_ORDER = ("ideal", "laser", "ultrasonic", "reflectance")
 
-# objects: a qualitative palette, indexed by object id (cycled)
+# objects: a qualitative palette, indexed by object id (cycled); twenty
+# colours, so that the stairs course's pieces (fifteen objects) differ
 _OBJECT_PALETTE = ["#1f77b4", "#ff7f0e", "#17becf", "#e377c2", "#bcbd22",
-                   "#8c564b", "#2ca02c", "#9467bd", "#d62728", "#7f7f7f"]
+                   "#8c564b", "#2ca02c", "#9467bd", "#d62728", "#7f7f7f",
+                   "#393b79", "#e7969c", "#637939", "#fdae6b", "#6baed6",
+                   "#7b4173", "#b5cf6b", "#843c39", "#31a354", "#de9ed6"]
 SENSOR_PALETTE = ["#1f77b4", "#e6550d", "#31a354", "#756bb1", "#c51b8a",
                   "#3182bd", "#fd8d3c", "#74c476", "#9e9ac8", "#636363"]
 SECTION_FILL = "#c8c8c8"

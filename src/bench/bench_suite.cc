@@ -21,6 +21,7 @@
 #include "bench/bench_scene.h"
 #include "bench/closed_loop_bench.h"
 #include "bench/study_bench.h"
+#include "bench/terrain_bench.h"
 #include "bench/robot_bench.h"
 #include "bench/peers.h"
 #include "core/parallel.h"
@@ -392,6 +393,7 @@ json RunBench(const BenchOptions& options) {
     result["study"] = StudySection(options.quick, study_tmp.string());
     std::filesystem::remove_all(study_tmp);
   }
+  if (options.terrain) result["terrain"] = TerrainSection(options.quick);
   if (!options.end_to_end) {
     result["bench_wall_s"] = Since(bench_start);
     return result;
@@ -599,6 +601,7 @@ std::string BenchReport(const json& r) {
   if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
   if (r.contains("robots")) out << RobotsReport(r.at("robots"));
   if (r.contains("study")) out << StudyReport(r.at("study"));
+  if (r.contains("terrain")) out << TerrainReport(r.at("terrain"));
   return out.str();
 }
 

@@ -103,10 +103,22 @@ int Run(const std::string& scenario_path, const std::string& out_dir, std::optio
   }
   if (const auto robot = result.summary.find("robot"); robot != result.summary.end()) {
     const auto& r = *robot;
+    // a robot standing because its legs refused a step says so, not "at the end of its path"
+    std::string refused;
+    for (const auto& event : r["events"]) {
+      if (event["event"] == "cannot_step") {
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, " (cannot_step at t = %.2f s)", event["t_s"].get<double>());
+        refused = buffer;
+      }
+    }
+    const bool reached_goal = r["reached_goal"].is_boolean() && r["reached_goal"].get<bool>();
+    const std::string standing = refused.empty() || reached_goal ? "standing at the end of its path"
+                                                 : "standing before a step its legs cannot take" + refused;
     std::printf("  robot: walked %.2f m, %s, min clearance %s m\n", r["distance_walked_m"].get<double>(),
                 r["stopped"].get<bool>()
                     ? ("stopped by its strategy at t = " + std::to_string(r["stop_t_s"].get<double>()) + " s").c_str()
-                : r["standing_at_end"].get<bool>() ? "standing at the end of its path"
+                : r["standing_at_end"].get<bool>() ? standing.c_str()
                                                    : "still walking at the end",
                 r["min_clearance_m"].is_null() ? "n/a" : std::to_string(r["min_clearance_m"].get<double>()).c_str());
   }
@@ -195,9 +207,9 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   std::string bench_only = "all";
   bench->add_option("--only", bench_only,
-                    "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped) or "
-                    "study (placement studies, MPI)")
-      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study"}))
+                    "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped), "
+                    "study (placement studies, MPI) or terrain (planning footsteps on the stairs course)")
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -246,7 +258,8 @@ int main(int argc, char** argv) {
            .rays = bench_only == "all" || bench_only == "rays",
            .end_to_end = bench_only == "all" || bench_only == "e2e",
            .robots = bench_only == "all" || bench_only == "robots",
-           .study = bench_only == "all" || bench_only == "study"});
+           .study = bench_only == "all" || bench_only == "study",
+           .terrain = bench_only == "all" || bench_only == "terrain"});
       const bool whole = bench_only == "all";
       std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
                  stdout);

@@ -64,7 +64,9 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
 
 double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
   const double s = Smoothstep(std::clamp(p / 0.5, 0.0, 1.0));
-  return CurveLegAngles(p + 0.5, Amplitude(plan, p)).pitch + plan.swing_start_pitch * (1 - s);
+  const double pitch = CurveLegAngles(p + 0.5, Amplitude(plan, p)).pitch + plan.swing_start_pitch * (1 - s);
+  // over uneven ground the foot is carried level (the toe up, off the edges), as the arc lifts it
+  return plan.terrain ? pitch * (1 - SwingArc::LiftShape(SwingProgress(p))) : pitch;
 }
 
 Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {
@@ -88,13 +90,16 @@ Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p) const {
 
 StepPose StepPlanner::Evaluate(const StepPlan& plan, double p) const {
   StepPose pose;
-  pose.stance = StanceAngles(plan, p);
+  pose.stance = plan.terrain ? TerrainStanceAngles(plan, p) : StanceAngles(plan, p);
   pose.X_WP = StancePelvis(plan, p, pose.stance);
   const double pitch = SwingPitch(plan, p);
   Vec2xz p_PA = Vec2xz::Zero();
   if (p < kDoubleSupportEnd) {
     // double support: the trailing foot stays planted on its toe
     p_PA = PlantedAnkle(plan, p, pose.X_WP);
+  } else if (plan.terrain) {
+    // swing over uneven ground: the arc, sized against the ground when planned
+    p_PA = ArcAnkle(plan, p, pose.X_WP);
   } else {
     // swing, with a floor guard: lift the foot if its lowest sole point would be below the floor
     p_PA = SwingAnkle(plan, p);
@@ -174,7 +179,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   plan.k_from = plan.k_to = k;
   plan.g_from = plan.g_to = PushOffGain(legs_, plan.stance, k);
   plan.yaw_from = plan.yaw_to = yaw_rad;
-  plan.floor_z_m = p_W_start.z();
+  plan.floor_z_m = plan.landing_z_m = p_W_start.z();
   const LegAnglesRad stance = CurveLegAngles(0.0, k);
   const Rotation R = Eigen::AngleAxisd(yaw_rad, Vec3::UnitZ()).toRotationMatrix();
   const Vec3 p_P_heel = legs_.Point3(Side::kLeft, stance, FootPoint::kHeel);
@@ -187,6 +192,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   if (below > 0) trailing = legs_.SolveAnkle(Side::kRight, legs_.Ankle(Side::kRight, trailing) + Vec2xz(0, below), trailing.pitch);
   plan.p_W_trailing_toe = PelvisPose(p_WP, yaw_rad) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
   Finish(&plan);
+  if (terrain_ != nullptr) PlanOnTerrain(&plan, /*stance_from_natural_landing=*/true, p_WP);
   return plan;
 }
 
@@ -201,7 +207,7 @@ StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to)
   plan.g_to = PushOffGain(legs_, plan.stance, k_to);
   plan.yaw_from = prev.yaw_to;
   plan.yaw_to = yaw_to;
-  plan.floor_z_m = prev.floor_z_m;
+  plan.floor_z_m = plan.landing_z_m = prev.landing_z_m;
   // latch the new stance heel where it struck, on the floor
   plan.p_W_heel = strike.X_WP * legs_.Point3(plan.stance, strike.swing, FootPoint::kHeel);
   plan.p_W_heel.z() = plan.floor_z_m;
@@ -214,6 +220,7 @@ StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to)
   // swing: its pitch starts from where the old stance foot is
   plan.swing_start_pitch = strike.stance.pitch - CurveLegAngles(0.5, plan.k_from).pitch;
   Finish(&plan);
+  if (terrain_ != nullptr) PlanOnTerrain(&plan, prev.natural_landing, strike.X_WP.translation());
   return plan;
 }
 
@@ -234,11 +241,13 @@ double PushOffGain(const BipedLegs& legs, Side stance, double k) {
 }
 
 double SteadyStride_m(const StepPlanner& planner, double k) {
-  StepPlan plan = planner.FirstStep(Vec3::Zero(), 0.0, k);
+  // on a flat floor, whatever ground the planner walks on
+  const StepPlanner flat(planner.legs());
+  StepPlan plan = flat.FirstStep(Vec3::Zero(), 0.0, k);
   std::vector<double> left_heel_x;
   for (int step = 0; step < 8; ++step) {
     if (plan.stance == Side::kLeft) left_heel_x.push_back(plan.p_W_heel.x());
-    plan = planner.NextStep(plan, k, 0.0);
+    plan = flat.NextStep(plan, k, 0.0);
   }
   return left_heel_x.back() - left_heel_x[left_heel_x.size() - 2];
 }

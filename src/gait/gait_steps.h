@@ -39,9 +39,40 @@
 // Departures from a real gait: no hip roll or yaw (so during a turn the
 // trailing toe, planted while the pelvis turns on the stance heel, slides
 // sideways), the pelvis does not sway sideways.
+//
+// Uneven ground (docs/terrain.md; gait_steps_terrain.cc). With a terrain (the
+// scene's true surface, gait/terrain_query.h), every step first finds its
+// foothold on the ground profile along the swing foot's line
+// (gait/footstep_planner.h), nearest the heel the curves would land. When
+// that is where the curves land, on the stance foot's level, with nothing
+// under the swing's sweep but that level, and the stance started from such a
+// landing, the step is the flat-floor step above, unchanged. Otherwise it is
+// a terrain step:
+//  - The pelvis height ramps from where it was at heel strike to the curves'
+//    height above the stance tread at the next heel strike, lowered by the
+//    fall of the step when stepping down (and further when a long step needs
+//    it to reach), with a trapezoidal speed profile; its offset along the
+//    heading from the curves' pelvis fades out. The stance leg reaches that
+//    pelvis by two-link IK from its latched pivot (heel → flat → toe as
+//    above, on any tread height), so the pivot never slides and the pelvis
+//    follows the stance leg up and down.
+//  - The swing leg lands its heel on the foothold at the curves' landing pitch,
+//    by two-link IK; from toe-off its ankle follows a lift–carry–lower arc
+//    (gait/swing_arc.h) whose lift is sized, against the ground profile, so
+//    that the sole clears every edge it passes over by kSwingClearance_m.
+//  - A step whose pelvis must rise or fall faster than kMaxPelvisRampSpeed_m_s
+//    lasts longer (StepDuration_s).
+// A step with no foothold within reach (a rise or fall beyond max_rise_m, a
+// gap wider than a stride lets a step cross) carries the reason in
+// `cannot_step`; the walker does not take it.
 #pragma once
 
+#include <string>
+
+#include "gait/footstep_planner.h"
 #include "gait/leg_kinematics.h"
+#include "gait/swing_arc.h"
+#include "gait/terrain_query.h"
 
 namespace proxsim {
 
@@ -49,6 +80,10 @@ namespace proxsim {
 constexpr double kSwingClearance_m = 0.02;
 /// End of double support and of the blends that start at heel strike (stance phase).
 constexpr double kDoubleSupportEnd = kToeOffPhase - 0.5;
+/// Most knee flexion the gait asks of a leg on uneven ground, rad.
+constexpr double kMaxKneeFlexion_rad = DegToRad(100.0);
+/// Peak vertical speed of a terrain step's pelvis ramp; a larger rise or fall slows the step, m/s.
+constexpr double kMaxPelvisRampSpeed_m_s = 0.3;
 
 /// Everything latched at one heel strike for the step that follows.
 struct StepPlan {
@@ -68,6 +103,17 @@ struct StepPlan {
   Vec2xz swing_toe_off_rate = Vec2xz::Zero();   ///< its rate over the swing (d/du, u from 0 at toe-off to 1 at heel strike)
   Vec2xz swing_end_delta = Vec2xz::Zero();    ///< swing ankle correction at p = 0.5
   double clearance_bump_m = 0;                ///< height of the mid-swing bump
+  // uneven ground (docs/terrain.md)
+  double landing_z_m = 0;        ///< height of the tread the swing heel lands on (floor_z_m on flat ground)
+  bool natural_landing = true;   ///< the swing lands where the curves put it, on the stance's level
+  bool terrain = false;          ///< a terrain step (see above); false: the flat-floor step
+  std::string cannot_step;       ///< not empty: no foothold within reach, and why; the step is not to be taken
+  double pelvis_x0_offset_m = 0;  ///< terrain: pelvis ahead of the curves' pelvis at heel strike (faded out)
+  double pelvis_z0_m = 0;         ///< terrain: pelvis height at heel strike
+  double pelvis_z1_m = 0;         ///< terrain: pelvis height at the next heel strike
+  Vec3 p_W_H = Vec3::Zero();      ///< terrain: origin of the heading frame H (the stance heel, at z = 0)
+  SwingArc swing_arc;             ///< terrain: the swing ankle's arc in H (H's x along yaw_to)
+  double foothold_s_m = 0;        ///< terrain: the landing heel along H's x
 };
 
 /// The robot at one stance phase of a step.
@@ -80,6 +126,15 @@ struct StepPose {
 class StepPlanner {
  public:
   explicit StepPlanner(const BipedLegs& legs) : legs_(legs) {}
+
+  /// The ground the feet stand on (null: a flat floor at the start height)
+  /// and what one step can do on it; `terrain` must outlive the planner.
+  void set_terrain(const TerrainQuery* terrain, const FootholdLimits& limits) {
+    terrain_ = terrain;
+    limits_ = limits;
+  }
+  const TerrainQuery* terrain() const { return terrain_; }
+  const FootholdLimits& limits() const { return limits_; }
 
   /// The first step: left heel strike with the pelvis above (x, y) of p_W_start
   /// (its z is the floor), heading yaw, curves at amplitude k.
@@ -105,8 +160,32 @@ class StepPlanner {
   // Latches X_WF, the landing correction and the clearance bump.
   void Finish(StepPlan* plan) const;
 
+  // uneven ground (gait_steps_terrain.cc)
+  // Plans the foothold of a finished flat-floor plan on the terrain and makes
+  // it a terrain step when it has to be; p_WP_strike: the pelvis at heel strike.
+  void PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing, const Vec3& p_WP_strike) const;
+  // Makes `plan` a terrain step landing on `foothold`.
+  void FinishTerrain(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile,
+                     const Vec3& p_WP_strike) const;
+  // A terrain step's stance leg at p: two-link IK from its pivot to the pelvis ramp.
+  LegAnglesRad TerrainStanceAngles(const StepPlan& plan, double p) const;
+  // The curves' stance angles at p, without the heel-strike offset.
+  LegAnglesRad CurveStanceAngles(const StepPlan& plan, double p) const;
+  // A terrain step's swing ankle (P) at p >= kDoubleSupportEnd, pelvis at X_WP.
+  Vec2xz ArcAnkle(const StepPlan& plan, double p, const Pose& X_WP) const;
+
   const BipedLegs& legs_;
+  const TerrainQuery* terrain_ = nullptr;
+  FootholdLimits limits_;
 };
+
+/// How long a step lasts: half the period, longer for a terrain step whose
+/// pelvis would otherwise rise or fall faster than kMaxPelvisRampSpeed_m_s.
+double StepDuration_s(const StepPlan& plan, double period_s);
+
+/// The highest step up (or down) the legs take from steady walking at
+/// amplitude k: the rise at which the landing knee bends kMaxKneeFlexion_rad, m.
+double DefaultMaxStep_m(const BipedLegs& legs, double k);
 
 /// Push-off gain for amplitude k (1 when the curves need no reduction).
 double PushOffGain(const BipedLegs& legs, Side stance, double k);

@@ -1,6 +1,8 @@
 #include "gait/gait_walker.h"
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 
 #include "core/input_error.h"
@@ -59,7 +61,35 @@ GaitWalker::GaitWalker(RobotModel model, const RobotConfig& config)
   SetStride(initial_.gait.stride_m);
   initial_k_ = k_target_;
   initial_achieved_stride_m_ = achieved_stride_m_;
+  max_step_m_ = config.gait.max_step_m > 0 ? config.gait.max_step_m : DefaultMaxStep_m(*legs_, initial_k_);
   Start();
+}
+
+FootholdLimits GaitWalker::Limits() const {
+  double sole_m = 0;
+  for (const Side side : {Side::kLeft, Side::kRight}) sole_m = std::max(sole_m, legs_->leg(side).toe_x_m - legs_->leg(side).heel_x_m);
+  return FootholdLimits{.sole_length_m = sole_m,
+                        .margin_m = 0.01,
+                        .min_step_m = 0.25 * achieved_stride_m_,
+                        .max_step_m = achieved_stride_m_,
+                        .max_rise_m = max_step_m_};
+}
+
+void GaitWalker::SetTerrain(const TerrainQuery* terrain) {
+  terrain_ = terrain;
+  Start();
+}
+
+std::vector<LocomotionEvent> GaitWalker::TakeEvents() {
+  std::vector<LocomotionEvent> events;
+  events.swap(events_);
+  return events;
+}
+
+void GaitWalker::NoteCannotStep(const std::string& reason) {
+  if (reason == last_cannot_step_) return;
+  last_cannot_step_ = reason;
+  events_.push_back({"cannot_step", reason});
 }
 
 void GaitWalker::Start() {
@@ -69,7 +99,23 @@ void GaitWalker::Start() {
   path_origin_m_ = initial_.start_xyz_m.head<2>();
   k_target_ = initial_k_;
   achieved_stride_m_ = initial_achieved_stride_m_;
-  plan_ = planner_->FirstStep(initial_.start_xyz_m, initial_.start_yaw_rad, k_target_);
+  events_.clear();
+  last_cannot_step_.clear();
+  // on a terrain, the robot stands on the surface below its start; above no
+  // surface it walks on a flat floor at its start height
+  Vec3 start = initial_.start_xyz_m;
+  const TerrainQuery* terrain = terrain_;
+  if (terrain != nullptr) {
+    const double reach_m = 2 * legs_->leg_length_m();
+    const Vec3 from = start + Vec3(0, 0, reach_m);
+    double z = 0;
+    terrain->HeightsBelow(std::span<const Vec3>(&from, 1), 2 * reach_m + 10.0, std::span<double>(&z, 1));
+    if (!std::isfinite(z)) terrain = nullptr;
+    else if (std::abs(z - start.z()) > kLevelTolerance_m) start.z() = z;
+  }
+  planner_->set_terrain(terrain, Limits());
+  plan_ = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
+  step_duration_s_ = StepDuration_s(plan_, gait_.period_s);
   step_start_clock_s_ = 0;
   clock_s_ = 0;
   step_phase_ = 0;
@@ -81,6 +127,11 @@ void GaitWalker::Start() {
   distance_m_ = 0;
   last_p_WP_ = Vec3::Zero();
   has_last_p_WP_ = false;
+  // no foothold for the first step: stand where it starts
+  if (!plan_.cannot_step.empty()) {
+    stopped_ = true;
+    NoteCannotStep(plan_.cannot_step);
+  }
 }
 
 void GaitWalker::SetStride(double stride_m) {
@@ -100,6 +151,7 @@ void GaitWalker::SetStride(double stride_m) {
   }
   k_target_ = 0.5 * (lo + hi);
   achieved_stride_m_ = SteadyStride_m(*planner_, k_target_);
+  if (planner_->terrain() != nullptr) planner_->set_terrain(planner_->terrain(), Limits());
 }
 
 void GaitWalker::Resume() {
@@ -163,24 +215,35 @@ RobotState GaitWalker::Advance(double t_s) {
   }
   const double dt = std::max(0.0, t_s - last_t_s_);
   last_t_s_ = std::max(last_t_s_, t_s);
-  const double half = 0.5 * gait_.period_s;
   if (!stopped_) {
     clock_s_ += dt;
     // heel strikes passed since the last sample
-    while (clock_s_ >= step_start_clock_s_ + half) {
+    while (clock_s_ >= step_start_clock_s_ + step_duration_s_) {
       const StepPose strike = planner_->Evaluate(plan_, 0.5);
       double yaw_to = 0;
-      if (DecideAtHeelStrike(strike.X_WP, &yaw_to)) {
+      bool stop = DecideAtHeelStrike(strike.X_WP, &yaw_to);
+      StepPlan next;
+      if (!stop) {
+        next = planner_->NextStep(plan_, k_target_, yaw_to);
+        // no foothold within reach: stop before the step
+        if (!next.cannot_step.empty()) {
+          NoteCannotStep(next.cannot_step);
+          stop = true;
+        }
+      }
+      if (stop) {
         stopped_ = true;
         stop_requested_ = false;
-        clock_s_ = step_start_clock_s_ + half;  // freeze at the heel strike
+        clock_s_ = step_start_clock_s_ + step_duration_s_;  // freeze at the heel strike
         break;
       }
-      plan_ = planner_->NextStep(plan_, k_target_, yaw_to);
-      step_start_clock_s_ += half;
+      last_cannot_step_.clear();
+      plan_ = std::move(next);
+      step_start_clock_s_ += step_duration_s_;
+      step_duration_s_ = StepDuration_s(plan_, gait_.period_s);
     }
   }
-  const double p = std::clamp((clock_s_ - step_start_clock_s_) / gait_.period_s, 0.0, 0.5);
+  const double p = std::clamp((clock_s_ - step_start_clock_s_) / (2 * step_duration_s_), 0.0, 0.5);
   const StepPose pose = planner_->Evaluate(plan_, p);
 
   RobotState state;

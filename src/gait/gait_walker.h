@@ -31,6 +31,17 @@
 // for this robot's legs. A stride beyond what k ∈ [0.05, 1.6] can give is
 // clamped: achieved_stride_m() says what is walked. A new stride takes effect
 // at the next heel strike, ramped in over the double support.
+//
+// Uneven ground (docs/terrain.md): with a terrain (SetTerrain), every step lands on a
+// foothold planned on the scene's true surface (gait_steps.h, "Uneven
+// ground"), and the robot stands on the surface below its start point (a
+// start above no surface walks on a flat floor at its start height, as
+// without a terrain). A step longer than a stride or shorter than a quarter
+// of one is not planned, nor one up or down more than gait.max_step_m (by
+// default what the legs reach with the knee bent kMaxKneeFlexion_rad). When
+// the next step has no foothold, the robot stops before it, at the heel
+// strike (both feet down), and reports `cannot_step` with the reason; it
+// tries again when resumed or given a new path.
 #pragma once
 
 #include <memory>
@@ -63,7 +74,11 @@ class GaitWalker : public Locomotion {
   void SetStride(double stride_m) override;
   void SetPath(std::vector<Vec2> waypoints_m) override;
   std::vector<FootFrame> Feet() const override;
-  std::optional<GaitCycle> gait_cycle() const override { return GaitCycle{achieved_stride_m_, gait_.period_s}; }
+  std::optional<GaitCycle> gait_cycle() const override {
+    return GaitCycle{achieved_stride_m_, gait_.period_s, max_step_m_};
+  }
+  void SetTerrain(const TerrainQuery* terrain) override;
+  std::vector<LocomotionEvent> TakeEvents() override;
   void Reset() override;
   const RobotModel& model() const override { return *model_; }
 
@@ -83,6 +98,10 @@ class GaitWalker : public Locomotion {
  private:
   // At the heel strike ending the current step: decide heading and stopping.
   bool DecideAtHeelStrike(const Pose& X_WP, double* yaw_to);
+  // What one step may do on uneven ground, from the legs and the stride.
+  FootholdLimits Limits() const;
+  // Logs `cannot_step` once per reason in a row.
+  void NoteCannotStep(const std::string& reason);
   // Whether waypoint i counts as passed with the pelvis at p.
   bool Passed(std::size_t i, const Vec2& p) const;
 
@@ -102,7 +121,12 @@ class GaitWalker : public Locomotion {
   Vec2 path_origin_m_ = Vec2::Zero();  // where the robot was when its path was given
   double k_target_ = 1;
   double achieved_stride_m_ = 0;
+  const TerrainQuery* terrain_ = nullptr;
+  double max_step_m_ = 0;             // highest step up or down (gait.max_step_m, or from the legs)
+  std::vector<LocomotionEvent> events_;
+  std::string last_cannot_step_;      // the reason last logged, until a step is taken
   StepPlan plan_;
+  double step_duration_s_ = 0;     // the current step's duration (half a period, or longer: StepDuration_s)
   double step_start_clock_s_ = 0;  // gait clock at the current step's heel strike
   double clock_s_ = 0;
   double step_phase_ = 0;

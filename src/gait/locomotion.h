@@ -5,9 +5,11 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/geometry.h"
+#include "gait/terrain_query.h"
 #include "robot/robot_model.h"
 
 namespace proxsim {
@@ -38,8 +40,16 @@ struct FootFrame {
 
 /// One gait cycle as walked.
 struct GaitCycle {
-  double stride_m = 0;  ///< heel strike to heel strike of one foot
-  double period_s = 0;  ///< the cycle's duration
+  double stride_m = 0;    ///< heel strike to heel strike of one foot
+  double period_s = 0;    ///< the cycle's duration
+  double max_step_m = 0;  ///< highest step up or down it takes on uneven ground
+};
+
+/// Something the motion noticed or decided (a step it cannot take), for
+/// summary.json `robot.events`.
+struct LocomotionEvent {
+  std::string event;   ///< snake_case name: cannot_step
+  std::string detail;  ///< one line for a person
 };
 
 /// What moves the robot. Advance() is called with non-decreasing times.
@@ -63,6 +73,12 @@ class Locomotion {
   /// The stride and period being walked (after defaults and limits); nullopt
   /// for a motion without a gait cycle (a replayed trajectory).
   virtual std::optional<GaitCycle> gait_cycle() const { return std::nullopt; }
+  /// The scene's true surface to plan footsteps on (null: a flat floor at the
+  /// start height); it must outlive the motion. Starts the episode afresh. A
+  /// motion that does not plan footsteps ignores it.
+  virtual void SetTerrain(const TerrainQuery* terrain) { (void)terrain; }
+  /// What happened since the last call, oldest first.
+  virtual std::vector<LocomotionEvent> TakeEvents() { return {}; }
   virtual const RobotModel& model() const = 0;
 };
 

@@ -39,6 +39,9 @@ struct GaitConfig {
   /// true: period_s is not used; the gait scales the built-in biped's period
   /// with the square root of the leg length (the scenario gave no period_s)
   bool derive_period_from_legs = false;
+  /// highest step up or down the gait takes on uneven ground, m (> 0); 0:
+  /// from the legs, the rise at which the landing knee bends 100 degrees
+  double max_step_m = 0.0;
 };
 
 /// One leg as the gait drives it (`robot.legs.left` / `.right`): the revolute

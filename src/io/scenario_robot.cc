@@ -95,13 +95,14 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
   const YAML::Node name_node = field.node.IsMap() ? field.node["name"] : YAML::Node();
   const std::string name = name_node && name_node.IsScalar() ? name_node.Scalar() : "";
   if (name == "stop") {
-    const auto map = reader.Map(field, {"name", "stop_distance_m", "min_height_m", "corridor_half_width_m"});
+    const auto map = reader.Map(field, {"name", "stop_distance_m", "min_height_m", "corridor_half_width_m", "max_drop_m"});
     if (!map) return std::nullopt;
     StopConfig stop;
     stop.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(stop.stop_distance_m);
     stop.min_height_m = reader.Number((*map)["min_height_m"], PositiveNumber("m")).value_or(stop.min_height_m);
     stop.corridor_half_width_m =
         reader.Number((*map)["corridor_half_width_m"], PositiveNumber("m")).value_or(stop.corridor_half_width_m);
+    stop.max_drop_m = reader.Number((*map)["max_drop_m"], PositiveNumber("m")).value_or(stop.max_drop_m);
     return stop;
   }
   if (name == "circumvent") {
@@ -184,13 +185,15 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     robot.start_yaw_rad = DegToRad(reader.Number((*start)["yaw_deg"]).value_or(0.0));
   }
 
-  // gait: {stride_m, period_s}; either one absent scales with the legs
+  // gait: {stride_m, period_s, max_step_m}; stride or period absent scales with
+  // the legs, max_step_m absent comes from them
   robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
-  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s"})) {
+  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m"})) {
     robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
     robot.gait.derive_period_from_legs = !gait->Has("period_s");
     robot.gait.stride_m = reader.Number((*gait)["stride_m"], PositiveNumber("m")).value_or(robot.gait.stride_m);
     robot.gait.period_s = reader.Number((*gait)["period_s"], PositiveNumber("s")).value_or(robot.gait.period_s);
+    robot.gait.max_step_m = reader.Number((*gait)["max_step_m"], PositiveNumber("m")).value_or(0.0);
   }
 
   // path: {waypoints_m: [[x, y], ...]}

@@ -14,14 +14,26 @@
 //   obstacle   0.20 (x) × 0.30 (y) × 0.15 (z) m box centred at (2.5, 0) on the
 //              floor: in the robot's way
 //
-// stairs:
-//   floor pieces (boxes 0.3 m thick, upper faces at z = 0, y −2…2, x −1…6)
-//   around a hole x 1.3–1.7, y −0.5…0.5 (0.4 × 1 m) whose bottom is the upper
-//   face of `hole_bottom` at z = −0.3. The piece the robot starts on is named
-//   `floor`; the others `floor_hole_left`, `floor_hole_right`, `floor_after_hole`.
-//   A platform 0.15 m high across the whole width from x = 3.0 to x = 4.5: its
-//   first half `step_up` (the rising edge at x = 3.0), its second half
-//   `step_down` (the falling edge at x = 4.5, back to the floor).
+// stairs (the uneven-ground course of docs/terrain.md, walked along +x; every piece spans
+// y −1.5…1.5, and every top is a box's upper face):
+//   floor              z = 0      x −1.0 … 1.0   (the robot starts at x = 0)
+//   floor_stair_up_1   z = 0.15   x 1.0 … 1.3    4 steps up: 0.15 m rises,
+//   floor_stair_up_2   z = 0.30   x 1.3 … 1.6    0.30 m treads
+//   floor_stair_up_3   z = 0.45   x 1.6 … 1.9
+//   floor_landing      z = 0.60   x 1.9 … 3.1    a 1.2 m landing
+//   floor_stair_down_1 z = 0.45   x 3.1 … 3.4    4 steps down
+//   floor_stair_down_2 z = 0.30   x 3.4 … 3.7
+//   floor_stair_down_3 z = 0.15   x 3.7 … 4.0
+//   floor_after_stairs z = 0      x 4.0 … 5.0
+//   hole_bottom        z = −0.5   x 5.0 … 5.25   a 0.25 m hole to step over
+//   floor_between_holes z = 0     x 5.25 … 6.5
+//   wide_hole_bottom   z = −0.5   x 6.5 … 7.1    a 0.6 m hole no step crosses
+//   floor_end          z = 0      x 7.1 … 9.0
+// The pieces reach down to z = −0.5 (the holes' walls are their sides; the
+// holes' bottoms are 0.1 m slabs below that). The holes are 0.5 m deep,
+// deeper than the built-in biped's highest step (gait.max_step_m, 0.32 m by
+// default), so the robot steps over them or not at all. Everything the feet
+// stand on is named floor*: the clearance leaves it out.
 //
 // Materials are plausible diffuse albedos and specular fractions (plaster
 // walls bright and matte, varnished wood darker and a little glossy).
@@ -127,24 +139,28 @@ Scene MakeDiningRoomScene() {
 
 Scene MakeStairsScene() {
   Scene scene;
-  constexpr double kFloorDepth = 0.3;  // the floor boxes' thickness = the hole's depth
-  constexpr double kXMin = -1.0, kXMax = 6.0, kYMax = 2.0;
-  constexpr double kHoleX0 = 1.3, kHoleX1 = 1.7, kHoleY = 0.5;
-
-  // floor pieces around the hole, upper faces at z = 0; their sides are the hole's walls
-  scene.objects.push_back(BoxFromTo("floor", Vec3(kXMin, -kYMax, -kFloorDepth), Vec3(kHoleX0, kYMax, 0), kConcrete));
-  scene.objects.push_back(BoxFromTo("floor_hole_left", Vec3(kHoleX0, kHoleY, -kFloorDepth), Vec3(kHoleX1, kYMax, 0), kConcrete));
-  scene.objects.push_back(BoxFromTo("floor_hole_right", Vec3(kHoleX0, -kYMax, -kFloorDepth), Vec3(kHoleX1, -kHoleY, 0), kConcrete));
-  scene.objects.push_back(BoxFromTo("floor_after_hole", Vec3(kHoleX1, -kYMax, -kFloorDepth), Vec3(kXMax, kYMax, 0), kConcrete));
-
-  // the hole's bottom, 0.3 m down
-  scene.objects.push_back(BoxFromTo("hole_bottom", Vec3(kHoleX0, -kHoleY, -kFloorDepth - 0.1),
-                                    Vec3(kHoleX1, kHoleY, -kFloorDepth), kDarkConcrete));
-
-  // a platform 0.15 m high: up at x = 3.0, down at x = 4.5
-  constexpr double kStepHeight = 0.15;
-  scene.objects.push_back(BoxFromTo("step_up", Vec3(3.0, -kYMax, 0), Vec3(3.75, kYMax, kStepHeight), kConcrete));
-  scene.objects.push_back(BoxFromTo("step_down", Vec3(3.75, -kYMax, 0), Vec3(4.5, kYMax, kStepHeight), kConcrete));
+  constexpr double kY = 1.5, kBottom = -0.5;
+  const auto piece = [&](const char* name, double x0, double x1, double z_top) {
+    scene.objects.push_back(BoxFromTo(name, Vec3(x0, -kY, kBottom), Vec3(x1, kY, z_top), kConcrete));
+  };
+  const auto hole_bottom = [&](const char* name, double x0, double x1) {
+    scene.objects.push_back(BoxFromTo(name, Vec3(x0, -kY, kBottom - 0.1), Vec3(x1, kY, kBottom), kDarkConcrete));
+  };
+  // flat, then four steps up to the landing, four down, flat again
+  piece("floor", -1.0, 1.0, 0.0);
+  piece("floor_stair_up_1", 1.0, 1.3, 0.15);
+  piece("floor_stair_up_2", 1.3, 1.6, 0.30);
+  piece("floor_stair_up_3", 1.6, 1.9, 0.45);
+  piece("floor_landing", 1.9, 3.1, 0.60);
+  piece("floor_stair_down_1", 3.1, 3.4, 0.45);
+  piece("floor_stair_down_2", 3.4, 3.7, 0.30);
+  piece("floor_stair_down_3", 3.7, 4.0, 0.15);
+  piece("floor_after_stairs", 4.0, 5.0, 0.0);
+  // a hole to step over, and one too wide to cross
+  hole_bottom("hole_bottom", 5.0, 5.25);
+  piece("floor_between_holes", 5.25, 6.5, 0.0);
+  hole_bottom("wide_hole_bottom", 6.5, 7.1);
+  piece("floor_end", 7.1, 9.0, 0.0);
   return scene;
 }
 

@@ -17,7 +17,8 @@ nlohmann::json StrategyJson(const StrategyConfig& config) {
     return {{"name", "stop"},
             {"stop_distance_m", stop->stop_distance_m},
             {"min_height_m", stop->min_height_m},
-            {"corridor_half_width_m", stop->corridor_half_width_m}};
+            {"corridor_half_width_m", stop->corridor_half_width_m},
+            {"max_drop_m", NullUnless(stop->max_drop_m > 0, stop->max_drop_m)}};
   }
   const auto& c = std::get<CircumventConfig>(config);
   return {{"name", "circumvent"},          {"margin_m", c.margin_m},

@@ -85,9 +85,17 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
   delivery_ = std::make_unique<DeliveryQueue>(scenario_.sensors, scenario_.rate_hz);
   event_log_ = std::make_unique<Events>(*this);
   for (const SensorConfig& sensor : scenario_.sensors) {
-    sensor_info_.push_back({sensor.name, sensor.spec.type, sensor.spec.min_range_m, sensor.spec.max_range_m, sensor.link});
+    sensor_info_.push_back({.name = sensor.name,
+                            .type = sensor.spec.type,
+                            .min_range_m = sensor.spec.min_range_m,
+                            .max_range_m = sensor.spec.max_range_m,
+                            .link = sensor.link,
+                            .max_incidence_deg = sensor.spec.max_incidence_deg,
+                            .aperture_deg = sensor.spec.beam && sensor.spec.beam->rays > 1 ? sensor.spec.beam->aperture_deg : 0.0});
   }
   if (locomotion_) {
+    // the gait plans its footsteps on the scene's true surface
+    locomotion_->SetTerrain(&world_->terrain());
     commands_ = std::make_unique<Commands>(*this);
     strategy_ = std::move(strategy);
     feet_ = locomotion_->Feet();
@@ -110,6 +118,7 @@ StrategySetup Simulation::MakeSetup() const {
   setup.sensors = sensor_info_;
   if (scenario_.robot) setup.path_m = scenario_.robot->waypoints_m;
   setup.rate_hz = scenario_.rate_hz;
+  if (const auto cycle = locomotion_ ? locomotion_->gait_cycle() : std::nullopt) setup.max_step_m = cycle->max_step_m;
   return setup;
 }
 
@@ -139,6 +148,7 @@ const SampleFrame& Simulation::Step() {
   if (locomotion_) {
     // every link at its pose of this very sample time
     state_ = locomotion_->Advance(frame_.t_s);
+    for (LocomotionEvent& event : locomotion_->TakeEvents()) event_log_->Log(std::move(event.event), std::move(event.detail));
     robot->Place(state_);
     world_->caster().Commit();
     frame_.robot = {.present = true,

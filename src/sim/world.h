@@ -18,6 +18,7 @@
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
 #include "sensors/beam.h"
+#include "sim/caster_terrain.h"
 #include "sim/robot_in_scene.h"
 
 namespace proxsim {
@@ -34,6 +35,8 @@ class World {
 
   RayCaster& caster() { return caster_; }
   const RayCaster& caster() const { return caster_; }
+  /// The scene's true surface for the gait's footsteps (the robot transparent).
+  const TerrainQuery& terrain() const { return terrain_; }
 
   /// Object ids: the scene's objects in scenario order, then the robot's links.
   const std::string& object_name(std::int32_t object_id) const { return object_names_.at(object_id); }
@@ -57,6 +60,7 @@ class World {
 
  private:
   RayCaster caster_;
+  CasterTerrain terrain_{caster_};
   std::vector<std::string> object_names_;
   std::int32_t first_robot_object_id_ = 0;
   std::vector<std::int32_t> ground_ids_;

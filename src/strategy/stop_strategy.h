@@ -1,9 +1,16 @@
-// The built-in strategy `stop`: stop before an obstacle. It looks only at what
-// the robot knows: a fresh detection whose measured point stands higher than
-// min_height_m above the ground the robot stands on, inside the corridor it
-// walks along and within stop_distance_m ahead of its leading toe, makes the
-// robot stop at its next double support. It stops once and stays stopped.
+// The built-in strategy `stop`: stop before an obstacle or a drop. It looks
+// only at what the robot knows: a fresh detection whose measured point stands
+// higher than min_height_m above the ground the robot stands on, inside the
+// corridor it walks along and within stop_distance_m ahead of its leading toe
+// (an obstacle), or a drop deeper than max_drop_m (by default the legs'
+// gait.max_step_m) seen there (strategy/drop_ahead.h: a point well below the
+// ground, or the floor missing where a sensor should see it, on two fresh
+// readings in a row of the same sensor, so that one lost echo, a dropout, does
+// not stop the robot), makes the robot stop at its next double support.
+// Events: `obstacle_ahead`, `drop_ahead`. It stops once and stays stopped.
 #pragma once
+
+#include <vector>
 
 #include "strategy/strategy.h"
 #include "strategy/strategy_config.h"
@@ -28,7 +35,9 @@ class StopStrategy : public Strategy {
 
  private:
   StopConfig config_;
-  std::vector<std::string> sensor_names_;
+  std::vector<SensorInfo> sensors_;
+  double max_drop_m_ = 0;  // NaN: the legs' step is not known, no drop rule
+  std::vector<int> floor_missing_streak_;  // per sensor: fresh readings in a row with the floor missing
   bool stopping_ = false;
 };
 

@@ -48,6 +48,8 @@ struct SensorInfo {
   double min_range_m = 0.0;
   double max_range_m = 0.0;
   std::string link;  ///< the link it is fixed on ("world" for a fixed sensor)
+  double max_incidence_deg = 90.0;  ///< echoes come back from surfaces met within this angle of their normal
+  double aperture_deg = 0.0;        ///< full cone angle of its beam (0: one ray along its axis)
 };
 
 /// One foot's contact points, from the robot's kinematics.
@@ -88,6 +90,7 @@ struct StrategySetup {
   std::span<const SensorInfo> sensors;  ///< in scenario order
   std::vector<Vec2> path_m;             ///< the path the robot was given (world x-y), its goal last
   double rate_hz = 0.0;                 ///< samples per second
+  double max_step_m = std::numeric_limits<double>::quiet_NaN();  ///< highest step up or down its legs take; NaN: not known
 };
 
 /// The commands a strategy (or a script driving the simulation) gives the robot.

@@ -201,5 +201,67 @@ class MakeReportTest(unittest.TestCase):
             self.assertIn("viewer bundle", r.stderr)
 
 
+class FigureLayoutTest(unittest.TestCase):
+    """On the synthetic walk: the paper figure of one, two or four sensors keeps
+    its y-labels and its legend inside the figure, and a profile over a course
+    of boxes shows the bottom of the hole under the path."""
+
+    @classmethod
+    def setUpClass(cls):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from proxsim_report.run_data import load_run
+        from proxsim_report.walk_path import path_of_run
+        cls.plt = plt
+        cls.out = tempfile.mkdtemp()
+        r = subprocess.run([sys.executable, "tests/data/report_sample/make_sample.py", cls.out],
+                           capture_output=True, text=True, cwd=ROOT)
+        assert r.returncode == 0, r.stderr
+        cls.walk = load_run(cls.out)
+        cls.path, cls.has_robot = path_of_run(cls.walk)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.out)
+
+    def test_one_two_or_four_sensors_keep_labels_and_legend_inside(self):
+        import copy
+        from proxsim_report.paper_figure import paper_figure
+        for n in (1, 2, 4):
+            run = copy.copy(self.walk)
+            run.sensors = self.walk.sensors[:n]
+            fig = paper_figure(self.plt, run, self.path, self.has_robot)
+            fig.canvas.draw()
+            renderer = fig.canvas.get_renderer()
+            W, H = fig.bbox.width, fig.bbox.height
+            artists = [ax.yaxis.label for ax in fig.axes] + list(fig.legends) + [fig._suptitle]
+            for artist in artists:
+                box = artist.get_window_extent(renderer)
+                with self.subTest(sensors=n, artist=str(artist)[:40]):
+                    self.assertGreaterEqual(box.x0, 0)
+                    self.assertGreaterEqual(box.y0, 0)
+                    self.assertLessEqual(box.x1, W)
+                    self.assertLessEqual(box.y1, H)
+            self.plt.close(fig)
+
+    def test_the_profile_shows_the_hole_bottom(self):
+        import copy
+        from proxsim_report.profile_figure import draw_profile
+
+        def box(name, i, x0, x1, z0, z1):
+            return {"name": name, "id": i, "shape": "box", "size_m": [x1 - x0, 4.0, z1 - z0],
+                    "xyz_m": [(x0 + x1) / 2, 0.0, (z0 + z1) / 2], "quat_wxyz": [1, 0, 0, 0]}
+        run = copy.copy(self.walk)
+        run.scene = dict(self.walk.scene)
+        run.scene["objects"] = [box("floor", 0, -5, 3, -0.5, 0), box("hole_bottom", 1, 3, 3.5, -0.6, -0.5),
+                                box("floor_after", 2, 3.5, 20, -0.5, 0)]
+        fig, ax = self.plt.subplots()
+        draw_profile(ax, run, self.path, self.has_robot, run.sensors[0])
+        self.assertLessEqual(ax.get_ylim()[0], -0.6)
+        self.assertGreater(ax.get_ylim()[0], -0.7)
+        self.plt.close(fig)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -3,9 +3,13 @@
 // any console or page error, checks that the 3D canvas is drawn, that moving
 // the time (slider and API) moves the robot (or, without a robot, changes the
 // rays or the profile), that a sensor toggle hides its ray, that the curves are
-// drawn, and saves OUT/report/screenshot.png.
+// drawn, and saves OUT/report/screenshot.png. With --climb-m M (a walk over
+// stairs), the robot shown climbs: its pelvis rises by at least M over the
+// replay. --shot-at-s T takes the screenshot at time T (default: 60 % of the
+// replay).
 //
 //   node tests/viewer_e2e/viewer_e2e.mjs OUT [--viewer-dir viewer] [--screenshot PATH]
+//                                        [--climb-m M] [--shot-at-s T]
 //
 // Exit 0 pass, 1 fail, 77 skip (only when /usr/bin/chromium is missing).
 import fs from 'node:fs';
@@ -155,9 +159,31 @@ try {
   });
   check(curve !== null && curve[0] > 100 && curve[1] > 50, `the distance curves are drawn (${curve})`);
 
+  // a walk over stairs: the robot shown climbs them (its pelvis, sampled over the replay)
+  const climbM = Number(option('--climb-m', '0'));
+  if (climbM > 0) {
+    const rise = await page.evaluate(([a, b]) => {
+      const v = window.proxsimViewer;
+      let lo = Infinity;
+      let hi = -Infinity;
+      for (let i = 0; i <= 200; i++) {
+        v.setTime(a + ((b - a) * i) / 200);
+        const z = v.robotLinkPosition('pelvis')[2];
+        lo = Math.min(lo, z);
+        hi = Math.max(hi, z);
+      }
+      return hi - lo;
+    }, [tStart, tEnd]);
+    check(rise >= climbM, `the robot climbs: its pelvis rises ${rise.toFixed(3)} m over the replay (>= ${climbM} m)`);
+  }
+
   // the 3D canvas is not blank: count the colours of its region in the page's
   // screenshot (which is also the artefact)
-  await page.evaluate(() => window.proxsimViewer.setTime(window.proxsimViewer.timeSpan()[1] * 0.6));
+  const shotAt = option('--shot-at-s', null);
+  await page.evaluate((t) => {
+    const v = window.proxsimViewer;
+    v.setTime(t === null ? v.timeSpan()[1] * 0.6 : Number(t));
+  }, shotAt);
   await page.waitForFunction((f) => window.proxsimViewer.frameCount > f + 2,
     await page.evaluate(() => window.proxsimViewer.frameCount));
   fs.mkdirSync(path.dirname(screenshotPath), { recursive: true });

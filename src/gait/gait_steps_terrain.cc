@@ -1,0 +1,280 @@
+// The terrain half of StepPlanner (gait_steps.h, "Uneven ground"): the
+// foothold of each step on the ground profile, and the terrain step — the
+// stance leg by IK to a pelvis height ramp, the swing on a lift–carry–lower
+// arc sized against the ground.
+//
+// Frames: W world, P pelvis, H a step's heading frame (origin under the
+// stance heel at z = 0, x along the step's heading yaw_to, z up; s is H's x).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "gait/gait_steps.h"
+
+namespace proxsim {
+
+namespace {
+
+// Width of the speed ramps at either end of the pelvis height ramp (fraction of the step).
+constexpr double kPelvisRampEnds = 0.15;
+// Samples of the swing checked against the ground when a terrain step is planned.
+constexpr int kSwingChecks = 64;
+// Rounds of lifting the arc higher when the legs' IK lands the sole lower than the arc.
+constexpr int kLiftRounds = 4;
+// A sole this close to its clearance counts as clearing it, m.
+constexpr double kClearanceSlack_m = 2e-4;
+// Heights within this of the stance tread are the stance tread's level, m (the
+// ray caster answers in float).
+constexpr double kSameLevel_m = 1e-6;
+// Phase step of the finite difference that gives the planted ankle's velocity at toe-off.
+constexpr double kRateStep = 1e-5;
+// The profile starts this far behind the trailing sole and reaches this far beyond the next step's toe, m.
+constexpr double kProfileMargin_m = 0.05;
+
+double Smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+// Position of a motion from 0 to 1 over u in [0, 1] whose speed ramps up over
+// [0, r], is constant, and ramps down over [1 − r, 1] (C1; peak speed 1/(1 − r)).
+double TrapezoidRamp(double u, double r) {
+  u = std::clamp(u, 0.0, 1.0);
+  const double v = 1 / (1 - r);
+  if (u < r) return v * u * u / (2 * r);
+  if (u > 1 - r) return 1 - v * (1 - u) * (1 - u) / (2 * r);
+  return v * (u - r / 2);
+}
+
+double SwingProgress(double p) { return std::clamp((p - kDoubleSupportEnd) / (0.5 - kDoubleSupportEnd), 0.0, 1.0); }
+
+Vec3 HeadingX(double yaw) { return Vec3(std::cos(yaw), std::sin(yaw), 0); }
+
+// A point of W in H's (s, z).
+Vec2 ToH(const StepPlan& plan, const Vec3& p_W) {
+  return Vec2((p_W - plan.p_W_H).dot(HeadingX(plan.yaw_to)), p_W.z());
+}
+
+}  // namespace
+
+double StepDuration_s(const StepPlan& plan, double period_s) {
+  const double half = 0.5 * period_s;
+  if (!plan.terrain) return half;
+  const double peak_speed = std::abs(plan.pelvis_z1_m - plan.pelvis_z0_m) / (1 - kPelvisRampEnds) / half;
+  return peak_speed <= kMaxPelvisRampSpeed_m_s ? half : half * peak_speed / kMaxPelvisRampSpeed_m_s;
+}
+
+LegAnglesRad StepPlanner::CurveStanceAngles(const StepPlan& plan, double p) const {
+  const double g = plan.g_from + (plan.g_to - plan.g_from) * Smoothstep(p / kDoubleSupportEnd);
+  return CurveLegAngles(p, Amplitude(plan, p), g);
+}
+
+LegAnglesRad StepPlanner::TerrainStanceAngles(const StepPlan& plan, double p) const {
+  // the pelvis the curves would give from the latched pivot, moved to the ramp
+  const LegAnglesRad curve = CurveStanceAngles(plan, p);
+  const Pose X_c = StancePelvis(plan, p, curve);
+  const Vec3 x_P = X_c.linear().col(0);
+  Vec3 target = X_c.translation() + x_P * (plan.pelvis_x0_offset_m * (1 - Smoothstep(p / 0.5)));
+  target.z() = plan.pelvis_z0_m + (plan.pelvis_z1_m - plan.pelvis_z0_m) * TrapezoidRamp(p / 0.5, kPelvisRampEnds);
+  // the stance leg from its pivot to that pelvis, at the curves' foot pitch
+  FootPoint which = FootPoint::kHeel;
+  Vec3 p_W_pivot = plan.p_W_heel;
+  if (p >= FootFlatPhase() && plan.flat_latched) {
+    which = p <= HeelOffPhase() ? FootPoint::kMid : FootPoint::kToe;
+    p_W_pivot = plan.X_WF * legs_.FootPoint_L(plan.stance, which);
+  }
+  const Vec3 p_P_pivot = X_c.linear().transpose() * (p_W_pivot - target);
+  const Vec2xz p_PA = Vec2xz(p_P_pivot.x(), p_P_pivot.z()) - RotateSagittal(curve.pitch, legs_.FootOffset(plan.stance, which));
+  return legs_.SolveAnkle(plan.stance, p_PA, curve.pitch);
+}
+
+Vec2xz StepPlanner::ArcAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {
+  const Vec2 ankle_H = plan.swing_arc.At(SwingProgress(p));
+  const Vec2 pelvis_H = ToH(plan, X_WP.translation());
+  // H's x is the pelvis's x from foot-flat on (the heading no longer turns)
+  return Vec2xz(ankle_H.x() - pelvis_H.x(), ankle_H.y() - pelvis_H.y());
+}
+
+void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing, const Vec3& p_WP_strike) const {
+  const LegGeometry& swing = legs_.leg(plan->swing);
+  const LegGeometry& stance = legs_.leg(plan->stance);
+  const double sole_m = swing.toe_x_m - swing.heel_x_m;
+  const Vec3 x_H = HeadingX(plan->yaw_to);
+  const Vec3 y_H(-x_H.y(), x_H.x(), 0);
+  plan->p_W_H = Vec3(plan->p_W_heel.x(), plan->p_W_heel.y(), 0);
+
+  // where the curves land the swing heel (the flat-floor plan's landing)
+  const StepPose land = Evaluate(*plan, 0.5);
+  const Vec3 p_W_natural = land.X_WP * legs_.Point3(plan->swing, land.swing, FootPoint::kHeel);
+  const double s_natural = ToH(*plan, p_W_natural).x();
+  const double s_trailing_toe = ToH(*plan, plan->p_W_trailing_toe).x();
+
+  // the ground along the swing foot's line, from behind its lift-off to beyond the next step
+  ProfileLine line;
+  line.origin_W = (plan->p_W_H + y_H * (swing.sole_y_m - stance.sole_y_m)).head<2>();
+  line.direction_W = x_H.head<2>();
+  line.half_width_m = swing.half_width_m;
+  line.s_begin_m = std::min(s_trailing_toe, 0.0) - sole_m - kProfileMargin_m;
+  line.s_end_m = 3 * limits_.max_step_m + sole_m + limits_.margin_m + kProfileMargin_m;  // the look-ahead's reach
+  line.z_top_m = plan->floor_z_m + legs_.leg_length_m();
+  line.depth_m = line.z_top_m - plan->floor_z_m + 3.0;
+  const TerrainProfile profile(*terrain_, line);
+
+  const Foothold foothold = PlanFoothold(profile, 0.0, plan->floor_z_m, s_natural, limits_);
+  if (!foothold.found) {
+    plan->cannot_step = foothold.reason;
+    return;
+  }
+  // the flat-floor step stands when it lands where the curves do, on the
+  // stance's level, with nothing else under the swing, from a natural stance
+  const double z_landing = std::abs(foothold.z_m - plan->floor_z_m) <= kSameLevel_m ? plan->floor_z_m : foothold.z_m;
+  plan->natural_landing = foothold.s_heel_m == s_natural && z_landing == plan->floor_z_m;
+  const std::size_t from = profile.SegmentAt(s_trailing_toe - sole_m);
+  const std::size_t to = profile.SegmentAt(foothold.s_heel_m + sole_m);
+  const bool sweep_level = from == to && profile.segments()[from].z_m <= plan->floor_z_m + kSameLevel_m;
+  if (plan->natural_landing && stance_from_natural_landing && sweep_level) return;
+  FinishTerrain(plan, Foothold{.found = true, .s_heel_m = foothold.s_heel_m, .z_m = z_landing, .segment = foothold.segment, .reason = {}},
+                profile, p_WP_strike);
+}
+
+void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile,
+                                const Vec3& p_WP_strike) const {
+  const LegGeometry& sg = legs_.leg(plan->swing);
+  plan->terrain = true;
+  plan->landing_z_m = foothold.z_m;
+  plan->foothold_s_m = foothold.s_heel_m;
+  char text[240];
+
+  // the curves' pelvis at heel strike and at the next one (the flat foot frame
+  // from the curves first: it is the heel's, whatever the knee)
+  plan->flat_latched = false;
+  {
+    const LegAnglesRad curve = CurveStanceAngles(*plan, FootFlatPhase());
+    plan->X_WF = StancePelvis(*plan, FootFlatPhase(), curve) * legs_.FootPose_P(plan->stance, curve);
+    plan->flat_latched = true;
+  }
+  const Pose X_c0 = StancePelvis(*plan, 0.0, CurveStanceAngles(*plan, 0.0));
+  plan->pelvis_x0_offset_m = (p_WP_strike - X_c0.translation()).dot(X_c0.linear().col(0));
+  plan->pelvis_z0_m = p_WP_strike.z();
+  const Pose X_c1 = StancePelvis(*plan, 0.5, CurveStanceAngles(*plan, 0.5));
+
+  // the landing: heel on the foothold at the curves' landing pitch
+  const double pitch_land = SwingPitch(*plan, 0.5);
+  const Vec2 ankle_land = Vec2(foothold.s_heel_m, foothold.z_m) - RotateSagittal(pitch_land, legs_.FootOffset(plan->swing, FootPoint::kHeel));
+  // the pelvis at the next heel strike: lowered by the fall, and further if the
+  // landing leg would be more stretched than on a flat floor
+  const Vec2xz hip_P(sg.p_PH.x(), sg.p_PH.z());
+  const double natural_reach = (legs_.Ankle(plan->swing, CurveLegAngles(1.0, plan->k_to)) + plan->swing_end_delta - hip_P).norm();
+  const Vec2 hip_H = ToH(*plan, X_c1.translation()) + Vec2(hip_P.x(), hip_P.y());
+  const double ds = ankle_land.x() - hip_H.x();
+  if (std::abs(ds) >= natural_reach) {
+    std::snprintf(text, sizeof text, "the foothold %.2f m ahead is beyond the legs' reach", foothold.s_heel_m);
+    plan->cannot_step = text;
+    return;
+  }
+  double lower = std::min(0.0, foothold.z_m - plan->floor_z_m);
+  lower = std::min(lower, ankle_land.y() + std::sqrt(natural_reach * natural_reach - ds * ds) - hip_H.y());
+  plan->pelvis_z1_m = X_c1.translation().z() + lower;
+
+  // the knees at that landing: within what the gait asks of a leg
+  const Pose X_WP_end = StancePelvis(*plan, 0.5, TerrainStanceAngles(*plan, 0.5));
+  const Vec2 pelvis_end_H = ToH(*plan, X_WP_end.translation());
+  const Vec2xz land_P(ankle_land.x() - pelvis_end_H.x(), ankle_land.y() - pelvis_end_H.y());
+  const double knee = std::max(TerrainStanceAngles(*plan, 0.5).knee,
+                               legs_.SolveAnkle(plan->swing, land_P, pitch_land).knee);
+  const double rise = foothold.z_m - plan->floor_z_m;
+  if (knee > kMaxKneeFlexion_rad + 1e-9 || (land_P - hip_P).norm() > sg.thigh_m + sg.shank_m + 1e-6) {
+    std::snprintf(text, sizeof text, "stepping %s %.2f m to the foothold %.2f m ahead would bend a knee %.0f deg "
+                  "(at most %.0f deg)", rise >= 0 ? "up" : "down", std::abs(rise), foothold.s_heel_m, RadToDeg(knee),
+                  RadToDeg(kMaxKneeFlexion_rad));
+    plan->cannot_step = text;
+    return;
+  }
+
+  // the swing arc: from where the planted foot leaves it at toe-off to the landing
+  const auto planted_H = [&](double p) {
+    const Pose X_WP = StancePelvis(*plan, p, TerrainStanceAngles(*plan, p));
+    const Vec2xz a_P = PlantedAnkle(*plan, p, X_WP);
+    return Vec2(ToH(*plan, X_WP.translation()) + Vec2(a_P.x(), a_P.y()));
+  };
+  SwingArc& arc = plan->swing_arc;
+  arc.start = planted_H(kDoubleSupportEnd);
+  arc.start_rate = (arc.start - planted_H(kDoubleSupportEnd - kRateStep)) / kRateStep * (0.5 - kDoubleSupportEnd);
+  arc.end = ankle_land;
+  arc.lift_m = 0;
+
+  // its lift: the least that keeps the sole clear of the ground and its edges,
+  // first on the arc itself, then on what the legs' IK makes of it
+  const SoleShape sole{.heel_from_ankle = legs_.FootOffset(plan->swing, FootPoint::kHeel),
+                       .toe_from_ankle = legs_.FootOffset(plan->swing, FootPoint::kToe)};
+  const std::size_t own_from = profile.SegmentAt(ToH(*plan, plan->p_W_trailing_toe).x());
+  const std::size_t own_to = foothold.segment;
+  const auto phase = [](int j) { return kDoubleSupportEnd + (0.5 - kDoubleSupportEnd) * j / kSwingChecks; };
+  // (an edge counts within the distance the sole moved since the last check)
+  const auto moved = [&](const Vec2& ankle, double pitch, const Vec2& last_ankle, double last_pitch) {
+    const auto [heel, toe] = SoleEnds(ankle, pitch, sole);
+    const auto [last_heel, last_toe] = SoleEnds(last_ankle, last_pitch, sole);
+    return std::max(std::abs(heel.x() - last_heel.x()), std::abs(toe.x() - last_toe.x()));
+  };
+  double lift = kSwingClearance_m;
+  Vec2 last_ankle = arc.At(0);
+  double last_pitch = SwingPitch(*plan, phase(0));
+  for (int j = 1; j < kSwingChecks; ++j) {
+    const double u = static_cast<double>(j) / kSwingChecks;
+    const Vec2 ankle = arc.At(u);
+    const double pitch = SwingPitch(*plan, phase(j));
+    const double deficit = SoleDeficit(profile, ankle, pitch, sole, kSwingClearance_m, own_from, own_to,
+                                       moved(ankle, pitch, last_ankle, last_pitch));
+    if (deficit > 0) lift = std::max(lift, deficit / std::max(SwingArc::LiftShape(u), 1e-3));
+    last_ankle = ankle;
+    last_pitch = pitch;
+  }
+  arc.lift_m = lift;
+  std::array<Pose, kSwingChecks> X_WP_at;
+  for (int j = 1; j < kSwingChecks; ++j) X_WP_at[j] = StancePelvis(*plan, phase(j), TerrainStanceAngles(*plan, phase(j)));
+  double worst = 0;
+  for (int round = 0;; ++round) {
+    worst = 0;
+    double more = 0;
+    last_ankle = arc.start;
+    last_pitch = SwingPitch(*plan, phase(0));
+    for (int j = 1; j < kSwingChecks; ++j) {
+      const double u = static_cast<double>(j) / kSwingChecks;
+      const double pitch = SwingPitch(*plan, phase(j));
+      const LegAnglesRad a = legs_.SolveAnkle(plan->swing, ArcAnkle(*plan, phase(j), X_WP_at[j]), pitch);
+      const Vec2xz a_P = legs_.Ankle(plan->swing, a);
+      const Vec2 ankle_H = ToH(*plan, X_WP_at[j].translation()) + Vec2(a_P.x(), a_P.y());
+      const double deficit = SoleDeficit(profile, ankle_H, pitch, sole, kSwingClearance_m, own_from, own_to,
+                                         moved(ankle_H, pitch, last_ankle, last_pitch));
+      worst = std::max(worst, deficit);
+      if (deficit > kClearanceSlack_m) more = std::max(more, deficit / std::max(SwingArc::LiftShape(u), 1e-3));
+      last_ankle = ankle_H;
+      last_pitch = pitch;
+    }
+    if (more == 0 || round == kLiftRounds) break;
+    arc.lift_m += more;
+  }
+  if (worst > kClearanceSlack_m + 1e-3) {
+    std::snprintf(text, sizeof text, "the swing foot cannot clear the ground on its way to the foothold %.2f m ahead "
+                  "(%.0f mm short)", foothold.s_heel_m, 1e3 * worst);
+    plan->cannot_step = text;
+  }
+}
+
+double DefaultMaxStep_m(const BipedLegs& legs, double k) {
+  // steady walking's landing, then the same landing raised until the knee bends to the limit
+  const StepPlanner flat(legs);
+  StepPlan plan = flat.FirstStep(Vec3::Zero(), 0.0, k);
+  for (int step = 0; step < 4; ++step) plan = flat.NextStep(plan, k, 0.0);
+  const LegAnglesRad land = flat.Evaluate(plan, 0.5).swing;
+  const Vec2xz ankle = legs.Ankle(plan.swing, land);
+  double lo = 0, hi = legs.leg_length_m();
+  for (int i = 0; i < 50; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (legs.SolveAnkle(plan.swing, ankle + Vec2xz(0, mid), land.pitch).knee < kMaxKneeFlexion_rad ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace proxsim

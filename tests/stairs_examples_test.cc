@@ -1,0 +1,118 @@
+// The shipped uneven-ground examples through the real CLI (docs/terrain.md):
+// stairs_walk.yaml climbs to the landing, descends, steps over the small hole
+// and stands before the wide one with `cannot_step`, each of its
+// tibia sensors detecting the steps and a hole's wall; stairs_hole.yaml walks
+// on over the small hole; hole_stop_rule.yaml is stopped before it by the
+// built-in stop rule from the readings alone. Positions come from poses.csv,
+// detections from readings.csv; the course's geometry is builtin_scenes.cc's.
+#include <algorithm>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_helpers.h"
+
+namespace proxsim {
+namespace {
+
+using testing::Csv;
+using testing::FreshDir;
+using testing::ReadCsv;
+using testing::ReadFile;
+using testing::RowsOf;
+using testing::RunProxsim;
+
+constexpr double kLandingZ_m = 0.60;
+constexpr double kSmallHoleFar_x_m = 5.25;  // the small hole: x 5.0 .. 5.25
+constexpr double kWideHoleNear_x_m = 6.5;   // the wide hole: x 6.5 .. 7.1
+
+struct Example {
+  std::string cli_output;
+  Csv readings;
+  Csv poses;
+  nlohmann::json summary;
+
+  double Max(const std::string& link, const std::string& column) const {
+    double v = -1e9;
+    for (const auto& row : poses.rows)
+      if (row.at("link") == link) v = std::max(v, std::stod(row.at(column)));
+    return v;
+  }
+  double Last(const std::string& link, const std::string& column) const {
+    double v = 0;
+    for (const auto& row : poses.rows)
+      if (row.at("link") == link) v = std::stod(row.at(column));
+    return v;
+  }
+  bool Logged(const std::string& event) const {
+    for (const auto& e : summary["robot"]["events"])
+      if (e["event"] == event) return true;
+    return false;
+  }
+  std::string Detail(const std::string& event) const {
+    for (const auto& e : summary["robot"]["events"])
+      if (e["event"] == event) return e["detail"].get<std::string>();
+    return "";
+  }
+};
+
+Example RunExample(const std::string& name) {
+  const auto out = FreshDir(name);
+  const auto result =
+      RunProxsim("run " + std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/" + name + ".yaml --no-report --out " +
+                 out.string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  Example example{result.output, ReadCsv(out / "readings.csv"), ReadCsv(out / "poses.csv"),
+                  nlohmann::json::parse(ReadFile(out / "summary.json"))};
+  std::filesystem::remove_all(out);
+  return example;
+}
+
+TEST(StairsExamples, StairsWalkClimbsDescendsStepsOverTheSmallHoleAndStopsBeforeTheWideOne) {
+  const Example run = RunExample("stairs_walk");
+  // on the landing (the pelvis stands about 0.9 m above its feet's tread)
+  EXPECT_GT(run.Max("pelvis", "z"), kLandingZ_m + 0.9);
+  // past the small hole, short of the wide one, back on the floor
+  const double pelvis_x = run.Last("pelvis", "x");
+  EXPECT_GT(pelvis_x, kSmallHoleFar_x_m);
+  for (const char* foot : {"left_foot", "right_foot"}) {
+    EXPECT_LT(run.Last(foot, "x"), kWideHoleNear_x_m) << foot;
+    EXPECT_LT(run.Last(foot, "z"), 0.15) << foot;  // the ankle, 0.08 m above a sole on the floor (z = 0)
+  }
+  ASSERT_TRUE(run.Logged("cannot_step"));
+  EXPECT_NE(run.Detail("cannot_step").find("a gap of 0.60 m"), std::string::npos) << run.Detail("cannot_step");
+  EXPECT_NE(run.cli_output.find("standing before a step its legs cannot take"), std::string::npos) << run.cli_output;
+
+  // every tibia sensor detects the steps (a riser or a tread) and a hole's far wall
+  for (const std::string sensor : {"ideal", "laser", "ultrasonic", "reflectance"}) {
+    bool steps = false, hole_wall = false;
+    for (const auto& row : RowsOf(run.readings, sensor)) {
+      if (row.at("status") != "ok") continue;
+      const std::string& object = row.at("object");
+      steps |= object.rfind("floor_stair_", 0) == 0 || object == "floor_landing";
+      hole_wall |= (object == "floor_between_holes" || object == "floor_end") && std::stod(row.at("hit_z_m")) < -0.02;
+    }
+    EXPECT_TRUE(steps) << sensor;
+    EXPECT_TRUE(hole_wall) << sensor;
+  }
+}
+
+TEST(StairsExamples, StairsHoleWalksOnOverTheSmallHole) {
+  const Example run = RunExample("stairs_hole");
+  EXPECT_GT(run.Last("pelvis", "x"), kSmallHoleFar_x_m);
+  EXPECT_LT(std::max(run.Last("left_foot", "x"), run.Last("right_foot", "x")), kWideHoleNear_x_m);
+  EXPECT_TRUE(run.Logged("cannot_step"));
+}
+
+TEST(StairsExamples, HoleStopRuleStopsBeforeTheSmallHoleFromTheReadings) {
+  const Example run = RunExample("hole_stop_rule");
+  EXPECT_TRUE(run.Logged("drop_ahead"));
+  EXPECT_FALSE(run.Logged("cannot_step"));
+  EXPECT_TRUE(run.summary["robot"]["stopped"].get<bool>());
+  // the ankles (the toes are 0.2 m ahead of them at most) short of the edge at x = 5
+  EXPECT_LT(std::max(run.Last("left_foot", "x"), run.Last("right_foot", "x")) + 0.2, 5.0);
+}
+
+}  // namespace
+}  // namespace proxsim
