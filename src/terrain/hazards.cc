@@ -99,15 +99,16 @@ std::vector<Hazard> FindHazards(const std::vector<CellIndex>& seeds,
   for (const CellIndex& seed : seeds) {
     const CellLabel label = label_at(seed);
     if (label == CellLabel::kNone || !visited.insert(Key(seed)).second) continue;
-    // flood fill over the 8 neighbours of the same label
+    // flood fill over the cells of the same label up to two cells away: a
+    // cluster holds across one unknown cell (a sparse scan leaves such gaps)
     cluster.clear();
     stack.assign(1, seed);
     while (!stack.empty()) {
       const CellIndex c = stack.back();
       stack.pop_back();
       cluster.push_back(c);
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
           const CellIndex n{c.ix + dx, c.iy + dy};
           if ((dx == 0 && dy == 0) || label_at(n) != label || !visited.insert(Key(n)).second) continue;
           stack.push_back(n);

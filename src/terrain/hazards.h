@@ -4,7 +4,8 @@
 //   raised   its height > z_g + obstacle_min_m
 //   dropped  its floor < z_g − drop_min_m, the floor being its measured
 //            height, or, never measured, its upper bound from free space
-// and 8-connected cells of one label form a cluster, classified:
+// and cells of one label at most two cells apart (8-connected across one
+// unknown or unlabelled cell: a sparse scan leaves gaps) form a cluster, classified:
 //   raised:  step_up when its top is at most step_max_m above the ground and
 //            it is at least step_min_size_m long and wide (a foot fits);
 //            otherwise obstacle (too small or too high to step on);
@@ -72,8 +73,8 @@ struct Hazard {
   double DistanceTo(const Vec2& p_W) const;
 };
 
-/// Every cluster of labelled cells reachable from `seeds` (8-connected, one
-/// label per cluster), classified. label_at(c) gives a cell's label (kNone
+/// Every cluster of labelled cells reachable from `seeds` (one label per
+/// cluster, cells at most two apart), classified. label_at(c) gives a cell's label (kNone
 /// outside what is known), surface_at(c) its surface. `cluster_cells`, when
 /// given, receives each hazard's cells.
 std::vector<Hazard> FindHazards(const std::vector<CellIndex>& seeds,

@@ -14,6 +14,56 @@ constexpr double kMinVariance_m2 = 1e-8;
 constexpr double kRelabelShift_m = 0.005;
 // The track keeps a point every this far walked.
 constexpr double kTrackStep_m = 0.01;
+// A silent ray that comes this close to a sole's heel–toe line has met the
+// robot's own foot (a 0.26 × 0.10 × 0.06 m box on the biped), at an angle
+// that sent no echo back: it says nothing beyond.
+constexpr double kFootRadius_m = 0.08;
+
+// The smallest distance between segments p0-p1 and q0-q1.
+double SegmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0, t = 0;
+  if (a <= 1e-18 && e <= 1e-18) return r.norm();
+  if (a <= 1e-18) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= 1e-18) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2), denom = a * e - b * b;
+      s = denom > 1e-18 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) {
+        t = 0, s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1) {
+        t = 1, s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  return (p0 + s * d1 - (q0 + t * d2)).norm();
+}
+
+// How far along a silent ray it stays clear of the robot's own feet (its
+// free_end_m when it never comes near them).
+double ClearOfFeet_m(const RayEvidence& evidence, const RobotKnowledge& robot, double step_m) {
+  double reach_m = evidence.free_end_m;
+  if (!robot.has_feet) return reach_m;
+  const Vec3 a = evidence.free_begin_W(), b = evidence.free_end_W();
+  for (const FootKnowledge& foot : robot.feet) {
+    if (SegmentDistance(a, b, foot.p_W_heel, foot.p_W_toe) >= kFootRadius_m) continue;
+    // the first point within reach of the foot, a step at a time
+    for (double d = evidence.free_begin_m; d < reach_m; d += step_m) {
+      const Vec3 p = evidence.p_WS + d * evidence.dir_W;
+      if (SegmentDistance(p, p, foot.p_W_heel, foot.p_W_toe) < kFootRadius_m) {
+        reach_m = d;
+        break;
+      }
+    }
+  }
+  return reach_m;
+}
 
 // The part of segment a → b below height h (false: none).
 bool ClipBelow(Vec3& a, Vec3& b, double h) {
@@ -45,7 +95,13 @@ void TerrainMap::Update(const Observation& observation) {
   evidence_.clear();
   for (std::size_t i = 0; i < observation.sensors.size() && i < specs_.size(); ++i) {
     if (!feeds_map_[i] || !observation.sensors[i].fresh) continue;
-    evidence_.push_back(InterpretReading(specs_[i], observation.sensors[i]));
+    RayEvidence evidence = InterpretReading(specs_[i], observation.sensors[i]);
+    // a silent ray stops at the robot's own feet: they may have swallowed its echo
+    if (!evidence.detected && evidence.bounds_height && observation.robot != nullptr) {
+      evidence.free_end_m = ClearOfFeet_m(evidence, *observation.robot, 0.5 * grid_.resolution_m());
+      evidence.bounds_height = evidence.free_end_m > evidence.free_begin_m;
+    }
+    evidence_.push_back(evidence);
     Insert(evidence_.back(), observation.t_s);
   }
   if (observation.robot == nullptr) return;

@@ -3,7 +3,9 @@
 // a point and an empty ray (ray_evidence.h) in the elevation grid
 // (elevation_grid.h), and the hazards (hazards.h) are found again, relative
 // to the ground the robot stands on, whenever a cell's label changed (at most
-// every 20 ms). A hazard keeps the time it was first detected, and the
+// every 20 ms). A silent ray stops where it comes within 8 cm of the robot's
+// own feet (its kinematics say where they are): a grazing foot sends no echo
+// back, and the ray says nothing beyond it. A hazard keeps the time it was first detected, and the
 // leading toe's distance to it then, while later passes grow or reclassify
 // it. Strategies read it through Observation::map.
 //
