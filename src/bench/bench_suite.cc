@@ -21,6 +21,7 @@
 #include "bench/bench_scene.h"
 #include "bench/closed_loop_bench.h"
 #include "bench/robot_bench.h"
+#include "bench/terrain_bench.h"
 #include "bench/peers.h"
 #include "core/parallel.h"
 #include "sensors/noise.h"
@@ -385,6 +386,7 @@ json RunBench(const BenchOptions& options) {
   result["thread_scaling_1m"] = s["1m"]["thread_scaling"];
   }
   if (options.robots) result["robots"] = RobotsSection(options.quick);
+  if (options.terrain) result["terrain"] = TerrainSection(options.quick);
   if (!options.end_to_end) {
     result["bench_wall_s"] = Since(bench_start);
     return result;
@@ -591,6 +593,7 @@ std::string BenchReport(const json& r) {
   out << line;
   if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
   if (r.contains("robots")) out << RobotsReport(r.at("robots"));
+  if (r.contains("terrain")) out << TerrainReport(r.at("terrain"));
   return out.str();
 }
 

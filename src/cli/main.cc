@@ -160,8 +160,9 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   std::string bench_only = "all";
   bench->add_option("--only", bench_only,
-                    "run one part: rays (the engines), e2e (paper and heavy runs) or robots (the H1 against the biped)")
-      ->check(CLI::IsMember({"all", "rays", "e2e", "robots"}))
+                    "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped) "
+                    "or terrain (the terrain map's cost per sample)")
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "terrain"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -198,7 +199,8 @@ int main(int argc, char** argv) {
            .progress = true,
            .rays = bench_only == "all" || bench_only == "rays",
            .end_to_end = bench_only == "all" || bench_only == "e2e",
-           .robots = bench_only == "all" || bench_only == "robots"});
+           .robots = bench_only == "all" || bench_only == "robots",
+           .terrain = bench_only == "all" || bench_only == "terrain"});
       const bool whole = bench_only == "all";
       std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
                  stdout);

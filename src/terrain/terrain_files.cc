@@ -19,6 +19,8 @@ namespace proxsim {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+// The truth's hazards are found this far beyond the files' extent.
+constexpr double kTruthMargin_m = 1.0;
 
 // A 2-D .npy array (format 1.0, C order), written row after row.
 class NpyRows {
@@ -79,6 +81,12 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
   CellBox extent = grid.Bounds();
   extent.Expand(corridor.Bounds());
   const std::int32_t nx = extent.nx(), ny = extent.ny();
+  // the truth is classified over a wider box, so that a hazard the extent
+  // cuts keeps its true size and class (the files hold the extent only)
+  const auto margin = static_cast<std::int32_t>(std::ceil(kTruthMargin_m / r));
+  const CellBox scored = extent.empty() ? extent
+                                        : CellBox{extent.ix_min - margin, extent.iy_min - margin, extent.ix_max + margin,
+                                                  extent.iy_max + margin};
 
   // the files, when asked for, in a folder renamed into place at the end
   const std::filesystem::path final_dir(dir), tmp_dir(dir + ".tmp");
@@ -97,16 +105,20 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
 
   // row by row: the map's cells, the truth under them, scored and written
   const auto row_n = static_cast<std::size_t>(nx);
-  std::vector<const TerrainCell*> cells(row_n);
-  std::vector<float> elevation(row_n), variance(row_n), upper_bound(row_n), first_t(row_n), last_t(row_n);
+  const auto scored_n = static_cast<std::size_t>(scored.nx());
+  const auto offset = static_cast<std::size_t>(extent.ix_min - scored.ix_min);
+  std::vector<const TerrainCell*> cells(scored_n);
+  std::vector<float> elevation(row_n), variance(row_n), upper_bound(row_n), first_t(row_n), last_t(row_n), truth(row_n);
   std::vector<std::uint32_t> hits(row_n);
-  for (std::int32_t iy = extent.iy_min; iy <= extent.iy_max; ++iy) {
-    for (std::size_t k = 0; k < row_n; ++k) cells[k] = grid.Find({extent.ix_min + static_cast<std::int32_t>(k), iy});
-    const std::vector<float> truth = TrueHeights(caster, CellBox{extent.ix_min, iy, extent.ix_max, iy}, r, map.config().max_height_m);
-    scorer.AddRow(iy, extent.ix_min, cells, truth);
-    if (arrays.empty()) continue;
+  for (std::int32_t iy = scored.iy_min; iy <= scored.iy_max; ++iy) {
+    for (std::size_t k = 0; k < scored_n; ++k) cells[k] = grid.Find({scored.ix_min + static_cast<std::int32_t>(k), iy});
+    const std::vector<float> scored_truth =
+        TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.config().max_height_m);
+    scorer.AddRow(iy, scored.ix_min, cells, scored_truth);
+    if (arrays.empty() || iy < extent.iy_min || iy > extent.iy_max) continue;
     for (std::size_t k = 0; k < row_n; ++k) {
-      const TerrainCell* cell = cells[k];
+      const TerrainCell* cell = cells[offset + k];
+      truth[k] = scored_truth[offset + k];
       const bool measured = cell != nullptr && cell->has_elevation();
       elevation[k] = measured ? cell->elevation_m : kNaN;
       variance[k] = measured ? cell->variance_m2 : kNaN;

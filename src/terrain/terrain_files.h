@@ -10,7 +10,9 @@
 //   hazards.csv      class,x_m,y_m,size_x_m,size_y_m,height_m,first_detection_t_s,distance_at_detection_m
 //                    (height_m: above the ground for obstacle and step_up, minus the depth for step_down and hole)
 //   map.bt           the OctoMap tree (octomap_recorder.h)
-// The extent is the map's tiles and the corridor's cells together. Rows are
+// The extent is the map's tiles and the corridor's cells together (the true
+// hazards are classified over 1 m more on every side, so that the extent
+// does not cut them down to another class). Rows are
 // written one at a time (the truth cast row by row too), so a long walk needs
 // no dense copy in memory. The folder is written as terrain.tmp/ and renamed
 // when complete.
