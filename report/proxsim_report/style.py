@@ -36,3 +36,7 @@ def sensor_color(index):
 
 def sensor_title(sensor):
     return f"{sensor.name} ({TYPE_LABELS.get(sensor.type, sensor.type)})"
+
+# the terrain map's hazard classes (terrain/hazards.h)
+HAZARD_COLORS = {"obstacle": "#d62728", "step_up": "#ff7f0e", "step_down": "#1f77b4", "hole": "#6a3d9a"}
+HAZARD_LABELS = {"obstacle": "obstacle", "step_up": "step up", "step_down": "step down", "hole": "hole"}
