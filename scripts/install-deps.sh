@@ -12,6 +12,7 @@ packages=(
   liboctomap-dev
   python3-matplotlib python3-numpy
   python3-dev pybind11-dev python3-pytest
+  libopenmpi-dev openmpi-bin
   nodejs npm
 )
 # Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test,

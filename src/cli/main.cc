@@ -23,6 +23,9 @@
 #include "report/report_runner.h"
 #include "sim/run.h"
 #include "sim/simulation.h"
+#include "study/study_answers.h"
+#include "study/study_config.h"
+#include "study/study_runner.h"
 
 namespace {
 
@@ -128,6 +131,35 @@ int Validate(const std::string& scenario_path) {
   return 0;
 }
 
+int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report) {
+  const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path);
+  bool writer = false;
+  const proxsim::StudyResults results = proxsim::RunStudy(
+      study, {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = isatty(STDERR_FILENO) != 0},
+      &writer);
+  if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
+  const nlohmann::json selection = proxsim::WriteStudyAnswers(study, results, out_dir);
+  std::printf("proxsim study: %s — %zu candidates x %zu scenes x %zu seeds = %zu runs\n", study_path.c_str(),
+              study.candidates.size(), study.variants.size(), study.seeds.size(),
+              study.candidates.size() * study.variants.size() * study.seeds.size());
+  std::printf("best %d sensors (greedy hazard coverage over %zu items):\n", study.select_sensors,
+              selection["items"].get<std::size_t>());
+  for (const auto& pick : selection["chosen"]) {
+    std::printf("  %-48s detection rate %.3f, mean lead %s m\n", pick["added"].get<std::string>().c_str(),
+                pick["detection_rate"].get<double>(),
+                pick["mean_lead_m"].is_null() ? "n/a" : std::to_string(pick["mean_lead_m"].get<double>()).c_str());
+  }
+  std::printf("outputs in %s/ (results.csv, ranking.csv, selection.json)\n", out_dir.c_str());
+  std::fflush(stdout);
+  if (!report) return 0;
+  if (proxsim::MakeStudyReport(out_dir) != 0) {
+    std::fprintf(stderr, "proxsim: the study's files are complete, but its figures could not be drawn\n");
+    return kExitFailure;
+  }
+  std::printf("report: %s/index.html\n", out_dir.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -169,6 +201,17 @@ int main(int argc, char** argv) {
   CLI::App* plot = app.add_subcommand("plot", "redraw the figures and the viewer of a finished run");
   plot->add_option("out", plot_dir, "the run's output folder")->required()->check(CLI::ExistingDirectory);
 
+  std::string study_path, study_out = "study-out";
+  int study_threads = 0;
+  bool study_resume = false, study_no_report = false;
+  CLI::App* study = app.add_subcommand("study", "rank sensor mountings over scene variants and seeds (mpirun: over ranks)");
+  study->add_option("study", study_path, "study YAML file (see data/studies/)")->required();
+  study->add_option("--out", study_out, "output folder")->capture_default_str();
+  study->add_option("--threads", study_threads, "worker threads (default: every core; 1 per rank under mpirun)")
+      ->check(CLI::Range(0, 256));
+  study->add_flag("--resume", study_resume, "finish a study that was stopped, keeping the runs it had finished");
+  study->add_flag("--no-report", study_no_report, "skip the figures and the HTML page");
+
   std::string validate_path;
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
   validate->add_option("scenario", validate_path, "scenario YAML file")->required();
@@ -208,6 +251,7 @@ int main(int argc, char** argv) {
     }
     if (*plot) return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
     if (*validate) return Validate(validate_path);
+    if (*study) return Study(study_path, study_out, study_threads, study_resume, !study_no_report);
   } catch (const proxsim::InputError& error) {
     return PrintInputError(error);
   } catch (const std::exception& error) {

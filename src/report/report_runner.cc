@@ -31,36 +31,11 @@ constexpr const char* kPython = "/usr/bin/python3";
 // make_report.py's exit code when it cannot import matplotlib or numpy.
 constexpr int kMissingPlotting = 3;
 
-}  // namespace
-
-int MakeReport(const std::string& out_dir) {
-  namespace fs = std::filesystem;
-  const std::string script = PROXSIM_REPORT_SCRIPT;
-  const std::string bundle = PROXSIM_VIEWER_BUNDLE;
-
-  // what the report needs, checked up front for a clear message
-  if (access(kPython, X_OK) != 0) {
-    std::cerr << "proxsim: cannot draw the report: " << kPython
-              << " is missing (apt-get install python3 python3-matplotlib python3-numpy)\n";
-    return 1;
-  }
-  std::error_code ec;
-  if (!fs::is_regular_file(script, ec)) {
-    std::cerr << "proxsim: cannot draw the report: the report script " << script << " is missing\n";
-    return 1;
-  }
-  if (bundle.empty() || !fs::is_regular_file(bundle, ec)) {
-    std::cerr << "proxsim: cannot write the viewer: its bundle " << (bundle.empty() ? "(unset)" : bundle)
-              << " is missing (build the proxsim_viewer target: cmake --build --preset release)\n";
-    return 1;
-  }
-  if (!fs::is_directory(out_dir, ec)) {
-    std::cerr << "proxsim: cannot draw the report: " << out_dir << " is not a run directory\n";
-    return 1;
-  }
-
+// Spawns `args` (args[0] the interpreter; no shell: arguments pass as they
+// are), waits for it through interruptions, and returns its exit status,
+// saying why on stderr when it is not 0.
+int RunPythonScript(std::vector<std::string> args) {
   // spawn the script, no shell: arguments pass as they are
-  std::vector<std::string> args = {kPython, script, out_dir, "--viewer-bundle", bundle};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -91,6 +66,47 @@ int MakeReport(const std::string& out_dir) {
   }
   std::cerr << "proxsim: the report script was killed by signal " << WTERMSIG(status) << "\n";
   return 1;
+}
+
+}  // namespace
+
+int MakeReport(const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  const std::string script = PROXSIM_REPORT_SCRIPT;
+  const std::string bundle = PROXSIM_VIEWER_BUNDLE;
+
+  // what the report needs, checked up front for a clear message
+  if (access(kPython, X_OK) != 0) {
+    std::cerr << "proxsim: cannot draw the report: " << kPython
+              << " is missing (apt-get install python3 python3-matplotlib python3-numpy)\n";
+    return 1;
+  }
+  std::error_code ec;
+  if (!fs::is_regular_file(script, ec)) {
+    std::cerr << "proxsim: cannot draw the report: the report script " << script << " is missing\n";
+    return 1;
+  }
+  if (bundle.empty() || !fs::is_regular_file(bundle, ec)) {
+    std::cerr << "proxsim: cannot write the viewer: its bundle " << (bundle.empty() ? "(unset)" : bundle)
+              << " is missing (build the proxsim_viewer target: cmake --build --preset release)\n";
+    return 1;
+  }
+  if (!fs::is_directory(out_dir, ec)) {
+    std::cerr << "proxsim: cannot draw the report: " << out_dir << " is not a run directory\n";
+    return 1;
+  }
+
+  return RunPythonScript({kPython, script, out_dir, "--viewer-bundle", bundle});
+}
+
+int MakeStudyReport(const std::string& out_dir) {
+  const std::string script = std::string(PROXSIM_SOURCE_DIR) + "/report/study_report.py";
+  std::error_code ec;
+  if (access(kPython, X_OK) != 0 || !std::filesystem::is_regular_file(script, ec)) {
+    std::cerr << "proxsim: cannot draw the study's figures: " << kPython << " or " << script << " is missing\n";
+    return 1;
+  }
+  return RunPythonScript({kPython, script, out_dir});
 }
 
 }  // namespace proxsim

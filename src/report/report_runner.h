@@ -10,4 +10,7 @@ namespace proxsim {
 /// Draws the figures and writes the viewer for a finished run in out_dir; returns 0 on success, else prints why to stderr and returns non-zero.
 int MakeReport(const std::string& out_dir);
 
+/// Draws a finished study's figures and its HTML page (report/study_report.py); 0 on success.
+int MakeStudyReport(const std::string& out_dir);
+
 }  // namespace proxsim

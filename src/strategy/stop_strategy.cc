@@ -5,22 +5,21 @@
 
 namespace proxsim {
 
+bool IsObstacleAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule) {
+  if (!sensor.fresh || !sensor.detected) return false;
+  // the point the sensor reports, not the truth
+  const Vec3 p_W = sensor.p_W_measured();
+  if (p_W.z() - self.ground_z_m < rule.min_height_m) return false;  // the floor
+  const Vec3 lateral_W = Vec3::UnitZ().cross(self.heading_W);
+  const Vec3 from_front = p_W - self.p_W_front;
+  return from_front.dot(self.heading_W) <= rule.stop_distance_m &&
+         std::abs(from_front.dot(lateral_W)) <= rule.corridor_half_width_m;
+}
+
 int FindObstacleAhead(const Observation& observation, const StopConfig& rule) {
   if (observation.robot == nullptr) return -1;
-  const RobotKnowledge& self = *observation.robot;
-  const Vec3 lateral_W = Vec3::UnitZ().cross(self.heading_W);
   for (std::size_t i = 0; i < observation.sensors.size(); ++i) {
-    const SensorOutput& sensor = observation.sensors[i];
-    if (!sensor.fresh || !sensor.detected) continue;
-    // the point the sensor reports, not the truth
-    const Vec3 p_W = sensor.p_W_measured();
-    if (p_W.z() - self.ground_z_m < rule.min_height_m) continue;  // the floor
-    const Vec3 from_front = p_W - self.p_W_front;
-    const double ahead_m = from_front.dot(self.heading_W);
-    const double aside_m = from_front.dot(lateral_W);
-    if (ahead_m <= rule.stop_distance_m && std::abs(aside_m) <= rule.corridor_half_width_m) {
-      return static_cast<int>(i);
-    }
+    if (IsObstacleAhead(observation.sensors[i], *observation.robot, rule)) return static_cast<int>(i);
   }
   return -1;
 }

@@ -10,6 +10,10 @@
 
 namespace proxsim {
 
+/// Whether one sensor's output is a fresh detection in the corridor within the
+/// look-ahead, at least min_height_m above the ground.
+bool IsObstacleAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule);
+
 /// The first sensor whose fresh detection stands in the corridor within the
 /// look-ahead, at least min_height_m above the ground; -1 when none does.
 int FindObstacleAhead(const Observation& observation, const StopConfig& rule);

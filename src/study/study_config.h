@@ -1,0 +1,61 @@
+// A sensor-placement study (`proxsim study STUDY.yaml`): a base scenario, the
+// candidate mountings (axes to combine, or an explicit list), scene variants,
+// seeds, the hazards that matter and how many sensors to select. Read and
+// validated like a scenario: every problem listed at once, before any run.
+//
+//   proxsim_study: 1
+//   base: ../scenarios/paper_dining_room.yaml   # its sensors are replaced by the candidates
+//   candidates:
+//     axes:                        # every combination
+//       type: [laser, ultrasonic, reflectance, ideal]
+//       link: [left_tibia, left_thigh]
+//       along_m: [-0.35, -0.20]    # along the link's z (its length), from its frame
+//       forward_m: 0.06            # in front of the link's axis (one value or a list)
+//       pitch_deg: [0, 15, 30]     # down from the link's forward normal
+//       yaw_deg: [0]
+//     list:                        # and/or mountings one by one
+//       - {type: laser, link: right_tibia, xyz_m: [0.06, 0, -0.3], rpy_deg: [0, 10, 0]}
+//   scenes:
+//     - {name: obstacle_15cm, builtin: dining_room}
+//     - {name: obstacle_5cm, builtin: dining_room, obstacle: {height_m: 0.05, x_m: 2.0}}
+//     - {name: stairs, builtin: stairs}
+//   seeds: [1, 2, 3]
+//   hazards: [obstacle, step, hole]   # object-name prefixes; a variant without one has no such hazard
+//   select: {sensors: 3}
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/scenario.h"
+
+namespace proxsim {
+
+/// One candidate mounting: a sensor of the base's presets, on a link, at a pose.
+struct Candidate {
+  std::string id;              ///< "laser@left_tibia:z-0.35:p15:y0" (unique, stable)
+  SensorConfig sensor;         ///< name = id
+  double along_m = 0, forward_m = 0, pitch_deg = 0, yaw_deg = 0;  ///< the axes' values (for the figures)
+};
+
+/// One scene variant: the scenario every candidate runs in.
+struct SceneVariant {
+  std::string name;
+  Scenario scenario;  ///< the base with this variant's scene, without sensors
+};
+
+struct StudyConfig {
+  std::string source;
+  std::vector<Candidate> candidates;
+  std::vector<SceneVariant> variants;
+  std::vector<std::uint64_t> seeds;
+  std::vector<std::string> hazards;  ///< object-name prefixes
+  int select_sensors = 3;            ///< k of the greedy selection
+};
+
+/// Reads and validates a study; throws InputError listing every problem.
+StudyConfig LoadStudyFile(const std::string& path);
+
+}  // namespace proxsim

@@ -1,0 +1,68 @@
+#include "study/study_mpi.h"
+
+#include <cstdlib>
+#include <stdexcept>
+
+#ifdef PROXSIM_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace proxsim {
+
+namespace {
+constexpr int kTagResult = 1;  // worker → rank 0: the last result (maybe empty), asking for the next job
+constexpr int kTagJob = 2;     // rank 0 → worker: a job index, -1 for none
+}  // namespace
+
+StudyMpi::StudyMpi() {
+#ifdef PROXSIM_HAVE_MPI
+  const char* world_size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  if (world_size == nullptr || std::atoi(world_size) < 2) return;
+  int provided = 0;
+  // only rank 0's dispatcher thread calls MPI while other threads run
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
+  if (provided < MPI_THREAD_SERIALIZED) throw std::runtime_error("this MPI does not support MPI_THREAD_SERIALIZED");
+  started_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#endif
+}
+
+StudyMpi::~StudyMpi() {
+#ifdef PROXSIM_HAVE_MPI
+  if (started_) MPI_Finalize();
+#endif
+}
+
+long StudyMpi::ExchangeWithWriter([[maybe_unused]] const std::string& result) {
+#ifdef PROXSIM_HAVE_MPI
+  MPI_Send(result.data(), static_cast<int>(result.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+  long job = -1;
+  MPI_Recv(&job, 1, MPI_LONG, 0, kTagJob, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return job;
+#else
+  return -1;
+#endif
+}
+
+void StudyMpi::ServeWorkers([[maybe_unused]] const std::function<long()>& take,
+                            [[maybe_unused]] const std::function<void(const std::string&)>& on_result) {
+#ifdef PROXSIM_HAVE_MPI
+  int active = size_ - 1;
+  std::string buffer;
+  while (active > 0) {
+    MPI_Status status;
+    MPI_Probe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &status);
+    int length = 0;
+    MPI_Get_count(&status, MPI_CHAR, &length);
+    buffer.resize(static_cast<std::size_t>(length));
+    MPI_Recv(buffer.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (!buffer.empty()) on_result(buffer);
+    long job = take();
+    MPI_Send(&job, 1, MPI_LONG, status.MPI_SOURCE, kTagJob, MPI_COMM_WORLD);
+    if (job < 0) --active;
+  }
+#endif
+}
+
+}  // namespace proxsim

@@ -1,0 +1,36 @@
+// The study's MPI layer (OpenMPI from Debian): rank 0 hands jobs out on
+// request; every other rank asks for one, runs it and sends its result with
+// the next request. MPI is started only when the process was launched by
+// mpirun with more than one rank (OMPI_COMM_WORLD_SIZE); otherwise, and in a
+// build without MPI, this is a single process of rank 0.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace proxsim {
+
+class StudyMpi {
+ public:
+  StudyMpi();
+  ~StudyMpi();
+  StudyMpi(const StudyMpi&) = delete;
+  StudyMpi& operator=(const StudyMpi&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+  /// A worker rank: sends the last result (empty at first) and receives the next job, -1 when none is left.
+  long ExchangeWithWriter(const std::string& result);
+
+  /// Rank 0, from one thread: answers every request with take() until each
+  /// other rank got -1; hands every result received to `on_result`.
+  void ServeWorkers(const std::function<long()>& take, const std::function<void(const std::string&)>& on_result);
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+  bool started_ = false;
+};
+
+}  // namespace proxsim

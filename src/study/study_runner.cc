@@ -1,0 +1,292 @@
+#include "study/study_runner.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "core/input_error.h"
+#include "study/study_mpi.h"
+
+namespace proxsim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using nlohmann::json;
+
+// ----- a job's metrics as JSON (the journal and the MPI messages)
+
+json ToJson(const std::vector<RunMetrics>& runs) {
+  json out = json::array();
+  for (const RunMetrics& m : runs) {
+    json hazards = json::array();
+    for (const HazardResult& h : m.hazards) hazards.push_back({h.applies, h.detected, h.first_t_s, h.lead_m});
+    out.push_back({{"h", hazards},
+                   {"n", m.samples},
+                   {"fa", m.false_alarms},
+                   {"self", m.self_share},
+                   {"graze", m.grazing_share},
+                   {"floor", m.floor_coverage}});
+  }
+  return out;
+}
+
+std::vector<RunMetrics> FromJson(const json& in) {
+  std::vector<RunMetrics> runs;
+  for (const json& r : in) {
+    RunMetrics m;
+    for (const json& h : r.at("h")) m.hazards.push_back({h.at(0), h.at(1), h.at(2), h.at(3)});
+    m.samples = r.at("n");
+    m.false_alarms = r.at("fa");
+    m.self_share = r.at("self");
+    m.grazing_share = r.at("graze");
+    m.floor_coverage = r.at("floor");
+    runs.push_back(std::move(m));
+  }
+  return runs;
+}
+
+// What makes a journal belong to this study: the candidates, variants, seeds, hazards.
+std::string Fingerprint(const StudyConfig& study) {
+  std::string text;
+  for (const Candidate& c : study.candidates) text += c.id + ";";
+  for (const SceneVariant& v : study.variants) text += v.name + ";";
+  for (std::uint64_t s : study.seeds) text += std::to_string(s) + ";";
+  for (const std::string& h : study.hazards) text += h + ";";
+  return std::to_string(std::hash<std::string>{}(text));
+}
+
+// ----- one worker's simulations: a world per variant, built once, reset per job
+
+class Worker {
+ public:
+  Worker(const StudyConfig& study) : study_(study) {}
+
+  std::vector<RunMetrics> Run(std::size_t job) {
+    const std::size_t variant = job / study_.seeds.size();
+    const std::uint64_t seed = study_.seeds[job % study_.seeds.size()];
+    Simulation& sim = SimulationOf(variant);
+    sim.Reset(seed);
+    RunMetricsRecorder metrics(sim, study_.hazards);
+    while (!sim.done()) {
+      sim.Step();
+      metrics.Add();
+    }
+    return metrics.Finish();
+  }
+
+  Simulation& SimulationOf(std::size_t variant) {
+    auto& sim = simulations_[variant];
+    if (!sim) sim = std::make_unique<Simulation>(ScenarioOf(study_, variant), 1);
+    return *sim;
+  }
+
+  static Scenario ScenarioOf(const StudyConfig& study, std::size_t variant) {
+    Scenario scenario = study.variants[variant].scenario;
+    scenario.source = study.source + " (scene " + study.variants[variant].name + ")";
+    for (const Candidate& c : study.candidates) scenario.sensors.push_back(c.sensor);
+    return scenario;
+  }
+
+ private:
+  const StudyConfig& study_;
+  std::map<std::size_t, std::unique_ptr<Simulation>> simulations_;
+};
+
+// ----- the journal: one line per finished job, flushed to disk at once
+
+class Journal {
+ public:
+  Journal(const std::string& path, const std::string& fingerprint, bool resume, std::size_t jobs)
+      : path_(path), done_(jobs) {
+    if (resume) Load(fingerprint);
+    // rewrite what was read (a line cut by a kill is dropped), then append
+    std::ofstream out(path_, std::ios::trunc);
+    out << json{{"study", fingerprint}}.dump() << "\n";
+    for (const auto& [job, line] : lines_) out << line << "\n";
+    out.close();
+    fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND);
+    if (fd_ < 0) throw std::runtime_error("cannot write the study's journal " + path_);
+  }
+  ~Journal() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+
+  bool done(std::size_t job) const { return done_[job]; }
+  std::size_t done_count() const { return lines_.size(); }
+  const std::map<std::size_t, std::string>& lines() const { return lines_; }
+
+  void Append(std::size_t job, const json& metrics) {
+    const std::string line = json{{"job", job}, {"metrics", metrics}}.dump();
+    std::lock_guard lock(mutex_);
+    const std::string with_newline = line + "\n";
+    if (::write(fd_, with_newline.data(), with_newline.size()) != static_cast<ssize_t>(with_newline.size()) ||
+        ::fsync(fd_) != 0) {
+      throw std::runtime_error("cannot write the study's journal " + path_);
+    }
+    lines_[job] = line;
+    done_[job] = true;
+  }
+
+ private:
+  void Load(const std::string& fingerprint) {
+    std::ifstream in(path_);
+    if (!in) return;  // nothing to resume: start afresh
+    std::string line;
+    bool first = true;
+    while (std::getline(in, line)) {
+      const json entry = json::parse(line, nullptr, false);
+      if (entry.is_discarded()) continue;  // the line a kill cut short
+      if (first) {
+        first = false;
+        if (!entry.contains("study") || entry["study"] != fingerprint) {
+          throw InputError(path_ + ": this journal belongs to another study (its candidates, scenes, seeds or "
+                                   "hazards differ); remove it or give another --out");
+        }
+        continue;
+      }
+      const std::size_t job = entry.at("job");
+      if (job < done_.size()) {
+        lines_[job] = line;
+        done_[job] = true;
+      }
+    }
+  }
+
+  std::string path_;
+  std::vector<bool> done_;
+  std::map<std::size_t, std::string> lines_;
+  std::mutex mutex_;
+  int fd_ = -1;
+};
+
+// ----- the progress line
+
+class Progress {
+ public:
+  Progress(bool enabled, std::size_t total, std::size_t already, std::size_t candidates)
+      : enabled_(enabled), total_(total), start_done_(already), candidates_(candidates), start_(Clock::now()) {}
+  void Update(std::size_t done) {
+    if (!enabled_) return;
+    std::lock_guard lock(mutex_);
+    const double elapsed_s = std::chrono::duration<double>(Clock::now() - start_).count();
+    const double rate = elapsed_s > 0 ? (done - start_done_) / elapsed_s : 0;
+    const double eta_s = rate > 0 ? (total_ - done) / rate : 0;
+    std::fprintf(stderr, "\rproxsim study: %zu/%zu runs (%zu jobs of %zu), %.1f runs/s, ETA %.0f s   ",
+                 done * candidates_, total_ * candidates_, done, total_, rate * candidates_, eta_s);
+    if (done == total_) std::fputc('\n', stderr);
+  }
+
+ private:
+  bool enabled_;
+  std::size_t total_, start_done_, candidates_;
+  Clock::time_point start_;
+  std::mutex mutex_;
+};
+
+}  // namespace
+
+StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, bool* is_writer) {
+  StudyMpi mpi;  // a no-op unless started by mpirun with more than one rank
+  *is_writer = mpi.rank() == 0;
+  const std::size_t jobs = study.variants.size() * study.seeds.size();
+
+  // every variant's world, built before any run: a candidate on a link the
+  // robot lacks fails here, with every problem listed
+  std::vector<std::unique_ptr<Worker>> workers;
+  int threads = options.threads > 0 ? options.threads
+                : mpi.size() > 1    ? 1
+                                    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (int t = 0; t < threads; ++t) workers.push_back(std::make_unique<Worker>(study));
+  {
+    std::vector<std::string> problems;
+    for (std::size_t v = 0; v < study.variants.size(); ++v) {
+      try {
+        workers[0]->SimulationOf(v);
+      } catch (const InputError& error) {
+        problems.insert(problems.end(), error.problems().begin(), error.problems().end());
+      }
+    }
+    if (!problems.empty()) throw InputError(problems);
+  }
+
+  if (!*is_writer) {
+    // a worker rank: ask rank 0 for jobs until there are none
+    std::string result;
+    for (;;) {
+      const long job = mpi.ExchangeWithWriter(result);
+      if (job < 0) break;
+      result = json{{"job", job}, {"metrics", ToJson(workers[0]->Run(static_cast<std::size_t>(job)))}}.dump();
+    }
+    return {};
+  }
+
+  std::filesystem::create_directories(options.out_dir);
+  Journal journal((std::filesystem::path(options.out_dir) / "journal.jsonl").string(), Fingerprint(study),
+                  options.resume, jobs);
+  Progress progress(options.progress, jobs, journal.done_count(), study.candidates.size());
+
+  // the jobs still to do, handed out one at a time
+  std::vector<std::size_t> todo;
+  for (std::size_t job = 0; job < jobs; ++job)
+    if (!journal.done(job)) todo.push_back(job);
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> finished{journal.done_count()};
+  const auto take = [&]() -> long {
+    const std::size_t i = next.fetch_add(1);
+    return i < todo.size() ? static_cast<long>(todo[i]) : -1;
+  };
+  const auto record = [&](std::size_t job, const json& metrics) {
+    journal.Append(job, metrics);
+    progress.Update(finished.fetch_add(1) + 1);
+  };
+
+  // the other ranks, served by one thread of rank 0; this rank's threads work too
+  std::thread dispatcher;
+  if (mpi.size() > 1) {
+    dispatcher = std::thread([&] {
+      mpi.ServeWorkers(take, [&](const std::string& message) {
+        const json entry = json::parse(message);
+        record(entry.at("job"), entry.at("metrics"));
+      });
+    });
+  }
+  std::vector<std::thread> pool;
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  for (auto& worker : workers) {
+    pool.emplace_back([&, w = worker.get()] {
+      try {
+        for (long job = take(); job >= 0; job = take()) record(job, ToJson(w->Run(static_cast<std::size_t>(job))));
+      } catch (...) {
+        std::lock_guard lock(failure_mutex);
+        failure = std::current_exception();
+      }
+    });
+  }
+  for (std::thread& t : pool) t.join();
+  if (dispatcher.joinable()) dispatcher.join();
+  if (failure) std::rethrow_exception(failure);
+
+  // every job's metrics, from the journal: the same whatever ran them
+  StudyResults results(study.variants.size(), std::vector<std::vector<RunMetrics>>(study.seeds.size()));
+  for (const auto& [job, line] : journal.lines()) {
+    results[job / study.seeds.size()][job % study.seeds.size()] = FromJson(json::parse(line).at("metrics"));
+  }
+  return results;
+}
+
+}  // namespace proxsim
