@@ -111,7 +111,7 @@ def main(argv=None):
         for i in range(len(_JOBS)):
             _run_job(i)
     if args.viewer_bundle:
-        write_viewer(run, report_dir, args.viewer_bundle)
+        write_viewer(run, report_dir, args.viewer_bundle, terrain)
     print(f"make_report: {len(run.sensors)} sensors drawn into {report_dir} "
           f"in {time.monotonic() - start:.1f} s"
           + ("" if args.viewer_bundle else " (no viewer: pass --viewer-bundle)"))

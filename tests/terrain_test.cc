@@ -1,8 +1,9 @@
 // Closed-form tests of the terrain map's parts (src/terrain/): the column
 // traversal against a brute-force clip of the segment by every cell, one
 // reading's point and variance from each noise model, the empty part of a
-// ray lowering exactly the cells it crosses, the grid's fusion rules, and
-// the hazard classifier on small height fields written in the test.
+// ray lowering exactly the cells it crosses (and the score counting those it
+// puts below a surface), the grid's fusion rules, and the hazard classifier
+// on small height fields written in the test.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "terrain/ray_evidence.h"
 #include "terrain/terrain_config.h"
 #include "terrain/terrain_map.h"
+#include "terrain/terrain_score.h"
 
 namespace proxsim {
 namespace {
@@ -281,6 +283,44 @@ TEST(TerrainMapTest, AnEmptyRayLowersTheUpperBoundOfTheCellsItCrossesAndOnlyThos
     for (const TerrainCell& cell : tile.cells) bounded += std::isfinite(cell.upper_bound_m) ? 1 : 0;
   });
   EXPECT_EQ(bounded, static_cast<int>(expected.size()));
+}
+
+TEST(TerrainScoreTest, CountsTheBoundsThatPutTheSurfaceLowerThanTheTruthByMoreThanDropMin) {
+  // a silent ideal ray that really went through a surface at z = 0 (as one
+  // meeting a wall too obliquely to echo would): it bounds the cells it
+  // crosses below z = 0 from where it passes z = 0; the score counts, over the
+  // cells crossed, those where it left the column below −drop_min_m
+  const SensorSpec ideal = SensorSpec::Preset(SensorType::kIdeal);
+  TerrainMapConfig config;
+  config.max_height_m = 10;
+  TerrainMap map(config, {ideal}, {true});
+  const Vec3 p_WS(0.013, -0.027, 0.4), dir = Vec3(0.35, 0.2, -1).normalized();
+  const SensorOutput reading = Reading(p_WS, dir, false, 2.0);
+  const RobotKnowledge robot = Standing({0, 0});
+  map.Update(Observation{.t_s = 1.0, .sensors = std::span(&reading, 1), .robot = &robot});
+
+  const Vec3 end = p_WS + 2.0 * dir;
+  std::size_t below = 0;
+  CellBox box;
+  for (const auto& [key, interval] : BruteForceCells(p_WS, end, 0.02)) {
+    const double z_low = p_WS.z() + std::max(interval.first, interval.second) * (end.z() - p_WS.z());
+    below += z_low < -config.drop_min_m ? 1 : 0;
+    box.Expand(CellIndex{key.first, key.second});
+  }
+  ASSERT_GT(below, 10u);
+  const Corridor corridor(map.track(), map.last_position(), 0.02);
+  TerrainScorer scorer(map, corridor);
+  // the truth: a flat surface at z = 0 under every cell
+  const std::vector<float> flat(static_cast<std::size_t>(box.nx()), 0.0f);
+  std::vector<const TerrainCell*> cells(flat.size());
+  for (std::int32_t iy = box.iy_min; iy <= box.iy_max; ++iy) {
+    for (std::int32_t k = 0; k < box.nx(); ++k) cells[k] = map.grid().Find({box.ix_min + k, iy});
+    scorer.AddRow(iy, box.ix_min, cells, flat);
+  }
+  const nlohmann::json bound = scorer.Json()["upper_bound"];
+  EXPECT_EQ(bound["cells"].get<std::size_t>(), BruteForceCells(p_WS, end, 0.02).size());
+  EXPECT_EQ(bound["below_truth"].get<std::size_t>(), below);
+  EXPECT_DOUBLE_EQ(bound["tolerance_m"].get<double>(), 0.05);
 }
 
 TEST(TerrainMapTest, TheMapsCeilingKeepsPointsAndBoundsBelowMaxHeight) {

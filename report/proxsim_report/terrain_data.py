@@ -1,5 +1,6 @@
 """Reads a run's terrain map (OUT/terrain/: meta.json, the .npy arrays,
-hazards.csv) and the score summary.json gives it. None when the run has no map."""
+hazards.csv) and the score summary.json gives it (None when the run has no
+map), and the height range the figure and the viewer both colour over."""
 import csv
 import json
 import os
@@ -49,3 +50,26 @@ def load_terrain(out_dir):
     except (OSError, ValueError):
         pass
     return TerrainData(meta["resolution_m"], tuple(meta["origin_xy_m"]), hazards=hazards, score=score, **arrays)
+
+
+def height_limits(terrain):
+    """(low, high) of the height colour scale: the 0.5–99.5 percentiles of the
+    map's and the truth's heights (a stray point does not flatten the scale),
+    widened to at least 10 cm (a flat floor is not all one colour's extreme)."""
+    values = np.concatenate([a[np.isfinite(a)].ravel() for a in (terrain.elevation, terrain.truth)])
+    if values.size == 0:
+        return -0.05, 0.05
+    lo, hi = float(np.percentile(values, 0.5)), float(np.percentile(values, 99.5))
+    return (lo - 0.05, hi + 0.05) if hi - lo < 0.1 else (lo, hi)
+
+
+def measured_cells(terrain):
+    """The cells that hold a height, in the order they first did: (x_m, y_m,
+    elevation_m, first_update_t_s) arrays of the cells' centres."""
+    iy, ix = np.nonzero(np.isfinite(terrain.elevation))
+    t = terrain.first_update_t_s[iy, ix].astype(np.float64)
+    order = np.lexsort((ix, iy, t))
+    iy, ix, t = iy[order], ix[order], t[order]
+    x0, y0 = terrain.origin_xy_m
+    r = terrain.resolution_m
+    return x0 + (ix + 0.5) * r, y0 + (iy + 0.5) * r, terrain.elevation[iy, ix].astype(np.float64), t

@@ -65,6 +65,11 @@ void TerrainScorer::AddRow(std::int32_t iy, std::int32_t ix_min, std::span<const
       abs_errors_m_.push_back(static_cast<float>(std::abs(error_m)));
       sum_squared_error_m2_ += error_m * error_m;
     }
+    // free space's bound, where there is a surface it should stay above
+    if (cell != nullptr && std::isfinite(cell->upper_bound_m) && !std::isnan(truth)) {
+      ++cells_bounded_;
+      if (cell->upper_bound_m < truth - config.drop_min_m) ++bounds_below_truth_;
+    }
     if (corridor_.Contains(c)) {
       ++corridor_cells_;
       if (measured) ++corridor_measured_;
@@ -214,6 +219,10 @@ nlohmann::json TerrainScorer::Json() {
                         {"measured", corridor_measured_},
                         {"coverage", Ratio(corridor_measured_, corridor_cells_)},
                         {"coverage_with_bounds", Ratio(corridor_bounded_, corridor_cells_)}}},
+          {"upper_bound", {{"cells", cells_bounded_},
+                           {"below_truth", bounds_below_truth_},
+                           {"below_truth_share", Ratio(bounds_below_truth_, cells_bounded_)},
+                           {"tolerance_m", map_.config().drop_min_m}}},
           {"hazards", {{"mapped", map_.hazards().size()}, {"classes", classes}}},
           {"true_hazards", true_hazards},
           {"map_memory_bytes", map_.grid().memory_bytes()},

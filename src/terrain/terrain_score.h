@@ -4,6 +4,10 @@
 //    (and whose column has a surface): its RMSE and 95th percentile;
 //  - the corridor's coverage: the share of the corridor's cells (corridor.h)
 //    that the map measured;
+//  - free space's bounds against the truth: of the cells with a bound (and a
+//    true surface), how many put the surface lower than it is by more than
+//    drop_min_m (alone, a false hole: a silent ray read as free space where a
+//    surface was, e.g. a wall met too obliquely to echo);
 //  - the true hazards: the truth's cells classified by the map's own rules
 //    (hazards.h), each relative to the ground the robot stood on when it
 //    came nearest to it; per class, the precision of the map's hazards (the
@@ -61,6 +65,7 @@ class TerrainScorer {
   std::vector<float> abs_errors_m_;
   double sum_squared_error_m2_ = 0;
   std::size_t corridor_cells_ = 0, corridor_measured_ = 0, corridor_bounded_ = 0, cells_measured_ = 0;
+  std::size_t cells_bounded_ = 0, bounds_below_truth_ = 0;  // cells with a bound and a true surface; bound too low
   // the true surface of every cell that is a hazard relative to some level
   std::unordered_map<std::uint64_t, CellSurface> off_ground_;
   std::vector<TrueHazard> true_hazards_;
