@@ -1,7 +1,8 @@
 // The terrain map on scenes: an ideal sensor's sweep over small scenes made
 // in the test (through the real ray caster) recovers a box's top and a hole's
 // depth within 1 cm and classifies each kind of hazard; the paper's run maps
-// the floor and the obstacle and finds it before the robot stops; a flat
+// the floor and the obstacle and finds it before the robot stops; the stairs
+// course's map finds the hole and the platform before the robot reaches them; a flat
 // floor read by the paper's noisy sensors holds no hazard over 20 seeds; a
 // 60-second walk's map grows in proportion to the metres walked; the files
 // and the OctoMap tree are written as the contract says; the scenario's
@@ -297,6 +298,37 @@ TEST(TerrainRunTest, ThePapersRunMapsTheFloorAndFindsTheObstacleBeforeTheRobotSt
   while (!watched.done()) watched.Step();
   EXPECT_DOUBLE_EQ(static_cast<const MapWatcher*>(watched.strategy())->first_seen_t_s,
                    watched.terrain_map()->hazards().front().first_detection_t_s);
+}
+
+TEST(TerrainRunTest, TheStairsCoursesMapFindsTheHoleAndThePlatformBeforeTheRobotReachesThem) {
+  const auto out = std::filesystem::temp_directory_path() / ("proxsim_terrain_stairs_" + std::to_string(getpid()));
+  std::filesystem::remove_all(out);
+  RunOptions options;
+  options.out_dir = out.string();
+  const RunResult result =
+      RunScenario(LoadScenarioFile(std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/terrain_stairs_course.yaml"), options);
+  std::filesystem::remove_all(out);
+  const nlohmann::json& terrain = result.summary["terrain"];
+  // the floor and the hole's bottom measured within a centimetre (but at the hole's edges)
+  EXPECT_GT(terrain["cells_measured"].get<int>(), 200);
+  EXPECT_LT(terrain["elevation_error"]["p95_m"].get<double>(), 0.01);
+  // the hole (x 1.3–1.7, 0.3 deep), found as a hole while the robot was still short of it
+  const nlohmann::json* hole = nullptr;
+  const nlohmann::json* platform = nullptr;
+  for (const auto& truth : terrain["true_hazards"]) {
+    if (truth["class"] == "hole") hole = &truth;
+    if (truth["class"] == "step_up") platform = &truth;
+  }
+  ASSERT_NE(hole, nullptr);
+  EXPECT_NEAR((*hole)["height_m"].get<double>(), -0.3, 1e-3);
+  EXPECT_EQ((*hole)["found_as"], "hole");
+  EXPECT_GT((*hole)["lead_distance_m"].get<double>(), 0.1);
+  EXPECT_EQ(terrain["hazards"]["classes"]["hole"]["precision"], 1.0);
+  // the platform's face, seen before the robot stopped at it (as an obstacle:
+  // its top is seen over a strip too narrow for a foot)
+  ASSERT_NE(platform, nullptr);
+  EXPECT_TRUE((*platform)["detected"].get<bool>());
+  EXPECT_LT((*platform)["first_detection_t_s"].get<double>(), result.summary["robot"]["stop_t_s"].get<double>());
 }
 
 TEST(TerrainRunTest, ASixtySecondWalksMapHoldsConstantMemoryPerMetreWalked) {

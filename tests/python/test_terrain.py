@@ -47,6 +47,11 @@ def test_the_files_hold_the_map_and_the_truth_and_the_summary_scores_them(tmp_pa
     assert math.isclose(score["elevation_error"]["rmse_m"], math.sqrt(np.mean(error ** 2)), rel_tol=1e-6)
     assert math.isclose(score["elevation_error"]["p95_m"], float(np.percentile(error, 95)), rel_tol=1e-5, abs_tol=1e-9)
     assert score["cells_measured"] == int(measured.sum())
+    # free space's bounds against the truth, recounted
+    upper = arrays["upper_bound"].astype(np.float64)
+    bounded = ~np.isnan(upper) & ~np.isnan(truth)
+    assert score["upper_bound"]["cells"] == int(bounded.sum()) > 0
+    assert score["upper_bound"]["below_truth"] == int((upper[bounded] < truth[bounded] - 0.05).sum())
     # the floor measured along the walk, flat within a centimetre (short of the
     # obstacle: the cells just before its face hold the face's points)
     x_centres = x0 + (np.arange(nx) + 0.5) * r

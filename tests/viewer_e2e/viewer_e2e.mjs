@@ -151,6 +151,8 @@ try {
   }, [tStart, tEnd]);
   check((map !== null) === (info.links.length > 0),
     `a run with a robot has a terrain map layer, a run without none (${map === null ? 'none' : `${map.total} cells`})`);
+  const figure = ['terrain.png', 'terrain.svg'].every((f) => fs.existsSync(path.join(reportDir, f)));
+  check(figure === (map !== null), `the report has terrain.png/.svg exactly when the run has a map (${figure})`);
   if (map) {
     const [first, , , , last] = map.states;
     check(map.total > 0 && last.cells === map.total, `by the end every measured cell is drawn (${last.cells}/${map.total})`);
