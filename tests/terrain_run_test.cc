@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+#include <octomap/OcTree.h>
 
 #include "core/input_error.h"
 #include "io/scenario.h"
@@ -420,7 +421,18 @@ TEST(OctomapRecorderTest, ADetectionMarksItsPointOccupiedAndItsRayFree) {
   EXPECT_FALSE(octomap.IsFree({1.01, 0.01, 0.25}));
   const auto path = std::filesystem::temp_directory_path() / ("proxsim_octomap_" + std::to_string(getpid()) + ".bt");
   octomap.WriteBinary(path.string());
-  EXPECT_GT(std::filesystem::file_size(path), 50u);
+  // octovis's reader (OctoMap's own) gets the same voxels back
+  octomap::OcTree tree(0.1);
+  ASSERT_TRUE(tree.readBinary(path.string()));
+  EXPECT_DOUBLE_EQ(tree.getResolution(), 0.02);
+  EXPECT_EQ(tree.getNumLeafNodes(), octomap.leaf_count());
+  const octomap::OcTreeNode* hit_voxel = tree.search(0.01, 0.01, 0.0);
+  ASSERT_NE(hit_voxel, nullptr);
+  EXPECT_TRUE(tree.isNodeOccupied(hit_voxel));
+  const octomap::OcTreeNode* free_voxel = tree.search(0.01, 0.01, 0.25);
+  ASSERT_NE(free_voxel, nullptr);
+  EXPECT_FALSE(tree.isNodeOccupied(free_voxel));
+  EXPECT_EQ(tree.search(1.01, 0.01, 0.25), nullptr);
   std::filesystem::remove(path);
 }
 
