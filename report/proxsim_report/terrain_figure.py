@@ -8,6 +8,7 @@ hazards the map found (filled, by class) over the true ones in the robot's
 corridor (dashed outlines). A hazard's rectangle is its extent's size
 (hazards.csv size_x_m, size_y_m) centred on its centroid (x_m, y_m)."""
 import numpy as np
+from matplotlib import patheffects
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch, Rectangle
 
@@ -16,6 +17,8 @@ from .terrain_data import height_limits
 
 ERROR_RANGE_M = 0.05
 UNKNOWN_COLOR = "#f2f2f2"
+# darker under the error, whose zero is white
+UNKNOWN_ERROR_COLOR = "#c4c4c4"
 
 
 def _length(v):
@@ -34,7 +37,9 @@ def _score_line(score):
 
 def _draw_path(ax, path_xy):
     if path_xy is not None and len(path_xy) > 1:
-        ax.plot(path_xy[:, 0], path_xy[:, 1], color=PATH_COLOR, linewidth=1.0)
+        # a white halo: the path stays visible over dark heights
+        ax.plot(path_xy[:, 0], path_xy[:, 1], color=PATH_COLOR, linewidth=1.0,
+                path_effects=[patheffects.withStroke(linewidth=2.6, foreground="white")])
 
 
 def _hazard_rectangle(h, **style):
@@ -80,7 +85,8 @@ def terrain_figure(plt, terrain, path_xy=None):
     error_cmap.set_bad((0, 0, 0, 0))
     image = ax.imshow(np.ma.masked_invalid(error), cmap=error_cmap, vmin=-ERROR_RANGE_M, vmax=ERROR_RANGE_M, **kw)
     _draw_path(ax, path_xy)
-    ax.set_title("error: map − truth on the cells measured (colours clipped at ±5 cm)", fontsize=10)
+    ax.set_title("error: map − truth on the cells measured (colours clipped at ±5 cm; grey: not measured)",
+                 fontsize=10)
     fig.colorbar(image, ax=ax, label="error (m)", shrink=0.9)
 
     # 4. the hazards found over the true ones in the corridor
@@ -108,8 +114,8 @@ def terrain_figure(plt, terrain, path_xy=None):
         ax.legend(handles=handles, fontsize=7, loc="upper left", ncol=3)
     ax.set_title("hazards: the map's (filled) over the true ones in the corridor (dashed)", fontsize=10)
 
-    for ax in axes:
-        ax.set_facecolor(UNKNOWN_COLOR)
+    for k, ax in enumerate(axes):
+        ax.set_facecolor(UNKNOWN_ERROR_COLOR if k == 2 else UNKNOWN_COLOR)
         ax.set_ylabel("y (m)")
         ax.set_xlim(x_min, x_max)
         ax.set_ylim(y_min, y_max)

@@ -64,7 +64,8 @@ export class ControlsPanel {
     this.hazards = [];
     if (data.terrain) this.addTerrain(side, data.terrain, handlers);
     side.appendChild(el('p', { class: 'proxsim-hint',
-      text: 'Dots: profile points, coloured by object. Drag to orbit, wheel to zoom, right-drag to pan.' }));
+      text: `Dots: profile points, coloured by object.${data.terrain ? ' Squares under them: the map\'s cells.' : ''}`
+        + ' Drag to orbit, wheel to zoom, right-drag to pan.' }));
   }
 
   /** The terrain map's rows: its toggle, its height scale, one row per hazard
