@@ -51,7 +51,8 @@ if(PROXSIM_BUILD_TESTS)
   set(e2e_scenario_no_robot ${CMAKE_SOURCE_DIR}/data/scenarios/world_sensors_demo.yaml)
   set(e2e_scenario_circumvent ${CMAKE_SOURCE_DIR}/data/scenarios/circumvent_obstacle.yaml)
   set(e2e_kinds walk no_robot circumvent)
-  # and the Unitree H1's example (its meshes drawn), when ../shared/robots holds it
+  # and the Unitree H1's example (its meshes drawn), when the H1's description (Unitree's,
+  # not part of this repository) is beside the repository in ../shared/robots
   if(EXISTS ${CMAKE_SOURCE_DIR}/../shared/robots/h1_description/urdf/h1.urdf)
     set(e2e_scenario_h1 ${CMAKE_SOURCE_DIR}/data/scenarios/h1_dining_room.yaml)
     list(APPEND e2e_kinds h1)

@@ -72,7 +72,7 @@ def heatmap(results, out):
         for i in range(len(pitch)):
             for j in range(len(along)):
                 if np.isfinite(grid[i, j]):
-                    ax.text(j, i, f"{grid[i, j]:.2f}", ha="center", va="center", fontsize=7, color="white")
+                    ax.text(j, i, f"{grid[i, j] + 0.0:.2f}".replace("-0.00", "0.00"), ha="center", va="center", fontsize=7, color="white")
     for k in range(len(panels), rows * cols):
         axes[k // cols][k % cols].axis("off")
     if image is not None:

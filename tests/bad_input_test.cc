@@ -1,8 +1,8 @@
-// Every class of bad input of issue 6 through the real `proxsim` binary: exit
+// Every class of bad input through the real `proxsim` binary: exit
 // code 2, one message per problem naming the file (and line), the key and what
 // was expected, and no output folder created. The inputs are small files in
-// tests/data/bad_input/; the README table "Bad input and the message it gets"
-// quotes the messages these tests check.
+// tests/data/bad_input/; the table "Bad input and the message it gets" in
+// docs/trust.md quotes the messages these tests check.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -32,7 +32,7 @@ TEST(CliRun, ReadingsMatchClosedForms) {
       "t_s", "sensor", "type", "status", "detected", "d_m", "d_true_m", "incidence_deg", "signal", "hit_x_m",
       "hit_y_m", "hit_z_m", "origin_x_m", "origin_y_m", "origin_z_m", "dir_x", "dir_y", "dir_z", "object",
       "gait_phase", "support_leg",
-      // appended by the sensor physics beyond the paper (issue 7)
+      // appended by the sensor physics beyond the paper (docs/sensors.md)
       "ray", "output", "t_reported_s"};
   ASSERT_EQ(csv.header, expected_header);
   ASSERT_EQ(csv.rows.size(), 10u * 6u);  // 0.2 s at 50 Hz, six sensors

@@ -1,5 +1,6 @@
-// A real humanoid: the Unitree H1 of ../shared/robots/h1_description (URDF and
-// 21 binary STL meshes, read from beside the project, never copied into it;
+// A real humanoid: the Unitree H1, Unitree's description (URDF and 21 binary
+// STL meshes, not part of this repository) read from beside it in
+// ../shared/robots/h1_description, never copied into it;
 // every test here is skipped, saying so, when that folder is absent).
 // It loads with every mesh read once; walked by the shipped example
 // scenario's leg map, every link is where forward kinematics computed here

@@ -1,4 +1,4 @@
-// Numerical edge cases of the ray caster (issue 6 item 7), closed form. Rays
+// Numerical edge cases of the ray caster (docs/trust.md), closed form. Rays
 // along shared edges and through shared vertices of tiled floors are in
 // ray_caster_test.cc (RaysThroughSharedVertices*, RaysAlongAFaceDiagonalHit);
 // here: a ray starting on a surface, degenerate (zero-area) triangles, a scene

@@ -1,4 +1,4 @@
-// No data lost, and the same bytes every time (issue 6 items 2 and 5):
+// No data lost, and the same bytes every time (docs/trust.md):
 //  - SIGINT / SIGTERM during `proxsim run` stops after the current sample with
 //    every file committed and consistent, summary.json marked interrupted, exit
 //    130 / 143;

@@ -1,6 +1,6 @@
-// Sensor physics beyond the paper (issue 7): beams, materials, the physical
+// Sensor physics beyond the paper (docs/sensors.md): beams, materials, the physical
 // echo model, lookup sensors, timing and noise variants. Expected values are
-// computed here with trigonometry and the formulas the README states; noise
+// computed here with trigonometry and the formulas docs/sensors.md states; noise
 // laws are checked statistically with bounds stated next to each test.
 #include <cmath>
 #include <fstream>

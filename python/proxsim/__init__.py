@@ -7,8 +7,8 @@
     sim.robot.stop()                 # commands take effect from the next step
     sim.truth()                      # the truth, for analysis only
 
-See docs/strategies.md (and README "Writing a strategy") for the whole
-contract, and proxsim.WalkEnv for a Gymnasium-style environment.
+See docs/strategies.md for the whole contract, and proxsim.WalkEnv for a
+Gymnasium-style environment.
 """
 from ._core import InputError, Robot, Simulation
 from .walk_env import WalkEnv

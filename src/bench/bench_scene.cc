@@ -311,7 +311,7 @@ Scenario HeavyScenario(const BenchScene& scene, int mounts, int rays_per_mount, 
     SensorConfig sensor;
     sensor.name = "m" + std::to_string(m);
     sensor.spec = SensorSpec::Preset(SensorType::kUltrasonic);
-    // a beam of rays_per_mount rays in a 25° cone (issue 7's beams: the first echo that counts wins)
+    // a beam of rays_per_mount rays in a 25° cone (sensor beams: the first echo that counts wins)
     BeamSpec beam;
     beam.aperture_deg = 25.0;
     beam.rays = rays_per_mount;

@@ -1,4 +1,4 @@
-// The benchmark's world and rays (`proxsim bench`, README "Performance"): the
+// The benchmark's world and rays (`proxsim bench`, docs/performance.md): the
 // dining room of scene/builtin_scenes.cc rebuilt from closed triangle meshes
 // only, tessellated finely enough to reach a target triangle count, with
 // clutter on the floor and the table; and the ray sets every engine casts.
@@ -48,7 +48,7 @@ std::vector<Ray> IncoherentRays(std::size_t count, std::uint64_t seed);
 /// above), spread over 60° of azimuth at one elevation; range 2 m.
 std::vector<Ray> FanRays(std::size_t count, std::size_t fan_rays, std::uint64_t seed);
 
-/// The heavy scenario of the issue, in the given scene: the built-in biped
+/// The heavy scenario (docs/performance.md), in the given scene: the built-in biped
 /// walking 4.5 m along +x at 1 kHz for `duration_s`, with `mounts`
 /// ultrasonic sensors on its legs, each a beam of `rays_per_mount` rays in a
 /// 25° cone (BeamSpec: the rays share the sensor's origin).

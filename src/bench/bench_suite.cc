@@ -20,6 +20,7 @@
 
 #include "bench/bench_scene.h"
 #include "bench/closed_loop_bench.h"
+#include "bench/study_bench.h"
 #include "bench/robot_bench.h"
 #include "bench/terrain_bench.h"
 #include "bench/peers.h"
@@ -357,7 +358,7 @@ json RunBench(const BenchOptions& options) {
     if (bullet) size["agreement"]["bullet"] = Agreement(d_proxsim, d_bullet);
     if (mujoco) size["agreement"]["mujoco"] = Agreement(d_proxsim, d_mujoco);
 
-    // the ratios of the issue: proxsim's pipeline over each peer, incoherent rays
+    // the ratios the targets are stated in: proxsim's pipeline over each peer, incoherent rays
     const json& inc = size["incoherent"];
     for (const char* t : {"1t", "2t"}) {
       const double p = inc[std::string("proxsim_rays_per_s_") + t];
@@ -387,6 +388,12 @@ json RunBench(const BenchOptions& options) {
   }
   if (options.robots) result["robots"] = RobotsSection(options.quick);
   if (options.terrain) result["terrain"] = TerrainSection(options.quick);
+  if (options.study) {
+    const auto study_tmp =
+        std::filesystem::temp_directory_path() / ("proxsim-bench-study-" + std::to_string(::getpid()));
+    result["study"] = StudySection(options.quick, study_tmp.string());
+    std::filesystem::remove_all(study_tmp);
+  }
   if (!options.end_to_end) {
     result["bench_wall_s"] = Since(bench_start);
     return result;
@@ -594,6 +601,7 @@ std::string BenchReport(const json& r) {
   if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
   if (r.contains("robots")) out << RobotsReport(r.at("robots"));
   if (r.contains("terrain")) out << TerrainReport(r.at("terrain"));
+  if (r.contains("study")) out << StudyReport(r.at("study"));
   return out.str();
 }
 

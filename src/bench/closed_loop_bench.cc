@@ -1,7 +1,6 @@
 #include "bench/closed_loop_bench.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "bench/bench_process.h"
 #include "sim/run.h"
 #include "sim/simulation.h"
 
@@ -18,16 +18,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// Runs a command and returns its standard output ("" when it failed).
-std::string Capture(const std::string& command) {
-  std::string output;
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  if (!pipe) return output;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr) output += buffer.data();
-  return output;
-}
 
 }  // namespace
 

@@ -55,6 +55,7 @@ double SecondsPerStep(const Scenario& scenario, int repeats) {
 nlohmann::json RobotsSection(bool quick) {
   nlohmann::json section;
   const int repeats = quick ? 2 : 5;
+  // the Unitree H1's description is not in the repository: it is read from beside it
   section["h1_available"] = std::filesystem::is_regular_file(std::filesystem::path(PROXSIM_SOURCE_DIR) /
                                                              "../shared/robots/h1_description/urdf/h1.urdf");
   if (!section["h1_available"].get<bool>()) {

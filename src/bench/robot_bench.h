@@ -1,5 +1,6 @@
 // `proxsim bench`, the robots' section: what a real robot of meshes costs.
-// Loading the Unitree H1 (../shared/robots/h1_description: its URDF and 21
+// Loading the Unitree H1 (Unitree's description, not part of this repository,
+// expected beside it in ../shared/robots/h1_description: its URDF and 21
 // binary STL meshes, ~346k triangles) and building its bodies (the ray
 // caster's BVHs and the clearance's surface samples); then the cost of one
 // paper-like sample (the paper's four sensors, one ray each, on the left

@@ -1,8 +1,8 @@
-// The proxsim command line (DESIGN.md "CLI"):
+// The proxsim command line (docs/cli.md):
 //   proxsim run [SCENARIO.yaml] [--out DIR] [--seed N] [--threads N]
 //   proxsim validate SCENARIO.yaml
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
-//   proxsim bench [--json] [--quick] (the performance suite, README "Performance")
+//   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
 #include <signal.h>
@@ -19,6 +19,7 @@
 
 #include "bench/bench_suite.h"
 #include "core/input_error.h"
+#include "io/run_manifest.h"
 #include "io/scenario.h"
 #include "report/report_runner.h"
 #include "sim/run.h"
@@ -135,19 +136,21 @@ int Study(const std::string& study_path, const std::string& out_dir, int threads
   const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path);
   bool writer = false;
   const proxsim::StudyResults results = proxsim::RunStudy(
-      study, {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = isatty(STDERR_FILENO) != 0},
+      study, {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true},
       &writer);
   if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
   const nlohmann::json selection = proxsim::WriteStudyAnswers(study, results, out_dir);
-  std::printf("proxsim study: %s — %zu candidates x %zu scenes x %zu seeds = %zu runs\n", study_path.c_str(),
-              study.candidates.size(), study.variants.size(), study.seeds.size(),
+  std::printf("proxsim study: %s — %zu runs\n", study_path.c_str(),
               study.candidates.size() * study.variants.size() * study.seeds.size());
-  std::printf("best %d sensors (greedy hazard coverage over %zu items):\n", study.select_sensors,
+  std::printf("best %d sensors (greedy, hazards covered then lead, over %zu items):\n", study.select_sensors,
               selection["items"].get<std::size_t>());
   for (const auto& pick : selection["chosen"]) {
     std::printf("  %-48s detection rate %.3f, mean lead %s m\n", pick["added"].get<std::string>().c_str(),
                 pick["detection_rate"].get<double>(),
                 pick["mean_lead_m"].is_null() ? "n/a" : std::to_string(pick["mean_lead_m"].get<double>()).c_str());
+  }
+  if (selection["chosen"].size() < static_cast<std::size_t>(study.select_sensors)) {
+    std::printf("  (no further sensor detects another hazard or sees one farther ahead)\n");
   }
   std::printf("outputs in %s/ (results.csv, ranking.csv, selection.json)\n", out_dir.c_str());
   std::fflush(stdout);
@@ -185,16 +188,16 @@ int main(int argc, char** argv) {
 
   bool bench_json = false, bench_quick = false;
   CLI::App* bench = app.add_subcommand("bench", "race proxsim against bare Embree, Bullet and MuJoCo (a few minutes)");
-  bench->add_flag("--json", bench_json, "print one JSON object with every figure (keys: README, Performance)");
+  bench->add_flag("--json", bench_json, "print one JSON object with every figure (keys: docs/performance.md)");
   bench->add_flag("--quick", bench_quick, "fewer rays and a shorter heavy run: a smoke test");
   std::string bench_from;
   bench->add_option("--from", bench_from, "print the Markdown tables of a run saved with --json, without running")
       ->check(CLI::ExistingFile);
   std::string bench_only = "all";
   bench->add_option("--only", bench_only,
-                    "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped) "
-                    "or terrain (the terrain map's cost per sample)")
-      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "terrain"}))
+                    "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped), "
+                    "study (placement studies, MPI) or terrain (the terrain map's cost per sample)")
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -243,13 +246,25 @@ int main(int argc, char** argv) {
            .rays = bench_only == "all" || bench_only == "rays",
            .end_to_end = bench_only == "all" || bench_only == "e2e",
            .robots = bench_only == "all" || bench_only == "robots",
+           .study = bench_only == "all" || bench_only == "study",
            .terrain = bench_only == "all" || bench_only == "terrain"});
       const bool whole = bench_only == "all";
       std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
                  stdout);
       return 0;
     }
-    if (*plot) return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
+    if (*plot) {
+      // the files must be one run's: a figure of two runs' files would mislead
+      const std::vector<std::string> problems = proxsim::RunFolderProblems(plot_dir);
+      if (!problems.empty()) {
+        std::vector<std::string> lines;
+        for (const std::string& problem : problems) lines.push_back(plot_dir + "/" + problem);
+        lines.push_back(plot_dir + ": its files are not one run's; run the scenario again into this folder "
+                                   "(or another) to get a consistent set");
+        throw proxsim::InputError(lines);
+      }
+      return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
+    }
     if (*validate) return Validate(validate_path);
     if (*study) return Study(study_path, study_out, study_threads, study_resume, !study_no_report);
   } catch (const proxsim::InputError& error) {

@@ -1,12 +1,12 @@
 // Normative sagittal joint angles of human walking over one gait cycle, as the
 // gait generator's reference (the paper's robot copied a child's gait, its
-// Fig. 7). Key points from shared/reference/GAIT.md, read from Perry &
+// Fig. 7). Key points (listed in docs/robots.md) read from Perry &
 // Burnfield, "Gait Analysis" (2010) and Winter, "Biomechanics and Motor Control
 // of Human Movement" (2009): hip flexion, knee flexion, ankle dorsiflexion in
 // degrees against % of the cycle from heel strike.
 //
 // Between key points we use a periodic cubic Hermite spline with Catmull-Rom
-// tangents (C1, through every key point) instead of GAIT.md's straight lines.
+// tangents (C1, through every key point) instead of straight lines between them.
 //
 // Departures, all on purpose:
 //  - The pelvis is kept upright, so the ≈10° pelvic tilt included in the hip
@@ -24,8 +24,8 @@
 // Sign conventions (sagittal plane of the pelvis, x forward, z up): segment
 // angles are measured from the downward vertical, positive when the lower end
 // moves forward: thigh = hip, shank = hip − knee, foot pitch (toe up +) =
-// shank + ankle. (GAIT.md writes ψ = ankle − θS; with its own definitions the
-// toe-up pitch is θS + ankle, which is what a URDF chain composes.)
+// shank + ankle. (Not ankle − θS, as one may find it written: with these
+// definitions the toe-up pitch is θS + ankle, which is what a URDF chain composes.)
 #pragma once
 
 #include <utility>

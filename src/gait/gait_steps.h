@@ -1,7 +1,7 @@
 // One step of the kinematic walk: from a heel strike of one foot (the stance
 // foot) to the heel strike of the other (the swing foot), as a pure function
-// of the stance phase p in [0, 0.5]. This is GAIT.md's planted-foot
-// construction:
+// of the stance phase p in [0, 0.5]. This is the planted-foot construction
+// (docs/robots.md, "The gait"):
 //  - The stance foot pivots on its heel until foot-flat, lies flat until
 //    heel-off, then pivots on its toe. Each pivot is latched in the world: the
 //    heel at heel strike, then the flat foot's link frame F (which gives the sole

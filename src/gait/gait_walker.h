@@ -1,5 +1,5 @@
-// Kinematic walking of any biped along a path of waypoints (DESIGN.md "Robot
-// and gait"; GAIT.md): the steps of gait_steps.h chained in time, on the legs
+// Kinematic walking of any biped along a path of waypoints (docs/robots.md,
+// "The gait"): the steps of gait_steps.h chained in time, on the legs
 // that robot.legs maps (gait/leg_kinematics.h) with every other joint held
 // (robot.joints_deg), with the cycle time `period_s` and the curve amplitude
 // chosen so that the stride is `stride_m`, heading changes at heel strikes

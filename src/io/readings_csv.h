@@ -1,5 +1,5 @@
 // readings.csv: the distance curves, one row per sensor per sample, streamed
-// as the run goes (DESIGN.md "Outputs"). Empty fields mean "none": no hit,
+// as the run goes (docs/outputs.md). Empty fields mean "none": no hit,
 // no reflectance signal for a time-of-flight sensor, no robot.
 #pragma once
 

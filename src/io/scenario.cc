@@ -1,4 +1,4 @@
-// Loading a scenario (DESIGN.md "Scenario file"): YAML text → yaml-cpp
+// Loading a scenario (docs/scenario.md): YAML text → yaml-cpp
 // document → Scenario, with every problem collected before anything runs.
 // This file reads the top level (schema version, seed, duration, rate), hands
 // each section to its reader (scenario_scene.cc, scenario_robot.cc,

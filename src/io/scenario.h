@@ -1,5 +1,5 @@
-// A scenario: everything a run needs, parsed from YAML (DESIGN.md "Scenario
-// file") and validated before anything runs. SI units; angles are degrees in
+// A scenario: everything a run needs, parsed from YAML (docs/scenario.md) and
+// validated before anything runs. SI units; angles are degrees in
 // the file and radians in these structs.
 #pragma once
 
@@ -24,7 +24,7 @@ struct SensorConfig {
   int link_line = 0;             ///< line of `link:` in the scenario file, for messages (0: none)
   Pose X_LS = Pose::Identity();  ///< sensor frame S in its link L; the beam is S's +x
   bool see_robot = true;         ///< false: the robot's own links are transparent to this sensor
-  // timing (issue 7; all off by default)
+  // timing (beyond the paper, docs/sensors.md; all off by default)
   double rate_hz = 0.0;          ///< > 0: samples only at the first run sample of each of its periods; 0: every sample
   double latency_s = 0.0;        ///< >= 0: a reading is reported (and seen by the strategy) this much later
   bool flight_time = false;      ///< time of flight: the echo is received where the sensor is when it returns

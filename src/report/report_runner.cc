@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "io/run_manifest.h"
+
 extern char** environ;
 
 namespace proxsim {
@@ -96,7 +98,11 @@ int MakeReport(const std::string& out_dir) {
     return 1;
   }
 
-  return RunPythonScript({kPython, script, out_dir, "--viewer-bundle", bundle});
+  // the previous report's files go; the new ones join the run's manifest
+  RemoveFromRunManifest(out_dir, "report/");
+  const int status = RunPythonScript({kPython, script, out_dir, "--viewer-bundle", bundle});
+  if (status == 0) AddToRunManifest(out_dir, {"report/"});
+  return status;
 }
 
 int MakeStudyReport(const std::string& out_dir) {

@@ -11,7 +11,7 @@
 namespace proxsim {
 
 /// Surface properties. Stored for every object; the paper's sensor models do
-/// not use them; a sensor that opts in does (README "Sensor reference").
+/// not use them; a sensor that opts in does (docs/sensors.md, "Beyond the paper").
 struct Material {
   constexpr Material() = default;
   constexpr Material(double albedo_in, double specular_in) : albedo(albedo_in), specular(specular_in) {}

@@ -1,4 +1,4 @@
-// A sensor's beam as a cone of rays (issue 7, beyond the paper, which casts
+// A sensor's beam as a cone of rays (beyond the paper, which casts
 // one ray): a deterministic layout that covers the cone evenly in solid
 // angle — the axis ray, then K rings at θ_k = (aperture/2)·k/K holding a
 // number of rays proportional to k (6, 12, 18, … for 7, 19, 37 rays) — and per

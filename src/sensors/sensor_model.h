@@ -9,12 +9,12 @@
 // Outside the range window [d_min, d_max] or the incidence window [0, α*]
 // the sensor reads d_max and the sample is not a detection (§5's "else d_r =
 // d_max"); the status says why. Departures from the paper, all documented in
-// the README: each reading carries a status; an echo from the robot's own body
+// docs/sensors.md: each reading carries a status; an echo from the robot's own body
 // is flagged `self` and never counts as a detection; the reflectance root is
 // evaluated in the equivalent form 2·d_max / (1 + √(1 + 4·s·d_max)), which
 // has no cancellation for small s and gives 0 at d = 0.
 //
-// Beyond the paper (issue 7; each part off unless the sensor's spec asks for
+// Beyond the paper (docs/sensors.md; each part off unless the sensor's spec asks for
 // it, so the paper's presets give the paper's readings bit for bit):
 //   - noise variants (additive, distance-scaled), quantisation to
 //     resolution_m, and a dropout probability (status `dropout`);

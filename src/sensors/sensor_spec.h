@@ -1,6 +1,6 @@
 // The parameters of a proximity sensor (paper §5), as a plain struct with the
 // paper's three sensors and an ideal one as named presets, plus the sensor
-// physics beyond the paper (issue 7), every part of it off by default: a beam
+// physics beyond the paper (docs/sensors.md), every part of it off by default: a beam
 // of several rays with a pattern, materials, a physical echo model, a lookup
 // table, noise variants. Presets for three real parts cite their datasheets in
 // sensor_spec.cc. Every value may be overridden per sensor in the scenario

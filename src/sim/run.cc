@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "io/atomic_file.h"
+#include "io/run_manifest.h"
 #include "sim/run_recorder.h"
 #include "sim/simulation.h"
 
@@ -66,7 +67,10 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
 
   // timings live apart from the summary so that reruns give byte-identical summaries
   result.wall_s = SecondsSince(start);
-  WriteTimings(options.out_dir, result.wall_s, loop_wall_s, options.threads, recorder.samples(), scenario.rate_hz);
+  if (!options.out_dir.empty()) {
+    WriteTimings(options.out_dir, result.wall_s, loop_wall_s, options.threads, recorder.samples(), scenario.rate_hz);
+    AddToRunManifest(options.out_dir, {"timings.json"});
+  }
   return result;
 }
 

@@ -9,6 +9,7 @@
 #include "io/poses_csv.h"
 #include "io/profile_ply.h"
 #include "io/readings_csv.h"
+#include "io/run_manifest.h"
 #include "io/scene_json.h"
 #include "sim/run_statistics.h"
 #include "sim/run_summary.h"
@@ -74,6 +75,8 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
   writers_->statistics.emplace(sim.scenario().sensors.size());
   if (out_dir_.empty()) return;
   std::filesystem::create_directories(out_dir_);
+  // the folder holds one run: the previous run's files go (the user's own stay)
+  RemovePreviousRun(out_dir_);
   const std::filesystem::path out(out_dir_);
   const Scenario& scenario = sim.scenario();
   const std::vector<std::string>& object_names = sim.world().object_names();
@@ -160,6 +163,7 @@ nlohmann::json RunRecorder::Finish(bool interrupted) {
   const auto links = sim_.robot() ? sim_.robot()->LinkGeometry() : std::vector<LinkGeometryJson>{};
   WriteFileAtomically((out / "scene.json").string(), SceneJsonText(scenario, links));
   WriteFileAtomically((out / "summary.json").string(), summary.dump(2) + "\n");
+  WriteRunManifest(out_dir_, summary["outputs"].get<std::vector<std::string>>());
   return summary;
 }
 

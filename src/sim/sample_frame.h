@@ -1,5 +1,5 @@
 // What one sample step produces: per sensor, the reading and the noise-free
-// truth beside it (DESIGN.md: every reading carries its status and the truth),
+// truth beside it (every reading carries its status and the truth: docs/design.md),
 // and the robot's state at that time. Buffers are sized once per run and
 // overwritten in place every step.
 #pragma once

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/input_error.h"
 #include "gait/make_locomotion.h"
 #include "sim/robot_knowledge.h"
 #include "strategy/make_strategy.h"
@@ -76,6 +77,11 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
   locomotion_ = std::move(locomotion);
   if (!locomotion_ && scenario_.robot) locomotion_ = MakeLocomotion(*scenario_.robot);
   world_ = std::make_unique<World>(scenario_, locomotion_ ? &locomotion_->model() : nullptr, threads);
+  // (after the robot and the world, whose problems come first) a run without
+  // sensors would write an empty report and claim success
+  if (scenario_.sensors.empty()) {
+    throw InputError(scenario_.source + ": sensors: no sensors: nothing to measure (add at least one under 'sensors:')");
+  }
   reader_ = std::make_unique<SensorReader>(scenario_, *world_);
   delivery_ = std::make_unique<DeliveryQueue>(scenario_.sensors, scenario_.rate_hz);
   event_log_ = std::make_unique<Events>(*this);

@@ -45,9 +45,7 @@ void RunMetricsRecorder::Add() {
     grazing_[i] += sample.reading.status == ReadingStatus::kGrazing;
     if (!sample.reading.detected()) continue;
     const std::int32_t object = sample.object_id;
-    const int hazard = object >= 0 && object < static_cast<std::int32_t>(hazard_of_object_.size())
-                           ? hazard_of_object_[object]
-                           : -1;
+    const int hazard = HazardOf(object);
     if (hazard >= 0 && !m.hazards[hazard].detected && self != nullptr) {
       HazardResult& h = m.hazards[hazard];
       h.detected = true;
@@ -59,9 +57,21 @@ void RunMetricsRecorder::Add() {
       if (static_cast<std::int64_t>(bins.size()) <= bin) bins.resize(bin + 1, false);
       bins[bin] = true;
     }
-    // what the stop rule would take for an obstacle, where there is none
-    if (hazard < 0 && self != nullptr && IsObstacleAhead(observation.sensors[i], *self, stop_rule)) ++m.false_alarms;
   }
+  // what the stop rule would take for an obstacle where there is none: the
+  // delivered readings (latency applied), as the rule sees them
+  if (self == nullptr) return;
+  const SampleFrame& delivered = sim_.delivered();
+  for (std::size_t i = 0; i < delivered.sensors.size(); ++i) {
+    if (!IsObstacleAhead(observation.sensors[i], *self, stop_rule)) continue;
+    if (HazardOf(delivered.sensors[i].object_id) < 0) ++metrics_[i].false_alarms;
+  }
+}
+
+int RunMetricsRecorder::HazardOf(std::int32_t object_id) const {
+  return object_id >= 0 && object_id < static_cast<std::int32_t>(hazard_of_object_.size())
+             ? hazard_of_object_[object_id]
+             : -1;
 }
 
 std::vector<RunMetrics> RunMetricsRecorder::Finish() const {

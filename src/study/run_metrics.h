@@ -45,6 +45,8 @@ class RunMetricsRecorder {
   static constexpr double kCoverageBin_m = 0.05;
 
  private:
+  int HazardOf(std::int32_t object_id) const;  // the study hazard of a hit object, -1 none
+
   const Simulation& sim_;
   std::vector<int> hazard_of_object_;  // hazard index of each object id, -1 none
   std::vector<bool> ground_object_;

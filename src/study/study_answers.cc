@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "io/atomic_file.h"
+#include "study/study_selection.h"
 
 namespace proxsim {
 
@@ -61,62 +62,11 @@ MeanCi MeanWithCi95(const std::vector<double>& values) {
   if (values.empty()) return {kNaN, kNaN};
   const double n = static_cast<double>(values.size());
   const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
-  if (values.size() == 1) return {mean, 0.0};
+  // one value, or all equal: no spread (not the rounding noise of a sum)
+  if (std::all_of(values.begin(), values.end(), [&](double v) { return v == values.front(); })) return {mean, 0.0};
   double ss = 0;
   for (double v : values) ss += (v - mean) * (v - mean);
   return {mean, T975(values.size() - 1) * std::sqrt(ss / (n - 1)) / std::sqrt(n)};
-}
-
-Coverage CoverageOf(const StudyConfig& study, const StudyResults& results) {
-  Coverage coverage;
-  coverage.covers.resize(study.candidates.size());
-  coverage.lead_m.resize(study.candidates.size());
-  for (std::size_t v = 0; v < study.variants.size(); ++v) {
-    for (std::size_t s = 0; s < study.seeds.size(); ++s) {
-      for (std::size_t h = 0; h < study.hazards.size(); ++h) {
-        if (results[v][s].empty() || !results[v][s][0].hazards[h].applies) continue;
-        const std::size_t item = coverage.items++;
-        for (std::size_t c = 0; c < study.candidates.size(); ++c) {
-          const HazardResult& r = results[v][s][c].hazards[h];
-          if (!r.detected) continue;
-          coverage.covers[c].push_back(item);
-          coverage.lead_m[c].push_back(r.lead_m);
-        }
-      }
-    }
-  }
-  return coverage;
-}
-
-std::vector<std::size_t> GreedySelection(const Coverage& coverage, std::size_t k, const std::vector<std::size_t>& rank) {
-  std::vector<bool> covered(coverage.items, false), chosen(coverage.covers.size(), false);
-  std::vector<std::size_t> order;
-  while (order.size() < std::min(k, coverage.covers.size())) {
-    std::size_t best = coverage.covers.size();
-    std::size_t best_new = 0;
-    double best_lead = -std::numeric_limits<double>::infinity();
-    for (std::size_t c = 0; c < coverage.covers.size(); ++c) {
-      if (chosen[c]) continue;
-      std::size_t gain = 0;
-      double lead = 0;
-      for (std::size_t i = 0; i < coverage.covers[c].size(); ++i) {
-        if (covered[coverage.covers[c][i]]) continue;
-        ++gain;
-        lead += coverage.lead_m[c][i];
-      }
-      const bool better = best == coverage.covers.size() || gain > best_new ||
-                          (gain == best_new && (lead > best_lead || (lead == best_lead && rank[c] < rank[best])));
-      if (better) {
-        best = c;
-        best_new = gain;
-        best_lead = lead;
-      }
-    }
-    chosen[best] = true;
-    order.push_back(best);
-    for (std::size_t item : coverage.covers[best]) covered[item] = true;
-  }
-  return order;
 }
 
 nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& results, const std::string& out_dir) {
@@ -194,7 +144,14 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
   // selection.json: the greedy set of k and the Pareto front of count against rate and lead
   const Coverage coverage = CoverageOf(study, results);
   const std::size_t k_front = std::min<std::size_t>(n, std::max<std::size_t>(study.select_sensors, 6));
-  const std::vector<std::size_t> order = GreedySelection(coverage, k_front, rank);
+  std::vector<bool> eligible(n, true);
+  if (!study.select_types.empty()) {
+    for (std::size_t c = 0; c < n; ++c) {
+      eligible[c] = std::find(study.select_types.begin(), study.select_types.end(), study.candidates[c].type) !=
+                    study.select_types.end();
+    }
+  }
+  const std::vector<std::size_t> order = GreedySelection(coverage, k_front, rank, eligible);
   nlohmann::json front = nlohmann::json::array(), chosen = nlohmann::json::array();
   std::vector<double> best_lead(coverage.items, -std::numeric_limits<double>::infinity());
   std::vector<bool> covered(coverage.items, false);
@@ -231,11 +188,18 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
   }
   const nlohmann::json selection = {
       {"k", study.select_sensors},
-      {"objective", "the number of items covered: an item is one hazard in one scene variant with one seed, "
-                    "covered when a chosen sensor detected it"},
-      {"why_greedy", "coverage is monotone and submodular, so the greedy set is within 1 - 1/e of the best set of "
-                     "its size (Nemhauser, Wolsey and Fisher 1978)"},
+      {"objective", "the items covered, then the lead: an item is one hazard in one scene variant with one seed; a "
+                    "set is worth the sum over items of its best weight 1 + max(lead_m, 0) / lead_scale_m among the "
+                    "sensors that detected the item (0 if none did); the lead terms together weigh less than one item"},
+      {"why_greedy", "the objective is a weighted coverage function with non-negative weights, monotone and "
+                     "submodular, so the greedy set is within 1 - 1/e of the best set of its size (Nemhauser, "
+                     "Wolsey and Fisher 1978)"},
+      {"types", study.select_types.empty() ? nlohmann::json("every type") : nlohmann::json(study.select_types)},
       {"items", coverage.items},
+      {"lead_scale_m", coverage.lead_scale_m},
+      {"value", SelectionValue(coverage, std::vector<std::size_t>(
+                                             order.begin(), order.begin() + std::min<std::size_t>(
+                                                                                order.size(), study.select_sensors)))},
       {"chosen", chosen},
       {"pareto_front", front}};
   WriteFileAtomically((out / "selection.json").string(), selection.dump(2) + "\n");

@@ -1,5 +1,6 @@
 #include "study/study_config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,15 +17,44 @@ namespace proxsim {
 
 namespace {
 
-// a list of numbers, or one number standing for a list of one
+// {from, to, step}: from, from + step, ... up to `to` included (step default 1)
+std::vector<double> NumberRange(YamlReader& reader, const Field& field) {
+  std::vector<double> values;
+  const auto range = reader.Map(field, {"from", "to", "step"}, "a range {from, to, step}");
+  if (!range) return values;
+  const auto from = reader.Number((*range)["from"]);
+  const auto to = reader.Number((*range)["to"]);
+  const auto step = (*range)["step"] ? reader.Number((*range)["step"]) : std::optional<double>(1.0);
+  if (!(*range)["from"] || !(*range)["to"]) reader.Fail(field, "expected both from and to");
+  if (!from || !to || !step) return values;
+  if (*step <= 0) {
+    reader.Fail((*range)["step"], "expected a step > 0");
+    return values;
+  }
+  if (*from > *to) {
+    reader.Fail(field, "empty range: from " + std::to_string(*from) + " is beyond to " + std::to_string(*to));
+    return values;
+  }
+  // by multiplication, not accumulation: the last value lands on `to` when the step divides the span
+  const auto count = static_cast<std::size_t>(std::floor((*to - *from) / *step + 1e-9)) + 1;
+  if (count > 100000) {
+    reader.Fail(field, "a range of " + std::to_string(count) + " values: expected at most 100000");
+    return values;
+  }
+  for (std::size_t i = 0; i < count; ++i) values.push_back(*from + static_cast<double>(i) * *step);
+  return values;
+}
+
+// a list of numbers, a range, or one number standing for a list of one
 std::vector<double> NumberAxis(YamlReader& reader, const Field& field, std::vector<double> otherwise) {
   if (!field) return otherwise;
   if (field.node.IsScalar()) {
     const auto value = reader.Number(field);
     return value ? std::vector<double>{*value} : std::vector<double>{};
   }
+  if (field.node.IsMap()) return NumberRange(reader, field);
   std::vector<double> values;
-  const auto items = reader.List(field, "a number or a list of numbers");
+  const auto items = reader.List(field, "a number, a list of numbers or a range {from, to, step}");
   if (!items) return values;
   if (items->empty()) reader.Fail(field, "expected at least one value, got an empty list");
   for (const Field& item : *items) {
@@ -67,6 +97,7 @@ std::optional<SensorSpec> SpecOf(const std::string& type) {
 Candidate MakeCandidate(const SensorSpec& spec, const std::string& type, const std::string& link, double along_m,
                         double forward_m, double pitch_deg, double yaw_deg) {
   Candidate c;
+  c.type = type;
   c.id = type + "@" + link + ":z" + Format("%+.3g", along_m) + ":x" + Format("%.3g", forward_m) + ":p" +
          Format("%.3g", pitch_deg) + ":y" + Format("%.3g", yaw_deg);
   c.sensor.name = c.id;
@@ -85,7 +116,10 @@ void ReadCandidates(YamlReader& reader, const Field& field, StudyConfig& study) 
   const auto map = reader.Map(field, {"axes", "list"});
   if (!map) return;
   if (!(*map)["axes"] && !(*map)["list"]) reader.Fail(field, "expected axes, a list, or both: no candidate to study");
-  if (const auto axes = reader.Map((*map)["axes"], {"type", "link", "along_m", "forward_m", "pitch_deg", "yaw_deg"})) {
+  const auto axes = (*map)["axes"] ? reader.Map((*map)["axes"], {"type", "link", "along_m", "forward_m", "pitch_deg",
+                                                                  "yaw_deg"})
+                                    : std::nullopt;
+  if (axes) {
     const auto types = TextAxis(reader, (*axes)["type"], "a sensor type or part, or a list of them");
     const auto links = TextAxis(reader, (*axes)["link"], "a robot link, or a list of them");
     const auto along = NumberAxis(reader, (*axes)["along_m"], {0.0});
@@ -273,10 +307,18 @@ StudyConfig LoadStudyFile(const std::string& path) {
   } else {
     study.hazards = {"obstacle"};
   }
-  if (const auto select = reader.Map((*top)["select"], {"sensors"})) {
+  if (const auto select = reader.Map((*top)["select"], {"sensors", "types"})) {
     if (const auto k = reader.Count((*select)["sensors"])) {
       if (*k < 1) reader.Fail((*select)["sensors"], "expected at least 1 sensor to select");
       study.select_sensors = static_cast<int>(*k);
+    }
+    if ((*select)["types"]) {
+      study.select_types = TextAxis(reader, (*select)["types"], "the sensor types or parts to choose from");
+      for (const std::string& type : study.select_types) {
+        const bool studied = std::any_of(study.candidates.begin(), study.candidates.end(),
+                                         [&](const Candidate& c) { return c.type == type; });
+        if (!studied) reader.Fail((*select)["types"], "'" + type + "' is not the type of any candidate");
+      }
     }
   }
   if (!reader.HasProblems() && study.candidates.empty()) reader.Fail((*top)["candidates"], "no candidate to study");

@@ -11,7 +11,7 @@
 //       link: [left_tibia, left_thigh]
 //       along_m: [-0.35, -0.20]    # along the link's z (its length), from its frame
 //       forward_m: 0.06            # in front of the link's axis (one value or a list)
-//       pitch_deg: [0, 15, 30]     # down from the link's forward normal
+//       pitch_deg: {from: 0, to: 30, step: 15}   # a range: 0, 15, 30 (any axis of numbers, and seeds)
 //       yaw_deg: [0]
 //     list:                        # and/or mountings one by one
 //       - {type: laser, link: right_tibia, xyz_m: [0.06, 0, -0.3], rpy_deg: [0, 10, 0]}
@@ -21,7 +21,7 @@
 //     - {name: stairs, builtin: stairs}
 //   seeds: [1, 2, 3]
 //   hazards: [obstacle, step, hole]   # object-name prefixes; a variant without one has no such hazard
-//   select: {sensors: 3}
+//   select: {sensors: 3, types: [laser, ultrasonic]}   # types: optional, default every type
 #pragma once
 
 #include <cstdint>
@@ -35,7 +35,8 @@ namespace proxsim {
 
 /// One candidate mounting: a sensor of the base's presets, on a link, at a pose.
 struct Candidate {
-  std::string id;              ///< "laser@left_tibia:z-0.35:p15:y0" (unique, stable)
+  std::string id;              ///< "laser@left_tibia:z-0.35:x0.06:p15:y0" (unique, stable)
+  std::string type;            ///< as the study names it: a sensor type or a part
   SensorConfig sensor;         ///< name = id
   double along_m = 0, forward_m = 0, pitch_deg = 0, yaw_deg = 0;  ///< the axes' values (for the figures)
 };
@@ -53,6 +54,7 @@ struct StudyConfig {
   std::vector<std::uint64_t> seeds;
   std::vector<std::string> hazards;  ///< object-name prefixes
   int select_sensors = 3;            ///< k of the greedy selection
+  std::vector<std::string> select_types;  ///< the types the selection may pick; empty: every type
 };
 
 /// Reads and validates a study; throws InputError listing every problem.

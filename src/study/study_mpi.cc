@@ -1,7 +1,9 @@
 #include "study/study_mpi.h"
 
+#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
+#include <thread>
 
 #ifdef PROXSIM_HAVE_MPI
 #include <mpi.h>
@@ -16,8 +18,11 @@ constexpr int kTagJob = 2;     // rank 0 → worker: a job index, -1 for none
 
 StudyMpi::StudyMpi() {
 #ifdef PROXSIM_HAVE_MPI
+  // launched by mpirun with several ranks, or by a PMI launcher (srun)
   const char* world_size = std::getenv("OMPI_COMM_WORLD_SIZE");
-  if (world_size == nullptr || std::atoi(world_size) < 2) return;
+  const bool by_mpirun = world_size != nullptr && std::atoi(world_size) >= 2;
+  const bool by_pmi = std::getenv("PMIX_RANK") != nullptr || std::getenv("PMI_RANK") != nullptr;
+  if (!by_mpirun && !by_pmi) return;
   int provided = 0;
   // only rank 0's dispatcher thread calls MPI while other threads run
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
@@ -51,8 +56,15 @@ void StudyMpi::ServeWorkers([[maybe_unused]] const std::function<long()>& take,
   int active = size_ - 1;
   std::string buffer;
   while (active > 0) {
+    // poll, sleeping in between: a blocking probe spins on its core, which
+    // this rank's own worker thread needs
     MPI_Status status;
-    MPI_Probe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &status);
+    int arrived = 0;
+    for (;;) {
+      MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &arrived, &status);
+      if (arrived) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
     int length = 0;
     MPI_Get_count(&status, MPI_CHAR, &length);
     buffer.resize(static_cast<std::size_t>(length));

@@ -1,8 +1,9 @@
 // The study's MPI layer (OpenMPI from Debian): rank 0 hands jobs out on
 // request; every other rank asks for one, runs it and sends its result with
 // the next request. MPI is started only when the process was launched by
-// mpirun with more than one rank (OMPI_COMM_WORLD_SIZE); otherwise, and in a
-// build without MPI, this is a single process of rank 0.
+// mpirun with more than one rank (OMPI_COMM_WORLD_SIZE) or by a PMI launcher
+// such as srun (PMIX_RANK, PMI_RANK); otherwise, and in a build without MPI,
+// this is a single process of rank 0.
 #pragma once
 
 #include <functional>

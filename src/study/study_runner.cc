@@ -173,27 +173,33 @@ class Journal {
   int fd_ = -1;
 };
 
-// ----- the progress line
+// ----- the progress line: rewritten in place on a terminal; under mpirun,
+// Slurm or a pipe, one line every 10 s and at the end (a log stays readable)
 
 class Progress {
  public:
   Progress(bool enabled, std::size_t total, std::size_t already, std::size_t candidates)
-      : enabled_(enabled), total_(total), start_done_(already), candidates_(candidates), start_(Clock::now()) {}
+      : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0), total_(total), start_done_(already),
+        candidates_(candidates), start_(Clock::now()), last_line_(start_) {}
   void Update(std::size_t done) {
     if (!enabled_) return;
     std::lock_guard lock(mutex_);
-    const double elapsed_s = std::chrono::duration<double>(Clock::now() - start_).count();
+    const Clock::time_point now = Clock::now();
+    const bool last = done == total_;
+    if (!tty_ && !last && now - last_line_ < std::chrono::seconds(10)) return;
+    last_line_ = now;
+    const double elapsed_s = std::chrono::duration<double>(now - start_).count();
     const double rate = elapsed_s > 0 ? (done - start_done_) / elapsed_s : 0;
     const double eta_s = rate > 0 ? (total_ - done) / rate : 0;
-    std::fprintf(stderr, "\rproxsim study: %zu/%zu runs (%zu jobs of %zu), %.1f runs/s, ETA %.0f s   ",
-                 done * candidates_, total_ * candidates_, done, total_, rate * candidates_, eta_s);
-    if (done == total_) std::fputc('\n', stderr);
+    std::fprintf(stderr, "%sproxsim study: %zu/%zu runs (%zu/%zu jobs), %.1f runs/s, ETA %.0f s%s",
+                 tty_ ? "\r" : "", done * candidates_, total_ * candidates_, done, total_, rate * candidates_, eta_s,
+                 tty_ && !last ? "   " : "\n");
   }
 
  private:
-  bool enabled_;
+  bool enabled_, tty_;
   std::size_t total_, start_done_, candidates_;
-  Clock::time_point start_;
+  Clock::time_point start_, last_line_;
   std::mutex mutex_;
 };
 
@@ -238,6 +244,16 @@ StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, boo
   Journal journal((std::filesystem::path(options.out_dir) / "journal.jsonl").string(), Fingerprint(study),
                   options.resume, jobs);
   Progress progress(options.progress, jobs, journal.done_count(), study.candidates.size());
+  if (options.progress) {
+    std::fprintf(stderr,
+                 "proxsim study: %zu candidates x %zu scenes x %zu seeds = %zu runs in %zu jobs (a job: one scene "
+                 "and seed, every candidate), %d thread%s x %d rank%s%s\n",
+                 study.candidates.size(), study.variants.size(), study.seeds.size(), jobs * study.candidates.size(),
+                 jobs, threads, threads == 1 ? "" : "s", mpi.size(), mpi.size() == 1 ? "" : "s",
+                 journal.done_count() > 0
+                     ? (", " + std::to_string(journal.done_count()) + " jobs already done (resumed)").c_str()
+                     : "");
+  }
 
   // the jobs still to do, handed out one at a time
   std::vector<std::size_t> todo;

@@ -18,8 +18,9 @@ def run_cli(*args):
     return subprocess.run([BINARY, *args], capture_output=True, text=True, timeout=300)
 
 
-def read_tree(root, skip=("timings.json",)):
-    """{relative path: bytes} of every file under root, but the skipped names and the report."""
+def read_tree(root, skip=("timings.json", "manifest.json")):
+    """{relative path: bytes} of every file under root, but the skipped names and the report (the
+    manifest lists the timings and the report's files, whose sizes vary from run to run)."""
     files = {}
     for folder, _, names in os.walk(root):
         for name in names:

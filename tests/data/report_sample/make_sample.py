@@ -24,7 +24,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sample_geometry import cast, quat_from_rpy, quat_to_matrix  # noqa: E402
 
-# sensor presets: min range, max range, max incidence (paper §5 / DESIGN.md)
+# sensor presets: min range, max range, max incidence (paper §5 / docs/sensors.md)
 PRESETS = {"ideal": (0.0, 2.0, 90.0), "laser": (0.0, 2.0, 45.0),
            "ultrasonic": (0.1, 1.0, 15.0), "reflectance": (0.0, 1.0, 90.0)}
 MOUNT_PITCH_DEG = float(os.environ.get("SAMPLE_PITCH", 15))
