@@ -3,11 +3,12 @@
 
   /usr/bin/python3 report/make_report.py OUT --viewer-bundle build/release/viewer/viewer.js
 
-reads OUT/{scene.json, readings.csv or readings/ (--format npy), poses.csv, profile.ply}
+reads OUT/{scene.json, readings.csv or readings/ (--format npy), poses.csv, profile.ply, terrain/}
 and writes OUT/report/:
   curve_<sensor>.png/.svg     distance curve per sensor (paper Figs 8, 10, 12, 14)
   profile_<sensor>.png/.svg   profile per sensor (paper Figs 9, 11, 13, 15)
   paper_figures.png/.svg      the four sensor types side by side
+  terrain.png/.svg            the terrain map, the truth, the error and the hazards (runs with a robot)
   index.html, data.js, viewer.js   the replay viewer (opens from disk)
 Run it with Debian's /usr/bin/python3 (python3-matplotlib, python3-numpy).
 Exit codes: 0 done, 2 bad input (missing files), 3 matplotlib or numpy missing.
@@ -67,6 +68,8 @@ def main(argv=None):
     from proxsim_report.paper_figure import paper_figure
     from proxsim_report.profile_figure import profile_figure
     from proxsim_report.run_data import RunError, load_run
+    from proxsim_report.terrain_data import load_terrain
+    from proxsim_report.terrain_figure import terrain_figure
     from proxsim_report.viewer_page import write_viewer
     from proxsim_report.walk_path import path_of_run
 
@@ -90,6 +93,10 @@ def main(argv=None):
     jobs = []
     if run.sensors:   # the longest job first
         jobs.append((lambda: paper_figure(plt, run, path, has_robot), "paper_figures"))
+    terrain = load_terrain(args.out_dir)
+    if terrain is not None:
+        track = path.xy if has_robot else None
+        jobs.append((lambda: terrain_figure(plt, terrain, track), "terrain"))
     for sensor in run.sensors:
         jobs.append((lambda s=sensor: curve_figure(plt, s), f"curve_{_safe(sensor.name)}"))
         jobs.append((lambda s=sensor: profile_figure(plt, run, path, has_robot, s),
@@ -104,7 +111,7 @@ def main(argv=None):
         for i in range(len(_JOBS)):
             _run_job(i)
     if args.viewer_bundle:
-        write_viewer(run, report_dir, args.viewer_bundle)
+        write_viewer(run, report_dir, args.viewer_bundle, terrain)
     print(f"make_report: {len(run.sensors)} sensors drawn into {report_dir} "
           f"in {time.monotonic() - start:.1f} s"
           + ("" if args.viewer_bundle else " (no viewer: pass --viewer-bundle)"))

@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev librandom123-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libbullet-dev libmujoco-dev
+  liboctomap-dev
   python3-matplotlib python3-numpy
   python3-dev pybind11-dev python3-pytest
   libopenmpi-dev openmpi-bin

@@ -1,7 +1,8 @@
 // The Python package's core, `proxsim._core` (pybind11): the same Simulation
 // as `proxsim run`, stepped from a script. A step returns what the robot
 // knows (the devices' outputs and its own kinematics) as NumPy arrays; the
-// truth is apart, in truth(); commands go through sim.robot. With out=DIR
+// truth is apart, in truth(); commands go through sim.robot; terrain_map()
+// gives the map the robot has built from its readings. With out=DIR
 // the run's files are written exactly as `proxsim run` writes them.
 //
 // Errors: a bad scenario raises proxsim.InputError (a ValueError) whose
@@ -13,6 +14,8 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -24,6 +27,7 @@
 #include "sim/run.h"
 #include "sim/run_recorder.h"
 #include "sim/simulation.h"
+#include "terrain/terrain_map.h"
 
 namespace py = pybind11;
 
@@ -150,6 +154,56 @@ class PySimulation {
   }
 
   py::object Summary() const { return JsonToPython(recorder_->Summary(!sim_->done())); }
+
+  // The terrain map as the robot has built it so far (what a strategy reads):
+  // dense float32 arrays over its tiles, NaN where unknown, and its hazards.
+  py::object TerrainMapDict() const {
+    const TerrainMap* map = sim_->terrain_map();
+    if (map == nullptr) return py::none();
+    const ElevationGrid& grid = map->grid();
+    const CellBox box = grid.Bounds();
+    const py::ssize_t ny = box.ny(), nx = box.nx();
+    py::array_t<float> elevation({ny, nx}), variance({ny, nx}), upper_bound({ny, nx});
+    py::array_t<std::uint32_t> hits({ny, nx});
+    auto e = elevation.mutable_unchecked<2>();
+    auto v = variance.mutable_unchecked<2>();
+    auto u = upper_bound.mutable_unchecked<2>();
+    auto h = hits.mutable_unchecked<2>();
+    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+    for (py::ssize_t i = 0; i < ny; ++i) {
+      for (py::ssize_t j = 0; j < nx; ++j) {
+        const TerrainCell* cell = grid.Find({box.ix_min + static_cast<std::int32_t>(j), box.iy_min + static_cast<std::int32_t>(i)});
+        const bool measured = cell != nullptr && cell->has_elevation();
+        e(i, j) = measured ? cell->elevation_m : kNaN;
+        v(i, j) = measured ? cell->variance_m2 : kNaN;
+        u(i, j) = cell != nullptr && std::isfinite(cell->upper_bound_m) ? cell->upper_bound_m : kNaN;
+        h(i, j) = cell != nullptr ? cell->hits : 0;
+      }
+    }
+    py::list hazards;
+    for (const Hazard& hazard : map->hazards()) {
+      py::dict d;
+      d["class"] = HazardClassName(hazard.hazard_class);
+      d["x_m"] = hazard.centroid_W.x();
+      d["y_m"] = hazard.centroid_W.y();
+      d["size_x_m"] = hazard.max_W.x() - hazard.min_W.x();
+      d["size_y_m"] = hazard.max_W.y() - hazard.min_W.y();
+      d["height_m"] = hazard.height_m;
+      d["first_detection_t_s"] = hazard.first_detection_t_s;
+      d["distance_at_detection_m"] = hazard.distance_at_detection_m;
+      hazards.append(d);
+    }
+    py::dict result;
+    const double r = grid.resolution_m();
+    result["resolution_m"] = r;
+    result["origin_xy_m"] = py::make_tuple(box.ix_min * r, box.iy_min * r);
+    result["elevation"] = elevation;
+    result["variance"] = variance;
+    result["upper_bound"] = upper_bound;
+    result["hits"] = hits;
+    result["hazards"] = hazards;
+    return result;
+  }
 
   void Close() {
     if (closed_) return;
@@ -317,6 +371,9 @@ PYBIND11_MODULE(_core, m) {
       .def("reset", &PySimulation::Reset, py::arg("seed") = py::none(),
            "Start a new episode on the same world (seed: the noise's; default the first one).")
       .def("summary", &PySimulation::Summary, "summary.json's content for the episode so far, as a dict.")
+      .def("terrain_map", &PySimulation::TerrainMapDict,
+           "The terrain map built so far from the delivered readings (what a strategy sees): resolution_m, "
+           "origin_xy_m, elevation, variance, upper_bound (float32 (ny, nx), NaN unknown), hits, hazards; None without one.")
       .def("close", &PySimulation::Close, "With out=DIR: write the run's files. Further steps raise.")
       .def("__enter__", [](py::object self) { return self; })
       .def("__exit__", [](PySimulation& self, py::object, py::object, py::object) { self.Close(); })

@@ -39,3 +39,13 @@ def sensor_color(index):
 
 def sensor_title(sensor):
     return f"{sensor.name} ({TYPE_LABELS.get(sensor.type, sensor.type)})"
+
+# the terrain map's hazard classes (terrain/hazards.h), in the figure and the viewer
+HAZARD_COLORS = {"obstacle": "#d62728", "step_up": "#ff7f0e", "step_down": "#1f77b4", "hole": "#6a3d9a"}
+HAZARD_LABELS = {"obstacle": "obstacle", "step_up": "step up", "step_down": "step down", "hole": "hole"}
+# cells the map knows only through free space (an upper bound, no height)
+FREE_SPACE_COLOR = "#c7b3e8"
+# the path walked, over the terrain panels
+PATH_COLOR = "#333333"
+# matplotlib's viridis at 9 even stops: the viewer colours heights as the figure does
+VIRIDIS_STOPS = ["#440154", "#472d7b", "#3b528b", "#2c728e", "#21918c", "#28ae80", "#5ec962", "#addc30", "#fde725"]

@@ -1,7 +1,8 @@
 """The 3D replay viewer's files in OUT/report/: viewer.js (the prebuilt bundle,
 copied), data.js (`window.PROXSIM_DATA = {...}`: the scene, link poses per
-sample, each sensor's readings as column arrays, the profile points) and
-index.html, which loads both with plain <script> tags so it opens from disk."""
+sample, each sensor's readings as column arrays, the profile points, the
+terrain map's cells and hazards) and index.html, which loads both with plain
+<script> tags so it opens from disk."""
 import html
 import json
 import os
@@ -10,7 +11,9 @@ import shutil
 import numpy as np
 
 from .run_data import STATUSES
-from .style import STATUS_COLORS, STATUS_LABELS, object_color, sensor_color
+from .style import (HAZARD_COLORS, HAZARD_LABELS, STATUS_COLORS, STATUS_LABELS, VIRIDIS_STOPS, object_color,
+                    sensor_color)
+from .terrain_data import height_limits, measured_cells
 
 
 def _col(a, digits=4):
@@ -27,8 +30,49 @@ def _ray_ends(sensor):
     return end
 
 
-def viewer_data(run):
-    """The dict written as window.PROXSIM_DATA."""
+def _number(v, digits=4):
+    """A JSON-ready number: rounded, None for NaN."""
+    return None if not np.isfinite(v) else round(float(v), digits)
+
+
+def _surface_height(terrain, h):
+    """Where to mark a hazard: the map's surface in its extent (its highest
+    measured cell, else its highest free-space bound), 0 when neither is known."""
+    x0, y0 = terrain.origin_xy_m
+    r = terrain.resolution_m
+    ny, nx = terrain.elevation.shape
+    j0 = max(int(np.floor((h["x_m"] - h["size_x_m"] / 2 - x0) / r + 1e-6)), 0)
+    j1 = min(int(np.ceil((h["x_m"] + h["size_x_m"] / 2 - x0) / r - 1e-6)), nx)
+    i0 = max(int(np.floor((h["y_m"] - h["size_y_m"] / 2 - y0) / r + 1e-6)), 0)
+    i1 = min(int(np.ceil((h["y_m"] + h["size_y_m"] / 2 - y0) / r - 1e-6)), ny)
+    for layer in (terrain.elevation, terrain.upper_bound):
+        block = layer[i0:i1, j0:j1]
+        if np.isfinite(block).any():
+            return float(np.nanmax(block))
+    return 0.0
+
+
+def terrain_viewer_data(terrain):
+    """The map's layer for the viewer: the measured cells in the order they
+    first held a height (each drawn with its final height from then on), the
+    colour scale, and the hazards with the time each was found."""
+    if terrain is None:
+        return None
+    x, y, z, t = measured_cells(terrain)
+    z_lo, z_hi = height_limits(terrain)
+    hazards = [{"class": h["class"], "label": HAZARD_LABELS.get(h["class"], h["class"]),
+                "color": HAZARD_COLORS.get(h["class"], "#000000"),
+                "x": round(h["x_m"], 4), "y": round(h["y_m"], 4),
+                "sizeX": round(h["size_x_m"], 4), "sizeY": round(h["size_y_m"], 4),
+                "height": round(h["height_m"], 4), "z": round(_surface_height(terrain, h), 4),
+                "t": _number(h["first_detection_t_s"]), "distance": _number(h["distance_at_detection_m"])}
+               for h in sorted(terrain.hazards, key=lambda h: h["first_detection_t_s"])]
+    return {"resolution": terrain.resolution_m, "x": _col(x), "y": _col(y), "z": _col(z), "t": _col(t),
+            "zRange": [round(z_lo, 4), round(z_hi, 4)], "colorStops": VIRIDIS_STOPS, "hazards": hazards}
+
+
+def viewer_data(run, terrain=None):
+    """The dict written as window.PROXSIM_DATA; terrain: the run's map (terrain_data.load_terrain) or None."""
     code = {s: i for i, s in enumerate(STATUSES)}
     sensors = []
     for s in run.sensors:
@@ -60,6 +104,7 @@ def viewer_data(run):
         "sensors": sensors,
         "profile": profile,
         "events": [{"t": e["t_s"], "event": e["event"], "detail": e.get("detail", "")} for e in (run.events or [])],
+        "terrain": terrain_viewer_data(terrain),
     }
 
 
@@ -80,12 +125,12 @@ INDEX_HTML = """<!DOCTYPE html>
 """
 
 
-def write_viewer(run, report_dir, bundle_path):
+def write_viewer(run, report_dir, bundle_path, terrain=None):
     """Copies the bundle and writes data.js and index.html into report_dir."""
     shutil.copyfile(bundle_path, os.path.join(report_dir, "viewer.js"))
     with open(os.path.join(report_dir, "data.js"), "w") as f:
         f.write("window.PROXSIM_DATA = ")
-        json.dump(viewer_data(run), f, separators=(",", ":"), allow_nan=False)
+        json.dump(viewer_data(run, terrain), f, separators=(",", ":"), allow_nan=False)
         f.write(";\n")
     title = html.escape(os.path.basename(os.path.abspath(run.out_dir)))
     with open(os.path.join(report_dir, "index.html"), "w") as f:

@@ -20,9 +20,10 @@
 
 #include "bench/bench_scene.h"
 #include "bench/closed_loop_bench.h"
+#include "bench/map_bench.h"
+#include "bench/robot_bench.h"
 #include "bench/study_bench.h"
 #include "bench/terrain_bench.h"
-#include "bench/robot_bench.h"
 #include "bench/peers.h"
 #include "core/parallel.h"
 #include "sensors/noise.h"
@@ -387,13 +388,14 @@ json RunBench(const BenchOptions& options) {
   result["thread_scaling_1m"] = s["1m"]["thread_scaling"];
   }
   if (options.robots) result["robots"] = RobotsSection(options.quick);
+  if (options.terrain) result["terrain"] = TerrainSection(options.quick);
   if (options.study) {
     const auto study_tmp =
         std::filesystem::temp_directory_path() / ("proxsim-bench-study-" + std::to_string(::getpid()));
     result["study"] = StudySection(options.quick, study_tmp.string());
     std::filesystem::remove_all(study_tmp);
   }
-  if (options.terrain) result["terrain"] = TerrainSection(options.quick);
+  if (options.map) result["terrain_map"] = MapSection(options.quick);
   if (!options.end_to_end) {
     result["bench_wall_s"] = Since(bench_start);
     return result;
@@ -600,8 +602,9 @@ std::string BenchReport(const json& r) {
   out << line;
   if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
   if (r.contains("robots")) out << RobotsReport(r.at("robots"));
-  if (r.contains("study")) out << StudyReport(r.at("study"));
   if (r.contains("terrain")) out << TerrainReport(r.at("terrain"));
+  if (r.contains("terrain_map")) out << MapReport(r.at("terrain_map"));
+  if (r.contains("study")) out << StudyReport(r.at("study"));
   return out.str();
 }
 

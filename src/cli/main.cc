@@ -208,8 +208,9 @@ int main(int argc, char** argv) {
   std::string bench_only = "all";
   bench->add_option("--only", bench_only,
                     "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped), "
-                    "study (placement studies, MPI) or terrain (planning footsteps on the stairs course)")
-      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain"}))
+                    "study (placement studies, MPI), terrain (planning footsteps on the stairs course) or map "
+                    "(the terrain map's cost per sample)")
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain", "map"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -259,7 +260,8 @@ int main(int argc, char** argv) {
            .end_to_end = bench_only == "all" || bench_only == "e2e",
            .robots = bench_only == "all" || bench_only == "robots",
            .study = bench_only == "all" || bench_only == "study",
-           .terrain = bench_only == "all" || bench_only == "terrain"});
+           .terrain = bench_only == "all" || bench_only == "terrain",
+           .map = bench_only == "all" || bench_only == "map"});
       const bool whole = bench_only == "all";
       std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
                  stdout);

@@ -2,7 +2,7 @@
 // document → Scenario, with every problem collected before anything runs.
 // This file reads the top level (schema version, seed, duration, rate), hands
 // each section to its reader (scenario_scene.cc, scenario_robot.cc,
-// scenario_sensors.cc) and checks the run as a whole; any problem anywhere
+// scenario_sensors.cc, scenario_map.cc) and checks the run as a whole; any problem anywhere
 // ends in one InputError listing them all, each as
 // "FILE:LINE: KEY.PATH: expected …, got …".
 //
@@ -80,8 +80,8 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   Scenario scenario;
   scenario.source = source;
   const auto top = reader.Map(reader.Root(document),
-                              {"proxsim", "seed", "duration_s", "rate_hz", "scene", "robot", "sensors"},
-                              "a map of scenario keys (proxsim, seed, duration_s, rate_hz, scene, robot, sensors)");
+                              {"proxsim", "seed", "duration_s", "rate_hz", "scene", "robot", "sensors", "map"},
+                              "a map of scenario keys (proxsim, seed, duration_s, rate_hz, scene, robot, sensors, map)");
   if (!top) return scenario;
 
   // proxsim: the schema version, required
@@ -106,6 +106,7 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   ReadScene(reader, (*top)["scene"], base_dir, scenario);
   if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir);
   scenario.sensors = ReadSensors(reader, (*top)["sensors"], scenario.robot.has_value());
+  scenario.map = ReadTerrainMap(reader, (*top)["map"], scenario.sensors, scenario.robot.has_value());
 
   // the run as a whole (only with a valid clock, else the estimate means nothing)
   if (duration_s.has_value() == top->Has("duration_s") && rate_hz.has_value() == top->Has("rate_hz")) {

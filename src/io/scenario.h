@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "sensors/sensor_spec.h"
 #include "strategy/strategy_config.h"
+#include "terrain/terrain_config.h"
 
 namespace proxsim {
 
@@ -81,6 +82,7 @@ struct Scenario {
   Scene scene;  ///< the built-in scene's objects followed by the file's own, meshes loaded
   std::optional<RobotConfig> robot;
   std::vector<SensorConfig> sensors;
+  TerrainMapConfig map;  ///< `map`: the terrain map a robot builds (defaults without the section)
 
   /// Number of samples in the run: t_k = k / rate_hz for k in [0, count).
   std::int64_t SampleCount() const;

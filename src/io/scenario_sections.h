@@ -33,4 +33,10 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
 /// without a robot, every link must be "world".
 std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bool has_robot);
 
+/// `map: {enabled, resolution_m, max_height_m, obstacle_min_m, drop_min_m,
+/// step_max_m, step_min_size_m, sensors}`: the terrain map's parameters;
+/// sensor names checked against `sensors`; a map needs a robot.
+TerrainMapConfig ReadTerrainMap(YamlReader& reader, const Field& field, const std::vector<SensorConfig>& sensors,
+                                bool has_robot);
+
 }  // namespace proxsim

@@ -13,6 +13,8 @@
 #include "io/scene_json.h"
 #include "sim/run_statistics.h"
 #include "sim/run_summary.h"
+#include "terrain/octomap_recorder.h"
+#include "terrain/terrain_files.h"
 
 namespace proxsim {
 
@@ -63,6 +65,7 @@ struct RunRecorder::Writers {
   std::optional<NpyReadingsWriter> readings_npy;
   std::optional<ProfilePlyWriter> profile;
   std::optional<PosesCsvWriter> poses;
+  std::optional<OctomapRecorder> octomap;
   std::optional<RunStatistics> statistics;
 };
 
@@ -84,6 +87,7 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
   }
   writers_->profile.emplace((out / "profile.ply").string());
   if (sim.robot()) writers_->poses.emplace((out / "poses.csv").string(), sim.robot()->model());
+  if (sim.terrain_map()) writers_->octomap.emplace(sim.terrain_map()->config().resolution_m);
 }
 
 RunRecorder::~RunRecorder() = default;
@@ -102,9 +106,18 @@ void RunRecorder::Add(const SampleFrame& frame) {
   if (writers_->readings_npy) writers_->readings_npy->Append(frame); else writers_->readings_csv->Append(frame);
   writers_->profile->Append(frame);
   if (writers_->poses) writers_->poses->Append(frame.t_s, sim_.robot()->X_WL());
+  if (writers_->octomap) {
+    for (const RayEvidence& evidence : sim_.terrain_map()->last_evidence()) writers_->octomap->Add(evidence);
+  }
 }
 
 nlohmann::json RunRecorder::Summary(bool interrupted) const {
+  // the map scored as it stands, no files written
+  const TerrainMap* map = sim_.terrain_map();
+  return SummaryWith(interrupted, map ? RecordTerrain(*map, sim_.world().caster(), "", nullptr) : nlohmann::json(nullptr));
+}
+
+nlohmann::json RunRecorder::SummaryWith(bool interrupted, nlohmann::json terrain) const {
   const bool npy = format_ == ReadingsFormat::kNpy;
   const Scenario& scenario = sim_.scenario();
   std::vector<std::string> sensor_names;
@@ -128,12 +141,20 @@ nlohmann::json RunRecorder::Summary(bool interrupted) const {
     summary["robot"] = RobotOutcomeJson(sim_);
     summary["outputs"].push_back("poses.csv");
   }
+  summary["terrain"] = std::move(terrain);
+  if (sim_.terrain_map()) summary["outputs"].push_back("terrain/");
   return summary;
 }
 
 nlohmann::json RunRecorder::Finish(bool interrupted) {
-  const nlohmann::json summary = Summary(interrupted);
-  if (out_dir_.empty()) return summary;
+  if (out_dir_.empty()) return Summary(interrupted);
+  // terrain/ and its score first: the summary reports it
+  const TerrainMap* map = sim_.terrain_map();
+  const std::filesystem::path terrain_dir = std::filesystem::path(out_dir_) / "terrain";
+  nlohmann::json terrain = map ? RecordTerrain(*map, sim_.world().caster(), terrain_dir.string(),
+                                               writers_->octomap ? &*writers_->octomap : nullptr)
+                               : nlohmann::json(nullptr);
+  const nlohmann::json summary = SummaryWith(interrupted, std::move(terrain));
   if (writers_->readings_npy) writers_->readings_npy->Commit(); else writers_->readings_csv->Commit();
   writers_->profile->Commit();
   if (writers_->poses) writers_->poses->Commit();

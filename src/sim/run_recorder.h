@@ -1,5 +1,6 @@
 // A run's files, written while a Simulation is stepped: readings (CSV or
-// npy), profile.ply, poses.csv, then scene.json and summary.json at the end.
+// npy), profile.ply, poses.csv, the terrain map's rays into the OctoMap tree,
+// then terrain/ (terrain/terrain_files.h), scene.json and summary.json at the end.
 // Used by `proxsim run` and by the Python package's Simulation(out=DIR), so
 // that both write the same files for the same scenario and seed. Each file
 // appears under its final name only when it is complete.
@@ -34,7 +35,7 @@ class RunRecorder {
   void Add(const SampleFrame& frame);
 
   /// summary.json's content for the samples added so far; `interrupted`: the
-  /// episode ended before its last sample.
+  /// episode ended before its last sample. Its `terrain` scores the map as it is.
   nlohmann::json Summary(bool interrupted) const;
 
   /// Commits every file, writes scene.json and summary.json and returns the summary.
@@ -44,6 +45,7 @@ class RunRecorder {
 
  private:
   struct Writers;
+  nlohmann::json SummaryWith(bool interrupted, nlohmann::json terrain) const;
   const Simulation& sim_;
   std::string out_dir_;
   ReadingsFormat format_;

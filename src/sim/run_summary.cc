@@ -67,13 +67,22 @@ nlohmann::json InputsJson(const Scenario& scenario) {
              {"strategy", r.strategy ? StrategyJson(*r.strategy) : nlohmann::json(nullptr)},
              {"trajectory", NullUnless(!r.trajectory_file.empty(), r.trajectory_file)}};
   }
+  nlohmann::json map = nullptr;
+  if (scenario.robot) {
+    const TerrainMapConfig& m = scenario.map;
+    map = {{"enabled", m.enabled},           {"resolution_m", m.resolution_m},   {"max_height_m", m.max_height_m},
+           {"obstacle_min_m", m.obstacle_min_m}, {"drop_min_m", m.drop_min_m},     {"step_max_m", m.step_max_m},
+           {"step_min_size_m", m.step_min_size_m},
+           {"sensors", m.sensors_given ? nlohmann::json(m.sensors) : nlohmann::json("all but reflectance")}};
+  }
   return {{"source", scenario.source},
           {"seed", scenario.seed},
           {"robot", robot},
           {"duration_s", scenario.duration_s},
           {"rate_hz", scenario.rate_hz},
           {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}}},
-          {"sensors", sensors}};
+          {"sensors", sensors},
+          {"map", map}};
 }
 
 nlohmann::json RobotOutcomeJson(const Simulation& sim) {

@@ -1,5 +1,6 @@
 #include "sim/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -100,6 +101,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     strategy_ = std::move(strategy);
     feet_ = locomotion_->Feet();
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
+    if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
     if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
       goal_m_ = scenario_.robot->waypoints_m.back();
       // half the stride walked (the legs may set it rather than the scenario)
@@ -111,6 +113,20 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
   delivered_.sensors.resize(scenario_.sensors.size());
   outputs_.resize(scenario_.sensors.size());
   if (strategy_) strategy_->Reset(MakeSetup());
+}
+
+std::unique_ptr<TerrainMap> Simulation::MakeTerrainMap() const {
+  // the sensors listed, or every one whose distance means one (not the reflectance sensors')
+  const TerrainMapConfig& config = scenario_.map;
+  std::vector<SensorSpec> specs;
+  std::vector<bool> feeds_map;
+  for (const SensorConfig& sensor : scenario_.sensors) {
+    specs.push_back(sensor.spec);
+    feeds_map.push_back(config.sensors_given
+                            ? std::find(config.sensors.begin(), config.sensors.end(), sensor.name) != config.sensors.end()
+                            : sensor.spec.type != SensorType::kReflectance);
+  }
+  return std::make_unique<TerrainMap>(config, std::move(specs), std::move(feeds_map));
 }
 
 StrategySetup Simulation::MakeSetup() const {
@@ -137,6 +153,7 @@ void Simulation::Reset(std::uint64_t seed) {
     locomotion_->Reset();
     world_->robot()->ForgetClearanceBounds();
   }
+  if (terrain_map_) terrain_map_->Reset();
   if (strategy_) strategy_->Reset(MakeSetup());
 }
 
@@ -167,6 +184,8 @@ const SampleFrame& Simulation::Step() {
   if (delivery_->active()) delivery_->Deliver(frame_, delivered_);
   if (locomotion_) KnowRobot(state_, *robot, feet_, half_width_m_, knowledge_);
   FillObservation();
+  // the map learns from what was delivered, before the strategy reads it
+  if (terrain_map_) terrain_map_->Update(observation_);
   if (locomotion_) UpdateRobot(clearance_m);
   return frame_;
 }
@@ -196,7 +215,8 @@ void Simulation::FillObservation() {
   observation_ = Observation{.t_s = frame_.t_s,
                              .sample = frame_.sample,
                              .sensors = outputs_,
-                             .robot = locomotion_ ? &knowledge_ : nullptr};
+                             .robot = locomotion_ ? &knowledge_ : nullptr,
+                             .map = terrain_map_.get()};
 }
 
 void Simulation::UpdateRobot(double clearance_m) {

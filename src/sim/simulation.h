@@ -6,7 +6,7 @@
 //
 // Every sample t_k = k / rate_hz:
 //   locomotion(t) ─► robot FK ─► sensors read (SensorReader) ─► SampleFrame (with truth)
-//   delivered readings (latency) ─► Observation (no truth) ─► strategy ─► RobotCommands
+//   delivered readings (latency) ─► Observation (no truth) ─► terrain map ─► strategy ─► RobotCommands
 // Commands (from the strategy, or from a script through commands()) take
 // effect from the next sample on.
 //
@@ -27,6 +27,7 @@
 #include "sim/sensor_reader.h"
 #include "sim/world.h"
 #include "strategy/strategy.h"
+#include "terrain/terrain_map.h"
 
 namespace proxsim {
 
@@ -64,6 +65,10 @@ class Simulation {
 
   /// What the robot knew at the last sample: the strategy's input.
   const Observation& observation() const { return observation_; }
+
+  /// The terrain map built from the delivered readings (what Observation::map
+  /// points to); null without a robot or with `map: {enabled: false}`.
+  const TerrainMap* terrain_map() const { return terrain_map_.get(); }
 
   /// The robot's command interface (the strategy's, shared with scripts); null without a robot.
   RobotCommands* commands();
@@ -107,6 +112,7 @@ class Simulation {
   void UpdateRobot(double clearance_m);
   void FillObservation();
   StrategySetup MakeSetup() const;
+  std::unique_ptr<TerrainMap> MakeTerrainMap() const;
 
   Scenario scenario_;
   std::int64_t sample_count_ = 0;
@@ -119,6 +125,7 @@ class Simulation {
   std::unique_ptr<Strategy> strategy_;
   std::unique_ptr<Commands> commands_;
   std::unique_ptr<Events> event_log_;
+  std::unique_ptr<TerrainMap> terrain_map_;
   std::vector<SensorInfo> sensor_info_;
   std::vector<FootFrame> feet_;
   double half_width_m_ = 0;

@@ -25,6 +25,8 @@
 
 namespace proxsim {
 
+class TerrainMap;  // terrain/terrain_map.h: built from the readings only
+
 /// What one sensor device delivered at a sample: its outputs, and where the
 /// robot's kinematics put the sensor when it measured.
 struct SensorOutput {
@@ -83,6 +85,9 @@ struct Observation {
   std::int64_t sample = 0;
   std::span<const SensorOutput> sensors;  ///< one per sensor, in scenario order
   const RobotKnowledge* robot = nullptr;  ///< null when the scenario has no robot
+  /// The terrain map built so far from the delivered readings (this sample's
+  /// included); null without a robot or when the scenario turns it off.
+  const TerrainMap* map = nullptr;
 };
 
 /// What a strategy knows before the first sample of an episode.

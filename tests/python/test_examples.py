@@ -27,7 +27,7 @@ def test_python_stop_rule_stops_when_the_builtin_rule_does():
     assert python["distance_walked_m"] == builtin["distance_walked_m"]
 
 
-@pytest.mark.parametrize("script", ["stop_rule.py", "circumvent.py"])
+@pytest.mark.parametrize("script", ["stop_rule.py", "circumvent.py", "map_hazard_stop.py"])
 def test_example_scripts_run(script, tmp_path):
     done = subprocess.run([sys.executable, os.path.join(EXAMPLES, script), "--out", str(tmp_path / "out")],
                           capture_output=True, text=True, timeout=300, env=os.environ.copy())
@@ -35,3 +35,5 @@ def test_example_scripts_run(script, tmp_path):
     assert (tmp_path / "out" / "summary.json").exists()
     if script == "circumvent.py":
         assert "reached the goal: True" in done.stdout
+    if script == "map_hazard_stop.py":  # the map's obstacle stops the robot
+        assert "the map holds an obstacle" in done.stdout and "stopped: True" in done.stdout

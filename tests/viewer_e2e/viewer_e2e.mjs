@@ -2,14 +2,16 @@
 // driven by playwright-core): opens OUT/report/index.html from disk, fails on
 // any console or page error, checks that the 3D canvas is drawn, that moving
 // the time (slider and API) moves the robot (or, without a robot, changes the
-// rays or the profile), that a sensor toggle hides its ray, that the curves are
-// drawn, and saves OUT/report/screenshot.png. With --climb-m M (a walk over
-// stairs), the robot shown climbs: its pelvis rises by at least M over the
-// replay. --shot-at-s T takes the screenshot at time T (default: 60 % of the
-// replay).
+// rays or the profile), that a sensor toggle hides its ray, that the terrain
+// map (runs with a robot) grows cell by cell as the run's files say and marks
+// its hazards once found, that the curves are drawn, and saves
+// OUT/report/screenshot.png. With --climb-m M (a walk over stairs), the robot
+// shown climbs: its pelvis rises by at least M over the replay. The screenshot
+// is taken at time --shot-at-s T, or else at the fraction --screenshot-at F of
+// the replay (default 0.6).
 //
 //   node tests/viewer_e2e/viewer_e2e.mjs OUT [--viewer-dir viewer] [--screenshot PATH]
-//                                        [--climb-m M] [--shot-at-s T]
+//                                        [--climb-m M] [--shot-at-s T | --screenshot-at F]
 //
 // Exit 0 pass, 1 fail, 77 skip (only when /usr/bin/chromium is missing).
 import fs from 'node:fs';
@@ -35,6 +37,7 @@ if (!outDir || outDir.startsWith('--')) {
 const reportDir = path.resolve(outDir, 'report');
 const indexHtml = path.join(reportDir, 'index.html');
 const screenshotPath = path.resolve(option('--screenshot', path.join(reportDir, 'screenshot.png')));
+const screenshotAt = Number(option('--screenshot-at', '0.6'));
 if (!fs.existsSync(CHROMIUM)) {
   console.log(`viewer_e2e: SKIP: ${CHROMIUM} is missing (scripts/install-deps.sh browser installs it)`);
   process.exit(SKIP);
@@ -130,6 +133,41 @@ try {
     `every strategy event is marked and listed by the end (${events.atEnd}/${events.rows}/${events.total})`);
   check(events.total === 0 || events.atStart < events.total, `events appear with time (${events.atStart} at the start)`);
 
+  // the terrain map: every run with a robot has one; its cells appear when the
+  // files say they were first measured, all of them by the end; its hazards
+  // are marked (3D and side panel) once found; its toggle hides the layer
+  const map = await page.evaluate(([a, b]) => {
+    const v = window.proxsimViewer;
+    const d = window.PROXSIM_DATA.terrain;
+    if (!d) return null;
+    const at = (t) => {
+      v.setTime(t);
+      return { t: v.currentTime(), cells: v.mapCellsShown(), hazards: v.hazardsShown(),
+        rows: document.querySelectorAll('.proxsim-hazard-found').length,
+        cellsDue: d.t.filter((x) => x <= v.currentTime()).length,
+        hazardsDue: d.hazards.filter((h) => h.t === null || h.t <= v.currentTime()).length };
+    };
+    const states = [at(a), at(a + 0.25 * (b - a)), at(a + 0.5 * (b - a)), at(a + 0.75 * (b - a)), at(b)];
+    document.querySelector('.proxsim-terrain-toggle').click();
+    const hidden = v.mapCellsShown() + v.hazardsShown();
+    document.querySelector('.proxsim-terrain-toggle').click();
+    return { total: d.t.length, hazardTotal: d.hazards.length, states, hidden, shownAgain: v.mapCellsShown() };
+  }, [tStart, tEnd]);
+  check((map !== null) === (info.links.length > 0),
+    `a run with a robot has a terrain map layer, a run without none (${map === null ? 'none' : `${map.total} cells`})`);
+  const figure = ['terrain.png', 'terrain.svg'].every((f) => fs.existsSync(path.join(reportDir, f)));
+  check(figure === (map !== null), `the report has terrain.png/.svg exactly when the run has a map (${figure})`);
+  if (map) {
+    const [first, , , , last] = map.states;
+    check(map.total > 0 && last.cells === map.total, `by the end every measured cell is drawn (${last.cells}/${map.total})`);
+    check(first.cells < map.total, `the map grows with time (${map.states.map((s) => s.cells).join(' → ')} cells)`);
+    check(map.states.every((s) => s.cells === s.cellsDue),
+      'at each time the cells drawn are those the files say were measured by then');
+    check(map.states.every((s) => s.hazards === s.hazardsDue && s.rows === s.hazardsDue) && last.hazards === map.hazardTotal,
+      `hazards are marked and listed once found (${map.states.map((s) => s.hazards).join(' → ')} of ${map.hazardTotal})`);
+    check(map.hidden === 0 && map.shownAgain === map.total, 'the terrain toggle hides and shows the map');
+  }
+
   // a sensor toggle hides that sensor's ray (its segment collapses to its origin);
   // clicked from the page: playwright's own click waits for steady frames, slow
   // under software rendering
@@ -180,10 +218,10 @@ try {
   // the 3D canvas is not blank: count the colours of its region in the page's
   // screenshot (which is also the artefact)
   const shotAt = option('--shot-at-s', null);
-  await page.evaluate((t) => {
-    const v = window.proxsimViewer;
-    v.setTime(t === null ? v.timeSpan()[1] * 0.6 : Number(t));
-  }, shotAt);
+  await page.evaluate(([t, f]) => {
+    const [a, b] = window.proxsimViewer.timeSpan();
+    window.proxsimViewer.setTime(t === null ? a + f * (b - a) : Number(t));
+  }, [shotAt, screenshotAt]);
   await page.waitForFunction((f) => window.proxsimViewer.frameCount > f + 2,
     await page.evaluate(() => window.proxsimViewer.frameCount));
   fs.mkdirSync(path.dirname(screenshotPath), { recursive: true });

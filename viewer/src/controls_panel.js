@@ -1,5 +1,6 @@
 // The replay's controls: play/pause, time slider and readout, speed, camera
-// follow, one checkbox per sensor, and the legend of the ray colours (status).
+// follow, one checkbox per sensor, the legend of the ray colours (status), the
+// strategy's events, and the terrain map's toggle, height scale and hazards.
 const SPEEDS = [0.25, 0.5, 1, 2, 4, 8];
 
 function el(tag, attrs = {}, children = []) {
@@ -12,7 +13,7 @@ function el(tag, attrs = {}, children = []) {
 }
 
 export class ControlsPanel {
-  /** handlers: {onPlayToggle(), onSeek(t), onSpeed(x), onSensor(j, on), onFollow(on)} */
+  /** handlers: {onPlayToggle(), onSeek(t), onSpeed(x), onSensor(j, on), onFollow(on), onTerrain(on)} */
   constructor(bar, side, data, span, step, handlers) {
     this.span = span;
     this.playButton = el('button', { class: 'proxsim-play', title: 'play / pause (space)', text: '▶ Play' });
@@ -60,8 +61,37 @@ export class ControlsPanel {
         this.events.push([e.t, row]);
       }
     }
+    this.hazards = [];
+    if (data.terrain) this.addTerrain(side, data.terrain, handlers);
     side.appendChild(el('p', { class: 'proxsim-hint',
-      text: 'Dots: profile points, coloured by object. Drag to orbit, wheel to zoom, right-drag to pan.' }));
+      text: `Dots: profile points, coloured by object.${data.terrain ? ' Squares under them: the map\'s cells.' : ''}`
+        + ' Drag to orbit, wheel to zoom, right-drag to pan.' }));
+  }
+
+  /** The terrain map's rows: its toggle, its height scale, one row per hazard
+   *  (click one to go to the time it was found). */
+  addTerrain(side, terrain, handlers) {
+    side.appendChild(el('h3', { text: 'Terrain map' }));
+    const box = el('input', { type: 'checkbox', class: 'proxsim-terrain-toggle' });
+    box.checked = true;
+    box.addEventListener('change', () => handlers.onTerrain(box.checked));
+    side.appendChild(el('label', { class: 'proxsim-row' }, [box, document.createTextNode(' cells measured, by height')]));
+    const [lo, hi] = terrain.zRange;
+    side.appendChild(el('div', { class: 'proxsim-row' }, [
+      el('small', { text: `${lo.toFixed(2)} m` }),
+      el('span', { class: 'proxsim-scale', style: `background:linear-gradient(to right, ${terrain.colorStops.join(', ')})` }),
+      el('small', { text: `${hi.toFixed(2)} m` })]));
+    for (const h of terrain.hazards) {
+      const found = h.t === null ? '' : ` at ${h.t.toFixed(2)} s`;
+      const ahead = h.distance === null ? '' : `, ${h.distance.toFixed(2)} m ahead`;
+      const row = el('div', { class: 'proxsim-row proxsim-hazard', title: `found${found}${ahead}` }, [
+        el('span', { class: 'proxsim-swatch', style: `background:${h.color}` }),
+        document.createTextNode(` ${h.label} ${h.height >= 0 ? '+' : '−'}${Math.abs(100 * h.height).toFixed(0)} cm${found}`)]);
+      if (h.t !== null) row.addEventListener('click', () => handlers.onSeek(h.t));
+      side.appendChild(row);
+      this.hazards.push([h.t ?? -Infinity, row]);
+    }
+    if (!terrain.hazards.length) side.appendChild(el('div', { class: 'proxsim-row', text: 'no hazard found' }));
   }
 
   /** Reflects the time and play state in the widgets. */
@@ -70,5 +100,6 @@ export class ControlsPanel {
     this.readout.textContent = `t = ${t.toFixed(2)} s / ${this.span[1].toFixed(2)} s`;
     this.playButton.textContent = playing ? '❚❚ Pause' : '▶ Play';
     for (const [te, row] of this.events) row.classList.toggle('proxsim-event-past', te <= t);
+    for (const [th, row] of this.hazards) row.classList.toggle('proxsim-hazard-found', th <= t);
   }
 }

@@ -1,6 +1,6 @@
 // The replay viewer's entry point: reads window.PROXSIM_DATA (written by the
 // report into data.js), builds the page, and replays the run: robot, rays,
-// profile and distance curves all show the same time t. Exposes
+// profile, terrain map and distance curves all show the same time t. Exposes
 // window.proxsimViewer for tests.
 import * as THREE from 'three';
 import uplotCss from 'uplot/dist/uPlot.min.css';
@@ -11,6 +11,7 @@ import { ProfileView } from './profile_view.js';
 import { RaysView } from './rays_view.js';
 import { RobotView } from './robot_view.js';
 import { SceneView } from './scene_view.js';
+import { TerrainView } from './terrain_view.js';
 import { timeSpan, timeStep } from './timeline.js';
 import { WalkView } from './walk_view.js';
 
@@ -70,6 +71,7 @@ function start() {
   const robot = new RobotView(stage.scene, data.scene.robot, data.poses);
   const rays = new RaysView(stage.scene, data.sensors, data.statusColors);
   const profile = new ProfileView(stage.scene, data.profile, data.sensors, data.objectColors);
+  const terrain = new TerrainView(stage.scene, data.terrain);
   const rootLink = robot.rootLink();
   const walk = new WalkView(stage.scene, data.poses, rootLink ? rootLink.name : null, data.events);
   rays.resize(stage.size);
@@ -86,6 +88,7 @@ function start() {
     if (followed && state.follow) stage.translate(followed.position.clone().sub(lastRoot));
     rays.update(state.t, state.visible);
     profile.update(state.t, state.visible);
+    terrain.update(state.t);
     walk.update(state.t);
     curves.update(state.t);
     panel.show(state.t, state.playing);
@@ -108,6 +111,7 @@ function start() {
     onSpeed: (x) => { state.speed = x; },
     onFollow: (on) => { state.follow = on; },
     onSensor: (j, on) => { state.visible[j] = on; curves.setSensorVisible(j, on); state.dirty = true; },
+    onTerrain: (on) => { terrain.setVisible(on); state.dirty = true; },
   });
   robot.update(state.t);
   const [target, distance] = initialView(data, robot, bounds);
@@ -145,6 +149,8 @@ function start() {
     rayEndpoints: () => rays.endpoints(),
     profilePointsShown: () => profile.shownCount(),
     eventsShown: () => walk.eventsShown(),
+    mapCellsShown: () => terrain.cellsShown(),
+    hazardsShown: () => terrain.hazardsShown(),
     play: () => setPlaying(true),
     pause: () => setPlaying(false),
     isPlaying: () => state.playing,

@@ -14,10 +14,16 @@ export function sampleAt(times, t) {
   return lo;
 }
 
-/** Number of entries of sorted `times` that are <= t. */
+/** Number of entries of sorted `times` that are <= t (ties at the first time
+ *  included: several cells or points often share one sample's time). */
 export function countUpTo(times, t) {
-  if (!times.length || t < times[0]) return 0;
-  return sampleAt(times, t) + 1;
+  let lo = 0;
+  let hi = times.length;
+  while (lo < hi) {
+    const mid = (lo + hi) >> 1;
+    if (times[mid] <= t) lo = mid + 1; else hi = mid;
+  }
+  return lo;
 }
 
 /** [start, end] of the run in seconds, over the sensors' and the poses' samples. */

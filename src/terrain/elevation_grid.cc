@@ -1,0 +1,133 @@
+#include "terrain/elevation_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace proxsim {
+
+namespace {
+
+std::uint64_t TileKey(std::int32_t tx, std::int32_t ty) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty);
+}
+
+}  // namespace
+
+static_assert(ElevationGrid::kTileSide == 16, "TileCoord shifts by 4");
+
+void CellBox::Expand(const CellBox& other) {
+  if (other.empty()) return;
+  if (empty()) {
+    *this = other;
+    return;
+  }
+  ix_min = std::min(ix_min, other.ix_min);
+  iy_min = std::min(iy_min, other.iy_min);
+  ix_max = std::max(ix_max, other.ix_max);
+  iy_max = std::max(iy_max, other.iy_max);
+}
+
+bool CellBox::Overlaps(const CellBox& other, int margin) const {
+  if (empty() || other.empty()) return false;
+  return other.ix_min <= ix_max + margin && other.ix_max >= ix_min - margin && other.iy_min <= iy_max + margin &&
+         other.iy_max >= iy_min - margin;
+}
+
+ElevationGrid::ElevationGrid(double resolution_m) : resolution_m_(resolution_m) {}
+
+ElevationGrid::Tile& ElevationGrid::TileOf(CellIndex c, int* cell_in_tile) {
+  *cell_in_tile = CellInTile(c);
+  const std::int32_t tx = TileCoord(c.ix), ty = TileCoord(c.iy);
+  if (last_tile_ != nullptr && last_tile_->tx == tx && last_tile_->ty == ty) return *last_tile_;
+  auto& slot = tiles_[TileKey(tx, ty)];
+  if (!slot) {
+    slot = std::make_unique<Tile>();
+    slot->tx = tx;
+    slot->ty = ty;
+    bounds_.Expand(CellBox{tx * kTileSide, ty * kTileSide, tx * kTileSide + kTileSide - 1, ty * kTileSide + kTileSide - 1});
+  }
+  last_tile_ = slot.get();
+  return *slot;
+}
+
+TerrainCell& ElevationGrid::At(CellIndex c) {
+  int i = 0;
+  return TileOf(c, &i).cells[i];
+}
+
+ElevationGrid::Tile* ElevationGrid::FindTile(CellIndex c) {
+  const auto it = tiles_.find(TileKey(TileCoord(c.ix), TileCoord(c.iy)));
+  return it == tiles_.end() ? nullptr : it->second.get();
+}
+
+const TerrainCell* ElevationGrid::Find(CellIndex c) const {
+  const auto it = tiles_.find(TileKey(TileCoord(c.ix), TileCoord(c.iy)));
+  return it == tiles_.end() ? nullptr : &it->second->cells[CellInTile(c)];
+}
+
+double ElevationGrid::Gate_m(double variance_a_m2, double variance_b_m2) {
+  return 3.0 * std::sqrt(variance_a_m2 + variance_b_m2) + kGateFloor_m;
+}
+
+void ElevationGrid::FusePoint(CellIndex c, double z_m, double variance_m2, double t_s) {
+  int i = 0;
+  Tile& tile = TileOf(c, &i);
+  TerrainCell& cell = tile.cells[i];
+  ++tile.version;
+  cell.last_t_s = static_cast<float>(t_s);
+  if (!cell.has_elevation()) {
+    cell.elevation_m = static_cast<float>(z_m);
+    cell.variance_m2 = static_cast<float>(variance_m2);
+    cell.hits = 1;
+    if (std::isnan(cell.first_t_s)) cell.first_t_s = static_cast<float>(t_s);
+    return;
+  }
+  const double h = cell.elevation_m, v = cell.variance_m2;
+  const double gate_m = Gate_m(v, variance_m2);
+  ++cell.hits;
+  if (z_m > h + gate_m) {
+    // a higher surface in the cell: it is the one a 2.5D map keeps
+    cell.elevation_m = static_cast<float>(z_m);
+    cell.variance_m2 = static_cast<float>(variance_m2);
+  } else if (z_m >= h - gate_m) {
+    // the same surface: the Kalman update of two Gaussian estimates
+    cell.elevation_m = static_cast<float>((h * variance_m2 + z_m * v) / (v + variance_m2));
+    cell.variance_m2 = static_cast<float>(v * variance_m2 / (v + variance_m2));
+  }
+  // below the gate: the lower part of a face or of the cell; the height stays
+}
+
+void ElevationGrid::BoundFromFreeSpace(CellIndex c, double z_m, bool proves_empty, double t_s) {
+  int i = 0;
+  Tile& tile = TileOf(c, &i);
+  TerrainCell& cell = tile.cells[i];
+  const auto z = static_cast<float>(z_m);
+  bool changed = false;
+  if (z < cell.upper_bound_m) {
+    cell.upper_bound_m = z;
+    changed = true;
+  }
+  if (proves_empty && cell.has_elevation() && z_m < cell.elevation_m - Gate_m(cell.variance_m2, 0.0)) {
+    // the ray went through where the height said a surface was
+    cell.elevation_m = cell.variance_m2 = std::numeric_limits<float>::quiet_NaN();
+    cell.hits = 0;
+    changed = true;
+  }
+  if (changed) {
+    ++tile.version;
+    cell.last_t_s = static_cast<float>(t_s);
+  }
+}
+
+std::size_t ElevationGrid::memory_bytes() const {
+  // the tiles, plus the hash map's nodes and buckets
+  return tiles_.size() * (sizeof(Tile) + sizeof(void*) * 4) + tiles_.bucket_count() * sizeof(void*);
+}
+
+void ElevationGrid::Clear() {
+  tiles_.clear();
+  last_tile_ = nullptr;
+  bounds_ = CellBox{};
+}
+
+}  // namespace proxsim

@@ -1,0 +1,137 @@
+// The 2.5D elevation grid: per cell of the world lattice (grid_traversal.h),
+// the fused height of the highest surface below max_height_m, its variance,
+// the upper bound that free space puts on it, how many points were fused and
+// when the cell last changed. Storage is tiles of 16 × 16 cells made when
+// first touched, so the extent grows with the walk and memory grows with the
+// area seen (about the metres walked times the sensors' reach), not with a
+// bounding box.
+//
+// The update rules (after elevation_mapping, Fankhauser et al. 2014, where
+// this departs from it is said):
+//  - a point fuses into the cell by the Kalman rule when it agrees with the
+//    cell's height within a gate (3σ of both, plus 1 cm); a point above the
+//    gate replaces the height (the cell holds a higher surface: a box's top
+//    over its face, an object put down); a point below is the lower part of
+//    a face or of the cell, and does not change the height;
+//  - a segment of a ray known to be empty lowers the upper bound of every
+//    cell it crosses to the lowest height at which it crosses that column;
+//    when it is a detection's ray (the echo proves that nothing was in the
+//    way) and passes below the cell's height beyond the gate, the height was
+//    wrong (an outlier, a moved object) and is forgotten. A ray without an
+//    echo only lowers bounds: its silence may be a grazing or dark surface.
+//
+// Frames: W world.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "terrain/grid_traversal.h"
+
+namespace proxsim {
+
+/// One cell's state. NaN: unknown; upper_bound_m +inf: no bound yet.
+struct TerrainCell {
+  float elevation_m = std::numeric_limits<float>::quiet_NaN();  ///< fused height of the highest surface seen
+  float variance_m2 = std::numeric_limits<float>::quiet_NaN();  ///< of elevation_m
+  float upper_bound_m = std::numeric_limits<float>::infinity();  ///< free space says the surface is below this
+  float first_t_s = std::numeric_limits<float>::quiet_NaN();  ///< when the cell first held a height
+  float last_t_s = std::numeric_limits<float>::quiet_NaN();   ///< when a point or a bound last changed it
+  std::uint32_t hits = 0;  ///< points fused into elevation_m (0 after the height is forgotten)
+
+  bool has_elevation() const { return hits > 0; }
+};
+
+/// Inclusive cell bounds.
+struct CellBox {
+  std::int32_t ix_min = 0, iy_min = 0, ix_max = -1, iy_max = -1;
+  bool empty() const { return ix_max < ix_min || iy_max < iy_min; }
+  std::int32_t nx() const { return empty() ? 0 : ix_max - ix_min + 1; }
+  std::int32_t ny() const { return empty() ? 0 : iy_max - iy_min + 1; }
+  bool Contains(CellIndex c) const { return c.ix >= ix_min && c.ix <= ix_max && c.iy >= iy_min && c.iy <= iy_max; }
+  /// The smallest box holding both.
+  void Expand(const CellBox& other);
+  void Expand(CellIndex c) { Expand(CellBox{c.ix, c.iy, c.ix, c.iy}); }
+  /// Whether the boxes share a cell once this one is grown by `margin` cells.
+  bool Overlaps(const CellBox& other, int margin = 0) const;
+};
+
+class ElevationGrid {
+ public:
+  static constexpr int kTileSide = 16;  ///< cells per tile side
+  static constexpr int kTileCells = kTileSide * kTileSide;
+  /// Points that agree within 3σ plus this fuse; beyond it the higher wins.
+  static constexpr double kGateFloor_m = 0.01;
+
+  struct Tile {
+    std::int32_t tx = 0, ty = 0;  ///< tile index: cells [tx·16, tx·16 + 16) in x
+    std::array<TerrainCell, kTileCells> cells;
+    std::array<std::uint8_t, kTileCells> labels{};  ///< the hazard classifier's per-cell label (hazards.h)
+    std::uint32_t version = 0;  ///< bumped whenever a cell of the tile changes
+    std::uint32_t labelled_version = ~0u;  ///< the version its labels were computed at
+    int labelled_count = 0;                ///< cells whose label is not kNone
+  };
+
+  explicit ElevationGrid(double resolution_m);
+
+  double resolution_m() const { return resolution_m_; }
+  CellIndex IndexOf(double x_m, double y_m) const { return CellOf(x_m, y_m, resolution_m_); }
+  /// The centre of a cell, world x-y.
+  Vec2 CellCentre(CellIndex c) const { return {(c.ix + 0.5) * resolution_m_, (c.iy + 0.5) * resolution_m_}; }
+
+  /// The cell, its tile made if it had none.
+  TerrainCell& At(CellIndex c);
+  /// The cell, or null when its tile was never touched.
+  const TerrainCell* Find(CellIndex c) const;
+
+  /// Fuses a measured height (variance > 0) at time t into the cell (rules above).
+  void FusePoint(CellIndex c, double z_m, double variance_m2, double t_s);
+  /// A ray known empty crossed the cell's column down to z_m: lowers the
+  /// upper bound; with `proves_empty`, a height above z_m beyond the gate is forgotten.
+  void BoundFromFreeSpace(CellIndex c, double z_m, bool proves_empty, double t_s);
+
+  /// Every tile, in no particular order.
+  template <class F>
+  void ForEachTile(F&& f) const {
+    for (const auto& [key, tile] : tiles_) f(*tile);
+  }
+  template <class F>
+  void ForEachTile(F&& f) {
+    for (auto& [key, tile] : tiles_) f(*tile);
+  }
+  /// The tile holding cell c, or null.
+  Tile* FindTile(CellIndex c);
+
+  /// The cells of every tile made so far (empty when none).
+  CellBox Bounds() const { return bounds_; }
+  std::size_t tile_count() const { return tiles_.size(); }
+  /// Bytes held by the tiles and their index.
+  std::size_t memory_bytes() const;
+
+  /// Forgets every cell.
+  void Clear();
+
+  /// The gate within which two heights of variances va, vb agree.
+  static double Gate_m(double variance_a_m2, double variance_b_m2);
+
+ private:
+  Tile& TileOf(CellIndex c, int* cell_in_tile);
+
+  double resolution_m_;
+  std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
+  Tile* last_tile_ = nullptr;  // the tile of the last access: rays walk cell to cell
+  CellBox bounds_;
+};
+
+/// Index of cell c within its tile, and the tile's index.
+inline int CellInTile(CellIndex c) {
+  const int lx = c.ix & (ElevationGrid::kTileSide - 1), ly = c.iy & (ElevationGrid::kTileSide - 1);
+  return ly * ElevationGrid::kTileSide + lx;
+}
+inline std::int32_t TileCoord(std::int32_t i) { return i >> 4; }  // floor(i / 16), also for negative i
+
+}  // namespace proxsim

@@ -1,0 +1,30 @@
+// The terrain map's parameters (`map:` in the scenario file), as a plain
+// struct with defaults and one Validate() that lists every violation. The
+// thresholds are the (a rise of 4 cm is an obstacle, a drop of 5 cm a
+// hole); the step limits are what a small biped can step on, up or down.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace proxsim {
+
+struct TerrainMapConfig {
+  bool enabled = true;            ///< false: no map is built, no terrain/ written
+  double resolution_m = 0.02;     ///< cell side, in [0.005, 1] m
+  double max_height_m = 0.6;      ///< world z; the map (and the truth) keep the highest surface below it
+  double obstacle_min_m = 0.04;   ///< a cell this much above the ground is raised (obstacle or step up), > 0
+  double drop_min_m = 0.05;       ///< a cell this much below the ground is dropped (hole or step down), > 0
+  double step_max_m = 0.20;       ///< the highest step the robot can take up or down, >= obstacle_min_m and drop_min_m
+  double step_min_size_m = 0.25;  ///< a step's top (or lower floor) must be at least this long and wide, > 0
+  /// Sensors whose readings feed the map, by name; empty with sensors_given
+  /// false: every sensor but the reflectance ones (their distance assumes
+  /// normal incidence and a white surface: an oblique floor reads farther).
+  std::vector<std::string> sensors;
+  bool sensors_given = false;     ///< `map.sensors` was in the file (an empty list: no sensor)
+
+  /// Every violated condition, one message each, worded after the scenario key; empty if valid.
+  std::vector<std::string> Validate() const;
+};
+
+}  // namespace proxsim

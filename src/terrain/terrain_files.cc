@@ -1,0 +1,157 @@
+#include "terrain/terrain_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "io/number_format.h"
+#include "terrain/corridor.h"
+#include "terrain/terrain_score.h"
+#include "terrain/truth_field.h"
+
+namespace proxsim {
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+// The truth's hazards are found this far beyond the files' extent.
+constexpr double kTruthMargin_m = 1.0;
+
+// A 2-D .npy array (format 1.0, C order), written row after row.
+class NpyRows {
+ public:
+  NpyRows(const std::string& path, const char* descr, std::int32_t ny, std::int32_t nx) : file_(path) {
+    std::string dict = std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" +
+                       std::to_string(ny) + ", " + std::to_string(nx) + "), }";
+    // magic, version, header length, then the dict padded so that the data starts at a multiple of 64
+    const std::size_t unpadded = 10 + dict.size() + 1;
+    dict.append((64 - unpadded % 64) % 64, ' ');
+    dict += '\n';
+    std::string header = "\x93NUMPY";
+    header += '\x01';
+    header += '\x00';
+    header += static_cast<char>(dict.size() & 0xFF);
+    header += static_cast<char>(dict.size() >> 8);
+    file_.Write(header + dict);
+  }
+  template <class T>
+  void Row(const std::vector<T>& values) {
+    file_.Write(std::string_view(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)));
+  }
+  void Commit() { file_.Commit(); }
+
+ private:
+  AtomicFile file_;
+};
+
+}  // namespace
+
+std::string HazardsCsvText(const std::vector<Hazard>& hazards) {
+  std::vector<const Hazard*> sorted;
+  for (const Hazard& hazard : hazards) sorted.push_back(&hazard);
+  std::sort(sorted.begin(), sorted.end(), [](const Hazard* a, const Hazard* b) {
+    if (a->first_detection_t_s != b->first_detection_t_s) return a->first_detection_t_s < b->first_detection_t_s;
+    if (a->centroid_W.x() != b->centroid_W.x()) return a->centroid_W.x() < b->centroid_W.x();
+    return a->centroid_W.y() < b->centroid_W.y();
+  });
+  std::string text = "class,x_m,y_m,size_x_m,size_y_m,height_m,first_detection_t_s,distance_at_detection_m\n";
+  for (const Hazard* h : sorted) {
+    text += HazardClassName(h->hazard_class);
+    for (double value : {h->centroid_W.x(), h->centroid_W.y(), h->max_W.x() - h->min_W.x(), h->max_W.y() - h->min_W.y(),
+                         h->height_m, h->first_detection_t_s, h->distance_at_detection_m}) {
+      text += ',';
+      AppendNumber(text, value);
+    }
+    text += '\n';
+  }
+  return text;
+}
+
+nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, const std::string& dir,
+                             OctomapRecorder* octomap) {
+  const ElevationGrid& grid = map.grid();
+  const double r = grid.resolution_m();
+  const Corridor corridor(map.track(), map.last_position(), r);
+  TerrainScorer scorer(map, corridor);
+  CellBox extent = grid.Bounds();
+  extent.Expand(corridor.Bounds());
+  const std::int32_t nx = extent.nx(), ny = extent.ny();
+  // the truth is classified over a wider box, so that a hazard the extent
+  // cuts keeps its true size and class (the files hold the extent only)
+  const auto margin = static_cast<std::int32_t>(std::ceil(kTruthMargin_m / r));
+  const CellBox scored = extent.empty() ? extent
+                                        : CellBox{extent.ix_min - margin, extent.iy_min - margin, extent.ix_max + margin,
+                                                  extent.iy_max + margin};
+
+  // the files, when asked for, in a folder renamed into place at the end
+  const std::filesystem::path final_dir(dir), tmp_dir(dir + ".tmp");
+  // one file per array, in kArrayNames' order
+  static constexpr const char* kArrayNames[] = {"elevation.npy", "variance.npy", "upper_bound.npy", "truth.npy",
+                                                "hits.npy", "first_update_t_s.npy", "last_update_t_s.npy"};
+  enum { kElevation, kVariance, kUpperBound, kTruth, kHits, kFirstT, kLastT };
+  std::vector<std::unique_ptr<NpyRows>> arrays;
+  if (!dir.empty()) {
+    std::filesystem::remove_all(tmp_dir);
+    std::filesystem::create_directories(tmp_dir);
+    for (const char* name : kArrayNames) {
+      arrays.push_back(std::make_unique<NpyRows>((tmp_dir / name).string(), name == std::string("hits.npy") ? "<u4" : "<f4", ny, nx));
+    }
+  }
+
+  // row by row: the map's cells, the truth under them, scored and written
+  const auto row_n = static_cast<std::size_t>(nx);
+  const auto scored_n = static_cast<std::size_t>(scored.nx());
+  const auto offset = static_cast<std::size_t>(extent.ix_min - scored.ix_min);
+  std::vector<const TerrainCell*> cells(scored_n);
+  std::vector<float> elevation(row_n), variance(row_n), upper_bound(row_n), first_t(row_n), last_t(row_n), truth(row_n);
+  std::vector<std::uint32_t> hits(row_n);
+  for (std::int32_t iy = scored.iy_min; iy <= scored.iy_max; ++iy) {
+    for (std::size_t k = 0; k < scored_n; ++k) cells[k] = grid.Find({scored.ix_min + static_cast<std::int32_t>(k), iy});
+    const std::vector<float> scored_truth =
+        TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.config().max_height_m);
+    scorer.AddRow(iy, scored.ix_min, cells, scored_truth);
+    if (arrays.empty() || iy < extent.iy_min || iy > extent.iy_max) continue;
+    for (std::size_t k = 0; k < row_n; ++k) {
+      const TerrainCell* cell = cells[offset + k];
+      truth[k] = scored_truth[offset + k];
+      const bool measured = cell != nullptr && cell->has_elevation();
+      elevation[k] = measured ? cell->elevation_m : kNaN;
+      variance[k] = measured ? cell->variance_m2 : kNaN;
+      upper_bound[k] = cell != nullptr && std::isfinite(cell->upper_bound_m) ? cell->upper_bound_m : kNaN;
+      hits[k] = cell != nullptr ? cell->hits : 0;
+      first_t[k] = cell != nullptr ? cell->first_t_s : kNaN;
+      last_t[k] = cell != nullptr ? cell->last_t_s : kNaN;
+    }
+    arrays[kElevation]->Row(elevation);
+    arrays[kVariance]->Row(variance);
+    arrays[kUpperBound]->Row(upper_bound);
+    arrays[kTruth]->Row(truth);
+    arrays[kHits]->Row(hits);
+    arrays[kFirstT]->Row(first_t);
+    arrays[kLastT]->Row(last_t);
+  }
+  nlohmann::json score = scorer.Json();
+  if (arrays.empty()) return score;
+
+  for (const auto& array : arrays) array->Commit();
+  const nlohmann::json meta = {
+      {"resolution_m", r},
+      {"origin_xy_m", {extent.ix_min * r, extent.iy_min * r}},
+      {"shape", {ny, nx}},
+      {"max_height_m", map.config().max_height_m},
+      {"frame", "world"},
+      {"arrays", kArrayNames}};
+  WriteFileAtomically((tmp_dir / "meta.json").string(), meta.dump(2) + "\n");
+  WriteFileAtomically((tmp_dir / "hazards.csv").string(), HazardsCsvText(map.hazards()));
+  if (octomap != nullptr) octomap->WriteBinary((tmp_dir / "map.bt").string());
+  std::filesystem::remove_all(final_dir);
+  std::filesystem::rename(tmp_dir, final_dir);
+  return score;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,244 @@
+#include "terrain/terrain_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace proxsim {
+
+namespace {
+
+// Ideal sensors have no noise; their heights still need a variance to fuse:
+// (0.1 mm)², below any real sensor's.
+constexpr double kMinVariance_m2 = 1e-8;
+// Labels are recomputed everywhere when the ground moves this much.
+constexpr double kRelabelShift_m = 0.005;
+// The track keeps a point every this far walked.
+constexpr double kTrackStep_m = 0.01;
+// A silent ray that comes this close to a sole's heel–toe line has met the
+// robot's own foot (a 0.26 × 0.10 × 0.06 m box on the biped), at an angle
+// that sent no echo back: it says nothing beyond.
+constexpr double kFootRadius_m = 0.08;
+
+// The smallest distance between segments p0-p1 and q0-q1.
+double SegmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0, t = 0;
+  if (a <= 1e-18 && e <= 1e-18) return r.norm();
+  if (a <= 1e-18) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= 1e-18) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2), denom = a * e - b * b;
+      s = denom > 1e-18 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) {
+        t = 0, s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1) {
+        t = 1, s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  return (p0 + s * d1 - (q0 + t * d2)).norm();
+}
+
+// How far along a silent ray it stays clear of the robot's own feet (its
+// free_end_m when it never comes near them).
+double ClearOfFeet_m(const RayEvidence& evidence, const RobotKnowledge& robot, double step_m) {
+  double reach_m = evidence.free_end_m;
+  if (!robot.has_feet) return reach_m;
+  const Vec3 a = evidence.free_begin_W(), b = evidence.free_end_W();
+  for (const FootKnowledge& foot : robot.feet) {
+    if (SegmentDistance(a, b, foot.p_W_heel, foot.p_W_toe) >= kFootRadius_m) continue;
+    // the first point within reach of the foot, a step at a time
+    for (double d = evidence.free_begin_m; d < reach_m; d += step_m) {
+      const Vec3 p = evidence.p_WS + d * evidence.dir_W;
+      if (SegmentDistance(p, p, foot.p_W_heel, foot.p_W_toe) < kFootRadius_m) {
+        reach_m = d;
+        break;
+      }
+    }
+  }
+  return reach_m;
+}
+
+// The part of segment a → b below height h (false: none).
+bool ClipBelow(Vec3& a, Vec3& b, double h) {
+  if (a.z() >= h && b.z() >= h) return false;
+  if (a.z() > h) a = a + (b - a) * ((a.z() - h) / (a.z() - b.z()));
+  if (b.z() > h) b = b + (a - b) * ((b.z() - h) / (b.z() - a.z()));
+  return true;
+}
+
+}  // namespace
+
+TerrainMap::TerrainMap(const TerrainMapConfig& config, std::vector<SensorSpec> specs, std::vector<bool> feeds_map)
+    : config_(config), specs_(std::move(specs)), feeds_map_(std::move(feeds_map)), grid_(config.resolution_m) {
+  feeds_map_.resize(specs_.size(), false);
+}
+
+void TerrainMap::Reset() {
+  grid_.Clear();
+  evidence_.clear();
+  hazards_.clear();
+  track_.clear();
+  last_ = TrackPoint{};
+  labelled_ground_z_m_ = 0.0;
+  labels_changed_ = false;
+  next_pass_t_s_ = 0.0;
+}
+
+void TerrainMap::Update(const Observation& observation) {
+  evidence_.clear();
+  for (std::size_t i = 0; i < observation.sensors.size() && i < specs_.size(); ++i) {
+    if (!feeds_map_[i] || !observation.sensors[i].fresh) continue;
+    RayEvidence evidence = InterpretReading(specs_[i], observation.sensors[i]);
+    // a silent ray stops at the robot's own feet: they may have swallowed its echo
+    if (!evidence.detected && evidence.bounds_height && observation.robot != nullptr) {
+      evidence.free_end_m = ClearOfFeet_m(evidence, *observation.robot, 0.5 * grid_.resolution_m());
+      evidence.bounds_height = evidence.free_end_m > evidence.free_begin_m;
+    }
+    evidence_.push_back(evidence);
+    Insert(evidence_.back(), observation.t_s);
+  }
+  if (observation.robot == nullptr) return;
+  UpdateTrack(observation.t_s, *observation.robot);
+  if (observation.t_s + 1e-9 >= next_pass_t_s_) {
+    next_pass_t_s_ = observation.t_s + kHazardPeriod_s;
+    if (Relabel(observation.robot->ground_z_m)) FindHazardsAgain(observation.t_s, *observation.robot);
+  }
+}
+
+void TerrainMap::Insert(const RayEvidence& evidence, double t_s) {
+  const double r = grid_.resolution_m();
+  // the empty part of the ray, below the map's ceiling
+  Vec3 a = evidence.free_begin_W(), b = evidence.free_end_W();
+  if (evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m && ClipBelow(a, b, config_.max_height_m)) {
+    const Vec3 ab = b - a;
+    const double ab_xy2 = ab.head<2>().squaredNorm();
+    TraverseColumns(a, b, r, [&](CellIndex cell, double t0, double t1) {
+      const double z_lo = std::min(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
+      const TerrainCell* known = grid_.Find(cell);
+      const bool measured = known != nullptr && known->has_elevation();
+      // a silent ray stops at the first surface the map knows it would
+      // cross: it met it at a grazing angle, and says nothing beyond
+      if (!evidence.proves_empty && measured &&
+          z_lo < known->elevation_m - ElevationGrid::Gate_m(known->variance_m2, 0.0)) {
+        return false;
+      }
+      // a detection's ray overrides a height only where it passes near the
+      // cell's centre: one passing through a corner may miss a surface that
+      // covers the rest of the cell (an edge)
+      bool overrides = false;
+      if (evidence.proves_empty && measured) {
+        const Vec2 centre = grid_.CellCentre(cell);
+        double t = ab_xy2 > 0 ? (centre - a.head<2>()).dot(ab.head<2>()) / ab_xy2 : t0;
+        t = std::clamp(t, t0, t1);
+        const Vec3 p = a + t * ab;
+        overrides = (p.head<2>() - centre).norm() <= 0.25 * r;
+        if (overrides) {
+          grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
+          grid_.BoundFromFreeSpace(cell, p.z(), true, t_s);
+          return true;
+        }
+      }
+      grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
+      return true;
+    });
+  }
+  // the point, if below the ceiling
+  if (evidence.detected) {
+    const Vec3 p = evidence.point_W();
+    if (p.z() <= config_.max_height_m) {
+      grid_.FusePoint(grid_.IndexOf(p.x(), p.y()), p.z(), std::max(evidence.variance_z_m2, kMinVariance_m2), t_s);
+    }
+  }
+}
+
+void TerrainMap::UpdateTrack(double t_s, const RobotKnowledge& robot) {
+  last_.t_s = t_s;
+  last_.p_W_pelvis = robot.X_WP.translation().head<2>();
+  last_.p_W_front = robot.p_W_front.head<2>();
+  const Vec2 heading = robot.heading_W.head<2>();
+  last_.heading_W = heading.norm() > 0 ? Vec2(heading.normalized()) : Vec2::UnitX();
+  last_.ground_z_m = robot.ground_z_m;
+  if (track_.empty() || (track_.back().p_W_pelvis - last_.p_W_pelvis).norm() >= kTrackStep_m ||
+      std::abs(track_.back().ground_z_m - last_.ground_z_m) >= kRelabelShift_m) {
+    track_.push_back(last_);
+  }
+}
+
+bool TerrainMap::Relabel(double ground_z_m) {
+  const bool everywhere = std::abs(ground_z_m - labelled_ground_z_m_) > kRelabelShift_m;
+  if (everywhere) labelled_ground_z_m_ = ground_z_m;
+  bool changed = everywhere;
+  grid_.ForEachTile([&](ElevationGrid::Tile& tile) {
+    if (!everywhere && tile.labelled_version == tile.version) return;
+    tile.labelled_version = tile.version;
+    int count = 0;
+    for (int i = 0; i < ElevationGrid::kTileCells; ++i) {
+      const auto label = static_cast<std::uint8_t>(LabelCell(SurfaceOf(tile.cells[i]), labelled_ground_z_m_, config_));
+      changed |= label != tile.labels[i];
+      tile.labels[i] = label;
+      count += label != 0 ? 1 : 0;
+    }
+    tile.labelled_count = count;
+  });
+  return changed;
+}
+
+void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
+  // every labelled cell seeds the search, in a fixed order
+  std::vector<CellIndex> seeds;
+  grid_.ForEachTile([&](const ElevationGrid::Tile& tile) {
+    if (tile.labelled_count == 0) return;
+    for (int i = 0; i < ElevationGrid::kTileCells; ++i) {
+      if (tile.labels[i] == 0) continue;
+      seeds.push_back({tile.tx * ElevationGrid::kTileSide + i % ElevationGrid::kTileSide,
+                       tile.ty * ElevationGrid::kTileSide + i / ElevationGrid::kTileSide});
+    }
+  });
+  std::sort(seeds.begin(), seeds.end(), [](CellIndex a, CellIndex b) { return a.iy != b.iy ? a.iy < b.iy : a.ix < b.ix; });
+  const auto label_at = [this](CellIndex c) {
+    ElevationGrid::Tile* tile = grid_.FindTile(c);
+    return tile ? static_cast<CellLabel>(tile->labels[CellInTile(c)]) : CellLabel::kNone;
+  };
+  const auto surface_at = [this](CellIndex c) {
+    const TerrainCell* cell = grid_.Find(c);
+    return cell ? SurfaceOf(*cell) : CellSurface{};
+  };
+  std::vector<Hazard> found =
+      FindHazards(seeds, label_at, surface_at, labelled_ground_z_m_, grid_.resolution_m(), config_);
+
+  // each hazard found keeps the earliest detection of the hazards it overlaps
+  std::vector<bool> matched(hazards_.size(), false);
+  const Vec2 front = robot.p_W_front.head<2>();
+  for (Hazard& hazard : found) {
+    for (std::size_t k = 0; k < hazards_.size(); ++k) {
+      const Hazard& before = hazards_[k];
+      if (before.raised() != hazard.raised() || !before.cells.Overlaps(hazard.cells, 1)) continue;
+      matched[k] = true;
+      if (std::isnan(hazard.first_detection_t_s) || before.first_detection_t_s < hazard.first_detection_t_s) {
+        hazard.first_detection_t_s = before.first_detection_t_s;
+        hazard.distance_at_detection_m = before.distance_at_detection_m;
+      }
+    }
+    if (std::isnan(hazard.first_detection_t_s)) {
+      hazard.first_detection_t_s = t_s;
+      hazard.distance_at_detection_m = hazard.DistanceTo(front);
+    }
+  }
+  // a hazard no longer found is gone (the map was corrected), unless it was
+  // found from another ground: the robot climbed or went down since
+  for (std::size_t k = 0; k < hazards_.size(); ++k) {
+    if (!matched[k] && std::abs(hazards_[k].ground_z_m - labelled_ground_z_m_) > config_.obstacle_min_m) {
+      found.push_back(hazards_[k]);
+    }
+  }
+  hazards_ = std::move(found);
+}
+
+}  // namespace proxsim

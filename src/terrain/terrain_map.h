@@ -1,0 +1,87 @@
+// The terrain map the robot builds while it walks, from what it knows only:
+// every sample, each fresh reading of the sensors that feed the map becomes
+// a point and an empty ray (ray_evidence.h) in the elevation grid
+// (elevation_grid.h), and the hazards (hazards.h) are found again, relative
+// to the ground the robot stands on, whenever a cell's label changed (at most
+// every 20 ms). A silent ray stops where it comes within 8 cm of the robot's
+// own feet (its kinematics say where they are): a grazing foot sends no echo
+// back, and the ray says nothing beyond it. A hazard keeps the time it was first detected, and the
+// leading toe's distance to it then, while later passes grow or reclassify
+// it. Strategies read it through Observation::map.
+//
+// Frames: W world, S a sensor.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "sensors/sensor_spec.h"
+#include "strategy/strategy.h"
+#include "terrain/elevation_grid.h"
+#include "terrain/hazards.h"
+#include "terrain/ray_evidence.h"
+#include "terrain/terrain_config.h"
+
+namespace proxsim {
+
+/// Where the robot was: its track, kept every centimetre walked (and when
+/// the ground it stands on changes), for the corridor and the hazards' distances.
+struct TrackPoint {
+  double t_s = 0.0;
+  Vec2 p_W_pelvis = Vec2::Zero();
+  Vec2 p_W_front = Vec2::Zero();    ///< the leading toe
+  Vec2 heading_W = Vec2::UnitX();   ///< unit
+  double ground_z_m = 0.0;          ///< the ground it stood on
+};
+
+class TerrainMap {
+ public:
+  /// The hazards are looked for again at most this often.
+  static constexpr double kHazardPeriod_s = 0.02;
+
+  /// `specs[i]` is sensor i's datasheet; `feeds_map[i]` whether its readings go into the map.
+  TerrainMap(const TerrainMapConfig& config, std::vector<SensorSpec> specs, std::vector<bool> feeds_map);
+
+  /// A new episode: an empty map.
+  void Reset();
+
+  /// One sample: the observation's fresh readings into the grid, then the
+  /// hazards if due. Requires observation.robot.
+  void Update(const Observation& observation);
+
+  const TerrainMapConfig& config() const { return config_; }
+  const ElevationGrid& grid() const { return grid_; }
+  /// The cell holding world point (x, y), or null when it is still unknown land.
+  const TerrainCell* CellAt(double x_m, double y_m) const { return grid_.Find(grid_.IndexOf(x_m, y_m)); }
+  /// The hazards found so far (the last pass's, and those left behind on another ground).
+  const std::vector<Hazard>& hazards() const { return hazards_; }
+  /// What the last sample's readings said, one entry per fresh reading of a map sensor.
+  std::span<const RayEvidence> last_evidence() const { return evidence_; }
+  /// Whether sensor i's readings feed the map.
+  bool feeds_map(std::size_t sensor) const { return feeds_map_[sensor]; }
+  /// The robot's track (decimated) and its last point.
+  const std::vector<TrackPoint>& track() const { return track_; }
+  const TrackPoint& last_position() const { return last_; }
+  double last_t_s() const { return last_.t_s; }
+
+ private:
+  void Insert(const RayEvidence& evidence, double t_s);
+  void UpdateTrack(double t_s, const RobotKnowledge& robot);
+  // relabel changed tiles; true if a label changed
+  bool Relabel(double ground_z_m);
+  void FindHazardsAgain(double t_s, const RobotKnowledge& robot);
+
+  TerrainMapConfig config_;
+  std::vector<SensorSpec> specs_;
+  std::vector<bool> feeds_map_;
+  ElevationGrid grid_;
+  std::vector<RayEvidence> evidence_;
+  std::vector<Hazard> hazards_;
+  std::vector<TrackPoint> track_;
+  TrackPoint last_;
+  double labelled_ground_z_m_ = 0.0;
+  bool labels_changed_ = false;
+  double next_pass_t_s_ = 0.0;
+};
+
+}  // namespace proxsim

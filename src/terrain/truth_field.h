@@ -1,0 +1,26 @@
+// The scene's true height field on the map's lattice: at each cell's centre,
+// a vertical ray from max_height_m down through the scene (the robot's own
+// links transparent) finds the highest surface below max_height_m in that
+// column. A column that starts inside a solid (a wall, a cupboard taller than
+// max_height_m) is full up to the ceiling: its height is max_height_m, which
+// is also the most the map can hold there. NaN where the ray meets nothing.
+// Only the scoring and the output files use it, never the map.
+//
+// Frames: W world.
+#pragma once
+
+#include <vector>
+
+#include "raycast/ray_caster.h"
+#include "terrain/elevation_grid.h"
+
+namespace proxsim {
+
+/// Deepest the vertical rays look below max_height_m.
+constexpr double kTruthDepth_m = 100.0;
+
+/// The true heights of the cells of `box`, row after row (index
+/// (iy − iy_min)·nx + (ix − ix_min)), float32 with NaN where there is no surface.
+std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double max_height_m);
+
+}  // namespace proxsim
