@@ -6,6 +6,7 @@
 // on small height fields written in the test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -337,6 +338,25 @@ TEST(TerrainMapTest, TheMapsCeilingKeepsPointsAndBoundsBelowMaxHeight) {
   EXPECT_EQ(map.CellAt(1.0, 0.3), nullptr);
 }
 
+TEST(TerrainMapTest, TheCeilingRidesWithTheGroundTheRobotStandsOn) {
+  // a landing top at z = 0.6 m, read from the floor and from the landing
+  const SensorSpec ideal = SensorSpec::Preset(SensorType::kIdeal);
+  const SensorOutput reading = Reading({0.5, 0.0, 0.9}, -Vec3::UnitZ(), true, 0.3);
+  TerrainMap from_floor(TerrainMapConfig{}, {ideal}, {true});  // max_height_m 0.6
+  const RobotKnowledge on_floor = Standing({0, 0});
+  from_floor.Update(Observation{.t_s = 0, .sensors = std::span(&reading, 1), .robot = &on_floor});
+  EXPECT_FALSE(from_floor.CellAt(0.5, 0.0) != nullptr && from_floor.CellAt(0.5, 0.0)->has_elevation());
+  TerrainMap from_landing(TerrainMapConfig{}, {ideal}, {true});
+  RobotKnowledge on_landing = Standing({0, 0});
+  on_landing.ground_z_m = 0.6;
+  from_landing.Update(Observation{.t_s = 0, .sensors = std::span(&reading, 1), .robot = &on_landing});
+  ASSERT_NE(from_landing.CellAt(0.5, 0.0), nullptr);
+  EXPECT_NEAR(from_landing.CellAt(0.5, 0.0)->elevation_m, 0.6, 1e-6);
+  // the truth's ceiling: above the highest ground stood on
+  EXPECT_NEAR(from_floor.truth_ceiling_z_m(), 0.6, 1e-12);
+  EXPECT_NEAR(from_landing.truth_ceiling_z_m(), 1.2, 1e-12);
+}
+
 // ------------------------------------------------------------ fusion rules
 
 TEST(ElevationGridTest, AgreeingHeightsFuseByTheKalmanRuleAHigherOneWinsALowerOneIsKept) {
@@ -446,6 +466,46 @@ TEST(HazardsTest, EachKindOnASmallField) {
   EXPECT_EQ(Classify({.height = [](double x, double y) {
               return Inside(x, y, 1.0, 1.02, 0, 0.02) || Inside(x, y, 1.02, 1.04, 0.02, 0.04) ? 0.1 : 0.0;
             }}).size(), 1u);
+}
+
+TEST(HazardsTest, EachTreadOfAStaircaseIsAClusterOfItsOwnAndAHoleIsNotTheVoidBesideIt) {
+  // two steps up (0.15 m rises, 0.30 m treads) onto a 0.6 m-long top at 0.45:
+  // from the floor, the first tread is a step up, the second (0.30) and the
+  // top (0.45) are too high: three clusters, cut at the risers
+  const auto stairs = [](double x, double) { return x < 1.0 ? 0.0 : x < 1.3 ? 0.15 : x < 1.6 ? 0.30 : x < 2.2 ? 0.45 : 0.0; };
+  auto hazards = Classify({.height = stairs});
+  ASSERT_EQ(hazards.size(), 3u);
+  std::sort(hazards.begin(), hazards.end(), [](const Hazard& a, const Hazard& b) { return a.min_W.x() < b.min_W.x(); });
+  EXPECT_EQ(hazards[0].hazard_class, HazardClass::kStepUp);
+  EXPECT_NEAR(hazards[0].height_m, 0.15, 1e-6);
+  EXPECT_NEAR(hazards[0].min_W.x(), 1.0, 1e-9);
+  EXPECT_NEAR(hazards[0].max_W.x(), 1.3, 1e-9);
+  EXPECT_EQ(hazards[1].hazard_class, HazardClass::kObstacle);
+  EXPECT_NEAR(hazards[1].height_m, 0.30, 1e-6);
+  EXPECT_EQ(hazards[2].hazard_class, HazardClass::kObstacle);
+  EXPECT_NEAR(hazards[2].max_W.x(), 2.2, 1e-9);
+  // a ramp rising 1 cm per cell is one surface: one cluster
+  EXPECT_EQ(Classify({.height = [](double x, double) { return x < 1.0 ? 0.0 : std::min(0.5 * (x - 1.0), 0.3); }}).size(), 1u);
+  // a hole 0.5 deep beside a void (no surface: free space down to -100 m):
+  // the hole's measured floor is not continuous with the void's bound
+  const TerrainMapConfig config;
+  const auto surface_at = [](CellIndex c) {
+    const double y = (c.iy + 0.5) * 0.02;
+    if (y > 1.0) return CellSurface{std::numeric_limits<float>::quiet_NaN(), -99.4f};          // the void
+    if (std::abs((c.ix + 0.5) * 0.02 - 1.5) < 0.2) return CellSurface{-0.5f, std::numeric_limits<float>::quiet_NaN()};  // the hole
+    return CellSurface{0.0f, std::numeric_limits<float>::quiet_NaN()};
+  };
+  const auto label_at = [&](CellIndex c) { return LabelCell(surface_at(c), 0.0, config); };
+  std::vector<CellIndex> seeds;
+  for (int iy = -20; iy <= 70; ++iy)
+    for (int ix = 0; ix <= 150; ++ix) seeds.push_back({ix, iy});
+  hazards = FindHazards(seeds, label_at, surface_at, 0.0, 0.02, config);
+  ASSERT_EQ(hazards.size(), 2u);
+  for (const Hazard& h : hazards) EXPECT_EQ(h.hazard_class, HazardClass::kHole);
+  const Hazard& hole = hazards[0].max_W.y() < hazards[1].max_W.y() ? hazards[0] : hazards[1];
+  EXPECT_NEAR(hole.height_m, -0.5, 1e-6);
+  EXPECT_NEAR(hole.max_W.y(), 1.0, 1e-9);
+  EXPECT_NEAR(hole.max_W.x() - hole.min_W.x(), 0.4, 1e-9);
 }
 
 TEST(HazardsTest, ANeverMeasuredCellIsAHoleWhenFreeSpaceReachesBelowTheGround) {

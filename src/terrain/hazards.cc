@@ -59,6 +59,18 @@ Hazard Classify(const std::vector<CellIndex>& cells, CellLabel label,
   return hazard;
 }
 
+// Whether two cells of one label hold one surface (see hazards.h).
+bool Continuous(const CellSurface& a, const CellSurface& b, CellLabel label, const TerrainMapConfig& config) {
+  const bool a_measured = !std::isnan(a.height_m), b_measured = !std::isnan(b.height_m);
+  if (a_measured && b_measured) {
+    const double step_m = label == CellLabel::kRaised ? config.obstacle_min_m : config.drop_min_m;
+    return std::abs(static_cast<double>(a.height_m) - b.height_m) <= step_m;
+  }
+  if (a_measured) return a.height_m <= b.upper_bound_m + config.drop_min_m;
+  if (b_measured) return b.height_m <= a.upper_bound_m + config.drop_min_m;
+  return true;  // two floors known only to lie below their bounds
+}
+
 }  // namespace
 
 const char* HazardClassName(HazardClass hazard_class) {
@@ -99,18 +111,24 @@ std::vector<Hazard> FindHazards(const std::vector<CellIndex>& seeds,
   for (const CellIndex& seed : seeds) {
     const CellLabel label = label_at(seed);
     if (label == CellLabel::kNone || !visited.insert(Key(seed)).second) continue;
-    // flood fill over the cells of the same label up to two cells away: a
-    // cluster holds across one unknown cell (a sparse scan leaves such gaps)
+    // flood fill over the cells of the same label up to two cells away whose
+    // surfaces continue each other: a cluster holds across one unknown cell
+    // (a sparse scan leaves such gaps), and stops at a riser
     cluster.clear();
     stack.assign(1, seed);
     while (!stack.empty()) {
       const CellIndex c = stack.back();
       stack.pop_back();
       cluster.push_back(c);
+      const CellSurface here = surface_at(c);
       for (int dy = -2; dy <= 2; ++dy) {
         for (int dx = -2; dx <= 2; ++dx) {
           const CellIndex n{c.ix + dx, c.iy + dy};
-          if ((dx == 0 && dy == 0) || label_at(n) != label || !visited.insert(Key(n)).second) continue;
+          if ((dx == 0 && dy == 0) || label_at(n) != label || visited.contains(Key(n)) ||
+              !Continuous(here, surface_at(n), label, config)) {
+            continue;
+          }
+          visited.insert(Key(n));
           stack.push_back(n);
         }
       }

@@ -12,7 +12,9 @@ namespace proxsim {
 struct TerrainMapConfig {
   bool enabled = true;            ///< false: no map is built, no terrain/ written
   double resolution_m = 0.02;     ///< cell side, in [0.005, 1] m
-  double max_height_m = 0.6;      ///< world z; the map (and the truth) keep the highest surface below it
+  /// above the ground the robot stands on when it reads; the map keeps the
+  /// highest surface below it (the truth: below max_height_m above the highest ground stood on)
+  double max_height_m = 0.6;
   double obstacle_min_m = 0.04;   ///< a cell this much above the ground is raised (obstacle or step up), > 0
   double drop_min_m = 0.05;       ///< a cell this much below the ground is dropped (hole or step down), > 0
   double step_max_m = 0.20;       ///< the highest step the robot can take up or down, >= obstacle_min_m and drop_min_m

@@ -113,7 +113,7 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
   for (std::int32_t iy = scored.iy_min; iy <= scored.iy_max; ++iy) {
     for (std::size_t k = 0; k < scored_n; ++k) cells[k] = grid.Find({scored.ix_min + static_cast<std::int32_t>(k), iy});
     const std::vector<float> scored_truth =
-        TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.config().max_height_m);
+        TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.truth_ceiling_z_m());
     scorer.AddRow(iy, scored.ix_min, cells, scored_truth);
     if (arrays.empty() || iy < extent.iy_min || iy > extent.iy_max) continue;
     for (std::size_t k = 0; k < row_n; ++k) {
@@ -144,6 +144,7 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
       {"origin_xy_m", {extent.ix_min * r, extent.iy_min * r}},
       {"shape", {ny, nx}},
       {"max_height_m", map.config().max_height_m},
+      {"truth_ceiling_z_m", map.truth_ceiling_z_m()},
       {"frame", "world"},
       {"arrays", kArrayNames}};
   WriteFileAtomically((tmp_dir / "meta.json").string(), meta.dump(2) + "\n");

@@ -102,7 +102,9 @@ void TerrainMap::Update(const Observation& observation) {
       evidence.bounds_height = evidence.free_end_m > evidence.free_begin_m;
     }
     evidence_.push_back(evidence);
-    Insert(evidence_.back(), observation.t_s);
+    // the ceiling rides with the robot: on a landing 0.6 m up, the landing is terrain
+    const double ground_z_m = observation.robot != nullptr ? observation.robot->ground_z_m : 0.0;
+    Insert(evidence_.back(), observation.t_s, ground_z_m + config_.max_height_m);
   }
   if (observation.robot == nullptr) return;
   UpdateTrack(observation.t_s, *observation.robot);
@@ -112,11 +114,11 @@ void TerrainMap::Update(const Observation& observation) {
   }
 }
 
-void TerrainMap::Insert(const RayEvidence& evidence, double t_s) {
+void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_z_m) {
   const double r = grid_.resolution_m();
   // the empty part of the ray, below the map's ceiling
   Vec3 a = evidence.free_begin_W(), b = evidence.free_end_W();
-  if (evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m && ClipBelow(a, b, config_.max_height_m)) {
+  if (evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m && ClipBelow(a, b, ceiling_z_m)) {
     const Vec3 ab = b - a;
     const double ab_xy2 = ab.head<2>().squaredNorm();
     TraverseColumns(a, b, r, [&](CellIndex cell, double t0, double t1) {
@@ -152,10 +154,16 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s) {
   // the point, if below the ceiling
   if (evidence.detected) {
     const Vec3 p = evidence.point_W();
-    if (p.z() <= config_.max_height_m) {
+    if (p.z() <= ceiling_z_m) {
       grid_.FusePoint(grid_.IndexOf(p.x(), p.y()), p.z(), std::max(evidence.variance_z_m2, kMinVariance_m2), t_s);
     }
   }
+}
+
+double TerrainMap::truth_ceiling_z_m() const {
+  double ground_z_m = track_.empty() ? 0.0 : last_.ground_z_m;
+  for (const TrackPoint& point : track_) ground_z_m = std::max(ground_z_m, point.ground_z_m);
+  return ground_z_m + config_.max_height_m;
 }
 
 void TerrainMap::UpdateTrack(double t_s, const RobotKnowledge& robot) {

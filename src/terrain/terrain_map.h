@@ -62,10 +62,14 @@ class TerrainMap {
   /// The robot's track (decimated) and its last point.
   const std::vector<TrackPoint>& track() const { return track_; }
   const TrackPoint& last_position() const { return last_; }
+  /// The map's ceiling for the truth: max_height_m above the highest ground
+  /// the robot stood on (each reading's own ceiling is max_height_m above the
+  /// ground the robot stood on then).
+  double truth_ceiling_z_m() const;
   double last_t_s() const { return last_.t_s; }
 
  private:
-  void Insert(const RayEvidence& evidence, double t_s);
+  void Insert(const RayEvidence& evidence, double t_s, double ceiling_z_m);
   void UpdateTrack(double t_s, const RobotKnowledge& robot);
   // relabel changed tiles; true if a label changed
   bool Relabel(double ground_z_m);

@@ -78,7 +78,7 @@ void TerrainScorer::AddRow(std::int32_t iy, std::int32_t ix_min, std::span<const
     // a column with no surface is as deep as the truth looked
     const CellSurface surface = std::isnan(truth)
                                     ? CellSurface{std::numeric_limits<float>::quiet_NaN(),
-                                                  static_cast<float>(config.max_height_m - kTruthDepth_m)}
+                                                  static_cast<float>(map_.truth_ceiling_z_m() - kTruthDepth_m)}
                                     : CellSurface{truth, std::numeric_limits<float>::quiet_NaN()};
     for (double level : levels_m_) {
       if (LabelCell(surface, level, config) != CellLabel::kNone) {

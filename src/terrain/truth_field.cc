@@ -4,12 +4,12 @@
 
 namespace proxsim {
 
-std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double max_height_m) {
+std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double ceiling_z_m) {
   const std::size_t nx = static_cast<std::size_t>(box.nx()), ny = static_cast<std::size_t>(box.ny());
   std::vector<float> heights(nx * ny, std::numeric_limits<float>::quiet_NaN());
   std::vector<Ray> rays(nx), up_rays(nx);
   std::vector<Hit> hits(nx), up_hits(nx);
-  const auto ceiling = static_cast<float>(max_height_m);
+  const auto ceiling = static_cast<float>(ceiling_z_m);
   // one row of columns per cast
   for (std::size_t row = 0; row < ny; ++row) {
     const double y = (box.iy_min + static_cast<double>(row) + 0.5) * resolution_m;

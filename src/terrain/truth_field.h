@@ -1,9 +1,11 @@
 // The scene's true height field on the map's lattice: at each cell's centre,
-// a vertical ray from max_height_m down through the scene (the robot's own
-// links transparent) finds the highest surface below max_height_m in that
-// column. A column that starts inside a solid (a wall, a cupboard taller than
-// max_height_m) is full up to the ceiling: its height is max_height_m, which
-// is also the most the map can hold there. NaN where the ray meets nothing.
+// a vertical ray from a ceiling down through the scene (the robot's own
+// links transparent) finds the highest surface below the ceiling in that
+// column. The ceiling is the map's (TerrainMap::truth_ceiling_z_m():
+// max_height_m above the highest ground the robot stood on). A column that
+// starts inside a solid (a wall, a cupboard taller than the ceiling) is full
+// up to it: its height is the ceiling, which is also the most the map can
+// hold there. NaN where the ray meets nothing.
 // Only the scoring and the output files use it, never the map.
 //
 // Frames: W world.
@@ -16,11 +18,11 @@
 
 namespace proxsim {
 
-/// Deepest the vertical rays look below max_height_m.
+/// Deepest the vertical rays look below the ceiling.
 constexpr double kTruthDepth_m = 100.0;
 
 /// The true heights of the cells of `box`, row after row (index
 /// (iy − iy_min)·nx + (ix − ix_min)), float32 with NaN where there is no surface.
-std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double max_height_m);
+std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double ceiling_z_m);
 
 }  // namespace proxsim
