@@ -490,6 +490,7 @@ TEST(HazardsTest, EachTreadOfAStaircaseIsAClusterOfItsOwnAndAHoleIsNotTheVoidBes
   // the hole's measured floor is not continuous with the void's bound
   const TerrainMapConfig config;
   const auto surface_at = [](CellIndex c) {
+    if (c.ix < 0 || c.ix > 150 || c.iy < -20 || c.iy > 70) return CellSurface{};  // the field's edge: unknown
     const double y = (c.iy + 0.5) * 0.02;
     if (y > 1.0) return CellSurface{std::numeric_limits<float>::quiet_NaN(), -99.4f};          // the void
     if (std::abs((c.ix + 0.5) * 0.02 - 1.5) < 0.2) return CellSurface{-0.5f, std::numeric_limits<float>::quiet_NaN()};  // the hole

@@ -16,6 +16,8 @@ from .style import FREE_SPACE_COLOR, HAZARD_COLORS, HAZARD_LABELS, PATH_COLOR
 from .terrain_data import height_limits
 
 ERROR_RANGE_M = 0.05
+# more hazards than this: no label each (they would hide each other), the count in the title
+MAX_LABELLED_HAZARDS = 6
 UNKNOWN_COLOR = "#f2f2f2"
 # darker under the error, whose zero is white
 UNKNOWN_ERROR_COLOR = "#c4c4c4"
@@ -97,9 +99,12 @@ def terrain_figure(plt, terrain, path_xy=None):
     for t in true_hazards:
         color = HAZARD_COLORS.get(t["class"], "#000000")
         ax.add_patch(_hazard_rectangle(t, fill=False, edgecolor=color, linestyle="--", linewidth=1.2))
+    labelled = len(terrain.hazards) <= MAX_LABELLED_HAZARDS
     for h in terrain.hazards:
         color = HAZARD_COLORS.get(h["class"], "#000000")
         ax.add_patch(_hazard_rectangle(h, facecolor=color, edgecolor=color, alpha=0.75))
+        if not labelled:
+            continue
         ax.annotate(f"{HAZARD_LABELS.get(h['class'], h['class'])} {100 * h['height_m']:+.0f} cm\n"
                     f"t={h['first_detection_t_s']:.2f} s, {h['distance_at_detection_m']:.2f} m ahead",
                     (h["x_m"], h["y_m"] + h["size_y_m"] / 2), fontsize=7, ha="center", va="bottom", color=color)
@@ -112,7 +117,8 @@ def terrain_figure(plt, terrain, path_xy=None):
         handles.append(plt.Line2D([], [], color=PATH_COLOR, label="path walked"))
     if handles:
         ax.legend(handles=handles, fontsize=7, loc="upper left", ncol=3)
-    ax.set_title("hazards: the map's (filled) over the true ones in the corridor (dashed)", fontsize=10)
+    ax.set_title("hazards: the map's (filled) over the true ones in the corridor (dashed)"
+                 + ("" if labelled else f"; {len(terrain.hazards)} found, each in hazards.csv"), fontsize=10)
 
     for k, ax in enumerate(axes):
         ax.set_facecolor(UNKNOWN_ERROR_COLOR if k == 2 else UNKNOWN_COLOR)

@@ -62,13 +62,16 @@ Hazard Classify(const std::vector<CellIndex>& cells, CellLabel label,
 // Whether two cells of one label hold one surface (see hazards.h).
 bool Continuous(const CellSurface& a, const CellSurface& b, CellLabel label, const TerrainMapConfig& config) {
   const bool a_measured = !std::isnan(a.height_m), b_measured = !std::isnan(b.height_m);
-  if (a_measured && b_measured) {
-    const double step_m = label == CellLabel::kRaised ? config.obstacle_min_m : config.drop_min_m;
-    return std::abs(static_cast<double>(a.height_m) - b.height_m) <= step_m;
+  if (label == CellLabel::kRaised) {
+    // a riser up cuts: each tread a cluster
+    return !a_measured || !b_measured || std::abs(static_cast<double>(a.height_m) - b.height_m) <= config.obstacle_min_m;
   }
-  if (a_measured) return a.height_m <= b.upper_bound_m + config.drop_min_m;
-  if (b_measured) return b.height_m <= a.upper_bound_m + config.drop_min_m;
-  return true;  // two floors known only to lie below their bounds
+  // dropped: a pit's walls and floor are one hole (its wall cells hold
+  // heights between the two); a measured floor joins a never-measured cell
+  // only below that cell's bound
+  if (a_measured && !b_measured) return a.height_m <= b.upper_bound_m + config.drop_min_m;
+  if (b_measured && !a_measured) return b.height_m <= a.upper_bound_m + config.drop_min_m;
+  return true;
 }
 
 }  // namespace

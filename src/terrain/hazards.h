@@ -6,11 +6,12 @@
 //            height, or, never measured, its upper bound from free space
 // and cells of one label at most two cells apart (8-connected across one
 // unknown or unlabelled cell: a sparse scan leaves gaps) whose surfaces
-// continue each other form a cluster: two measured heights within
-// obstacle_min_m (raised) or drop_min_m (dropped) of each other, or a measured
-// floor below a never-measured cell's free-space bound (its floor may be
-// anywhere below it). So each tread of a staircase is a cluster of its own,
-// and a hole's floor is not the void beside a walkway. Clusters are classified:
+// continue each other form a cluster: raised cells whose heights are within
+// obstacle_min_m of each other (a riser cuts: each tread of a staircase is a
+// cluster of its own); dropped cells always, but a measured floor joins a
+// never-measured cell only below that cell's free-space bound (a hole's floor
+// is not the void beside a walkway; a pit's wall cells, which hold heights
+// between its rim and its floor, stay with it). Clusters are classified:
 //   raised:  step_up when its top is at most step_max_m above the ground and
 //            it is at least step_min_size_m long and wide (a foot fits);
 //            otherwise obstacle (too small or too high to step on);
