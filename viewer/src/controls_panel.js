@@ -81,6 +81,9 @@ export class ControlsPanel {
       el('small', { text: `${lo.toFixed(2)} m` }),
       el('span', { class: 'proxsim-scale', style: `background:linear-gradient(to right, ${terrain.colorStops.join(', ')})` }),
       el('small', { text: `${hi.toFixed(2)} m` })]));
+    // the hazards in a list of their own, scrolled when long (a stairs course finds dozens)
+    const list = el('div', { class: 'proxsim-hazard-list' });
+    side.appendChild(list);
     for (const h of terrain.hazards) {
       const found = h.t === null ? '' : ` at ${h.t.toFixed(2)} s`;
       const ahead = h.distance === null ? '' : `, ${h.distance.toFixed(2)} m ahead`;
@@ -88,7 +91,7 @@ export class ControlsPanel {
         el('span', { class: 'proxsim-swatch', style: `background:${h.color}` }),
         document.createTextNode(` ${h.label} ${h.height >= 0 ? '+' : '−'}${Math.abs(100 * h.height).toFixed(0)} cm${found}`)]);
       if (h.t !== null) row.addEventListener('click', () => handlers.onSeek(h.t));
-      side.appendChild(row);
+      list.appendChild(row);
       this.hazards.push([h.t ?? -Infinity, row]);
     }
     if (!terrain.hazards.length) side.appendChild(el('div', { class: 'proxsim-row', text: 'no hazard found' }));
