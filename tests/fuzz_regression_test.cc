@@ -12,6 +12,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 #include <vector>
 
 #include "core/input_error.h"
@@ -98,7 +100,7 @@ TEST(FuzzRegressionTest, Trajectory) {
 TEST(FuzzRegressionTest, Mesh) {
   // as fuzz/fuzz_mesh.cc: the first byte picks the extension, the rest is the file
   const char* const kExtensions[] = {"obj", "stl", "ply", "gltf", "dae", "off", "glb"};
-  const fs::path dir = fs::temp_directory_path() / "proxsim_test_fuzz_mesh";
+  const fs::path dir = fs::temp_directory_path() / ("proxsim_test_fuzz_mesh_" + std::to_string(getpid()));
   fs::create_directories(dir);
   ReplayTarget("mesh", [&](const std::string& bytes) {
     if (bytes.empty()) return;
@@ -116,7 +118,7 @@ TEST(FuzzRegressionTest, Mesh) {
 TEST(FuzzRegressionTest, MalformedPlyHeadersNeverReachAssimp) {
   // the fuzzer's PLY findings: Assimp 5.2 corrupts its heap on these headers,
   // so the loader must refuse them itself, naming the header line
-  const fs::path dir = fs::temp_directory_path() / "proxsim_test_fuzz_ply";
+  const fs::path dir = fs::temp_directory_path() / ("proxsim_test_fuzz_ply_" + std::to_string(getpid()));
   fs::create_directories(dir);
   for (const char* name : {"ply_header_unknown_keyword_heap.bin", "ply_header_control_bytes_segv.bin"}) {
     SCOPED_TRACE(name);

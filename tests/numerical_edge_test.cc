@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string>
+
+#include <unistd.h>
 
 #include "raycast/ray_caster.h"
 #include "scene/mesh_loader.h"
@@ -104,7 +107,7 @@ TEST(NumericalEdgeTest, DegenerateTrianglesAreNeverHitAndGiveNoNan) {
 
 TEST(NumericalEdgeTest, MeshLoaderKeepsDegenerateTrianglesHarmlessly) {
   // an OBJ with a zero-area face loads (it is legal), and casting through it gives no NaN
-  const auto path = std::filesystem::temp_directory_path() / "proxsim_test_degenerate.obj";
+  const auto path = std::filesystem::temp_directory_path() / ("proxsim_test_degenerate_" + std::to_string(getpid()) + ".obj");
   std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 4 5 4\n";
   const auto mesh = LoadMeshFile(path.string(), Vec3(1, 1, 1));
   EXPECT_GE(mesh->triangles.size(), 1u);

@@ -24,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(ReportRunnerTest, DrawsFiguresAndViewerForASyntheticRun) {
-  const fs::path out = fs::temp_directory_path() / "proxsim_report_runner_test";
+  const fs::path out = fs::temp_directory_path() / ("proxsim_report_runner_test_" + std::to_string(getpid()));
   fs::remove_all(out);
   const std::string make_sample = std::string("/usr/bin/python3 ") + PROXSIM_TEST_DATA_DIR +
                                   "/report_sample/make_sample.py " + out.string() + " --no-robot";

@@ -72,15 +72,35 @@ def _read_scene(out_dir):
         raise RunError(f"cannot read {path}: {e}") from e
 
 
-# the readings columns a SensorSeries is made of
-_FLOAT_COLUMNS = ("t_s", "d_m", "d_true_m", "incidence_deg", "signal", "hit_x_m", "hit_y_m", "hit_z_m",
-                  "origin_x_m", "origin_y_m", "origin_z_m", "dir_x", "dir_y", "dir_z")
-_NAME_COLUMNS = ("type", "status", "object")
+def _column_table(path):
+    """columns.json: the readings' columns (name, dtype, and for a coded column
+    the list its codes index) and those lists of names — proxsim's one
+    definition of the columns (`proxsim columns`), written by every run."""
+    try:
+        with open(path) as f:
+            table = json.load(f)
+        for column in table["columns"]:
+            if not isinstance(column.get("name"), str) or not isinstance(column.get("dtype"), str):
+                raise ValueError(f"a column without a name or a dtype: {column}")
+            if "codes" in column and column["codes"] not in table:
+                raise KeyError(f"no list {column['codes']!r} for column {column['name']!r}")
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        raise RunError(f"cannot read {path}: {e}") from e
+    return table
+
+
+def _kind(column):
+    """'code', 'float', 'bool' or 'int': how a column's values are read."""
+    if "codes" in column:
+        return "code"
+    return {"<f8": "float", "|b1": "bool"}.get(column["dtype"], "int")
 
 
 def _readings_csv(out_dir):
     """readings.csv as {sensor name: {column: array}}, sensors in order of first
-    row, each sensor's rows sorted by time (stable)."""
+    row, each sensor's rows sorted by time (stable). Codes are the names the
+    CSV writes; an empty field is NaN (numbers) or '' (names)."""
+    table = _column_table(os.path.join(out_dir, "columns.json"))
     path = os.path.join(out_dir, "readings.csv")
     try:
         with open(path, newline="") as f:
@@ -93,11 +113,19 @@ def _readings_csv(out_dir):
     columns = {}
     for name, rs in by_sensor.items():
         rs.sort(key=lambda r: float(r["t_s"]))
-        c = {k: _floats(rs, k) for k in _FLOAT_COLUMNS}
-        c.update({k: np.array([r[k] for r in rs], dtype=object) for k in _NAME_COLUMNS})
-        c["detected"] = np.array([r["detected"] == "1" for r in rs], dtype=bool)
+        c = {}
+        for column in table["columns"]:
+            key, kind = column["name"], _kind(column)
+            if kind == "float":
+                c[key] = _floats(rs, key)
+            elif kind == "code":
+                c[key] = np.array([r[key] for r in rs], dtype=object)
+            elif kind == "bool":
+                c[key] = np.array([r[key] == "1" for r in rs], dtype=bool)
+            else:
+                c[key] = np.array([int(r[key]) for r in rs], dtype=np.int64)
         columns[name] = c
-    return columns
+    return columns, table
 
 
 def _load_npy(folder, column, rows):
@@ -111,23 +139,28 @@ def _load_npy(folder, column, rows):
     return values
 
 
+def _decode(codes, names):
+    """Codes to names; a code outside the list (−1, 255: none) becomes ''."""
+    lookup = np.array(list(names) + [""], dtype=object)
+    index = codes.astype(np.int64)
+    index[(index < 0) | (index >= len(names))] = len(names)
+    return lookup[index]
+
+
 def _readings_npy(out_dir):
     """The same as _readings_csv, from `proxsim run --format npy`'s readings/:
-    one .npy per column, the names of the coded columns in columns.json
-    (src/output/npy_writer.h). NaN stays NaN; object −1 becomes ''."""
+    one .npy per column, described by readings/columns.json. NaN stays NaN;
+    a code with no name (none) becomes ''."""
     folder = os.path.join(out_dir, "readings")
     path = os.path.join(folder, "columns.json")
+    table = _column_table(path)
     try:
-        with open(path) as f:
-            codes = json.load(f)
-        rows = int(codes["rows"])
-        raw = {k: _load_npy(folder, k, rows) for k in ("sensor", "detected") + _FLOAT_COLUMNS + _NAME_COLUMNS}
-        # codes to names; code −1 (no object) picks the '' appended last
-        names = {"sensor": codes["sensors"], "type": codes["types"], "status": codes["statuses"],
-                 "object": list(codes["objects"]) + [""]}
-        decoded = {k: np.array(v, dtype=object)[raw[k]] for k, v in names.items()}
-    except (OSError, ValueError, KeyError, TypeError, IndexError) as e:
+        rows = int(table["rows"])
+    except (KeyError, TypeError, ValueError) as e:
         raise RunError(f"cannot read {path}: {e}") from e
+    raw = {column["name"]: _load_npy(folder, column["name"], rows) for column in table["columns"]}
+    decoded = {column["name"]: _decode(raw[column["name"]], table[column["codes"]])
+               for column in table["columns"] if _kind(column) == "code"}
 
     # sensors in order of first row, each one's rows sorted by time (stable), as from the CSV
     columns = {}
@@ -136,11 +169,19 @@ def _readings_npy(out_dir):
     for code in present[np.argsort(first_row)]:
         mine = np.flatnonzero(sensor == code)
         mine = mine[np.argsort(raw["t_s"][mine], kind="stable")]
-        c = {k: raw[k][mine].astype(np.float64, copy=False) for k in _FLOAT_COLUMNS}
-        c.update({k: decoded[k][mine] for k in _NAME_COLUMNS})
-        c["detected"] = raw["detected"][mine].astype(bool, copy=False)
+        c = {}
+        for column in table["columns"]:
+            key, kind = column["name"], _kind(column)
+            if kind == "code":
+                c[key] = decoded[key][mine]
+            elif kind == "float":
+                c[key] = raw[key][mine].astype(np.float64, copy=False)
+            elif kind == "bool":
+                c[key] = raw[key][mine].astype(bool, copy=False)
+            else:
+                c[key] = raw[key][mine].astype(np.int64, copy=False)
         columns[decoded["sensor"][mine[0]]] = c
-    return columns
+    return columns, table
 
 
 def _readings_format(out_dir):
@@ -159,23 +200,23 @@ def _readings_format(out_dir):
     return "npy" if os.path.isdir(os.path.join(out_dir, "readings")) else "csv"
 
 
-def _no_readings():
-    c = {k: np.zeros(0) for k in _FLOAT_COLUMNS}
-    c.update({k: np.array([], dtype=object) for k in _NAME_COLUMNS})
-    c["detected"] = np.zeros(0, dtype=bool)
-    return c
+def _no_readings(table):
+    """A sensor with no rows: every column empty."""
+    empty = {"float": lambda: np.zeros(0), "code": lambda: np.array([], dtype=object),
+             "bool": lambda: np.zeros(0, dtype=bool), "int": lambda: np.zeros(0, dtype=np.int64)}
+    return {column["name"]: empty[_kind(column)]() for column in table["columns"]}
 
 
 def _read_readings(out_dir, scene):
     """One SensorSeries per sensor, from readings.csv or readings/ (npy)."""
-    by_sensor = _readings_npy(out_dir) if _readings_format(out_dir) == "npy" else _readings_csv(out_dir)
+    by_sensor, table = _readings_npy(out_dir) if _readings_format(out_dir) == "npy" else _readings_csv(out_dir)
     # sensors in scene.json order; any sensor only in the readings comes after
     specs = {s["name"]: s for s in scene.get("sensors", [])}
     names = [s["name"] for s in scene.get("sensors", [])]
     names += [n for n in by_sensor if n not in specs]
     sensors = []
     for i, name in enumerate(names):
-        c = by_sensor.get(name) or _no_readings()
+        c = by_sensor.get(name) or _no_readings(table)
         spec = specs.get(name, {})
         d_m = c["d_m"]
         s = SensorSeries(

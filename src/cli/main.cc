@@ -19,6 +19,7 @@
 
 #include "bench/bench_suite.h"
 #include "core/input_error.h"
+#include "output/readings_columns.h"
 #include "output/run_manifest.h"
 #include "scenario/scenario.h"
 #include "report/report_runner.h"
@@ -232,6 +233,8 @@ int main(int argc, char** argv) {
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
   validate->add_option("scenario", validate_path, "scenario YAML file")->required();
 
+  CLI::App* columns = app.add_subcommand("columns", "print the readings' columns (name, type, unit, meaning) as a Markdown table");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -280,6 +283,10 @@ int main(int argc, char** argv) {
       return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
     }
     if (*validate) return Validate(validate_path);
+    if (*columns) {
+      std::fputs(proxsim::ReadingsColumnsMarkdown().c_str(), stdout);
+      return 0;
+    }
     if (*study) return Study(study_path, study_out, study_threads, study_resume, !study_no_report);
   } catch (const proxsim::InputError& error) {
     return PrintInputError(error);

@@ -18,15 +18,6 @@ double WrapAngle(double a) { return std::remainder(a, 2 * kPi); }
 
 }  // namespace
 
-const char* SupportLegName(SupportLeg s) {
-  switch (s) {
-    case SupportLeg::kLeft: return "left";
-    case SupportLeg::kRight: return "right";
-    case SupportLeg::kDouble: break;
-  }
-  return "double";
-}
-
 GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
     : initial_(config), model_(std::make_unique<RobotModel>(std::move(model))), gait_(config.gait) {
   std::vector<std::string> problems;

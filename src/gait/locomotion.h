@@ -18,6 +18,8 @@ enum class SupportLeg { kLeft, kRight, kDouble };
 
 /// "left", "right" or "double".
 const char* SupportLegName(SupportLeg s);
+/// Every support leg's name, in code order (the output files' codes).
+const std::vector<std::string>& SupportLegNames();
 
 /// The robot at one sample time.
 struct RobotState {

@@ -54,33 +54,16 @@ struct NpyReadingsWriter::Column {
   std::vector<char> pending;
 };
 
-namespace {
-// column order: readings.csv's
-enum Col {
-  kT, kSensor, kType, kStatus, kDetected, kD, kDTrue, kIncidence, kSignal, kHitX, kHitY, kHitZ,
-  kOriginX, kOriginY, kOriginZ, kDirX, kDirY, kDirZ, kObject, kGaitPhase, kSupportLeg, kRay, kOutput,
-  kTReported, kColumnCount
-};
-struct ColumnSpec {
-  const char* name;
-  const char* descr;
-};
-constexpr ColumnSpec kColumns[kColumnCount] = {
-    {"t_s", "<f8"},        {"sensor", "<i4"},     {"type", "|u1"},          {"status", "|u1"},
-    {"detected", "|b1"},   {"d_m", "<f8"},        {"d_true_m", "<f8"},      {"incidence_deg", "<f8"},
-    {"signal", "<f8"},     {"hit_x_m", "<f8"},    {"hit_y_m", "<f8"},       {"hit_z_m", "<f8"},
-    {"origin_x_m", "<f8"}, {"origin_y_m", "<f8"}, {"origin_z_m", "<f8"},    {"dir_x", "<f8"},
-    {"dir_y", "<f8"},      {"dir_z", "<f8"},      {"object", "<i4"},        {"gait_phase", "<f8"},
-    {"support_leg", "|u1"}, {"ray", "<i4"},       {"output", "<f8"},        {"t_reported_s", "<f8"}};
-}  // namespace
-
-NpyReadingsWriter::NpyReadingsWriter(const std::string& dir, const Scenario& scenario,
+NpyReadingsWriter::NpyReadingsWriter(const std::string& out_dir, const Scenario& scenario,
                                      std::vector<std::string> object_names)
-    : dir_(dir), tmp_dir_(dir + ".tmp"), scenario_(scenario), object_names_(std::move(object_names)) {
+    : dir_((std::filesystem::path(out_dir) / "readings").string()),
+      tmp_dir_(dir_ + ".tmp"),
+      scenario_(scenario),
+      names_(scenario, std::move(object_names)) {
   std::filesystem::remove_all(tmp_dir_);
   std::filesystem::create_directories(tmp_dir_);
-  for (const ColumnSpec& spec : kColumns) {
-    columns_.push_back(std::make_unique<Column>(tmp_dir_ + "/" + spec.name + ".npy", spec.descr));
+  for (const ReadingsColumn& column : ReadingsColumns()) {
+    columns_.push_back(std::make_unique<Column>(tmp_dir_ + "/" + column.name + ".npy", NpyDtype(column.type)));
   }
 }
 
@@ -91,36 +74,26 @@ NpyReadingsWriter::~NpyReadingsWriter() {
   std::filesystem::remove_all(tmp_dir_, ignored);
 }
 
-void NpyReadingsWriter::Append(const SampleFrame& frame) {
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  Column* c[kColumnCount];
-  for (int k = 0; k < kColumnCount; ++k) c[k] = columns_[k].get();
+void NpyReadingsWriter::Add(const SampleFrame& frame) {
+  const std::span<const ReadingsColumn> spec = ReadingsColumns();
   for (std::size_t i = 0; i < frame.sensors.size(); ++i) {
     const SensorSample& s = frame.sensors[i];
     if (s.reading.status == ReadingStatus::kNotSampled) continue;  // no row between a sensor's own samples
-    const bool hit = s.object_id >= 0;
-    c[kT]->Put(frame.t_s);
-    c[kSensor]->Put(static_cast<std::int32_t>(i));
-    c[kType]->Put(static_cast<std::uint8_t>(scenario_.sensors[i].spec.type));
-    c[kStatus]->Put(static_cast<std::uint8_t>(s.reading.status));
-    c[kDetected]->Put(static_cast<std::uint8_t>(s.reading.detected()));
-    c[kD]->Put(s.reading.d_m);
-    c[kDTrue]->Put(hit ? s.echo.distance_m : kNaN);
-    c[kIncidence]->Put(hit ? s.echo.incidence_deg : kNaN);
-    c[kSignal]->Put(s.reading.signal);
-    for (int k = 0; k < 3; ++k) c[kHitX + k]->Put(s.p_WH[k]);
-    for (int k = 0; k < 3; ++k) c[kOriginX + k]->Put(s.p_WS[k]);
-    for (int k = 0; k < 3; ++k) c[kDirX + k]->Put(s.dir_W[k]);
-    c[kObject]->Put(static_cast<std::int32_t>(hit ? s.object_id : -1));
-    c[kGaitPhase]->Put(frame.robot.present ? frame.robot.gait_phase : kNaN);
-    c[kSupportLeg]->Put(static_cast<std::uint8_t>(frame.robot.present ? static_cast<int>(frame.robot.support) : 255));
-    // beyond the paper: the beam's ray, a lookup sensor's output, the report time
-    c[kRay]->Put(static_cast<std::int32_t>(s.ray));
-    c[kOutput]->Put(s.reading.output);
-    c[kTReported]->Put(s.t_reported_s);
+    const ReadingRow row{frame, i, scenario_.sensors[i], s};
+    for (std::size_t k = 0; k < spec.size(); ++k) {
+      const double value = spec[k].value(row);
+      Column& column = *columns_[k];
+      switch (spec[k].type) {
+        case ColumnType::kFloat64: column.Put(value); break;
+        case ColumnType::kInt32:
+        case ColumnType::kCode32: column.Put(static_cast<std::int32_t>(value)); break;
+        case ColumnType::kCode8: column.Put(static_cast<std::uint8_t>(value >= 0 ? value : 255)); break;
+        case ColumnType::kBool: column.Put(static_cast<std::uint8_t>(value != 0)); break;
+      }
+    }
     ++rows_;
   }
-  if (c[kT]->pending.size() >= kFlushBytes) {
+  if (columns_.front()->pending.size() >= kFlushBytes) {
     for (auto& column : columns_) column->Flush();
   }
 }
@@ -137,35 +110,15 @@ void NpyReadingsWriter::Commit() {
     column.file.Commit();
   }
 
-  // the codes of the integer columns
-  nlohmann::json sensors = nlohmann::json::array(), types = nlohmann::json::array(),
-                 statuses = nlohmann::json::array();
-  for (const SensorConfig& sensor : scenario_.sensors) sensors.push_back(sensor.name);
-  for (int t = 0; t < 256 && std::string(SensorTypeName(SensorType(t))) != "?"; ++t) {
-    types.push_back(SensorTypeName(SensorType(t)));
-  }
-  // every status the enum names (it may grow), in code order
-  for (int s = 0; s < 256 && std::string(ReadingStatusName(ReadingStatus(s))) != "?"; ++s) {
-    statuses.push_back(ReadingStatusName(ReadingStatus(s)));
-  }
-  const nlohmann::json codes = {
-      {"rows", rows_},
-      {"columns", [] {
-         nlohmann::json columns = nlohmann::json::array();
-         for (const ColumnSpec& spec : kColumns) columns.push_back({{"name", spec.name}, {"dtype", spec.descr}});
-         return columns;
-       }()},
-      {"sensors", sensors},
-      {"types", types},
-      {"statuses", statuses},
-      {"objects", object_names_},
-      {"support_legs", {SupportLegName(SupportLeg::kLeft), SupportLegName(SupportLeg::kRight),
-                        SupportLegName(SupportLeg::kDouble)}}};
+  nlohmann::json codes = ColumnsJson(names_);
+  codes["rows"] = rows_;
   WriteFileAtomically(tmp_dir_ + "/columns.json", codes.dump(1) + "\n");
 
   std::filesystem::remove_all(dir_);
   std::filesystem::rename(tmp_dir_, dir_);
   committed_ = true;
 }
+
+void NpyReadingsWriter::AddToSummary(nlohmann::json& summary) const { summary["outputs"].push_back("readings/"); }
 
 }  // namespace proxsim

@@ -1,21 +1,10 @@
 // The readings as columns (`proxsim run --format npy`): one NumPy .npy file
 // per column of readings.csv in OUT/readings/, for runs too large for a CSV
 // (thousands of rays at kHz rates). Same rows (none between a sensor's own
-// samples), same order, same meaning as the CSV; what the CSV writes as text
-// is a code here, named in columns.json:
-//   t_s, d_m, d_true_m, incidence_deg, signal, hit_{x,y,z}_m, origin_{x,y,z}_m,
-//   dir_{x,y,z}, gait_phase, output, t_reported_s
-//                                  float64 (<f8); NaN where the CSV is empty
-//                                  (output: a lookup sensor's output, NaN for the other
-//                                  types; t_reported_s: t_s plus the sensor's latency)
-//   sensor                         int32 (<i4): index into columns.json "sensors"
-//   object                         int32: index into "objects"; −1 where the CSV is empty
-//   ray                            int32: the beam's ray that gave the reading, −1 without
-//   type, status, support_leg      uint8 (|u1): index into "types", "statuses", "support_legs";
-//                                  support_leg 255 when there is no robot
-//   detected                       bool (|b1)
-// numpy.load(OUT/readings/d_m.npy) reads a column; every file has `rows` rows.
-// The folder is written as OUT/readings.tmp/ and renamed when complete.
+// samples), same order, same meaning as the CSV; the columns, their dtypes and
+// what a code stands for are output/readings_columns.h's, written into
+// OUT/readings/columns.json with the row count. numpy.load(OUT/readings/d_m.npy)
+// reads a column. The folder is written as OUT/readings.tmp/ and renamed when complete.
 #pragma once
 
 #include <memory>
@@ -23,22 +12,24 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "output/readings_columns.h"
+#include "output/run_sink.h"
 #include "scenario/scenario.h"
-#include "sim/sample_frame.h"
 
 namespace proxsim {
 
-class NpyReadingsWriter {
+class NpyReadingsWriter : public RunSink {
  public:
-  /// `dir` is the folder to create (OUT/readings); `object_names[id]` names hit objects.
-  NpyReadingsWriter(const std::string& dir, const Scenario& scenario, std::vector<std::string> object_names);
+  /// Writes `out_dir`/readings/; `object_names[id]` names hit objects.
+  NpyReadingsWriter(const std::string& out_dir, const Scenario& scenario, std::vector<std::string> object_names);
   ~NpyReadingsWriter();
   NpyReadingsWriter(const NpyReadingsWriter&) = delete;
   NpyReadingsWriter& operator=(const NpyReadingsWriter&) = delete;
 
-  void Append(const SampleFrame& frame);
+  void Add(const SampleFrame& frame) override;
   /// Writes the headers (with the final row count) and columns.json, then renames the folder into place.
-  void Commit();
+  void Commit() override;
+  void AddToSummary(nlohmann::json& summary) const override;
 
   std::int64_t rows() const { return rows_; }
 
@@ -46,7 +37,7 @@ class NpyReadingsWriter {
   struct Column;
   std::string dir_, tmp_dir_;
   const Scenario& scenario_;
-  std::vector<std::string> object_names_;
+  ColumnNames names_;
   std::vector<std::unique_ptr<Column>> columns_;
   std::int64_t rows_ = 0;
   bool committed_ = false;

@@ -6,21 +6,24 @@
 #include <vector>
 
 #include "core/atomic_file.h"
-#include "robot/robot_model.h"
+#include "output/run_sink.h"
+#include "sim/robot_in_scene.h"
 
 namespace proxsim {
 
-class PosesCsvWriter {
+class PosesCsvWriter : public RunSink {
  public:
-  PosesCsvWriter(const std::string& path, const RobotModel& model);
+  /// Writes the links of `robot` (which must outlive the writer) to `path`.
+  PosesCsvWriter(const std::string& path, const RobotInScene& robot);
 
-  /// Appends every link's pose X_WL at t_s.
-  void Append(double t_s, const std::vector<Pose>& X_WL);
-  void Commit() { file_.Commit(); }
+  /// Appends every link's pose X_WL at the frame's time.
+  void Add(const SampleFrame& frame) override;
+  void Commit() override { file_.Commit(); }
+  void AddToSummary(nlohmann::json& summary) const override { summary["outputs"].push_back("poses.csv"); }
 
  private:
   AtomicFile file_;
-  const RobotModel& model_;
+  const RobotInScene& robot_;
   std::string line_;
 };
 

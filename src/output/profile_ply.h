@@ -8,18 +8,20 @@
 #include <string>
 
 #include "core/atomic_file.h"
-#include "sim/sample_frame.h"
+#include "output/run_sink.h"
 
 namespace proxsim {
 
-class ProfilePlyWriter {
+class ProfilePlyWriter : public RunSink {
  public:
   explicit ProfilePlyWriter(const std::string& path);
 
   /// Adds every detection of the frame (status ok) at its measured distance
   /// along the ray: p = origin + d_m·dir, the point a real sensor would report.
   void Append(const SampleFrame& frame);
-  void Commit();
+  void Add(const SampleFrame& frame) override { Append(frame); }
+  void Commit() override;
+  void AddToSummary(nlohmann::json& summary) const override { summary["outputs"].push_back("profile.ply"); }
 
   std::int64_t point_count() const { return point_count_; }
 

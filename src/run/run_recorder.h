@@ -1,6 +1,7 @@
-// A run's files, written while a Simulation is stepped: readings (CSV or
-// npy), profile.ply, poses.csv, the terrain map's rays into the OctoMap tree,
-// then terrain/ (terrain/terrain_files.h), scene.json and summary.json at the end.
+// A run's files, written while a Simulation is stepped: each output is a sink
+// (output/run_sink.h) — the readings (CSV or npy), profile.ply, poses.csv, the
+// terrain map, the statistics — fed every sample; at the end the sinks
+// complete their files, then scene.json, summary.json and the manifest.
 // Used by `proxsim run` and by the Python package's Simulation(out=DIR), so
 // that both write the same files for the same scenario and seed. Each file
 // appears under its final name only when it is complete.
@@ -13,12 +14,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "output/readings_sink.h"
+#include "output/run_sink.h"
 #include "sim/simulation.h"
 
 namespace proxsim {
-
-/// How the readings are written: readings.csv, or one .npy per column in readings/.
-enum class ReadingsFormat { kCsv, kNpy };
 
 class RunRecorder {
  public:
@@ -44,16 +44,12 @@ class RunRecorder {
   std::int64_t samples() const { return samples_; }
 
  private:
-  struct Writers;
-  nlohmann::json SummaryWith(bool interrupted, nlohmann::json terrain) const;
   const Simulation& sim_;
   std::string out_dir_;
-  ReadingsFormat format_;
   std::function<void(const std::string&)> warn_;
-  std::unique_ptr<Writers> writers_;
+  std::vector<std::unique_ptr<RunSink>> sinks_;
   std::vector<std::string> warnings_;
   std::int64_t samples_ = 0;
-  std::int64_t profile_points_ = 0;  // detections: the points profile.ply holds
   double last_t_s_ = 0;
 };
 

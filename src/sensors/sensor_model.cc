@@ -1,20 +1,41 @@
 #include "sensors/sensor_model.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 
 namespace proxsim {
 
+namespace {
+// in code order: a status's code in the output files is its index here
+constexpr std::array<std::pair<ReadingStatus, const char*>, 7> kStatusNames = {{
+    {ReadingStatus::kOk, "ok"},
+    {ReadingStatus::kNoEcho, "no_echo"},
+    {ReadingStatus::kTooClose, "too_close"},
+    {ReadingStatus::kGrazing, "grazing"},
+    {ReadingStatus::kSelf, "self"},
+    {ReadingStatus::kDropout, "dropout"},
+    {ReadingStatus::kNotSampled, "not_sampled"},
+}};
+static_assert([] {
+  for (std::size_t i = 0; i < kStatusNames.size(); ++i)
+    if (static_cast<std::size_t>(kStatusNames[i].first) != i) return false;
+  return true;
+}());
+}  // namespace
+
 const char* ReadingStatusName(ReadingStatus status) {
-  switch (status) {
-    case ReadingStatus::kOk: return "ok";
-    case ReadingStatus::kNoEcho: return "no_echo";
-    case ReadingStatus::kTooClose: return "too_close";
-    case ReadingStatus::kGrazing: return "grazing";
-    case ReadingStatus::kSelf: return "self";
-    case ReadingStatus::kDropout: return "dropout";
-    case ReadingStatus::kNotSampled: return "not_sampled";
-  }
-  return "?";
+  const auto code = static_cast<std::size_t>(status);
+  return code < kStatusNames.size() ? kStatusNames[code].second : "?";
+}
+
+const std::vector<std::string>& ReadingStatusNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const auto& [status, name] : kStatusNames) all.emplace_back(name);
+    return all;
+  }();
+  return names;
 }
 
 double IncidenceDeg(double dir_x, double dir_y, double dir_z, double normal_x, double normal_y,

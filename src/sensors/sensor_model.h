@@ -40,6 +40,7 @@
 #include <functional>
 #include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/geometry.h"
@@ -60,6 +61,8 @@ enum class ReadingStatus : std::uint8_t {
 
 /// "ok", "no_echo", "too_close", "grazing", "self", "dropout" or "not_sampled".
 const char* ReadingStatusName(ReadingStatus status);
+/// Every status's name, in code order (the output files' codes).
+const std::vector<std::string>& ReadingStatusNames();
 
 /// What the ray found: the noise-free truth a sensor works from.
 struct Echo {

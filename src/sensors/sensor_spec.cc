@@ -18,6 +18,12 @@ constexpr TypeName kTypeNames[] = {
     {SensorType::kReflectance, "reflectance"},
     {SensorType::kLookup, "lookup"},
 };
+// in code order: a type's code in the output files is its index here
+static_assert([] {
+  for (std::size_t i = 0; i < std::size(kTypeNames); ++i)
+    if (static_cast<std::size_t>(kTypeNames[i].type) != i) return false;
+  return true;
+}());
 }  // namespace
 
 const char* SensorTypeName(SensorType type) {

@@ -162,7 +162,8 @@ class ReadingsFormatTest(unittest.TestCase):
         with self.assertRaisesRegex(RunError, "columns.json"):
             load_run(out)
         with open(os.path.join(out, "readings", "columns.json"), "w") as f:
-            json.dump({"rows": 2, "sensors": ["s"], "types": ["laser"], "statuses": ["ok"], "objects": []}, f)
+            json.dump({"rows": 2, "sensors": ["s"], "columns": [{"name": "sensor", "dtype": "<i4", "codes": "sensors"},
+                                                                {"name": "t_s", "dtype": "<f8"}]}, f)
         with self.assertRaisesRegex(RunError, "sensor.npy"):
             load_run(out)
         np.save(os.path.join(out, "readings", "sensor.npy"), np.zeros(1, dtype="<i4"))

@@ -204,11 +204,22 @@ def main():
                 ply.append((*p, s["index"], t[i], idx[i]))
     rows.sort(key=lambda r: float(r[0]))
 
+    header = ("t_s,sensor,type,status,detected,d_m,d_true_m,incidence_deg,signal,hit_x_m,hit_y_m,hit_z_m,"
+              "origin_x_m,origin_y_m,origin_z_m,dir_x,dir_y,dir_z,object,gait_phase,support_leg").split(",")
     with open(os.path.join(args.out, "readings.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow("t_s,sensor,type,status,detected,d_m,d_true_m,incidence_deg,signal,hit_x_m,hit_y_m,hit_z_m,"
-                   "origin_x_m,origin_y_m,origin_z_m,dir_x,dir_y,dir_z,object,gait_phase,support_leg".split(","))
+        w.writerow(header)
         w.writerows(rows)
+    # columns.json as proxsim writes it beside readings.csv, for this file's columns
+    # (a subset of proxsim's: `proxsim columns` lists them all)
+    codes = {"sensor": "sensors", "type": "types", "status": "statuses", "object": "objects",
+             "support_leg": "support_legs"}
+    columns = [{"name": c, "dtype": "|b1" if c == "detected" else "<i4" if c in codes else "<f8",
+                **({"codes": codes[c]} if c in codes else {})} for c in header]
+    with open(os.path.join(args.out, "columns.json"), "w") as f:
+        json.dump({"columns": columns, "sensors": [s["name"] for s in sensors],
+                   "types": list(PRESETS), "statuses": ["ok", "no_echo", "too_close", "grazing"],
+                   "objects": [o["name"] for o in objects], "support_legs": ["left", "right", "double"]}, f, indent=1)
     if robot:
         with open(os.path.join(args.out, "poses.csv"), "w", newline="") as f:
             w = csv.writer(f)

@@ -1,0 +1,35 @@
+// The terrain map as a run's output: each sample's rays into the OctoMap tree,
+// then at the end OUT/terrain/ (terrain/terrain_files.h) and the map's score
+// against the truth in summary.json `terrain`.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "output/run_sink.h"
+#include "raycast/ray_caster.h"
+#include "terrain/octomap_recorder.h"
+#include "terrain/terrain_map.h"
+
+namespace proxsim {
+
+class TerrainSink : public RunSink {
+ public:
+  /// `dir` empty: no files, the score only. `map` and `caster` must outlive the sink.
+  TerrainSink(const TerrainMap& map, const RayCaster& caster, std::string dir);
+
+  void Add(const SampleFrame& frame) override;
+  /// Writes terrain/ and keeps its score for the summary.
+  void Commit() override;
+  /// `terrain`: the score as of the last Commit, or of the map as it stands.
+  void AddToSummary(nlohmann::json& summary) const override;
+
+ private:
+  const TerrainMap& map_;
+  const RayCaster& caster_;
+  std::string dir_;
+  std::optional<OctomapRecorder> octomap_;
+  std::optional<nlohmann::json> committed_;
+};
+
+}  // namespace proxsim
