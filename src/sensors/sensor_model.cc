@@ -1,14 +1,13 @@
 #include "sensors/sensor_model.h"
 
 #include <algorithm>
-#include <array>
-#include <utility>
+
+#include "core/enum_names.h"
 
 namespace proxsim {
 
 namespace {
-// in code order: a status's code in the output files is its index here
-constexpr std::array<std::pair<ReadingStatus, const char*>, 7> kStatusNames = {{
+constexpr EnumNameTable<ReadingStatus, 7> kStatusNames = {{
     {ReadingStatus::kOk, "ok"},
     {ReadingStatus::kNoEcho, "no_echo"},
     {ReadingStatus::kTooClose, "too_close"},
@@ -17,24 +16,13 @@ constexpr std::array<std::pair<ReadingStatus, const char*>, 7> kStatusNames = {{
     {ReadingStatus::kDropout, "dropout"},
     {ReadingStatus::kNotSampled, "not_sampled"},
 }};
-static_assert([] {
-  for (std::size_t i = 0; i < kStatusNames.size(); ++i)
-    if (static_cast<std::size_t>(kStatusNames[i].first) != i) return false;
-  return true;
-}());
+static_assert(InCodeOrder(kStatusNames));
 }  // namespace
 
-const char* ReadingStatusName(ReadingStatus status) {
-  const auto code = static_cast<std::size_t>(status);
-  return code < kStatusNames.size() ? kStatusNames[code].second : "?";
-}
+const char* ReadingStatusName(ReadingStatus status) { return NameIn(kStatusNames, status); }
 
 const std::vector<std::string>& ReadingStatusNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> all;
-    for (const auto& [status, name] : kStatusNames) all.emplace_back(name);
-    return all;
-  }();
+  static const std::vector<std::string> names = NamesIn(kStatusNames);
   return names;
 }
 

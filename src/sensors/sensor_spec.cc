@@ -4,48 +4,32 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/enum_names.h"
+
 namespace proxsim {
 
 namespace {
-struct TypeName {
-  SensorType type;
-  const char* name;
-};
-constexpr TypeName kTypeNames[] = {
+constexpr EnumNameTable<SensorType, 5> kTypeNames = {{
     {SensorType::kIdeal, "ideal"},
     {SensorType::kLaser, "laser"},
     {SensorType::kUltrasonic, "ultrasonic"},
     {SensorType::kReflectance, "reflectance"},
     {SensorType::kLookup, "lookup"},
-};
-// in code order: a type's code in the output files is its index here
-static_assert([] {
-  for (std::size_t i = 0; i < std::size(kTypeNames); ++i)
-    if (static_cast<std::size_t>(kTypeNames[i].type) != i) return false;
-  return true;
-}());
+}};
+static_assert(InCodeOrder(kTypeNames));
 }  // namespace
 
-const char* SensorTypeName(SensorType type) {
-  for (const auto& entry : kTypeNames) {
-    if (entry.type == type) return entry.name;
-  }
-  return "?";
-}
+const char* SensorTypeName(SensorType type) { return NameIn(kTypeNames, type); }
 
 std::optional<SensorType> SensorTypeFromName(std::string_view name) {
-  for (const auto& entry : kTypeNames) {
-    if (name == entry.name) return entry.type;
+  for (const auto& [type, type_name] : kTypeNames) {
+    if (name == type_name) return type;
   }
   return std::nullopt;
 }
 
 const std::vector<std::string>& SensorTypeNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> all;
-    for (const auto& entry : kTypeNames) all.emplace_back(entry.name);
-    return all;
-  }();
+  static const std::vector<std::string> names = NamesIn(kTypeNames);
   return names;
 }
 
