@@ -30,9 +30,9 @@
 #include "sensors/sensor_model.h"
 #include "robot/robot_model.h"
 #include "sensors/beam.h"
-#include "gait/make_locomotion.h"
+#include "sim/make_locomotion.h"
 #include "sim/robot_in_scene.h"
-#include "sim/run.h"
+#include "run/run.h"
 #include "sim/simulation.h"
 
 namespace proxsim::bench {
