@@ -12,7 +12,7 @@
 #include "cli_helpers.h"
 #include "core/embedded_files.h"
 #include "input_error_helpers.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/simulation.h"
 
 namespace proxsim {

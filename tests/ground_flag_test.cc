@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "scene/scene.h"
 #include "sim/simulation.h"
 
