@@ -172,8 +172,9 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
   const auto items = reader.List((*scene)["objects"], "a list of objects");
   if (!items) return;
   for (const Field& item : *items) {
-    const auto object = reader.Map(item, {"name", "box", "sphere", "cylinder", "plane", "mesh", "pose", "material", "ground"},
-                                   "a map with a name and one shape (box, sphere, cylinder, plane or mesh)");
+    const auto object =
+        reader.Map(item, {"name", "box", "sphere", "cylinder", "plane", "mesh", "pose", "material", "ground"},
+                   "a map with a name and one shape (box, sphere, cylinder, plane or mesh)");
     if (!object) continue;
     SceneObject scene_object;
     const Field name = (*object)["name"];
