@@ -84,6 +84,11 @@ TEST(BadInputTest, UnknownLink) {
   EXPECT_NE(result.output.find("unknown link 'left_tibiaa'"), std::string::npos) << result.output;
 }
 
+TEST(BadInputTest, GroundThatIsNotTrueOrFalse) {
+  ExpectRefusedFile("bad_ground.yaml", {"bad_ground.yaml:6:", "scene.objects[0].ground", "expected true or false",
+                                        "got yes please"});
+}
+
 TEST(BadInputTest, MissingMesh) { ExpectRefusedFile("missing_mesh.yaml", {"missing_mesh.yaml:5:", "no_such_mesh.obj"}); }
 
 TEST(BadInputTest, MeshWithoutTriangles) {

@@ -248,11 +248,11 @@ std::string Sensors() {
   return text;
 }
 
-// Floor from x = -1 to 2 (top z = 0), then `after` (scene objects), walking to x = 5.
+// Floor (ground) from x = -1 to 2 (top z = 0), then `after` (scene objects), walking to x = 5.
 std::string DropScene(const std::string& after) {
   return "proxsim: 1\nseed: 2\nduration_s: 8\nrate_hz: 100\n"
          "scene:\n  objects:\n"
-         "    - {name: floor, box: {size_m: [3.0, 3.0, 0.5]}, pose: {xyz_m: [0.5, 0, -0.25]}}\n" +
+         "    - {name: floor, box: {size_m: [3.0, 3.0, 0.5]}, ground: true, pose: {xyz_m: [0.5, 0, -0.25]}}\n" +
          after +
          "robot:\n  model: builtin:biped\n  gait: {stride_m: 0.6, period_s: 1.2}\n"
          "  path: {waypoints_m: [[0, 0], [5, 0]]}\n" +
@@ -305,7 +305,7 @@ void ExpectStoppedBeforeTheEdgeAt(const DropWalk& walk, double edge_x_m) {
 TEST(StopStrategyOnDrops, StopsBeforeADeepStepDown) {
   // the floor beyond x = 2 is 0.6 m lower
   const DropWalk walk = WalkWithTheRule(
-      DropScene("    - {name: floor_below, box: {size_m: [4.0, 3.0, 0.5]}, pose: {xyz_m: [4.0, 0, -0.85]}}\n"),
+      DropScene("    - {name: floor_below, box: {size_m: [4.0, 3.0, 0.5]}, ground: true, pose: {xyz_m: [4.0, 0, -0.85]}}\n"),
       "step_down.yaml");
   ExpectStoppedBeforeTheEdgeAt(walk, 2.0);
 }
@@ -314,7 +314,7 @@ TEST(StopStrategyOnDrops, StopsBeforeAWideHole) {
   // a hole 0.6 m wide and 0.5 m deep at x = 2 .. 2.6
   const DropWalk walk = WalkWithTheRule(
       DropScene("    - {name: hole_bottom, box: {size_m: [0.6, 3.0, 0.1]}, pose: {xyz_m: [2.3, 0, -0.55]}}\n"
-                "    - {name: floor_after, box: {size_m: [3.0, 3.0, 0.5]}, pose: {xyz_m: [4.1, 0, -0.25]}}\n"),
+                "    - {name: floor_after, box: {size_m: [3.0, 3.0, 0.5]}, ground: true, pose: {xyz_m: [4.1, 0, -0.25]}}\n"),
       "hole.yaml");
   ExpectStoppedBeforeTheEdgeAt(walk, 2.0);
 }
@@ -332,7 +332,7 @@ TEST(StopStrategyOnDrops, StopsBeforeTheCoursesSmallHole) {
 TEST(StopStrategyOnDrops, WalksDownAShallowStep) {
   // 0.2 m lower beyond x = 2: the legs take it
   const DropWalk walk = WalkWithTheRule(
-      DropScene("    - {name: floor_below, box: {size_m: [4.0, 3.0, 0.5]}, pose: {xyz_m: [4.0, 0, -0.45]}}\n"),
+      DropScene("    - {name: floor_below, box: {size_m: [4.0, 3.0, 0.5]}, ground: true, pose: {xyz_m: [4.0, 0, -0.45]}}\n"),
       "shallow.yaml");
   EXPECT_FALSE(Logged(walk, "drop_ahead"));
   EXPECT_FALSE(Logged(walk, "cannot_step"));

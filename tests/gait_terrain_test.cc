@@ -57,7 +57,8 @@ struct Course {
       Pose X_WO = Pose::Identity();
       X_WO.translation() = Vec3(0.5 * (p.x0 + p.x1), 0, 0.5 * (top + bottom));
       scene.objects.push_back(SceneObject{"floor_" + std::to_string(scene.objects.size()),
-                                          Box{Vec3(p.x1 - p.x0, 2 * kHalfWidth_m, top - bottom)}, X_WO, Material{}});
+                                          Box{Vec3(p.x1 - p.x0, 2 * kHalfWidth_m, top - bottom)}, X_WO, Material{},
+                                          /*ground=*/true});
     }
     return scene;
   }

@@ -143,11 +143,12 @@ std::vector<BenchObject> Room(double cell_m) {
     b.Box(lo, hi, cell_m);
     objects.push_back(b.Take(name));
   };
-  // floor: 1 m tiles, 5 cm thick, top face at z = 0 (names start with "floor": the ground)
+  // floor: 1 m tiles, 5 cm thick, top face at z = 0, flagged as the ground
   for (int ix = 0; ix < 6; ++ix) {
     for (int iy = 0; iy < 4; ++iy) {
       box("floor_tile_" + std::to_string(ix) + "_" + std::to_string(iy), Vec3(-1 + ix, -2 + iy, -0.05),
           Vec3(-1 + ix + 1, -2 + iy + 1, 0));
+      objects.back().ground = true;
     }
   }
   // walls: 0.1 m thick, 2.5 m high, inner faces at x = −1, 5 and y = ±2, in panels of at most 1 m
@@ -253,7 +254,8 @@ Scene ToScene(const BenchScene& scene) {
   material.albedo = 0.6;
   material.specular = 0.1;
   for (const BenchObject& o : scene.objects) {
-    out.objects.push_back(SceneObject{o.name, Mesh{"bench:" + o.name, Vec3(1, 1, 1), o.mesh}, Pose::Identity(), material});
+    out.objects.push_back(
+        SceneObject{o.name, Mesh{"bench:" + o.name, Vec3(1, 1, 1), o.mesh}, Pose::Identity(), material, o.ground});
   }
   return out;
 }

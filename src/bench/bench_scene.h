@@ -23,6 +23,7 @@ namespace proxsim::bench {
 struct BenchObject {
   std::string name;
   std::shared_ptr<const TriangleMesh> mesh;  ///< vertices in W
+  bool ground = false;                       ///< the feet stand on it (SceneObject::ground)
 };
 
 struct BenchScene {

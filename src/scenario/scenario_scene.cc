@@ -1,8 +1,8 @@
 // The `scene` section: a built-in scene (scene/scene.h) plus the file's own
-// objects. Each object has a name, exactly one shape key, an optional pose
-// and an optional material. Meshes are loaded here, through Assimp, so that a
-// missing or broken mesh file is reported with the other problems before
-// anything runs.
+// objects. Each object has a name, exactly one shape key, an optional pose,
+// an optional material and an optional `ground` flag (the feet stand on it).
+// Meshes are loaded here, through Assimp, so that a missing or broken mesh
+// file is reported with the other problems before anything runs.
 #include <map>
 
 #include "core/input_error.h"
@@ -109,6 +109,13 @@ Material ReadMaterial(YamlReader& reader, const Field& field) {
   return material;
 }
 
+// ground: true/false, whether the feet stand on the object. Absent, a plane
+// is ground (a scenario's plane is its floor) and any other shape is not.
+bool ReadGround(YamlReader& reader, const Field& field, const std::optional<Shape>& shape) {
+  const bool is_plane = shape && std::holds_alternative<Plane>(*shape);
+  return reader.Bool(field).value_or(is_plane);
+}
+
 // The one shape of an object, or nullopt after reporting none or several.
 std::optional<Shape> ReadShape(YamlReader& reader, const MapView& object, const std::filesystem::path& base_dir) {
   std::vector<std::string> given;
@@ -165,8 +172,9 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
   const auto items = reader.List((*scene)["objects"], "a list of objects");
   if (!items) return;
   for (const Field& item : *items) {
-    const auto object = reader.Map(item, {"name", "box", "sphere", "cylinder", "plane", "mesh", "pose", "material"},
-                                   "a map with a name and one shape (box, sphere, cylinder, plane or mesh)");
+    const auto object =
+        reader.Map(item, {"name", "box", "sphere", "cylinder", "plane", "mesh", "pose", "material", "ground"},
+                   "a map with a name and one shape (box, sphere, cylinder, plane or mesh)");
     if (!object) continue;
     SceneObject scene_object;
     const Field name = (*object)["name"];
@@ -180,6 +188,7 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
     const auto shape = ReadShape(reader, *object, base_dir);
     scene_object.X_WO = ReadPose(reader, (*object)["pose"]);
     scene_object.material = ReadMaterial(reader, (*object)["material"]);
+    scene_object.ground = ReadGround(reader, (*object)["ground"], shape);
     if (!shape) continue;
     scene_object.shape = *shape;
     scenario.scene.objects.push_back(std::move(scene_object));

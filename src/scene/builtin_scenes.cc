@@ -33,7 +33,8 @@
 // holes' bottoms are 0.1 m slabs below that). The holes are 0.5 m deep,
 // deeper than the built-in biped's highest step (gait.max_step_m, 0.32 m by
 // default), so the robot steps over them or not at all. Everything the feet
-// stand on is named floor*: the clearance leaves it out.
+// stand on (the floor* pieces; not the holes' bottoms) is flagged `ground`:
+// the clearance leaves it out. The floor* names are only names.
 //
 // Materials are plausible diffuse albedos and specular fractions (plaster
 // walls bright and matte, varnished wood darker and a little glossy).
@@ -102,8 +103,8 @@ Scene MakeDiningRoomScene() {
   constexpr double kWallHeight = 2.5, kWallThickness = 0.1;
   constexpr double kXMin = -1.0, kXMax = 5.0, kYMax = 2.0;
 
-  // floor: the whole z = 0 plane
-  scene.objects.push_back(SceneObject{"floor", Plane{}, Pose::Identity(), kWoodFloor});
+  // floor: the whole z = 0 plane, the ground
+  scene.objects.push_back(SceneObject{"floor", Plane{}, Pose::Identity(), kWoodFloor, /*ground=*/true});
 
   // walls: inner faces on the room's bounds, long walls overlapping the corners
   const double t = kWallThickness;
@@ -140,8 +141,10 @@ Scene MakeDiningRoomScene() {
 Scene MakeStairsScene() {
   Scene scene;
   constexpr double kY = 1.5, kBottom = -0.5;
+  // a piece is ground: its top is a tread the feet stand on
   const auto piece = [&](const char* name, double x0, double x1, double z_top) {
     scene.objects.push_back(BoxFromTo(name, Vec3(x0, -kY, kBottom), Vec3(x1, kY, z_top), kConcrete));
+    scene.objects.back().ground = true;
   };
   const auto hole_bottom = [&](const char* name, double x0, double x1) {
     scene.objects.push_back(BoxFromTo(name, Vec3(x0, -kY, kBottom - 0.1), Vec3(x1, kY, kBottom), kDarkConcrete));

@@ -27,6 +27,10 @@ struct SceneObject {
   Shape shape;
   Pose X_WO = Pose::Identity();  ///< pose of the object's frame O in world W
   Material material;
+  /// The ground the feet stand on: the robot's clearance leaves it out, and a
+  /// study counts it as floor seen. A role declared here (scenario key
+  /// `ground`), never read from the name.
+  bool ground = false;
 };
 
 struct Scene {

@@ -35,8 +35,9 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   }
   caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
   first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
-  for (std::size_t id = 0; id < object_names_.size(); ++id) {
-    if (object_names_[id].starts_with("floor")) ground_ids_.push_back(static_cast<std::int32_t>(id));
+  // the ground is what the scene declares so (SceneObject::ground), whatever its name
+  for (std::size_t id = 0; id < scenario.scene.objects.size(); ++id) {
+    if (scenario.scene.objects[id].ground) ground_ids_.push_back(static_cast<std::int32_t>(id));
   }
 
   // the robot: its links are bodies too, with object ids after the scene's

@@ -43,7 +43,7 @@ class World {
   const std::vector<std::string>& object_names() const { return object_names_; }
   /// Object ids from here on are robot links.
   std::int32_t first_robot_object_id() const { return first_robot_object_id_; }
-  /// The objects the feet stand on, left out of the clearance.
+  /// The objects the feet stand on (flagged `ground` in the scene), left out of the clearance.
   std::span<const std::int32_t> ground_ids() const { return ground_ids_; }
 
   /// The robot's bodies, or null without a robot.
