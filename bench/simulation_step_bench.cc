@@ -8,9 +8,9 @@
 #include <string>
 
 #include "bench/bench_scene.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
-#include "gait/make_locomotion.h"
+#include "sim/make_locomotion.h"
 #include "sim/robot_in_scene.h"
 #include "sim/simulation.h"
 

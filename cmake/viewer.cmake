@@ -2,7 +2,7 @@
 #  - proxsim_viewer (built by default): `npm ci` in viewer/ when package-lock.json
 #    changed (a stamp file in node_modules), then esbuild bundles three.js, uPlot
 #    and the viewer into ONE script, ${CMAKE_BINARY_DIR}/viewer/viewer.js.
-#  - proxsim_lib learns where the bundle and report/make_report.py are
+#  - proxsim_report learns where the bundle and report/make_report.py are
 #    (PROXSIM_VIEWER_BUNDLE, PROXSIM_REPORT_SCRIPT), for MakeReport().
 #  - tests: the report's Python unit tests, and the viewer's end-to-end test in
 #    Debian's chromium (skipped, exit 77, only when /usr/bin/chromium is missing).
@@ -33,7 +33,7 @@ add_custom_command(
   VERBATIM)
 add_custom_target(proxsim_viewer ALL DEPENDS ${viewer_bundle})
 
-target_compile_definitions(proxsim_lib PUBLIC
+target_compile_definitions(proxsim_report PUBLIC
   PROXSIM_VIEWER_BUNDLE="${viewer_bundle}"
   PROXSIM_REPORT_SCRIPT="${CMAKE_SOURCE_DIR}/report/make_report.py")
 add_dependencies(proxsim proxsim_viewer)

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

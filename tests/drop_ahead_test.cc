@@ -21,7 +21,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/simulation.h"
 #include "strategy/drop_ahead.h"
 #include "strategy/stop_strategy.h"

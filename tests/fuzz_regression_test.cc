@@ -16,7 +16,7 @@
 
 #include "core/input_error.h"
 #include "gait/trajectory_player.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "robot/robot_model.h"
 #include "scene/mesh_loader.h"
 

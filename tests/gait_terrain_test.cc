@@ -113,7 +113,7 @@ Walk WalkCourse(const Course& course, double stride_m, double end_x_m, double li
   caster.Commit();
   const CasterTerrain terrain(caster);
 
-  RobotConfig config;
+  WalkConfig config;
   config.gait.stride_m = stride_m;
   config.gait.period_s = 1.2;
   config.waypoints_m = {Vec2(0, 0), Vec2(end_x_m, 0)};

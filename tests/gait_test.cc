@@ -40,8 +40,8 @@ std::pair<Vec3, Vec3> PivotNowAndLatched(const BipedLegs& legs, const StepPlan& 
   return {X_WF * p_L, plan.X_WF * p_L};
 }
 
-RobotConfig StraightConfig(double stride_m, double period_s) {
-  RobotConfig c;
+WalkConfig StraightConfig(double stride_m, double period_s) {
+  WalkConfig c;
   c.gait.stride_m = stride_m;
   c.gait.period_s = period_s;
   return c;
@@ -136,7 +136,7 @@ TEST(GaitWalker, PlantedFootNoPenetrationContinuousPeriodicStride) {
 }
 
 TEST(GaitWalker, FollowsWaypointsWithATurnAndStopsAtTheLast) {
-  RobotConfig c = StraightConfig(0.6, 1.2);
+  WalkConfig c = StraightConfig(0.6, 1.2);
   c.waypoints_m = {Vec2(0, 0), Vec2(3, 0), Vec2(3, 2)};
   GaitWalker walker(RobotModel::Builtin("biped"), c);
   const BipedLegs legs(walker.model());
@@ -178,7 +178,7 @@ TEST(GaitWalker, ReachesTheLastWaypointForEveryStrideAndPath) {
     const double stride = 0.30 + 0.05 * step;
     for (const auto& [name, waypoints] : paths) {
       SCOPED_TRACE(std::string(name) + ", stride " + std::to_string(stride));
-      RobotConfig c = StraightConfig(stride, 1.2);
+      WalkConfig c = StraightConfig(stride, 1.2);
       c.waypoints_m = waypoints;
       GaitWalker walker(RobotModel::Builtin("biped"), c);
       RobotState s;

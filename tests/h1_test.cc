@@ -25,7 +25,7 @@
 #include "cli_helpers.h"
 
 #include "gait/gait_walker.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "robot/robot_model.h"
 #include "sim/simulation.h"
 

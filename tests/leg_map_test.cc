@@ -19,6 +19,7 @@
 #include "stl_files.h"
 
 #include "gait/gait_walker.h"
+#include "scenario/scenario.h"
 #include "gait/held_joints.h"
 #include "robot/robot_model.h"
 #include "scene/shape_points.h"

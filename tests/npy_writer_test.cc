@@ -18,9 +18,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.h"
-#include "io/number_format.h"
-#include "io/scenario.h"
-#include "sim/run.h"
+#include "core/number_format.h"
+#include "scenario/scenario.h"
+#include "run/run.h"
 
 namespace {
 

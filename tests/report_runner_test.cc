@@ -15,8 +15,8 @@
 
 #include <unistd.h>
 
-#include "io/scenario.h"
-#include "sim/run.h"
+#include "scenario/scenario.h"
+#include "run/run.h"
 
 namespace proxsim {
 namespace {

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cli_helpers.h"
-#include "gait/make_locomotion.h"
+#include "sim/make_locomotion.h"
 #include "sim/surface_samples.h"
 
 namespace proxsim {

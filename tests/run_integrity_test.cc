@@ -27,7 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 
 extern char** environ;
 

@@ -12,7 +12,7 @@
 
 #include "cli_helpers.h"
 #include "core/input_error.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 
 namespace proxsim {
 namespace {

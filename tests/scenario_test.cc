@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
-#include "io/nearest_key.h"
-#include "io/scenario.h"
+#include "core/nearest_key.h"
+#include "scenario/scenario.h"
 
 namespace proxsim {
 namespace {

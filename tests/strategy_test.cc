@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/simulation.h"
 #include "strategy/circumvent_strategy.h"
 #include "strategy/stop_strategy.h"

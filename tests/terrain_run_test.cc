@@ -19,9 +19,9 @@
 #include <octomap/OcTree.h>
 
 #include "core/input_error.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
-#include "sim/run.h"
+#include "run/run.h"
 #include "sim/simulation.h"
 #include "terrain/octomap_recorder.h"
 #include "terrain/terrain_files.h"

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/simulation.h"
 #include "strategy/strategy.h"
 

@@ -23,9 +23,9 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "io/scenario.h"
-#include "sim/run.h"
-#include "sim/run_recorder.h"
+#include "scenario/scenario.h"
+#include "run/run.h"
+#include "run/run_recorder.h"
 #include "sim/simulation.h"
 #include "terrain/terrain_map.h"
 

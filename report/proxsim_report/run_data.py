@@ -114,7 +114,7 @@ def _load_npy(folder, column, rows):
 def _readings_npy(out_dir):
     """The same as _readings_csv, from `proxsim run --format npy`'s readings/:
     one .npy per column, the names of the coded columns in columns.json
-    (src/io/npy_writer.h). NaN stays NaN; object −1 becomes ''."""
+    (src/output/npy_writer.h). NaN stays NaN; object −1 becomes ''."""
     folder = os.path.join(out_dir, "readings")
     path = os.path.join(folder, "columns.json")
     try:

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
 #include "scene/scene.h"
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "bench/bench_process.h"
-#include "sim/run.h"
+#include "run/run.h"
 #include "sim/simulation.h"
 
 namespace proxsim::bench {

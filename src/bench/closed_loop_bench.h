@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 
 namespace proxsim::bench {
 

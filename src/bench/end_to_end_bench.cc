@@ -12,10 +12,10 @@
 #include "bench/bench_measures.h"
 #include "bench/closed_loop_bench.h"
 #include "bench/peers.h"
-#include "gait/make_locomotion.h"
+#include "run/run.h"
 #include "sensors/beam.h"
+#include "sim/make_locomotion.h"
 #include "sim/robot_in_scene.h"
-#include "sim/run.h"
 #include "sim/simulation.h"
 
 namespace proxsim::bench {

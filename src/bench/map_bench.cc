@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/simulation.h"
 #include "terrain/octomap_recorder.h"
 #include "terrain/terrain_files.h"

@@ -7,7 +7,7 @@
 #include <limits>
 #include <memory>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
 #include "sim/robot_in_scene.h"

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "gait/gait_walker.h"
-#include "gait/make_locomotion.h"
-#include "io/scenario.h"
+#include "sim/make_locomotion.h"
+#include "scenario/scenario.h"
 #include "sim/simulation.h"
 
 namespace proxsim::bench {

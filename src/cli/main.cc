@@ -19,10 +19,10 @@
 
 #include "bench/bench_suite.h"
 #include "core/input_error.h"
-#include "io/run_manifest.h"
-#include "io/scenario.h"
+#include "output/run_manifest.h"
+#include "scenario/scenario.h"
 #include "report/report_runner.h"
-#include "sim/run.h"
+#include "run/run.h"
 #include "sim/simulation.h"
 #include "study/study_answers.h"
 #include "study/study_config.h"

@@ -27,7 +27,7 @@ const char* SupportLegName(SupportLeg s) {
   return "double";
 }
 
-GaitWalker::GaitWalker(RobotModel model, const RobotConfig& config)
+GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
     : initial_(config), model_(std::make_unique<RobotModel>(std::move(model))), gait_(config.gait) {
   std::vector<std::string> problems;
   if (!config.gait.derive_period_from_legs && !(gait_.period_s > 0))

@@ -48,7 +48,7 @@
 
 #include "gait/gait_steps.h"
 #include "gait/locomotion.h"
-#include "io/scenario.h"
+#include "gait/gait_config.h"
 
 namespace proxsim {
 
@@ -66,7 +66,7 @@ class GaitWalker : public Locomotion {
   /// Walks `model` as `config` says (legs, held joints, start, gait,
   /// waypoints). Throws InputError when the legs' map or the held joints do not
   /// fit the model (BipedLegs, HeldJointAngles) or the gait is invalid.
-  GaitWalker(RobotModel model, const RobotConfig& config);
+  GaitWalker(RobotModel model, const WalkConfig& config);
 
   RobotState Advance(double t_s) override;
   void RequestStop() override { stop_requested_ = true; }
@@ -106,7 +106,7 @@ class GaitWalker : public Locomotion {
   bool Passed(std::size_t i, const Vec2& p) const;
 
   // the episode's beginning, for Reset()
-  RobotConfig initial_;
+  WalkConfig initial_;
   double initial_k_ = 1;
   double initial_achieved_stride_m_ = 0;
   void Start();

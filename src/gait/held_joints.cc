@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "core/input_error.h"
-#include "io/nearest_key.h"
+#include "core/nearest_key.h"
 
 namespace proxsim {
 

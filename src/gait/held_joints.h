@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/scenario.h"
+#include "gait/gait_config.h"
 #include "robot/robot_model.h"
 
 namespace proxsim {

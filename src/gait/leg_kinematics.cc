@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "core/input_error.h"
-#include "io/nearest_key.h"
+#include "core/nearest_key.h"
 #include "scene/shape_points.h"
 
 namespace proxsim {

@@ -30,7 +30,7 @@
 
 #include "core/geometry.h"
 #include "gait/gait_curves.h"
-#include "io/scenario.h"
+#include "gait/gait_config.h"
 #include "robot/robot_model.h"
 
 namespace proxsim {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "io/run_manifest.h"
+#include "output/run_manifest.h"
 
 extern char** environ;
 

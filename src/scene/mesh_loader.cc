@@ -16,6 +16,7 @@
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/version.h>
 
 #include <assimp/Importer.hpp>
 #include <array>
@@ -187,6 +188,11 @@ std::shared_ptr<const TriangleMesh> LoadMeshFile(const std::string& path, const 
   add_node(add_node, *scene->mRootNode, aiMatrix4x4(), 0);
   if (mesh->triangles.empty()) throw InputError(path + ": the mesh file has no triangles");
   return mesh;
+}
+
+std::string AssimpVersion() {
+  return std::to_string(aiGetVersionMajor()) + "." + std::to_string(aiGetVersionMinor()) + "." +
+         std::to_string(aiGetVersionPatch());
 }
 
 }  // namespace proxsim

@@ -13,4 +13,7 @@ namespace proxsim {
 /// missing, unreadable, has no triangles or has non-finite vertices.
 std::shared_ptr<const TriangleMesh> LoadMeshFile(const std::string& path, const Vec3& scale);
 
+/// The Assimp library's version, "major.minor.patch" (summary.json's versions).
+std::string AssimpVersion();
+
 }  // namespace proxsim

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/sample_frame.h"
 
 namespace proxsim {

@@ -118,10 +118,10 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
   return best_m;
 }
 
-std::vector<LinkGeometryJson> RobotInScene::LinkGeometry() const {
-  std::vector<LinkGeometryJson> links;
+std::vector<LinkShapes> RobotInScene::LinkGeometry() const {
+  std::vector<LinkShapes> links;
   for (int link = 0; link < model().link_count(); ++link) {
-    LinkGeometryJson json{model().link_name(link), {}};
+    LinkShapes json{model().link_name(link), {}};
     for (const LinkShape& shape : model().link(link).shapes) json.shapes.push_back({shape.shape, shape.X_LO, link});
     links.push_back(std::move(json));
   }

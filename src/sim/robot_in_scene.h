@@ -14,11 +14,16 @@
 #include <vector>
 
 #include "gait/locomotion.h"
-#include "io/scene_json.h"
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
 
 namespace proxsim {
+
+/// One robot link's surfaces: its name and shapes in the link frame (scene.json draws them).
+struct LinkShapes {
+  std::string name;
+  std::vector<BodyShape> shapes;
+};
 
 class RobotInScene {
  public:
@@ -52,7 +57,7 @@ class RobotInScene {
                      double below_m = std::numeric_limits<double>::infinity());
 
   /// Link shapes for scene.json.
-  std::vector<LinkGeometryJson> LinkGeometry() const;
+  std::vector<LinkShapes> LinkGeometry() const;
 
  private:
   struct LinkSamples {

@@ -2,9 +2,8 @@
 
 #include <cmath>
 
-#include <assimp/version.h>
-#include <embree3/rtcore_config.h>
-
+#include "raycast/embree_version.h"
+#include "scene/mesh_loader.h"
 
 namespace proxsim {
 
@@ -31,9 +30,8 @@ nlohmann::json StrategyJson(const StrategyConfig& config) {
 
 nlohmann::json VersionsJson() {
   return {{"proxsim", PROXSIM_VERSION},
-          {"embree", RTC_VERSION_STRING},
-          {"assimp", std::to_string(aiGetVersionMajor()) + "." + std::to_string(aiGetVersionMinor()) + "." +
-                         std::to_string(aiGetVersionPatch())},
+          {"embree", EmbreeVersion()},
+          {"assimp", AssimpVersion()},
           {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
                         std::to_string(EIGEN_MINOR_VERSION)}};
 }

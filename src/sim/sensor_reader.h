@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/parallel.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/sample_frame.h"
 #include "sim/world.h"
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
-#include "gait/make_locomotion.h"
+#include "sim/make_locomotion.h"
 #include "sim/robot_knowledge.h"
 #include "strategy/make_strategy.h"
 

@@ -21,7 +21,7 @@
 
 #include "core/parallel.h"
 #include "gait/locomotion.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "sim/delivery_queue.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"

@@ -1,7 +1,7 @@
 #include "sim/world.h"
 
 #include "core/input_error.h"
-#include "io/nearest_key.h"
+#include "core/nearest_key.h"
 
 namespace proxsim {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
 #include "sensors/beam.h"

@@ -7,7 +7,7 @@
 #include <limits>
 #include <numeric>
 
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "study/study_selection.h"
 
 namespace proxsim {

@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "core/input_error.h"
-#include "io/scenario_sections.h"
-#include "io/yaml_reader.h"
+#include "scenario/scenario_sections.h"
+#include "scenario/yaml_reader.h"
 #include "scene/scene.h"
 
 namespace proxsim {

@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 
 namespace proxsim {
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
-#include "io/atomic_file.h"
-#include "io/number_format.h"
+#include "core/atomic_file.h"
+#include "core/number_format.h"
 #include "terrain/corridor.h"
 #include "terrain/terrain_score.h"
 #include "terrain/truth_field.h"

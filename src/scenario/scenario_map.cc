@@ -5,8 +5,8 @@
 // problem. Sensor names must be the scenario's (the nearest one suggested).
 #include <algorithm>
 
-#include "io/nearest_key.h"
-#include "io/scenario_sections.h"
+#include "core/nearest_key.h"
+#include "scenario/scenario_sections.h"
 
 namespace proxsim {
 

@@ -1,6 +1,6 @@
 // Edit distance with one rolling row (O(|a|·|b|) time, O(|b|) memory): keys
 // are a few characters long, so nothing cleverer is needed.
-#include "io/nearest_key.h"
+#include "core/nearest_key.h"
 
 #include <algorithm>
 #include <numeric>

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "gait/locomotion.h"
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 
 namespace proxsim {
 

@@ -1,4 +1,4 @@
-#include "gait/make_locomotion.h"
+#include "sim/make_locomotion.h"
 
 #include "gait/gait_walker.h"
 #include "gait/trajectory_player.h"

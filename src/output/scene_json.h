@@ -9,26 +9,22 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
+#include "sim/robot_in_scene.h"
 
 namespace proxsim {
 
 /// A shape and its pose as JSON fields: "shape", its dimensions, "xyz_m", "quat_wxyz".
 nlohmann::json ShapeToJson(const Shape& shape, const Pose& X);
 
-/// One robot link for scene.json: its name and shapes in the link frame.
-struct LinkGeometryJson {
-  std::string name;
-  std::vector<BodyShape> shapes;
-};
 
 /// The whole scene.json document; `robot_links` empty when there is no robot.
-nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links);
+nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkShapes>& robot_links);
 
 /// scene.json's text: the document indented, except each mesh's vertex and
 /// triangle lists, one line each (a robot of meshes would otherwise put a
 /// million numbers on a million lines).
-std::string SceneJsonText(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links);
+std::string SceneJsonText(const Scenario& scenario, const std::vector<LinkShapes>& robot_links);
 
 }  // namespace proxsim

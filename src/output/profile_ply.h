@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "sim/sample_frame.h"
 
 namespace proxsim {

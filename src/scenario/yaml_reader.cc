@@ -1,7 +1,7 @@
 // The mechanics of reading a YAML document value by value: type checks,
 // finiteness and bounds for numbers, map keys against a schema. yaml-cpp marks
 // every node with its position; its lines count from 0, ours from 1.
-#include "io/yaml_reader.h"
+#include "scenario/yaml_reader.h"
 
 #include <algorithm>
 #include <cassert>
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/nearest_key.h"
+#include "core/nearest_key.h"
 
 namespace proxsim {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "io/scenario.h"
-#include "io/yaml_reader.h"
+#include "scenario/scenario.h"
+#include "scenario/yaml_reader.h"
 
 namespace proxsim {
 

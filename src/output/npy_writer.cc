@@ -1,4 +1,4 @@
-#include "io/npy_writer.h"
+#include "output/npy_writer.h"
 
 #include <cmath>
 #include <cstring>

@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.h"
-#include "io/scenario.h"
+#include "core/atomic_file.h"
+#include "scenario/scenario.h"
 #include "sim/sample_frame.h"
 
 namespace proxsim {

@@ -1,4 +1,4 @@
-#include "io/run_manifest.h"
+#include "output/run_manifest.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 
 namespace proxsim {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "robot/robot_model.h"
 
 namespace proxsim {

@@ -1,6 +1,6 @@
-#include "io/readings_csv.h"
+#include "output/readings_csv.h"
 
-#include "io/number_format.h"
+#include "core/number_format.h"
 
 namespace proxsim {
 

@@ -6,8 +6,8 @@
 #include <map>
 
 #include "core/input_error.h"
-#include "io/nearest_key.h"
-#include "io/scenario_sections.h"
+#include "core/nearest_key.h"
+#include "scenario/scenario_sections.h"
 #include "scene/mesh_loader.h"
 
 namespace proxsim {

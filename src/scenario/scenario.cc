@@ -11,7 +11,7 @@
 // from the current directory. Robot model and trajectory paths are stored
 // resolved; a mesh keeps the path as written (Mesh::file) with its triangles
 // loaded.
-#include "io/scenario.h"
+#include "scenario/scenario.h"
 
 #include <cmath>
 #include <fstream>
@@ -21,7 +21,7 @@
 
 #include "core/embedded_files.h"
 #include "core/input_error.h"
-#include "io/scenario_sections.h"
+#include "scenario/scenario_sections.h"
 
 namespace proxsim {
 

@@ -1,12 +1,12 @@
-#include "sim/run.h"
+#include "run/run.h"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 
-#include "io/atomic_file.h"
-#include "io/run_manifest.h"
-#include "sim/run_recorder.h"
+#include "core/atomic_file.h"
+#include "output/run_manifest.h"
+#include "run/run_recorder.h"
 #include "sim/simulation.h"
 
 namespace proxsim {

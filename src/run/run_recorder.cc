@@ -1,16 +1,16 @@
-#include "sim/run_recorder.h"
+#include "run/run_recorder.h"
 
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 
-#include "io/atomic_file.h"
-#include "io/npy_writer.h"
-#include "io/poses_csv.h"
-#include "io/profile_ply.h"
-#include "io/readings_csv.h"
-#include "io/run_manifest.h"
-#include "io/scene_json.h"
+#include "core/atomic_file.h"
+#include "output/npy_writer.h"
+#include "output/poses_csv.h"
+#include "output/profile_ply.h"
+#include "output/readings_csv.h"
+#include "output/run_manifest.h"
+#include "output/scene_json.h"
 #include "sim/run_statistics.h"
 #include "sim/run_summary.h"
 #include "terrain/octomap_recorder.h"
@@ -160,7 +160,7 @@ nlohmann::json RunRecorder::Finish(bool interrupted) {
   if (writers_->poses) writers_->poses->Commit();
   const Scenario& scenario = sim_.scenario();
   const std::filesystem::path out(out_dir_);
-  const auto links = sim_.robot() ? sim_.robot()->LinkGeometry() : std::vector<LinkGeometryJson>{};
+  const auto links = sim_.robot() ? sim_.robot()->LinkGeometry() : std::vector<LinkShapes>{};
   WriteFileAtomically((out / "scene.json").string(), SceneJsonText(scenario, links));
   WriteFileAtomically((out / "summary.json").string(), summary.dump(2) + "\n");
   WriteRunManifest(out_dir_, summary["outputs"].get<std::vector<std::string>>());

@@ -1,10 +1,10 @@
-#include "io/profile_ply.h"
+#include "output/profile_ply.h"
 
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
 
-#include "io/number_format.h"
+#include "core/number_format.h"
 #include "sensors/measured_point.h"
 
 namespace proxsim {

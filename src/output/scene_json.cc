@@ -1,4 +1,4 @@
-#include "io/scene_json.h"
+#include "output/scene_json.h"
 
 #include <cctype>
 #include <charconv>
@@ -55,7 +55,7 @@ nlohmann::json ShapeToJson(const Shape& shape, const Pose& X) {
   return j;
 }
 
-nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links) {
+nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkShapes>& robot_links) {
   nlohmann::json doc;
   doc["duration_s"] = scenario.duration_s;
   doc["rate_hz"] = scenario.rate_hz;
@@ -74,7 +74,7 @@ nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkGeome
     doc["robot"] = nullptr;
   } else {
     nlohmann::json links = nlohmann::json::array();
-    for (const LinkGeometryJson& link : robot_links) {
+    for (const LinkShapes& link : robot_links) {
       nlohmann::json shapes = nlohmann::json::array();
       for (const BodyShape& shape : link.shapes) shapes.push_back(ShapeToJson(shape.shape, shape.X_BO));
       links.push_back({{"name", link.name}, {"shapes", std::move(shapes)}});
@@ -96,7 +96,7 @@ nlohmann::json SceneToJson(const Scenario& scenario, const std::vector<LinkGeome
   return doc;
 }
 
-std::string SceneJsonText(const Scenario& scenario, const std::vector<LinkGeometryJson>& robot_links) {
+std::string SceneJsonText(const Scenario& scenario, const std::vector<LinkShapes>& robot_links) {
   nlohmann::json doc = SceneToJson(scenario, robot_links);
   // each mesh list is swapped for a numbered placeholder string, the
   // document indented, then the placeholders replaced by the compact lists

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scenario.h"
-#include "sim/run_recorder.h"
+#include "scenario/scenario.h"
+#include "run/run_recorder.h"
 
 namespace proxsim {
 

@@ -10,8 +10,8 @@
 #include <system_error>
 #include <tuple>
 
-#include "io/nearest_key.h"
-#include "io/scenario_sections.h"
+#include "core/nearest_key.h"
+#include "scenario/scenario_sections.h"
 
 namespace proxsim {
 
