@@ -4,7 +4,8 @@
 //   ray_caster_user_shapes.cc  Embree user geometry: spheres, cylinders and planes
 //   ray_caster_cast.cc         casting a batch of rays, packet by packet
 //   ray_caster_distance.cc     the distance from a point to the world
-// They are the only files of proxsim that include Embree.
+// With embree_version.cc they are the only files of proxsim that include Embree
+// (the bench's bare-Embree peer aside).
 //
 // Layout of the acceleration structures:
 //   - every body B is a child RTCScene holding its shapes in the body frame:
