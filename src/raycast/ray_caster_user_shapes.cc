@@ -1,7 +1,8 @@
 // Spheres, cylinders and planes as Embree user geometry, intersected exactly
 // in their own frame (analytic_shapes.h) and never tessellated: each shape's
-// bounds in its body frame, and the intersect and occluded callbacks Embree
-// calls on the rays that reach those bounds.
+// bounds in its body frame, the intersect and occluded callbacks Embree calls
+// on the rays that reach those bounds, and the shape's geometry in its body's
+// scene.
 #include "raycast/ray_caster_internal.h"
 
 #include <algorithm>
