@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/number_format.h"
+#include "sensors/measured_point.h"
 
 namespace proxsim {
 
@@ -15,7 +16,7 @@ void ProfilePlyWriter::Append(const SampleFrame& frame) {
     const SensorSample& s = frame.sensors[i];
     if (!s.reading.detected()) continue;
     // the profile is built from what the sensor measured, not from the truth
-    const Vec3 p_W = s.p_WS + s.reading.d_m * s.dir_W;
+    const Vec3 p_W = MeasuredPoint_W(s.p_WS, s.dir_W, s.reading.d_m);
     line_.clear();
     for (int k = 0; k < 3; ++k) {
       AppendNumber(line_, static_cast<float>(p_W[k]));

@@ -1,6 +1,7 @@
-// The ray caster: the one place that talks to Embree (no other file includes
-// it). It holds rigid bodies made of shapes: the static world, and the robot's
-// links that move every sample. Rays come in a batch, hits go out in a
+// The ray caster: the one place that talks to Embree (no file outside
+// src/raycast/ includes it; ray_caster_internal.h lists its files). It holds
+// rigid bodies made of shapes: the static world, and the robot's links that
+// move every sample. Rays come in a batch, hits go out in a
 // caller-owned buffer of the same length; nothing is allocated per ray.
 //
 // Frames: W world, B a body, O a shape on a body.

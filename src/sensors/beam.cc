@@ -78,4 +78,8 @@ std::vector<BeamRay> MakeBeamRays(const std::optional<BeamSpec>& beam) {
   return rays;
 }
 
+Vec3 BeamRayDir_W(const Pose& X_WS, const BeamRay& ray) {
+  return ray.off_axis_deg == 0.0 ? Vec3(X_WS.linear().col(0)) : Vec3(X_WS.linear() * ray.dir_S);
+}
+
 }  // namespace proxsim

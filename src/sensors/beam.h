@@ -6,7 +6,7 @@
 // angle the ray stands for, normalised to Σw = 1. The paper's single ray is
 // the layout of one ray: the axis, g = 1, w = 1.
 //
-// Frames: S the sensor (its +x is the beam's axis).
+// Frames: W world, S the sensor (its +x is the beam's axis).
 #pragma once
 
 #include <vector>
@@ -28,5 +28,10 @@ double BeamGain(const BeamSpec& beam, double off_axis_deg);
 
 /// The rays of a beam; one axis ray for a sensor without one.
 std::vector<BeamRay> MakeBeamRays(const std::optional<BeamSpec>& beam);
+
+/// The direction in W of `ray` for a sensor at pose X_WS. The axis ray is the
+/// sensor's +x column as it stands (the paper's single ray), not a product
+/// that could round it.
+Vec3 BeamRayDir_W(const Pose& X_WS, const BeamRay& ray);
 
 }  // namespace proxsim

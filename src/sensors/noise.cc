@@ -35,4 +35,15 @@ double KeyedGaussian(const NoiseKey& key) {
   return BoxMuller(u.u1, u.u2);
 }
 
+NoiseDraw KeyedNoiseDraw(const NoiseSpec& noise, const NoiseKey& key) {
+  NoiseDraw draw;
+  draw.gaussian_g = KeyedGaussian(key);
+  if (noise.dropout > 0) {
+    NoiseKey dropout_key = key;
+    dropout_key.ray |= 0x80000000u;
+    draw.uniform = KeyedUniforms(dropout_key).u1;
+  }
+  return draw;
+}
+
 }  // namespace proxsim

@@ -8,6 +8,8 @@
 
 #include <cstdint>
 
+#include "sensors/sensor_spec.h"
+
 namespace proxsim {
 
 /// Identifies one noise draw.
@@ -32,5 +34,16 @@ double BoxMuller(double u1, double u2);
 
 /// A standard normal variate G for a key: BoxMuller(KeyedUniforms(key)).
 double KeyedGaussian(const NoiseKey& key);
+
+/// The random draws of one (seed, sensor, sample, ray) key.
+struct NoiseDraw {
+  double gaussian_g = 0.0;  ///< a standard normal variate
+  double uniform = 1.0;     ///< a uniform in (0, 1], for the dropout
+};
+
+/// The draws of one key as every reading makes them: G from the key and,
+/// only when `noise` drops detections, the dropout's uniform from a key of
+/// its own (the ray's top bit set), so G is the same with dropout on or off.
+NoiseDraw KeyedNoiseDraw(const NoiseSpec& noise, const NoiseKey& key);
 
 }  // namespace proxsim

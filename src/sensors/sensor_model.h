@@ -45,6 +45,7 @@
 
 #include "core/geometry.h"
 #include "sensors/beam.h"
+#include "sensors/noise.h"
 #include "sensors/sensor_spec.h"
 
 namespace proxsim {
@@ -76,12 +77,6 @@ struct Echo {
   /// The time-of-flight distance minus d: half the change in the way back while
   /// the sensor moved during the flight (0 unless flight_time is on).
   double flight_shift_m = 0.0;
-};
-
-/// The random draws of one (seed, sensor, sample, ray) key.
-struct NoiseDraw {
-  double gaussian_g = 0.0;  ///< a standard normal variate
-  double uniform = 1.0;     ///< a uniform in (0, 1], for the dropout
 };
 
 /// The draws of ray `ray` of a reading, made when the model asks for them: a

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <limits>
 
+#include "sensors/echo.h"
+#include "sensors/measured_point.h"
 #include "sensors/noise.h"
+#include "sensors/wave_speed.h"
 
 namespace proxsim {
 
@@ -68,9 +71,7 @@ void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame) {
   out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
   for (std::size_t r = world_.ray_begin(i); r < world_.ray_begin(i + 1); ++r) {
     rays_[r].origin_W = out.p_WS.cast<float>();
-    // the axis ray is exactly the sensor's +x, as in the paper's single-ray model
-    const BeamRay& beam_ray = world_.beam_rays()[r];
-    ray_dir_W_[r] = beam_ray.off_axis_deg == 0.0 ? out.dir_W : Vec3(X_WS.linear() * beam_ray.dir_S);
+    ray_dir_W_[r] = BeamRayDir_W(X_WS, world_.beam_rays()[r]);
     rays_[r].direction_W = ray_dir_W_[r].cast<float>();
   }
 }
@@ -101,9 +102,7 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
   if (sensor.flight_time && frame.sample > 0 && p_WS_previous.allFinite()) {
     v_W = (out.p_WS - p_WS_previous) * scenario_.rate_hz;
   }
-  const double c_m_s = sensor.wave_speed_m_s > 0 ? sensor.wave_speed_m_s
-                       : spec.type == SensorType::kUltrasonic ? 343.0
-                                                               : 299792458.0;
+  const double c_m_s = WaveSpeed_m_s(spec.type, sensor.wave_speed_m_s);
 
   // every ray's echo, with its material
   const std::size_t begin = world_.ray_begin(i);
@@ -113,7 +112,8 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
     Echo& echo = echoes_[r];
     echo = Echo{};
     if (hit.is_hit()) {
-      echo.distance_m = hit.distance_m;
+      const Vec3& dir_W = ray_dir_W_[r];
+      echo = EchoOfHit(hit.distance_m, dir_W, hit.normal_W.cast<double>());
       // the robot's links come after the scene's objects (and have the default material)
       echo.from_robot = hit.object_id >= world_.first_robot_object_id();
       if (!echo.from_robot) {
@@ -122,29 +122,18 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
         echo.acoustic_reflectivity = material.acoustic_reflectivity.value_or(1.0);
         echo.specular = material.specular;
       }
-      const Vec3& dir_W = ray_dir_W_[r];
-      const Vec3 normal_W = hit.normal_W.cast<double>();
-      echo.incidence_deg = IncidenceDeg(dir_W.x(), dir_W.y(), dir_W.z(), normal_W.x(), normal_W.y(), normal_W.z());
       if (sensor.flight_time) {
-        echo.flight_shift_m = FlightTimeShift(out.p_WS, v_W, out.p_WS + echo.distance_m * dir_W, echo.distance_m, c_m_s);
+        const Vec3 p_WH = MeasuredPoint_W(out.p_WS, dir_W, echo.distance_m);
+        echo.flight_shift_m = FlightTimeShift(out.p_WS, v_W, p_WH, echo.distance_m, c_m_s);
       }
     }
   }
 
   // keyed draws per (seed, sensor, sample, ray): thread- and order-independent,
-  // made only for the ray the reading needs; the dropout's uniform has its
-  // own key (the ray's top bit set)
+  // made only for the ray the reading needs
   const DrawOfRay draw = [&](int ray) {
-    const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(i), static_cast<std::uint64_t>(frame.sample),
-                       static_cast<std::uint32_t>(ray)};
-    NoiseDraw d;
-    d.gaussian_g = KeyedGaussian(key);
-    if (spec.noise.dropout > 0) {
-      NoiseKey dropout_key = key;
-      dropout_key.ray |= 0x80000000u;
-      d.uniform = KeyedUniforms(dropout_key).u1;
-    }
-    return d;
+    return KeyedNoiseDraw(spec.noise, {scenario_.seed, static_cast<std::uint32_t>(i),
+                                       static_cast<std::uint64_t>(frame.sample), static_cast<std::uint32_t>(ray)});
   };
 
   // the reading: the paper's single ray, or the beam's combination
@@ -165,7 +154,7 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
   out.echo = echoes_[truth];
   out.object_id = hits_[truth].object_id;
   if (hits_[truth].is_hit()) {
-    out.p_WH = out.p_WS + out.echo.distance_m * ray_dir_W_[truth];
+    out.p_WH = MeasuredPoint_W(out.p_WS, ray_dir_W_[truth], out.echo.distance_m);
   } else {
     out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
   }

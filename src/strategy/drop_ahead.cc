@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sensors/measured_point.h"
+
 namespace proxsim {
 
 namespace {
@@ -57,7 +59,7 @@ std::optional<DropSign> SeeDropAhead(const SensorOutput& sensor, const SensorInf
   if (t_ground_m <= info.min_range_m || incidence_deg > info.max_incidence_deg - kIncidenceMargin_deg) {
     return std::nullopt;
   }
-  const Vec3 p_W_ground = sensor.p_WS + t_ground_m * sensor.dir_W;
+  const Vec3 p_W_ground = MeasuredPoint_W(sensor.p_WS, sensor.dir_W, t_ground_m);
   const auto ground_ahead_m = ahead_in_corridor(p_W_ground);
   if (!ground_ahead_m || *ground_ahead_m < kClearOfFeet_m) return std::nullopt;
   // the free space reaches deep_z_m within the range (on the beam's highest

@@ -21,6 +21,7 @@
 
 #include "core/geometry.h"
 #include "gait/locomotion.h"
+#include "sensors/measured_point.h"
 #include "sensors/sensor_spec.h"
 
 namespace proxsim {
@@ -40,7 +41,7 @@ struct SensorOutput {
   Vec3 dir_W = Vec3::UnitX();  ///< its axis (unit) when it measured
 
   /// The point the reading puts in the world: origin + d_m along the axis.
-  Vec3 p_W_measured() const { return p_WS + d_m * dir_W; }
+  Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
 };
 
 /// What the robot's datasheets and mounting tell it about one sensor.

@@ -25,6 +25,7 @@
 #pragma once
 
 #include "core/geometry.h"
+#include "sensors/measured_point.h"
 #include "sensors/sensor_spec.h"
 #include "strategy/strategy.h"
 
@@ -41,9 +42,9 @@ struct RayEvidence {
   bool bounds_height = false;  ///< the empty part may lower cells' upper bounds
   bool proves_empty = false;   ///< the empty part is certain (a detection's ray): it overrides heights
 
-  Vec3 point_W() const { return p_WS + d_m * dir_W; }
-  Vec3 free_begin_W() const { return p_WS + free_begin_m * dir_W; }
-  Vec3 free_end_W() const { return p_WS + free_end_m * dir_W; }
+  Vec3 point_W() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
+  Vec3 free_begin_W() const { return MeasuredPoint_W(p_WS, dir_W, free_begin_m); }
+  Vec3 free_end_W() const { return MeasuredPoint_W(p_WS, dir_W, free_end_m); }
 };
 
 /// The standard deviation of a reported distance d_m from the sensor's noise

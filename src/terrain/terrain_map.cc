@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sensors/measured_point.h"
+
 namespace proxsim {
 
 namespace {
@@ -55,7 +57,7 @@ double ClearOfFeet_m(const RayEvidence& evidence, const RobotKnowledge& robot, d
     if (SegmentDistance(a, b, foot.p_W_heel, foot.p_W_toe) >= kFootRadius_m) continue;
     // the first point within reach of the foot, a step at a time
     for (double d = evidence.free_begin_m; d < reach_m; d += step_m) {
-      const Vec3 p = evidence.p_WS + d * evidence.dir_W;
+      const Vec3 p = MeasuredPoint_W(evidence.p_WS, evidence.dir_W, d);
       if (SegmentDistance(p, p, foot.p_W_heel, foot.p_W_toe) < kFootRadius_m) {
         reach_m = d;
         break;

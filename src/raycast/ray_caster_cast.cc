@@ -1,0 +1,154 @@
+// Casting a batch of rays: packets of consecutive rays, each into the world
+// and then, for the rays that see it, into the robot up to the world hit;
+// the hit mapped back to its object, with its normal in W. Large batches are
+// shared out over the threads on packet boundaries.
+#include "raycast/ray_caster_internal.h"
+
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <cassert>
+
+namespace proxsim {
+
+namespace {
+
+using raycast_internal::Body;
+using raycast_internal::GeomRecord;
+
+/// Batches at least this large are spread over the threads.
+constexpr std::size_t kParallelBatchRays = 512;
+
+/// Sets flush-to-zero and denormals-are-zero (Embree's recommendation) for
+/// the life of the guard, then puts the thread's MXCSR back as it was.
+class DenormalModeGuard {
+ public:
+  DenormalModeGuard() : saved_csr_(_mm_getcsr()) {
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+  }
+  ~DenormalModeGuard() { _mm_setcsr(saved_csr_); }
+  DenormalModeGuard(const DenormalModeGuard&) = delete;
+  DenormalModeGuard& operator=(const DenormalModeGuard&) = delete;
+
+ private:
+  unsigned int saved_csr_;
+};
+
+/// Rays go to Embree in packets of this many consecutive rays: a beam's rays
+/// share an origin and sit side by side in the batch, so a packet's rays
+/// walk the same BVH nodes; for incoherent rays Embree's packet kernel costs
+/// about what its single-ray one does (`proxsim bench` measures both).
+constexpr std::size_t kPacketRays = 8;
+
+/// Where a packet's rays are cast.
+struct CastScenes {
+  RTCScene world = nullptr;      ///< the world's top-level scene, or the world body's own (direct)
+  int direct_body = -1;          ///< the body of `world` when it is direct, else -1 (hits carry the instance)
+  RTCScene robot = nullptr;      ///< the robot's top-level scene; null when there is no robot
+};
+
+/// Maps the hit of `lane` to the body and its shape; Ng from B to W, unit.
+void MapHit(const RTCRayHit8& packet, std::size_t lane, int direct_body,
+            const std::vector<std::unique_ptr<Body>>& bodies, Hit* hit) {
+  const unsigned int inst = packet.hit.instID[0][lane];
+  if (packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID || (direct_body < 0 && inst == RTC_INVALID_GEOMETRY_ID)) {
+    *hit = Hit{};  // a miss
+    return;
+  }
+  const Body& body = *bodies[direct_body >= 0 ? static_cast<std::size_t>(direct_body) : inst];
+  const GeomRecord& geom = *body.geoms[packet.hit.geomID[lane]];
+  const Vec3f normal_B = Vec3f(packet.hit.Ng_x[lane], packet.hit.Ng_y[lane], packet.hit.Ng_z[lane]).normalized();
+  hit->distance_m = packet.ray.tfar[lane];
+  hit->normal_W = body.R_WB * normal_B;
+  hit->object_id = geom.object_id;
+}
+
+/// Casts rays[0..n) (n <= 8) as one packet: into the world, then the lanes
+/// that see the robot into the robot's scene up to their world hit (Embree
+/// only reports a nearer one). Each lane is intersected on its own, so a
+/// ray's answer does not depend on the other rays of its packet.
+void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body>>& bodies, const Ray* rays,
+                Hit* hits, std::size_t n) {
+  alignas(32) int valid[kPacketRays];
+  RTCRayHit8 packet;
+  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+    valid[lane] = lane < n ? -1 : 0;
+    const Ray& ray = rays[lane < n ? lane : 0];  // inactive lanes: any finite ray (Embree skips them)
+    packet.ray.org_x[lane] = ray.origin_W.x();
+    packet.ray.org_y[lane] = ray.origin_W.y();
+    packet.ray.org_z[lane] = ray.origin_W.z();
+    packet.ray.tnear[lane] = 0.0f;
+    packet.ray.dir_x[lane] = ray.direction_W.x();
+    packet.ray.dir_y[lane] = ray.direction_W.y();
+    packet.ray.dir_z[lane] = ray.direction_W.z();
+    packet.ray.time[lane] = 0.0f;
+    packet.ray.tfar[lane] = ray.max_range_m;
+    packet.ray.mask[lane] = 0xFFFFFFFFu;
+    packet.ray.id[lane] = 0;
+    packet.ray.flags[lane] = 0;
+    packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+
+  // the static world
+  rtcIntersect8(valid, scenes.world, &context, &packet);
+  for (std::size_t lane = 0; lane < n; ++lane) MapHit(packet, lane, scenes.direct_body, bodies, &hits[lane]);
+
+  // the robot's links, nearer than the world hit (tfar now holds it)
+  if (!scenes.robot) return;
+  bool any = false;
+  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+    valid[lane] = lane < n && rays[lane].see_robot ? -1 : 0;
+    any = any || valid[lane];
+    packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+  if (!any) return;
+  rtcIntersect8(valid, scenes.robot, &context, &packet);
+  for (std::size_t lane = 0; lane < n; ++lane) {
+    if (valid[lane] && packet.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
+      MapHit(packet, lane, /*direct_body=*/-1, bodies, &hits[lane]);
+    }
+  }
+}
+
+}  // namespace
+
+void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
+  assert(hits.size() == rays.size() && "one hit per ray");
+  assert(impl_->committed && "Commit() after adding or moving bodies");
+  const Impl& impl = *impl_;
+  const auto packets = static_cast<std::ptrdiff_t>((rays.size() + kPacketRays - 1) / kPacketRays);
+  const CastScenes scenes{.world = impl.world_direct ? impl.world_direct : impl.scene_world,
+                          .direct_body = impl.world_direct ? impl.world_direct_body : -1,
+                          .robot = impl.has_robot ? impl.scene_robot : nullptr};
+  const auto cast_packet = [&](std::ptrdiff_t p) {
+    const std::size_t first = static_cast<std::size_t>(p) * kPacketRays;
+    CastPacket(scenes, impl.bodies, rays.data() + first, hits.data() + first, std::min(kPacketRays, rays.size() - first));
+  };
+
+  // every ray is independent, so the result does not depend on the thread count
+  // (a batch is split on packet boundaries: the same packets either way)
+  const std::size_t grain_packets = std::max<std::size_t>(1, kParallelBatchRays / kPacketRays);
+  const auto cast_packets = [&](std::size_t begin, std::size_t end) {
+    DenormalModeGuard denormal_mode;
+    for (std::size_t p = begin; p < end; ++p) cast_packet(static_cast<std::ptrdiff_t>(p));
+  };
+  if (rays.size() >= kParallelBatchRays && impl.runner->threads() > 1) {
+    impl.runner->For(static_cast<std::size_t>(packets), grain_packets, cast_packets);
+  } else {
+    cast_packets(0, static_cast<std::size_t>(packets));
+  }
+  impl_->ThrowIfDeviceError("Cast");
+}
+
+void RayCaster::set_threads(int threads) {
+  assert(threads >= 1);
+  if (threads != impl_->runner->threads()) impl_->runner = std::make_unique<ParallelRunner>(threads);
+}
+
+}  // namespace proxsim

@@ -1,0 +1,177 @@
+// The distance from a point to the world: boxes and analytic shapes by
+// their closed forms (analytic_shapes.h), meshes by Embree's point query over
+// the body's BVH, in a search radius that grows until a triangle lies within
+// it; a body's meshes without some objects get a query scene of their own.
+#include "raycast/ray_caster_internal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "raycast/analytic_shapes.h"
+
+namespace proxsim {
+
+namespace {
+
+using raycast_internal::Body;
+using raycast_internal::GeomKind;
+using raycast_internal::GeomRecord;
+
+/// What the point-query callback reads and improves.
+struct PointQueryState {
+  const Body* body = nullptr;
+  std::span<const std::int32_t> exclude_object_ids;
+  Vec3 p_B = Vec3::Zero();
+  double best_distance_m = std::numeric_limits<double>::infinity();
+};
+
+bool IsExcluded(std::int32_t object_id, std::span<const std::int32_t> exclude_object_ids) {
+  return std::find(exclude_object_ids.begin(), exclude_object_ids.end(), object_id) !=
+         exclude_object_ids.end();
+}
+
+/// Called by rtcPointQuery for each primitive near the query point; measures
+/// mesh triangles (boxes and analytic shapes are measured exactly elsewhere).
+bool MeshPointQueryCallback(RTCPointQueryFunctionArguments* args) {
+  auto& state = *static_cast<PointQueryState*>(args->userPtr);
+  if (args->geomID >= state.body->geoms.size()) return false;
+  const GeomRecord& geom = *state.body->geoms[args->geomID];
+  if (geom.kind != GeomKind::kMesh || IsExcluded(geom.object_id, state.exclude_object_ids)) return false;
+
+  // the triangle's corners from Embree's own vertex buffer, in B
+  const std::uint32_t* tri = geom.indices + 3 * args->primID;
+  auto corner = [&](int k) {
+    const float* v = geom.vertices_B + 3 * tri[k];
+    return Vec3(v[0], v[1], v[2]);
+  };
+  // a triangle whose bounding box lies beyond the best distance cannot win (cheap reject)
+  const Vec3 a = corner(0), b = corner(1), c = corner(2);
+  const Vec3 below = a.cwiseMin(b).cwiseMin(c) - state.p_B, above = state.p_B - a.cwiseMax(b).cwiseMax(c);
+  if (below.cwiseMax(above).cwiseMax(0.0).squaredNorm() >= state.best_distance_m * state.best_distance_m) return false;
+  const double distance_m = DistanceToTriangle(state.p_B, a, b, c);
+  if (distance_m >= state.best_distance_m) return false;
+
+  // shrink the search sphere (a hair above, so float rounding prunes nothing closer)
+  state.best_distance_m = distance_m;
+  args->query->radius = static_cast<float>(distance_m * (1 + 1e-6) + 1e-6);
+  return true;
+}
+
+}  // namespace
+
+/// The scene a point query of `body` walks: the body's own when none of its
+/// meshes is excluded, else (built once per exclusion set) a scene of the
+/// meshes that are not, sharing the body's vertex and index buffers, so that
+/// the walk never wades through excluded triangles (a robot's feet near a
+/// finely meshed floor). Null when every mesh is excluded.
+RTCScene RayCaster::Impl::MeshQueryScene(Body& body, std::span<const std::int32_t> exclude_object_ids) {
+  std::lock_guard<std::mutex> lock(body.query_scenes_mutex);
+  // the caller asks with the same list every time: answer it without a scan
+  if (std::equal(exclude_object_ids.begin(), exclude_object_ids.end(), body.last_exclude.begin(),
+                 body.last_exclude.end())) {
+    return body.last_query_scene;
+  }
+  body.last_exclude.assign(exclude_object_ids.begin(), exclude_object_ids.end());
+  std::vector<std::int32_t> key;
+  for (const auto& geom : body.geoms) {
+    if (geom->kind == GeomKind::kMesh && IsExcluded(geom->object_id, exclude_object_ids)) key.push_back(geom->object_id);
+  }
+  if (key.empty()) return body.last_query_scene = body.scene;
+  std::sort(key.begin(), key.end());
+  key.erase(std::unique(key.begin(), key.end()), key.end());
+  if (auto found = body.query_scenes.find(key); found != body.query_scenes.end()) {
+    return body.last_query_scene = found->second;
+  }
+  RTCScene scene = nullptr;
+  for (std::size_t id = 0; id < body.geoms.size(); ++id) {
+    const GeomRecord& geom = *body.geoms[id];
+    if (geom.kind != GeomKind::kMesh || IsExcluded(geom.object_id, exclude_object_ids)) continue;
+    if (!scene) {
+      scene = rtcNewScene(device);
+      rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
+    }
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    std::size_t vertex_count = 0;
+    for (std::size_t i = 0; i < 3 * geom.triangle_count; ++i) {
+      vertex_count = std::max<std::size_t>(vertex_count, geom.indices[i] + 1);
+    }
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, geom.vertices_B, 0,
+                               3 * sizeof(float), vertex_count);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, geom.indices, 0,
+                               3 * sizeof(std::uint32_t), geom.triangle_count);
+    rtcCommitGeometry(geometry);
+    // the same geometry ID as in the body's scene, so the callback finds its record
+    rtcAttachGeometryByID(scene, geometry, static_cast<unsigned int>(id));
+    rtcReleaseGeometry(geometry);
+  }
+  if (scene) rtcCommitScene(scene);
+  body.query_scenes.emplace(std::move(key), scene);
+  return body.last_query_scene = scene;
+}
+
+double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
+                                  double below_m) const {
+  // no distance is below a cap <= 0 (and a point query needs a positive radius)
+  if (!(below_m > 0)) return below_m;
+  // the cap is the first best: nothing at or beyond it is measured
+  double best_m = below_m;
+  for (const auto& body_ptr : impl_->bodies) {
+    const Body& body = *body_ptr;
+    if (body.kind != BodyKind::kWorld) continue;
+    const Vec3 p_B = body.X_WB.inverse() * p_W;
+
+    // boxes and analytic shapes: exact closed forms in the shape frame
+    for (const GeomRecord* geom_ptr : body.closed_form_geoms) {
+      const GeomRecord& geom = *geom_ptr;
+      if (IsExcluded(geom.object_id, exclude_object_ids)) continue;
+      const Vec3 p_O = geom.X_OB * p_B;
+      double distance_m = best_m;
+      switch (geom.kind) {
+        case GeomKind::kBox: distance_m = DistanceToBox(std::get<Box>(geom.shape), p_O); break;
+        case GeomKind::kSphere: distance_m = DistanceToSphere(std::get<Sphere>(geom.shape), p_O); break;
+        case GeomKind::kCylinder: distance_m = DistanceToCylinder(std::get<Cylinder>(geom.shape), p_O); break;
+        case GeomKind::kPlane: distance_m = DistanceToPlane(p_O); break;
+        case GeomKind::kMesh: break;
+      }
+      best_m = std::min(best_m, distance_m);
+    }
+
+    // meshes: Embree's point query walks the body's BVH within a search radius.
+    // An unbounded query (a world of meshes only) would visit a large part of
+    // the BVH before the radius shrinks, so the radius grows from 5 cm by ×2
+    // until a triangle lies within it: the nearest one is then found exactly.
+    // The growth stops at the best so far (the cap at first): a point far from
+    // every mesh then costs a few small empty queries, not one that wades
+    // through the triangles between it and the nearest.
+    if (!body.has_mesh) continue;
+    RTCScene query_scene = impl_->MeshQueryScene(const_cast<Body&>(body), exclude_object_ids);
+    if (!query_scene) continue;  // every mesh of the body is excluded
+    PointQueryState state;
+    state.body = &body;
+    state.exclude_object_ids = exclude_object_ids;
+    state.p_B = p_B;
+    state.best_distance_m = best_m;
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    constexpr double kFirstRadius_m = 0.05, kGrowth = 2.0, kLastFiniteRadius_m = 1e4;
+    for (double radius_m = std::min(best_m, kFirstRadius_m);; radius_m *= kGrowth) {
+      const bool last = radius_m >= best_m || radius_m > kLastFiniteRadius_m;
+      RTCPointQuery query;
+      query.x = static_cast<float>(p_B.x());
+      query.y = static_cast<float>(p_B.y());
+      query.z = static_cast<float>(p_B.z());
+      query.time = 0.0f;
+      const double bound_m = last ? best_m : radius_m;
+      query.radius = std::isinf(bound_m) ? std::numeric_limits<float>::infinity()
+                                         : static_cast<float>(bound_m * (1 + 1e-6) + 1e-6);
+      rtcPointQuery(query_scene, &query, &context, &MeshPointQueryCallback, &state);
+      // a triangle within the radius: nothing outside it can be nearer
+      if (last || state.best_distance_m <= radius_m) break;
+    }
+    best_m = std::min(best_m, state.best_distance_m);
+  }
+  return best_m;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,144 @@
+// The ray caster's insides, shared by its files; users include
+// raycast/ray_caster.h. The files, one job each:
+//   ray_caster.cc              the device, the bodies and their instances, Commit
+//   ray_caster_user_shapes.cc  Embree user geometry: spheres, cylinders and planes
+//   ray_caster_cast.cc         casting a batch of rays, packet by packet
+//   ray_caster_distance.cc     the distance from a point to the world
+// With embree_version.cc they are the only files of proxsim that include Embree
+// (the bench's bare-Embree peer aside).
+//
+// Layout of the acceleration structures:
+//   - every body B is a child RTCScene holding its shapes in the body frame:
+//     boxes as 12 triangles, meshes as their triangles (both moved by X_BO),
+//     spheres, cylinders and planes as user geometry intersected exactly
+//     (analytic_shapes.h), never tessellated;
+//   - two top-level scenes instance the bodies (one level of instancing):
+//     `world` the kWorld bodies and `robot` the kRobot ones. The instance ID
+//     of a body is its index, so a hit maps straight back to (body, geometry)
+//     → object_id. A ray is cast into the world first — straight into the
+//     world body's own scene when there is one world body at the identity
+//     pose (the usual case), so the big static BVH is walked without an
+//     instance level — then, if it sees the robot, into `robot` up to the
+//     world hit: the nearer hit wins.
+// Moving a body only rewrites its instance transforms; Commit() then rebuilds
+// the top-level scene that changed (the robot's, each sample), whose only
+// primitives are the instances. The child scenes, and so the static world's
+// BVH, are built once in AddBody.
+//
+// Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
+// triangle test, so a ray through a shared edge or vertex cannot slip between
+// triangles. Child scenes are built once with high (world) or medium (robot)
+// quality; the small top-level scenes are rebuilt at medium quality.
+//
+// Normals: Embree reports Ng in the instanced body's frame B and unnormalised;
+// we normalise it and rotate it by R_WB. Triangle normals follow the right-hand
+// rule of the vertex order (counter-clockwise seen from the front), which for
+// boxes is outward.
+//
+// Errors: the device error callback records Embree's message; the public
+// calls check it and throw std::runtime_error, so no error passes silently
+// (and no exception is thrown through Embree's C frames).
+#pragma once
+
+#include <embree3/rtcore.h>
+#include <oneapi/tbb/task_arena.h>
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/parallel.h"
+#include "raycast/ray_caster.h"
+
+namespace proxsim {
+
+namespace raycast_internal {
+
+enum class GeomKind { kBox, kMesh, kSphere, kCylinder, kPlane };
+
+/// One Embree geometry of a body: what the callbacks and hit mapping need.
+struct GeomRecord {
+  GeomKind kind = GeomKind::kBox;
+  std::int32_t object_id = 0;
+  Shape shape;  ///< boxes and analytic shapes only (a mesh's triangles live in Embree)
+  Pose X_BO = Pose::Identity();
+  Pose X_OB = Pose::Identity();
+  RTCBounds bounds_B{};  ///< user geometry only: conservative box in B
+  // triangle geometry only: Embree's own buffers, in B (read by point queries)
+  const float* vertices_B = nullptr;
+  const std::uint32_t* indices = nullptr;
+  std::size_t triangle_count = 0;
+};
+
+struct Body {
+  BodyKind kind = BodyKind::kWorld;
+  RTCScene scene = nullptr;
+  std::vector<std::unique_ptr<GeomRecord>> geoms;  ///< index = geomID in `scene`; stable addresses
+  Pose X_WB = Pose::Identity();
+  Eigen::Matrix3f R_WB = Eigen::Matrix3f::Identity();
+  RTCGeometry instance_robot = nullptr;  ///< null for world bodies
+  RTCGeometry instance_world = nullptr;  ///< null for robot bodies
+  bool has_mesh = false;
+  std::vector<const GeomRecord*> closed_form_geoms;  ///< every geom but meshes, for DistanceToWorld
+  // point-query scenes of this body's meshes without some objects (the
+  // ground, say), keyed by the sorted excluded object ids; built on first use
+  std::mutex query_scenes_mutex;
+  std::map<std::vector<std::int32_t>, RTCScene> query_scenes;
+  std::vector<std::int32_t> last_exclude{-1};  // the last list asked for (never a valid list: ids >= 0)
+  RTCScene last_query_scene = nullptr;          // and its answer
+};
+
+}  // namespace raycast_internal
+
+struct RayCaster::Impl {
+  using Body = raycast_internal::Body;
+  using GeomRecord = raycast_internal::GeomRecord;
+
+  RTCDevice device = nullptr;
+  RTCScene scene_world = nullptr;
+  RTCScene scene_robot = nullptr;
+  std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in the top-level scenes
+  // the world body cast without its instance (see the top of the file), or null
+  RTCScene world_direct = nullptr;
+  int world_direct_body = -1;
+  bool has_robot = false;
+  std::size_t triangle_count = 0;
+  std::unique_ptr<ParallelRunner> runner = std::make_unique<ParallelRunner>(1);  ///< for large batches
+  bool committed = true;
+  // which top-level scene has a change to commit: moving a robot body leaves
+  // the world's as it was, so a step rebuilds only `robot`
+  bool robot_dirty = true;
+  bool world_dirty = true;
+  tbb::task_arena commit_arena{1};  ///< one slot: top-level commits run on the caller only
+
+  // first error reported by Embree since the last check
+  std::mutex error_mutex;
+  std::string error_message;
+  std::atomic<bool> has_error{false};
+
+  /// Embree's error callback: keeps the first message for ThrowIfDeviceError.
+  static void OnDeviceError(void* user_ptr, RTCError code, const char* message);
+
+  /// Throws std::runtime_error if Embree reported an error since the last check.
+  void ThrowIfDeviceError(const char* during);
+
+  /// A new scene, robust, at the given build quality.
+  RTCScene NewScene(RTCBuildQuality quality);
+
+  // ray_caster.cc: a body's triangles (a box's or a mesh's) and its instance in a top-level scene
+  void AttachTriangles(Body& body, std::unique_ptr<GeomRecord> record, const std::vector<Vec3>& vertices_B,
+                       const std::vector<std::array<std::uint32_t, 3>>& triangles);
+  RTCGeometry NewInstance(RTCScene top, const Body& body, unsigned int inst_id);
+  // ray_caster_user_shapes.cc: a sphere, cylinder or plane of a body
+  void AttachUserShape(Body& body, std::unique_ptr<GeomRecord> record);
+  // ray_caster_distance.cc: the scene a point query of the body walks
+  RTCScene MeshQueryScene(Body& body, std::span<const std::int32_t> exclude_object_ids);
+};
+
+}  // namespace proxsim
