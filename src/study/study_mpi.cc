@@ -63,16 +63,18 @@ void StudyMpi::ServeWorkers([[maybe_unused]] const std::function<long()>& take,
     for (;;) {
       MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &arrived, &status);
       if (arrived) break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
     int length = 0;
     MPI_Get_count(&status, MPI_CHAR, &length);
     buffer.resize(static_cast<std::size_t>(length));
     MPI_Recv(buffer.data(), length, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (!buffer.empty()) on_result(buffer);
+    // the worker's next job first, then the result: recording it (the journal's
+    // fsync) must not keep the worker waiting
     long job = take();
     MPI_Send(&job, 1, MPI_LONG, status.MPI_SOURCE, kTagJob, MPI_COMM_WORLD);
     if (job < 0) --active;
+    if (!buffer.empty()) on_result(buffer);
   }
 #endif
 }
