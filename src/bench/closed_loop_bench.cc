@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "bench/bench_measures.h"
 #include "bench/bench_process.h"
 #include "run/run.h"
 #include "sim/simulation.h"
@@ -15,9 +16,6 @@
 namespace proxsim::bench {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 }  // namespace
 

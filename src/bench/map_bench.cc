@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "bench/bench_measures.h"
 #include "scenario/scenario.h"
 #include "sim/simulation.h"
 #include "terrain/octomap_recorder.h"
@@ -15,9 +16,6 @@
 namespace proxsim::bench {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // The paper run without its stop rule: every sample walks and reads.
 Scenario PaperWalk(bool with_map) {

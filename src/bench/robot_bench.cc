@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "bench/bench_measures.h"
 #include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
@@ -16,9 +17,6 @@
 namespace proxsim::bench {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 const std::filesystem::path kH1Scenario = std::filesystem::path(PROXSIM_SOURCE_DIR) / "data/scenarios/h1_dining_room.yaml";
 

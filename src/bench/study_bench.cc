@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "bench/bench_measures.h"
 #include "bench/bench_process.h"
 #include "core/embedded_files.h"
 #include "study/study_config.h"
@@ -15,7 +16,6 @@ namespace proxsim::bench {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 // 100 mountings on the left tibia (4 types x 5 heights x 5 pitches) on the
 // paper's walk and scene, `seeds` seeds: 100 x seeds runs in `seeds` jobs.

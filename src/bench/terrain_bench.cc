@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "bench/bench_measures.h"
 #include "gait/gait_walker.h"
 #include "sim/make_locomotion.h"
 #include "scenario/scenario.h"
@@ -15,9 +16,6 @@
 namespace proxsim::bench {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 const std::filesystem::path kStairsScenario =
     std::filesystem::path(PROXSIM_SOURCE_DIR) / "data/scenarios/stairs_walk.yaml";
