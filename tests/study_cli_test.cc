@@ -182,6 +182,17 @@ TEST_F(StudyCliTest, BadStudiesListEveryProblemBeforeAnyRun) {
   EXPECT_EQ(link.exit_code, 2) << link.output;
   EXPECT_NE(link.output.find("left_wing"), std::string::npos) << link.output;
   EXPECT_FALSE(fs::exists(dir_ / "out" / "journal.jsonl")) << "no run may start";
+
+  // a hazard no scene holds would measure nothing
+  std::ofstream(dir_ / "no_hazard.yaml") << "proxsim_study: 1\nbase: " << PROXSIM_SOURCE_DIR
+                                         << "/data/scenarios/paper_dining_room.yaml\n"
+                                         << "candidates: {axes: {type: laser, link: left_tibia}}\n"
+                                         << "hazards: [obstacle, unicorn]\n";
+  const auto hazard = RunProxsim("study " + (dir_ / "no_hazard.yaml").string() + " --out " + (dir_ / "out").string());
+  EXPECT_EQ(hazard.exit_code, 2) << hazard.output;
+  EXPECT_NE(hazard.output.find("'unicorn' begins the name of no object"), std::string::npos) << hazard.output;
+  EXPECT_EQ(hazard.output.find("'obstacle'"), std::string::npos) << hazard.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "journal.jsonl")) << "no run may start";
 }
 
 }  // namespace

@@ -6,6 +6,12 @@
 
 namespace proxsim {
 
+bool NamesAHazard(const World& world, const std::string& prefix) {
+  for (std::int32_t id = 0; id < world.first_robot_object_id(); ++id)
+    if (world.object_name(id).starts_with(prefix)) return true;
+  return false;
+}
+
 RunMetricsRecorder::RunMetricsRecorder(const Simulation& sim, const std::vector<std::string>& hazards)
     : sim_(sim) {
   const World& world = sim.world();

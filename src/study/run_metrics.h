@@ -31,6 +31,10 @@ struct RunMetrics {
   double floor_coverage = 0;
 };
 
+/// Whether `prefix` names a hazard in `world`: a scene object (not a robot
+/// link) whose name starts with it.
+bool NamesAHazard(const World& world, const std::string& prefix);
+
 /// Accumulates the metrics of every sensor of a simulation, sample by sample.
 class RunMetricsRecorder {
  public:

@@ -219,11 +219,21 @@ StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, boo
   for (int t = 0; t < threads; ++t) workers.push_back(std::make_unique<Worker>(study));
   {
     std::vector<std::string> problems;
+    std::vector<bool> hazard_found(study.hazards.size(), false);
     for (std::size_t v = 0; v < study.variants.size(); ++v) {
       try {
-        workers[0]->SimulationOf(v);
+        const World& world = workers[0]->SimulationOf(v).world();
+        for (std::size_t h = 0; h < study.hazards.size(); ++h)
+          if (NamesAHazard(world, study.hazards[h])) hazard_found[h] = true;
       } catch (const InputError& error) {
         problems.insert(problems.end(), error.problems().begin(), error.problems().end());
+      }
+    }
+    // a hazard no scene holds would be measured as never seen by any mounting
+    for (std::size_t h = 0; problems.empty() && h < study.hazards.size(); ++h) {
+      if (!hazard_found[h]) {
+        problems.push_back(study.source + ": hazards: '" + study.hazards[h] +
+                           "' begins the name of no object in any scene variant: nothing to measure for it");
       }
     }
     if (!problems.empty()) throw InputError(problems);
