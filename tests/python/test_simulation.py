@@ -147,6 +147,14 @@ def test_bad_scenario_raises_input_error_with_the_cli_messages(tmp_path):
         proxsim.Simulation.builtin("no_such_builtin")
 
 
+def test_a_scenario_with_no_sensors_measures_nothing_and_is_refused(tmp_path):
+    empty = tmp_path / "empty.yaml"
+    empty.write_text("proxsim: 1\nduration_s: 1\n")
+    with pytest.raises(proxsim.InputError, match="no sensors: nothing to measure"):
+        proxsim.Simulation(str(empty))
+    assert run_cli("validate", str(empty)).returncode == 2
+
+
 def test_wrong_arguments_raise_type_and_value_errors(paper_sim):
     with pytest.raises(TypeError):
         proxsim.Simulation(42)
