@@ -1,9 +1,7 @@
 #include "output/npy_writer.h"
 
-#include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <limits>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
