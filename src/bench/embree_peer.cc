@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bench/peers.h"
+#include "raycast/embree_version.h"
 
 namespace proxsim::bench {
 
@@ -42,7 +43,9 @@ struct EmbreePeer::Impl {
 };
 
 EmbreePeer::EmbreePeer(const BenchScene& scene, bool robust) : impl_(std::make_unique<Impl>()) {
-  impl_->device = rtcNewDevice(nullptr);
+  // bare Embree on the same code path as proxsim's own ray caster
+  const std::string config = EmbreeDeviceConfig();
+  impl_->device = rtcNewDevice(config.empty() ? nullptr : config.c_str());
   if (!impl_->device) throw std::runtime_error("bench: cannot create an Embree device");
   rtcSetDeviceMemoryMonitorFunction(impl_->device, &Impl::OnMemory, impl_.get());
   const auto start = std::chrono::steady_clock::now();

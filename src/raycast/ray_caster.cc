@@ -3,6 +3,7 @@
 // geometry, ray_caster_user_shapes.cc), its instance in a top-level scene,
 // moving it, and Commit. The layout is described in ray_caster_internal.h.
 #include "raycast/ray_caster_internal.h"
+#include "raycast/embree_version.h"
 
 #include <cassert>
 #include <stdexcept>
@@ -110,10 +111,14 @@ RTCGeometry RayCaster::Impl::NewInstance(RTCScene top, const Body& body, unsigne
 }
 
 RayCaster::RayCaster() : impl_(std::make_unique<Impl>()) {
-  impl_->device = rtcNewDevice(nullptr);
+  // the same configuration for every device of the process, so that a run can
+  // be pinned to one of Embree's code paths (PROXSIM_EMBREE_CONFIG=isa=sse4.2)
+  const std::string config = EmbreeDeviceConfig();
+  impl_->device = rtcNewDevice(config.empty() ? nullptr : config.c_str());
   if (!impl_->device) {
-    throw std::runtime_error(std::string("RayCaster: cannot create the Embree device: ") +
-                             ErrorCodeName(rtcGetDeviceError(nullptr)));
+    throw std::runtime_error(std::string("RayCaster: cannot create the Embree device") +
+                             (config.empty() ? "" : std::string(" with ") + kEmbreeConfigVariable + "='" + config + "'") +
+                             ": " + ErrorCodeName(rtcGetDeviceError(nullptr)));
   }
   rtcSetDeviceErrorFunction(impl_->device, &Impl::OnDeviceError, impl_.get());
   // rebuilt every sample: medium quality, not dynamic (for a few instances
