@@ -249,5 +249,30 @@ TEST(GaitWalker, SetStrideChangesTheStrideWithoutPenetration) {
   EXPECT_LT(max_dz, 3e-3);
 }
 
+// A stride set while walking is looked up in a table of sampled amplitudes,
+// not searched: the amplitude it gives walks the stride asked for within the
+// interpolation's error (bounded here: 1 mm, against the exact steady stride
+// of that amplitude), the loaded stride maps back to the loaded amplitude
+// exactly, and the stride in force is a no-op.
+TEST(GaitWalker, SetStrideLooksUpAnAmplitudeThatWalksTheStrideAskedFor) {
+  GaitWalker walker(RobotModel::Builtin("biped"), StraightConfig(0.6, 1.2));
+  const double loaded_k = walker.amplitude();
+  const StepPlanner planner(walker.legs());
+  for (double stride_m = 0.30; stride_m <= 0.901; stride_m += 0.05) {
+    walker.SetStride(stride_m);
+    EXPECT_NEAR(SteadyStride_m(planner, walker.amplitude()), stride_m, 1e-3) << "stride " << stride_m;
+    EXPECT_NEAR(walker.achieved_stride_m(), stride_m, 1e-9);  // the loaded 0.6 m: as the bisection found it
+  }
+  walker.SetStride(0.6);
+  EXPECT_EQ(walker.amplitude(), loaded_k);
+  const double k_before = walker.amplitude();
+  walker.SetStride(0.6);  // in force: nothing to do
+  EXPECT_EQ(walker.amplitude(), k_before);
+  // out of reach: clamped to the largest amplitude, as the load's bisection clamps
+  walker.SetStride(50.0);
+  EXPECT_DOUBLE_EQ(walker.amplitude(), kMaxAmplitude);
+  EXPECT_LT(walker.achieved_stride_m(), 50.0);
+}
+
 }  // namespace
 }  // namespace proxsim

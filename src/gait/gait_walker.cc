@@ -12,8 +12,6 @@ namespace proxsim {
 
 namespace {
 
-constexpr double kMinAmplitude = 0.05, kMaxAmplitude = 1.6;
-
 double WrapAngle(double a) { return std::remainder(a, 2 * kPi); }
 
 }  // namespace
@@ -48,10 +46,11 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   if (config.gait.derive_stride_from_legs) initial_.gait.stride_m = kReferenceStride_m * length_ratio;
   if (config.gait.derive_period_from_legs) initial_.gait.period_s = kReferencePeriod_s * std::sqrt(length_ratio);
   gait_ = initial_.gait;
-  // the amplitude search runs once; Reset() reuses its answer
-  SetStride(initial_.gait.stride_m);
-  initial_k_ = k_target_;
-  initial_achieved_stride_m_ = achieved_stride_m_;
+  // the exact amplitude search runs once; Reset() and SetStride() reuse its answer
+  const AmplitudeStride loaded = BisectAmplitude(*planner_, initial_.gait.stride_m);
+  stride_table_.AddExact(initial_.gait.stride_m, loaded);
+  initial_k_ = loaded.k;
+  initial_achieved_stride_m_ = loaded.stride_m;
   max_step_m_ = config.gait.max_step_m > 0 ? config.gait.max_step_m : DefaultMaxStep_m(*legs_, initial_k_);
   Start();
 }
@@ -126,22 +125,12 @@ void GaitWalker::Start() {
 }
 
 void GaitWalker::SetStride(double stride_m) {
-  if (!(stride_m > 0)) return;
+  // a stride already in force costs nothing; another is looked up, not searched
+  if (!(stride_m > 0) || stride_m == gait_.stride_m) return;
   gait_.stride_m = stride_m;
-  // bisection on the steady stride, assumed increasing with the amplitude
-  double lo = kMinAmplitude, hi = kMaxAmplitude;
-  if (SteadyStride_m(*planner_, hi) <= stride_m) {
-    lo = hi;
-  } else if (SteadyStride_m(*planner_, lo) >= stride_m) {
-    hi = lo;
-  } else {
-    for (int i = 0; i < 40; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (SteadyStride_m(*planner_, mid) < stride_m ? lo : hi) = mid;
-    }
-  }
-  k_target_ = 0.5 * (lo + hi);
-  achieved_stride_m_ = SteadyStride_m(*planner_, k_target_);
+  const AmplitudeStride walked = stride_table_.For(*planner_, stride_m);
+  k_target_ = walked.k;
+  achieved_stride_m_ = walked.stride_m;
   if (planner_->terrain() != nullptr) planner_->set_terrain(planner_->terrain(), Limits());
 }
 

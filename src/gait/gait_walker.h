@@ -28,7 +28,8 @@
 //
 // Stride: the amplitude k of the curves (1 = the normative adult gait) sets
 // the stride; k is found by bisection on the steady stride of straight walking
-// for this robot's legs. A stride beyond what k ∈ [0.05, 1.6] can give is
+// for this robot's legs at load, and by interpolation in a table of sampled
+// amplitudes for a stride set while walking (gait/stride_table.h). A stride beyond what k ∈ [0.05, 1.6] can give is
 // clamped: achieved_stride_m() says what is walked. A new stride takes effect
 // at the next heel strike, ramped in over the double support.
 //
@@ -49,6 +50,7 @@
 #include "gait/gait_steps.h"
 #include "gait/locomotion.h"
 #include "gait/gait_config.h"
+#include "gait/stride_table.h"
 
 namespace proxsim {
 
@@ -110,6 +112,7 @@ class GaitWalker : public Locomotion {
   double initial_k_ = 1;
   double initial_achieved_stride_m_ = 0;
   void Start();
+  StrideTable stride_table_;
 
   std::unique_ptr<RobotModel> model_;  // stable address: legs_ and planner_ refer into it
   std::unique_ptr<BipedLegs> legs_;
