@@ -69,7 +69,6 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   result.wall_s = SecondsSince(start);
   if (!options.out_dir.empty()) {
     WriteTimings(options.out_dir, result.wall_s, loop_wall_s, options.threads, recorder.samples(), scenario.rate_hz);
-    AddToRunManifest(options.out_dir, {"timings.json"});
   }
   return result;
 }
@@ -82,6 +81,9 @@ void WriteTimings(const std::string& out_dir, double wall_s, double loop_wall_s,
                                   {"threads", threads},
                                   {"simulated_s_per_wall_s", loop_wall_s > 0 ? simulated_s / loop_wall_s : 0.0}};
   WriteFileAtomically((std::filesystem::path(out_dir) / "timings.json").string(), timings.dump(2) + "\n");
+  // listed like every other file of the run, so that `proxsim plot` and the
+  // next run into the folder know it (a Python run writes it too)
+  AddToRunManifest(out_dir, {"timings.json"});
 }
 
 }  // namespace proxsim

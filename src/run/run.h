@@ -36,7 +36,7 @@ struct RunResult {
 /// Runs a validated scenario; throws std::runtime_error on I/O failure.
 RunResult RunScenario(const Scenario& scenario, const RunOptions& options);
 
-/// timings.json: wall times and simulated seconds per wall second.
+/// timings.json: wall times and simulated seconds per wall second, listed in the run's manifest.
 void WriteTimings(const std::string& out_dir, double wall_s, double loop_wall_s, int threads, std::int64_t samples,
                   double rate_hz);
 

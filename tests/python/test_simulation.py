@@ -1,4 +1,5 @@
 """The Python contract of proxsim.Simulation, against the real package and CLI."""
+import json
 import math
 import os
 
@@ -77,6 +78,20 @@ def test_out_writes_the_same_files_as_the_cli(tmp_path):
             sim.step()
     assert_same_files(cli_out, py_out)
     assert os.path.exists(py_out / "timings.json")
+
+
+def test_a_python_runs_folder_lists_its_timings_and_can_be_redrawn(tmp_path):
+    out = tmp_path / "py"
+    with proxsim.Simulation.builtin("paper", seed=4, out=str(out)) as sim:
+        while not sim.done:
+            sim.step()
+    with open(out / "manifest.json") as f:
+        listed = json.load(f)
+    names = [entry["path"] if isinstance(entry, dict) else entry for entry in listed["files"]]
+    assert "timings.json" in names
+    done = run_cli("plot", str(out))
+    assert done.returncode == 0, done.stderr
+    assert os.path.exists(out / "report" / "paper_figures.png")
 
 
 def test_reset_gives_the_files_of_a_fresh_simulation(tmp_path):
