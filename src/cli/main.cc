@@ -104,23 +104,17 @@ int Run(const std::string& scenario_path, const std::string& out_dir, std::optio
   }
   if (const auto robot = result.summary.find("robot"); robot != result.summary.end()) {
     const auto& r = *robot;
-    // a robot standing because its legs refused a step says so, not "at the end of its path"
-    std::string refused;
-    for (const auto& event : r["events"]) {
-      if (event["event"] == "cannot_step") {
-        char buffer[64];
-        std::snprintf(buffer, sizeof buffer, " (cannot_step at t = %.2f s)", event["t_s"].get<double>());
-        refused = buffer;
-      }
+    // why it stands, as summary.json's stop_reason says
+    std::string motion = "still walking at the end";
+    if (r["stopped"].get<bool>()) {
+      const std::string reason = r["stop_reason"].get<std::string>();
+      char at[48];
+      std::snprintf(at, sizeof at, " at t = %.2f s", r["stop_t_s"].get<double>());
+      motion = reason == "strategy"      ? std::string("stopped by its strategy") + at
+               : reason == "cannot_step" ? std::string("standing before a step its legs cannot take (cannot_step") + at + ")"
+                                         : std::string("standing at the end of its path since") + at;
     }
-    const bool reached_goal = r["reached_goal"].is_boolean() && r["reached_goal"].get<bool>();
-    const std::string standing = refused.empty() || reached_goal ? "standing at the end of its path"
-                                                 : "standing before a step its legs cannot take" + refused;
-    std::printf("  robot: walked %.2f m, %s, min clearance %s m\n", r["distance_walked_m"].get<double>(),
-                r["stopped"].get<bool>()
-                    ? ("stopped by its strategy at t = " + std::to_string(r["stop_t_s"].get<double>()) + " s").c_str()
-                : r["standing_at_end"].get<bool>() ? standing.c_str()
-                                                   : "still walking at the end",
+    std::printf("  robot: walked %.2f m, %s, min clearance %s m\n", r["distance_walked_m"].get<double>(), motion.c_str(),
                 r["min_clearance_m"].is_null() ? "n/a" : std::to_string(r["min_clearance_m"].get<double>()).c_str());
   }
   std::printf("outputs in %s/\n", out_dir.c_str());

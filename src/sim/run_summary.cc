@@ -31,6 +31,7 @@ nlohmann::json StrategyJson(const StrategyConfig& config) {
 nlohmann::json VersionsJson() {
   return {{"proxsim", PROXSIM_VERSION},
           {"embree", EmbreeVersion()},
+          {"embree_config", EmbreeDeviceConfig()},
           {"assimp", AssimpVersion()},
           {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
                         std::to_string(EIGEN_MINOR_VERSION)}};
@@ -96,6 +97,7 @@ nlohmann::json RobotOutcomeJson(const Simulation& sim) {
           {"strategy", sim.strategy() ? nlohmann::json(sim.strategy()->name()) : nlohmann::json(nullptr)},
           {"stopped", outcome.stopped},
           {"stop_t_s", NullUnless(outcome.stopped, outcome.stop_t_s)},
+          {"stop_reason", NullUnless(outcome.stopped, outcome.stop_reason)},
           {"stop_requested_t_s", NullUnless(outcome.stop_requested, outcome.stop_request_t_s)},
           {"reached_goal", NullUnless(has_goal, outcome.reached_goal)},
           {"reached_goal_t_s", NullUnless(outcome.reached_goal, outcome.reached_goal_t_s)},

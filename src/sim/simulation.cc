@@ -21,9 +21,13 @@ class Simulation::Commands : public RobotCommands {
       sim_.outcome_.stop_requested = true;
       sim_.outcome_.stop_request_t_s = sim_.frame_.t_s;
     }
+    sim_.stop_pending_ = true;
     sim_.locomotion_->RequestStop();
   }
-  void Resume() override { sim_.locomotion_->Resume(); }
+  void Resume() override {
+    sim_.stop_pending_ = false;
+    sim_.locomotion_->Resume();
+  }
   void SetStride(double stride_m) override {
     if (!(stride_m > 0) || !std::isfinite(stride_m)) {
       throw std::invalid_argument("SetStride: the stride must be a finite number of metres > 0, got " +
@@ -147,6 +151,9 @@ void Simulation::Reset(std::uint64_t seed) {
   reader_->Reset();
   delivery_->Clear();
   outcome_ = RobotOutcome{};
+  stop_pending_ = false;
+  walking_since_t_s_ = 0;
+  cannot_step_t_s_ = -std::numeric_limits<double>::infinity();
   events_.clear();
   state_ = RobotState{};
   if (locomotion_) {
@@ -165,7 +172,10 @@ const SampleFrame& Simulation::Step() {
   if (locomotion_) {
     // every link at its pose of this very sample time
     state_ = locomotion_->Advance(frame_.t_s);
-    for (LocomotionEvent& event : locomotion_->TakeEvents()) event_log_->Log(std::move(event.event), std::move(event.detail));
+    for (LocomotionEvent& event : locomotion_->TakeEvents()) {
+      if (event.event == "cannot_step") cannot_step_t_s_ = frame_.t_s;
+      event_log_->Log(std::move(event.event), std::move(event.detail));
+    }
     robot->Place(state_);
     world_->caster().Commit();
     frame_.robot = {.present = true,
@@ -223,14 +233,8 @@ void Simulation::UpdateRobot(double clearance_m) {
   // the strategy sees what the robot knows and nothing else
   if (strategy_) strategy_->Decide(observation_, *commands_, *event_log_);
 
+  UpdateStanding();
   char detail[160];
-  if (outcome_.stop_requested && state_.stopped && !outcome_.stopped) {
-    outcome_.stopped = true;
-    outcome_.stop_t_s = frame_.t_s;
-    std::snprintf(detail, sizeof detail, "standing, both feet down, after the stop commanded at t = %.2f s",
-                  outcome_.stop_request_t_s);
-    event_log_->Log("stopped", detail);
-  }
   if (goal_m_ && !outcome_.reached_goal &&
       (state_.X_WP.translation().head<2>() - *goal_m_).norm() <= goal_tolerance_m_) {
     outcome_.reached_goal = true;
@@ -244,6 +248,27 @@ void Simulation::UpdateRobot(double clearance_m) {
   if (clearance_m < outcome_.min_clearance_m) {
     outcome_.min_clearance_m = clearance_m;
     outcome_.min_clearance_t_s = frame_.t_s;
+  }
+}
+
+void Simulation::UpdateStanding() {
+  if (!state_.stopped) {
+    if (outcome_.stopped) walking_since_t_s_ = frame_.t_s;
+    outcome_.stopped = false;
+    outcome_.stop_reason.clear();
+    return;
+  }
+  if (outcome_.stopped) return;  // standing since an earlier sample
+  outcome_.stopped = true;
+  outcome_.stop_t_s = frame_.t_s;
+  outcome_.stop_reason = stop_pending_                           ? "strategy"
+                         : cannot_step_t_s_ >= walking_since_t_s_ ? "cannot_step"
+                                                                  : "end_of_path";
+  if (stop_pending_) {
+    char detail[160];
+    std::snprintf(detail, sizeof detail, "standing, both feet down, after the stop commanded at t = %.2f s",
+                  outcome_.stop_request_t_s);
+    event_log_->Log("stopped", detail);
   }
 }
 

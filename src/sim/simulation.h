@@ -92,8 +92,13 @@ class Simulation {
   struct RobotOutcome {
     bool stop_requested = false;
     double stop_request_t_s = 0;   ///< when a stop was first commanded
+    /// Standing still at the last sample, and since when, and why: `strategy`
+    /// (a stop command not resumed), `cannot_step` (the legs stood before a
+    /// step they cannot take) or `end_of_path` (the path or the trajectory
+    /// ended). At the end of an episode: standing still for good.
     bool stopped = false;
-    double stop_t_s = 0;           ///< when the robot first stood still after a stop command
+    double stop_t_s = 0;
+    std::string stop_reason;
     bool reached_goal = false;     ///< the pelvis came within half a stride of the path's last waypoint
     double reached_goal_t_s = 0;
     double min_clearance_m = std::numeric_limits<double>::infinity();
@@ -110,6 +115,8 @@ class Simulation {
   void Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy);
   // the robot's part of a sample after the readings: knowledge, strategy, outcome
   void UpdateRobot(double clearance_m);
+  // standing still: since when and why (RobotOutcome::stopped)
+  void UpdateStanding();
   void FillObservation();
   StrategySetup MakeSetup() const;
   std::unique_ptr<TerrainMap> MakeTerrainMap() const;
@@ -140,6 +147,9 @@ class Simulation {
   Observation observation_;
   RobotOutcome outcome_;
   std::vector<StrategyEvent> events_;
+  bool stop_pending_ = false;         // a stop command not resumed since
+  double walking_since_t_s_ = 0;      // when the robot last started walking
+  double cannot_step_t_s_ = -std::numeric_limits<double>::infinity();  // the last cannot_step event
 };
 
 }  // namespace proxsim
