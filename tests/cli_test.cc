@@ -101,6 +101,18 @@ TEST(CliRun, SameSeedGivesByteIdenticalFilesWhateverTheThreads) {
   EXPECT_NE(ReadFile(one / "readings.csv"), ReadFile(other / "readings.csv"));
 }
 
+// stderr is for progress on a terminal, warnings and errors: a good run with
+// no terminal writes nothing there (OctoMap's library once added " done.")
+TEST(CliRun, AGoodRunWritesNothingOnStderrWithoutATerminal) {
+  const auto out = FreshDir("quiet_stderr"), logs = FreshDir("quiet_stderr_log");
+  std::filesystem::create_directories(logs);
+  const std::string command = std::string(PROXSIM_BINARY) + " run --no-report --out " + out.string() + " >" +
+                              (logs / "out.txt").string() + " 2>" + (logs / "err.txt").string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << ReadFile(logs / "out.txt");
+  EXPECT_EQ(ReadFile(logs / "err.txt"), "");
+  ASSERT_TRUE(std::filesystem::exists(out / "terrain" / "map.bt"));  // the map was written, silently
+}
+
 TEST(CliRun, BadScenarioExitsTwoAndWritesNothing) {
   const auto dir = FreshDir("bad_input");
   std::filesystem::create_directories(dir);

@@ -6,6 +6,7 @@
 // built-in stop rule from the readings alone. Positions come from poses.csv,
 // detections from readings.csv; the course's geometry is builtin_scenes.cc's.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -55,6 +56,11 @@ struct Example {
       if (e["event"] == event) return e["detail"].get<std::string>();
     return "";
   }
+  double LoggedAt(const std::string& event) const {
+    for (const auto& e : summary["robot"]["events"])
+      if (e["event"] == event) return e["t_s"].get<double>();
+    return NAN;
+  }
 };
 
 Example RunExample(const std::string& name) {
@@ -83,6 +89,10 @@ TEST(StairsExamples, StairsWalkClimbsDescendsStepsOverTheSmallHoleAndStopsBefore
   ASSERT_TRUE(run.Logged("cannot_step"));
   EXPECT_NE(run.Detail("cannot_step").find("a gap of 0.60 m"), std::string::npos) << run.Detail("cannot_step");
   EXPECT_NE(run.cli_output.find("standing before a step its legs cannot take"), std::string::npos) << run.cli_output;
+  // standing for good, and summary.json says why
+  EXPECT_TRUE(run.summary["robot"]["stopped"].get<bool>());
+  EXPECT_EQ(run.summary["robot"]["stop_reason"], "cannot_step");
+  EXPECT_GE(run.summary["robot"]["stop_t_s"].get<double>(), run.LoggedAt("cannot_step"));
 
   // every tibia sensor detects the steps (a riser or a tread) and a hole's far wall
   for (const std::string sensor : {"ideal", "laser", "ultrasonic", "reflectance"}) {
@@ -110,6 +120,7 @@ TEST(StairsExamples, HoleStopRuleStopsBeforeTheSmallHoleFromTheReadings) {
   EXPECT_TRUE(run.Logged("drop_ahead"));
   EXPECT_FALSE(run.Logged("cannot_step"));
   EXPECT_TRUE(run.summary["robot"]["stopped"].get<bool>());
+  EXPECT_EQ(run.summary["robot"]["stop_reason"], "strategy");
   // the ankles (the toes are 0.2 m ahead of them at most) short of the edge at x = 5
   EXPECT_LT(std::max(run.Last("left_foot", "x"), run.Last("right_foot", "x")) + 0.2, 5.0);
 }

@@ -138,6 +138,7 @@ TEST_F(DefaultRun, ReflectanceDistancesDepartFromTheTruth) {
 TEST_F(DefaultRun, RobotStopsBeforeTouchingAnything) {
   const auto& robot = summary_.at("robot");
   EXPECT_TRUE(robot.at("stopped").get<bool>());
+  EXPECT_EQ(robot.at("stop_reason"), "strategy");
   EXPECT_GT(robot.at("min_clearance_m").get<double>(), 0.05);
   EXPECT_GT(robot.at("distance_walked_m").get<double>(), 1.0);
   EXPECT_LT(robot.at("stop_t_s").get<double>(), summary_.at("inputs").at("duration_s").get<double>());

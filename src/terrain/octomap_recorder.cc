@@ -1,5 +1,6 @@
 #include "terrain/octomap_recorder.h"
 
+#include <fstream>
 #include <stdexcept>
 
 #include <octomap/OcTree.h>
@@ -47,7 +48,21 @@ void OctomapRecorder::WriteBinary(const std::string& path) const {
     impl_->tree.prune();  // merges children that agree: a smaller file, the same occupancy
     impl_->dirty = false;
   }
-  if (!impl_->tree.writeBinaryConst(path)) throw std::runtime_error("cannot write the OctoMap tree " + path);
+  // OctoMap's .bt layout as its writeBinaryConst writes it: the header, then
+  // the nodes through writeBinaryData (a template compiled here). The
+  // library's own writeBinaryConst is compiled without NDEBUG in Debian's
+  // package and prints " done." on stderr at every call.
+  const octomap::OcTree& tree = impl_->tree;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << "# Octomap OcTree binary file\n"
+      << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
+      << "id " << tree.getTreeType() << "\n"
+      << "size " << tree.size() << "\n"
+      << "res " << tree.getResolution() << "\n"
+      << "data\n";
+  tree.writeBinaryData(out);
+  out.close();
+  if (!out) throw std::runtime_error("cannot write the OctoMap tree " + path);
 }
 
 std::size_t OctomapRecorder::leaf_count() const { return impl_->tree.getNumLeafNodes(); }
