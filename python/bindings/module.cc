@@ -46,6 +46,20 @@ py::array_t<double> Vector(const Vec3& v) {
   return a;
 }
 
+// The observation's keys as Python strings made once per simulation: a step
+// builds two dicts of a dozen entries each, and a key made anew each time
+// (and hashed anew) was most of the binding's cost per step.
+struct ObservationKeys {
+  py::str t_s{"t_s"}, readings{"readings"}, robot{"robot"};
+  py::str d_m{"d_m"}, detected{"detected"}, fresh{"fresh"}, signal{"signal"}, output{"output"},
+      t_reported_s{"t_reported_s"}, origin_W{"origin_W"}, dir_W{"dir_W"};
+  py::str left{"left"}, right{"right"}, pelvis_W{"pelvis_W"}, yaw_deg{"yaw_deg"}, joints_rad{"joints_rad"},
+      gait_phase{"gait_phase"}, support_leg{"support_leg"}, has_feet{"has_feet"}, soles_W{"soles_W"},
+      toes_W{"toes_W"}, heading_W{"heading_W"}, stopped{"stopped"}, distance_walked_m{"distance_walked_m"},
+      half_width_m{"half_width_m"};
+  std::vector<std::pair<int, py::str>> joints;  // the moving joints: index and name
+};
+
 py::object JsonToPython(const nlohmann::json& json) {
   return py::module_::import("json").attr("loads")(json.dump());
 }
@@ -85,6 +99,11 @@ class PySimulation {
     initial_seed_ = scenario.seed;
     sim_ = std::make_unique<Simulation>(std::move(scenario), threads);
     if (sim_->commands() != nullptr) robot_ = std::make_unique<PyRobot>(sim_->commands());
+    if (sim_->robot() != nullptr) {
+      const RobotModel& model = sim_->robot()->model();
+      for (int j = 0; j < model.joint_count(); ++j)
+        if (model.joint(j).type != JointType::kFixed) keys_.joints.emplace_back(j, py::str(model.joint_name(j)));
+    }
     StartRecording();
   }
 
@@ -264,51 +283,51 @@ class PySimulation {
         u(i, k) = s.dir_W[k];
       }
     }
+    const ObservationKeys& k = keys_;
     py::dict readings;
-    readings["d_m"] = d_m;
-    readings["detected"] = detected;
-    readings["fresh"] = fresh;
-    readings["signal"] = signal;
-    readings["output"] = output;
-    readings["t_reported_s"] = t_reported;
-    readings["origin_W"] = origin;
-    readings["dir_W"] = dir;
+    readings[k.d_m] = d_m;
+    readings[k.detected] = detected;
+    readings[k.fresh] = fresh;
+    readings[k.signal] = signal;
+    readings[k.output] = output;
+    readings[k.t_reported_s] = t_reported;
+    readings[k.origin_W] = origin;
+    readings[k.dir_W] = dir;
 
     py::dict result;
-    result["t_s"] = obs.t_s;
-    result["readings"] = readings;
-    result["robot"] = obs.robot != nullptr ? py::object(RobotDict(*obs.robot)) : py::object(py::none());
+    result[k.t_s] = obs.t_s;
+    result[k.readings] = readings;
+    result[k.robot] = obs.robot != nullptr ? py::object(RobotDict(*obs.robot)) : py::object(py::none());
     return result;
   }
 
   py::dict RobotDict(const RobotKnowledge& self) const {
-    const RobotModel& model = sim_->robot()->model();
+    const ObservationKeys& k = keys_;
     py::dict joints;
-    for (int j = 0; j < model.joint_count(); ++j) {
-      if (model.joint(j).type != JointType::kFixed) joints[py::str(model.joint_name(j))] = self.q[j];
-    }
+    for (const auto& [j, name] : k.joints) joints[name] = self.q[j];
     py::dict soles, toes;
-    soles["left"] = Vector(self.feet[0].p_W_sole);
-    soles["right"] = Vector(self.feet[1].p_W_sole);
-    toes["left"] = Vector(self.feet[0].p_W_toe);
-    toes["right"] = Vector(self.feet[1].p_W_toe);
+    soles[k.left] = Vector(self.feet[0].p_W_sole);
+    soles[k.right] = Vector(self.feet[1].p_W_sole);
+    toes[k.left] = Vector(self.feet[0].p_W_toe);
+    toes[k.right] = Vector(self.feet[1].p_W_toe);
     py::dict robot;
-    robot["pelvis_W"] = Vector(self.X_WP.translation());
-    robot["yaw_deg"] = RadToDeg(self.yaw_rad);
-    robot["joints_rad"] = joints;
-    robot["gait_phase"] = self.gait_phase;
-    robot["support_leg"] = SupportLegName(self.support);
-    robot["has_feet"] = self.has_feet;
-    robot["soles_W"] = soles;
-    robot["toes_W"] = toes;
-    robot["heading_W"] = Vector(self.heading_W);
-    robot["stopped"] = self.stopped;
-    robot["distance_walked_m"] = self.distance_walked_m;
-    robot["half_width_m"] = self.half_width_m;
+    robot[k.pelvis_W] = Vector(self.X_WP.translation());
+    robot[k.yaw_deg] = RadToDeg(self.yaw_rad);
+    robot[k.joints_rad] = joints;
+    robot[k.gait_phase] = self.gait_phase;
+    robot[k.support_leg] = SupportLegName(self.support);
+    robot[k.has_feet] = self.has_feet;
+    robot[k.soles_W] = soles;
+    robot[k.toes_W] = toes;
+    robot[k.heading_W] = Vector(self.heading_W);
+    robot[k.stopped] = self.stopped;
+    robot[k.distance_walked_m] = self.distance_walked_m;
+    robot[k.half_width_m] = self.half_width_m;
     return robot;
   }
 
   std::unique_ptr<Simulation> sim_;
+  ObservationKeys keys_;
   std::unique_ptr<PyRobot> robot_;
   std::unique_ptr<RunRecorder> recorder_;
   std::string out_dir_;
