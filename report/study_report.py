@@ -5,8 +5,8 @@ wrote in OUT: results.csv, ranking.csv and selection.json.
   OUT/lead_heatmap.png/.svg  the mean lead distance (leading toe to the hazard at
                              its first detection, over every detection of every
                              hazard, scene and seed) as a heat map over position
-                             along the link x pitch, one panel per sensor type
-                             and link; blank where nothing was ever detected
+                             along the link x pitch, one panel per sensor (its
+                             datasheet part, else its type) and link; blank where nothing was ever detected
   OUT/pareto.png/.svg        sensor count against detection rate and mean lead
                              for the greedy sets (Pareto points marked)
   OUT/index.html             links them, with the ranking's head and the chosen set
@@ -39,10 +39,16 @@ def lead_columns(header):
     return [c for c in header if c.endswith("_lead_m")]
 
 
+def sensor_of(row):
+    """The sensor a candidate is: its datasheet part when it is one (an HC-SR04 and the paper's
+    ultrasonic model are different sensors), else its physics type."""
+    return row.get("part") or row["type"]
+
+
 def heatmap(results, out):
-    """Mean lead over along_m x pitch_deg, one panel per (type, link)."""
+    """Mean lead over along_m x pitch_deg, one panel per (part or type, link)."""
     leads = lead_columns(results[0].keys())
-    panels = sorted({(r["type"], r["link"]) for r in results})
+    panels = sorted({(sensor_of(r), r["link"]) for r in results})
     along = sorted({float(r["along_m"]) for r in results})
     pitch = sorted({float(r["pitch_deg"]) for r in results})
     cols = min(4, len(panels))
@@ -58,7 +64,7 @@ def heatmap(results, out):
         for i, p in enumerate(pitch):
             for j, a in enumerate(along):
                 values = [float(r[c]) for r in results for c in leads
-                          if r["type"] == sensor_type and r["link"] == link and float(r["pitch_deg"]) == p
+                          if sensor_of(r) == sensor_type and r["link"] == link and float(r["pitch_deg"]) == p
                           and float(r["along_m"]) == a and r[c] != ""]
                 if values:
                     grid[i, j] = np.mean(values)

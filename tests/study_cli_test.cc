@@ -11,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -67,6 +68,34 @@ TEST_F(StudyCliTest, TheExampleRanksPicksThreePartsAndDrawsIt) {
     EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
   }
   EXPECT_NE(ReadFile(out / "index.html").find("ranking.csv"), std::string::npos);
+}
+
+// A datasheet part is a sensor of its own: an HC-SR04 and the paper's
+// ultrasonic model share a physics type but not a row key or a heat-map panel.
+TEST_F(StudyCliTest, CandidatesAreKeyedByTheirPartNotOnlyTheirType) {
+  fs::create_directories(dir_);
+  const auto study = dir_ / "parts.yaml";
+  std::ofstream(study) << "proxsim_study: 1\n"
+                          "base: " << PROXSIM_SOURCE_DIR << "/data/scenarios/paper_dining_room.yaml\n"
+                          "candidates:\n"
+                          "  axes: {type: [ultrasonic, hc_sr04, vl53l0x], link: left_tibia, along_m: [-0.35, -0.25],\n"
+                          "         forward_m: 0.06, pitch_deg: [0, 15]}\n"
+                          "scenes: [{name: room, builtin: dining_room}]\n"
+                          "seeds: [1]\n"
+                          "hazards: [obstacle]\n";
+  const auto out = dir_ / "parts";
+  const auto result = RunProxsim("study " + study.string() + " --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::map<std::string, std::set<std::string>> parts_by_type;
+  for (const auto& row : ReadCsv(out / "ranking.csv").rows) parts_by_type[row.at("type")].insert(row.at("part"));
+  EXPECT_EQ(parts_by_type["ultrasonic"], (std::set<std::string>{"", "hc_sr04"}));
+  EXPECT_EQ(parts_by_type["laser"], (std::set<std::string>{"vl53l0x"}));
+  for (const auto& row : ReadCsv(out / "results.csv").rows)
+    EXPECT_EQ(row.at("part").empty(), row.at("candidate").starts_with("ultrasonic@")) << row.at("candidate");
+  // the heat map: one panel per part (or model) and link
+  const std::string svg = ReadFile(out / "lead_heatmap.svg");
+  for (const char* panel : {"hc_sr04 on left_tibia", "ultrasonic on left_tibia", "vl53l0x on left_tibia"})
+    EXPECT_NE(svg.find(panel), std::string::npos) << panel;
 }
 
 TEST_F(StudyCliTest, FilesAreByteIdenticalWithOneThreadTwoThreadsAndTwoMpiRanks) {

@@ -75,7 +75,7 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
   const std::size_t n = study.candidates.size();
 
   // results.csv: one row per run, every parameter and metric
-  std::string csv = "candidate,type,link,along_m,forward_m,pitch_deg,yaw_deg,scene,seed,samples,false_alarms,"
+  std::string csv = "candidate,type,part,link,along_m,forward_m,pitch_deg,yaw_deg,scene,seed,samples,false_alarms,"
                     "self_share,grazing_share,floor_coverage";
   for (const std::string& h : study.hazards) csv += "," + h + "_detected," + h + "_first_t_s," + h + "_lead_m";
   csv += "\n";
@@ -84,7 +84,8 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
     for (std::size_t v = 0; v < study.variants.size(); ++v) {
       for (std::size_t s = 0; s < study.seeds.size(); ++s) {
         const RunMetrics& m = results[v][s][c];
-        csv += cand.id + "," + SensorTypeName(cand.sensor.spec.type) + "," + cand.sensor.link + "," +
+        csv += cand.id + "," + SensorTypeName(cand.sensor.spec.type) + "," + cand.sensor.spec.part + "," +
+               cand.sensor.link + "," +
                Number(cand.along_m) + "," + Number(cand.forward_m) + "," + Number(cand.pitch_deg) + "," +
                Number(cand.yaw_deg) + "," + study.variants[v].name + "," + std::to_string(study.seeds[s]) + "," +
                std::to_string(m.samples) + "," + std::to_string(m.false_alarms) + "," + Number(m.self_share) + "," +
@@ -126,14 +127,14 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
     return a.false_alarms < b.false_alarms;
   });
   std::vector<std::size_t> rank(n);
-  std::string ranking = "rank,candidate,type,link,along_m,forward_m,pitch_deg,yaw_deg,detection_rate,detection_rate_ci95,"
+  std::string ranking = "rank,candidate,type,part,link,along_m,forward_m,pitch_deg,yaw_deg,detection_rate,detection_rate_ci95,"
                         "lead_mean_m,lead_ci95_m,false_alarms_mean,self_share,grazing_share,floor_coverage\n";
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const Row& row = rows[r];
     const Candidate& cand = study.candidates[row.c];
     rank[row.c] = r;
     ranking += std::to_string(r + 1) + "," + cand.id + "," + SensorTypeName(cand.sensor.spec.type) + "," +
-               cand.sensor.link + "," + Number(cand.along_m) + "," + Number(cand.forward_m) + "," +
+               cand.sensor.spec.part + "," + cand.sensor.link + "," + Number(cand.along_m) + "," + Number(cand.forward_m) + "," +
                Number(cand.pitch_deg) + "," + Number(cand.yaw_deg) + "," + Number(row.rate.mean) + "," +
                Number(row.rate.ci95) + "," + Number(row.lead.mean) + "," + Number(row.lead.ci95) + "," +
                Number(row.false_alarms) + "," + Number(row.self_share) + "," + Number(row.grazing_share) + "," +
