@@ -308,6 +308,13 @@ void Simulation::UpdateContacts(const std::vector<Contact>& contacts) {
 
 Simulation::Outcome Simulation::outcome() const {
   if (outcome_.collided) return {"collided", outcome_.end_t_s, outcome_.end_detail};
+  // under on_collision: continue the walk went on, but the episode still collided
+  if (!outcome_.collisions.empty()) {
+    const RobotOutcome::Collision& first = outcome_.collisions.front();
+    return {"collided", first.t_s, "collided: " + first.link + (first.self ? " touched its own " : " struck ") +
+                                       first.object + " (on_collision: continue; " +
+                                       std::to_string(outcome_.collisions.size()) + " collisions in all)"};
+  }
   if (outcome_.fell) return {"fell", outcome_.end_t_s, outcome_.end_detail};
   if (outcome_.reached_goal) return {"reached_goal", outcome_.reached_goal_t_s, "reached the path's last waypoint"};
   if (outcome_.stopped && outcome_.stop_reason == "strategy") return {"stopped", outcome_.stop_t_s, "stopped by its strategy, standing"};
