@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <variant>
 
 #include "raycast/analytic_shapes.h"
 
@@ -14,30 +15,9 @@ namespace {
 // shank and the thigh (links without shapes are passed over).
 constexpr int kLegLinks = 3;
 
-// A bounding sphere of a link's surface samples, in its link frame.
-struct LinkSphere {
-  Vec3 center_L = Vec3::Zero();
-  double radius_m = -1;  // < 0: no samples
-};
-
-LinkSphere SphereOf(const std::vector<Vec3>& points_L) {
-  LinkSphere sphere;
-  if (points_L.empty()) return sphere;
-  Vec3 lo = points_L[0], hi = lo;
-  for (const Vec3& p : points_L) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  sphere.center_L = (lo + hi) / 2;
-  sphere.radius_m = 0;
-  for (const Vec3& p : points_L) sphere.radius_m = std::max(sphere.radius_m, (p - sphere.center_L).norm());
-  return sphere;
-}
-
 // How far p_O lies from a link shape (0 inside, with `depth_m` how deep):
-// closed forms for the solids; for a mesh, its nearest triangle, only when
-// p_O is within the mesh's bounding box grown by `within_m` (else +inf).
-double DistanceToLinkShape(const Shape& shape, const Vec3& p_O, double within_m, double* depth_m) {
+// closed forms for the solids; for a mesh, its nearest triangle.
+double DistanceToLinkShape(const Shape& shape, const Vec3& p_O, double* depth_m) {
   *depth_m = 0;
   double distance_m = std::numeric_limits<double>::infinity();
   if (const auto* box = std::get_if<Box>(&shape)) distance_m = DistanceToBox(*box, p_O);
@@ -45,14 +25,6 @@ double DistanceToLinkShape(const Shape& shape, const Vec3& p_O, double within_m,
   else if (const auto* cylinder = std::get_if<Cylinder>(&shape)) distance_m = DistanceToCylinder(*cylinder, p_O);
   else if (const auto* mesh = std::get_if<Mesh>(&shape)) {
     const TriangleMesh& data = *mesh->data;
-    if (data.vertices_O.empty()) return distance_m;
-    Vec3 lo = data.vertices_O[0].cast<double>().cwiseProduct(mesh->scale), hi = lo;
-    for (const Vec3f& v : data.vertices_O) {
-      const Vec3 p = v.cast<double>().cwiseProduct(mesh->scale);
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-    if (((p_O - hi).array() > within_m).any() || ((lo - p_O).array() > within_m).any()) return distance_m;
     for (const auto& t : data.triangles) {
       const auto corner = [&](int k) { return Vec3(data.vertices_O[t[k]].cast<double>().cwiseProduct(mesh->scale)); };
       distance_m = std::min(distance_m, DistanceToTriangle(p_O, corner(0), corner(1), corner(2)));
@@ -61,6 +33,43 @@ double DistanceToLinkShape(const Shape& shape, const Vec3& p_O, double within_m,
   }
   if (distance_m == 0) *depth_m = DepthInside(shape, p_O);
   return distance_m;
+}
+
+// The axis-aligned box of some points, grown by `margin_m`.
+ContactFinder::Aabb BoxOf(const std::vector<Vec3>& points, double margin_m) {
+  ContactFinder::Aabb box;
+  for (const Vec3& p : points) {
+    box.lo = box.lo.cwiseMin(p);
+    box.hi = box.hi.cwiseMax(p);
+  }
+  box.lo.array() -= margin_m;
+  box.hi.array() += margin_m;
+  return box;
+}
+
+// Whether two boxes, each fixed in its link (pose in W), are apart: a
+// separating axis among their faces' normals and the cross products of
+// their edges (the 15 axes of two oriented boxes).
+bool Apart(const ContactFinder::Aabb& a_L, const Pose& X_WA, const ContactFinder::Aabb& b_L, const Pose& X_WB) {
+  const Vec3 ca = X_WA * ((a_L.lo + a_L.hi) / 2), cb = X_WB * ((b_L.lo + b_L.hi) / 2);
+  const Vec3 ha = (a_L.hi - a_L.lo) / 2, hb = (b_L.hi - b_L.lo) / 2;
+  const Eigen::Matrix3d Ra = X_WA.linear(), Rb = X_WB.linear();
+  const Vec3 d = cb - ca;
+  const auto separates = [&](const Vec3& n) {
+    if (n.squaredNorm() < 1e-18) return false;
+    double ra = 0, rb = 0;
+    for (int i = 0; i < 3; ++i) {
+      ra += ha[i] * std::abs(n.dot(Ra.col(i)));
+      rb += hb[i] * std::abs(n.dot(Rb.col(i)));
+    }
+    return std::abs(d.dot(n)) > ra + rb;
+  };
+  for (int i = 0; i < 3; ++i)
+    if (separates(Ra.col(i)) || separates(Rb.col(i))) return true;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (separates(Ra.col(i).cross(Rb.col(j)))) return true;
+  return false;
 }
 
 // Keeps the deepest sample of each (link, object, other link).
@@ -72,11 +81,9 @@ void Keep(std::map<std::tuple<int, std::int32_t, int>, Contact>& kept, const Con
 
 }  // namespace
 
-ContactFinder::ContactFinder(RobotInScene& robot, std::int32_t scene_object_count,
-                             std::span<const std::int32_t> ground_ids, std::span<const FootFrame> feet)
-    : robot_(robot), ground_ids_(ground_ids.begin(), ground_ids.end()) {
-  for (std::int32_t id = 0; id < scene_object_count; ++id)
-    if (std::find(ground_ids_.begin(), ground_ids_.end(), id) == ground_ids_.end()) not_ground_ids_.push_back(id);
+ContactFinder::ContactFinder(RobotInScene& robot, const RayCaster& ground, std::span<const std::int32_t> ground_ids,
+                             std::span<const FootFrame> feet)
+    : robot_(robot), ground_(ground), ground_ids_(ground_ids.begin(), ground_ids.end()) {
   // against the ground every sample counts but a foot's sole band
   const RobotModel& model = robot_.model();
   not_sole_.resize(model.link_count());
@@ -89,11 +96,26 @@ ContactFinder::ContactFinder(RobotInScene& robot, std::int32_t scene_object_coun
     for (std::size_t i = 0; i < points_L.size(); ++i)
       if (points_L[i].z() - foot.p_L_sole.z() < kSoleBand_m) not_sole_[foot.link][i] = false;
   }
-  // the legs' lower links, each of one leg against each of the other
+  // the legs' lower links, each of one leg against each of the other, with
+  // the boxes that bound their samples and their shapes in their own frames
   if (feet.size() == 2 && feet[0].link >= 0 && feet[1].link >= 0) {
     for (int a : LegLinks(feet[0].link))
       for (int b : LegLinks(feet[1].link))
         if (a != b) leg_pairs_.emplace_back(a, b);
+  }
+  for (const auto& [a, b] : leg_pairs_) {
+    for (int link : {a, b}) {
+      if (leg_links_.count(link)) continue;
+      LegLink& leg = leg_links_[link];
+      leg.samples_box_L = BoxOf(robot_.surface_points_L(link), kContactTolerance_m);
+      for (const LinkShape& shape : model.link(link).shapes) {
+        std::vector<Vec3> vertices_O;
+        if (const auto* mesh = std::get_if<Mesh>(&shape.shape))
+          for (const Vec3f& v : mesh->data->vertices_O) vertices_O.push_back(v.cast<double>().cwiseProduct(mesh->scale));
+        leg.shapes.push_back({&shape.shape, shape.X_LO.inverse(),
+                              vertices_O.empty() ? Aabb{} : BoxOf(vertices_O, kContactTolerance_m)});
+      }
+    }
   }
 }
 
@@ -110,17 +132,19 @@ std::vector<int> ContactFinder::LegLinks(int foot_link) const {
   return links;
 }
 
-std::vector<Contact> ContactFinder::Find() {
+std::vector<Contact> ContactFinder::Find(double clearance_to_objects_m) {
   std::map<std::tuple<int, std::int32_t, int>, Contact> kept;
-  const auto keep_near = [&](std::span<const std::int32_t> exclude, const RobotInScene::SampleMask* mask) {
+  const auto keep_near = [&](std::span<const std::int32_t> exclude, const RobotInScene::SampleMask* mask,
+                             const RayCaster* against) {
     // the cheap running bound first: nothing within reach, nothing to look at
-    if (robot_.ClearanceTo(exclude, kContactTolerance_m, mask) >= kContactTolerance_m) return;
-    for (const RobotInScene::NearSample& near : robot_.SamplesNear(exclude, kContactTolerance_m, mask))
+    if (robot_.ClearanceTo(exclude, kContactTolerance_m, mask, against) >= kContactTolerance_m) return;
+    for (const RobotInScene::NearSample& near : robot_.SamplesNear(exclude, kContactTolerance_m, mask, against))
       Keep(kept, Contact{near.link, near.nearest.object_id, -1, near.nearest.depth_m, near.p_W});
   };
-  keep_near(ground_ids_, nullptr);  // obstacles, furniture: any sample
-  // the ground: anything but a sole, when the feet are known (not for a replayed trajectory)
-  if (has_feet_) keep_near(not_ground_ids_, &not_sole_);
+  // obstacles, furniture: any sample, unless the clearance already keeps them apart
+  if (clearance_to_objects_m <= kContactTolerance_m) keep_near(ground_ids_, nullptr, nullptr);
+  // the ground (its caster alone): anything but a sole, when the feet are known (not for a replayed trajectory)
+  if (has_feet_) keep_near({}, &not_sole_, &ground_);
   std::vector<Contact> contacts;
   for (auto& [key, contact] : kept) contacts.push_back(contact);
   FindSelfContacts(contacts);
@@ -128,29 +152,28 @@ std::vector<Contact> ContactFinder::Find() {
 }
 
 void ContactFinder::FindSelfContacts(std::vector<Contact>& contacts) const {
-  const RobotModel& model = robot_.model();
   for (const auto& [left, right] : leg_pairs_) {
     // each link's samples against the other's shapes, both ways: the deepest is the pair's contact
     Contact deepest{left, -1, right, -1, Vec3::Zero()};
+    if (Apart(leg_links_.at(left).samples_box_L, robot_.X_WL(left), leg_links_.at(right).samples_box_L,
+              robot_.X_WL(right))) {
+      continue;
+    }
     for (const auto& [a, b] : {std::pair{left, right}, std::pair{right, left}}) {
-      const auto& points_L = robot_.surface_points_L(a);
-      const LinkSphere sphere_a = SphereOf(points_L), sphere_b = SphereOf(robot_.surface_points_L(b));
-      if (sphere_a.radius_m < 0 || sphere_b.radius_m < 0) continue;
-      const Pose& X_WA = robot_.X_WL(a);
-      const Pose& X_WB = robot_.X_WL(b);
-      if ((X_WA * sphere_a.center_L - X_WB * sphere_b.center_L).norm() >
-          sphere_a.radius_m + sphere_b.radius_m + kContactTolerance_m) {
-        continue;
-      }
-      const Pose X_BA = X_WB.inverse() * X_WA;
-      for (const Vec3& p_A : points_L) {
+      const LegLink& leg_b = leg_links_.at(b);
+      const Pose X_BA = robot_.X_WL(b).inverse() * robot_.X_WL(a);
+      for (const Vec3& p_A : robot_.surface_points_L(a)) {
+        // only samples within b's bounding box can touch it
         const Vec3 p_B = X_BA * p_A;
-        if ((p_B - sphere_b.center_L).norm() > sphere_b.radius_m + kContactTolerance_m) continue;
-        for (const LinkShape& shape : model.link(b).shapes) {
+        if (!leg_b.samples_box_L.Contains(p_B)) continue;
+        for (const LegShape& shape : leg_b.shapes) {
+          const Vec3 p_O = shape.X_OL * p_B;
+          if (shape.mesh_box_O.Bounded() && !shape.mesh_box_O.Contains(p_O)) continue;
           double depth_m = 0;
-          const double distance_m =
-              DistanceToLinkShape(shape.shape, shape.X_LO.inverse() * p_B, kContactTolerance_m, &depth_m);
-          if (distance_m <= kContactTolerance_m && depth_m > deepest.depth_m) deepest = {a, -1, b, depth_m, X_WA * p_A};
+          const double distance_m = DistanceToLinkShape(*shape.shape, p_O, &depth_m);
+          if (distance_m <= kContactTolerance_m && depth_m > deepest.depth_m) {
+            deepest = {a, -1, b, depth_m, robot_.X_WL(a) * p_A};
+          }
         }
       }
     }

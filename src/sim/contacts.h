@@ -17,6 +17,8 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -45,24 +47,50 @@ struct Contact {
 
 class ContactFinder {
  public:
-  /// `robot` must outlive this; `scene_object_count` objects have ids
-  /// [0, count), of which `ground_ids` are the ground; `feet` are the robot's
+  /// `robot` and `ground` must outlive this; `ground` holds the objects
+  /// `ground_ids` (the robot's caster's ids) alone; `feet` are the robot's
   /// feet (their soles may touch the ground); empty for a robot without legs.
-  ContactFinder(RobotInScene& robot, std::int32_t scene_object_count, std::span<const std::int32_t> ground_ids,
+  ContactFinder(RobotInScene& robot, const RayCaster& ground, std::span<const std::int32_t> ground_ids,
                 std::span<const FootFrame> feet);
 
   /// The contacts at the pose the robot was last placed at, one per (link,
   /// object or other link), the deepest sample of each.
-  std::vector<Contact> Find();
+  /// `clearance_to_objects_m`: the robot's clearance to every object but the
+  /// ground at this pose as far as it is known (RobotInScene::ClearanceTo;
+  /// a lower bound is enough, 0 when unknown): above the contact tolerance,
+  /// no object is looked at again.
+  std::vector<Contact> Find(double clearance_to_objects_m = 0);
 
  private:
   // one leg's lower links (foot up to the thigh), for self-collision
   std::vector<int> LegLinks(int foot_link) const;
   void FindSelfContacts(std::vector<Contact>& contacts) const;
 
+  // what self-collision reads of a leg link, made once: the box bounding its
+  // samples, and each shape with its frame and (a mesh) the box of its vertices
+ public:
+  struct Aabb {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
+    bool Bounded() const { return (lo.array() <= hi.array()).all(); }
+    bool Contains(const Vec3& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
+  };
+
+ private:
+  struct LegShape {
+    const Shape* shape;
+    Pose X_OL;
+    Aabb mesh_box_O;  // unbounded (empty) for a solid
+  };
+  struct LegLink {
+    Aabb samples_box_L;
+    std::vector<LegShape> shapes;
+  };
+
   RobotInScene& robot_;
+  std::map<int, LegLink> leg_links_;
+  const RayCaster& ground_;                   // the ground alone
   std::vector<std::int32_t> ground_ids_;      // objects the soles may touch
-  std::vector<std::int32_t> not_ground_ids_;  // every other scene object
   RobotInScene::SampleMask not_sole_;          // the samples that may not touch the ground
   bool has_feet_ = false;                      // without feet (a replayed trajectory) the ground is not checked
   std::vector<std::pair<int, int>> leg_pairs_;  // (left leg link, right leg link)

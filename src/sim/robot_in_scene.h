@@ -58,8 +58,11 @@ class RobotInScene {
   /// each remembers a lower bound of its clearance from when it was last
   /// measured, valid while the world bodies stay as they are. Bounds are kept
   /// for each (exclude list, mask) asked for, a few at a time.
+  /// `against`: the world bodies of another ray caster than the robot's own
+  /// (a caster of the ground alone, say), or null for its own.
   double ClearanceTo(std::span<const std::int32_t> exclude_object_ids,
-                     double below_m = std::numeric_limits<double>::infinity(), const SampleMask* mask = nullptr);
+                     double below_m = std::numeric_limits<double>::infinity(), const SampleMask* mask = nullptr,
+                     const RayCaster* against = nullptr);
 
   /// One sample of the robot's surface nearer than `within_m` to a world
   /// object other than the excluded ones (and counted by `mask`).
@@ -71,7 +74,7 @@ class RobotInScene {
   /// Every such sample at this pose (for contacts: call it once ClearanceTo
   /// has found something within reach, it measures every candidate sample).
   std::vector<NearSample> SamplesNear(std::span<const std::int32_t> exclude_object_ids, double within_m,
-                                      const SampleMask* mask = nullptr) const;
+                                      const SampleMask* mask = nullptr, const RayCaster* against = nullptr) const;
 
   /// Link shapes for scene.json.
   std::vector<LinkShapes> LinkGeometry() const;
@@ -95,9 +98,11 @@ class RobotInScene {
   struct BoundsSlot {
     std::vector<std::int32_t> exclude_ids;
     const SampleMask* mask = nullptr;
+    const RayCaster* against = nullptr;
     std::vector<ClearanceBounds> links;
   };
-  BoundsSlot& SlotFor(std::span<const std::int32_t> exclude_object_ids, const SampleMask* mask);
+  BoundsSlot& SlotFor(std::span<const std::int32_t> exclude_object_ids, const SampleMask* mask,
+                      const RayCaster* against);
 
   const RobotModel& model_;
   RayCaster& caster_;

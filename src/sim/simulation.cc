@@ -105,8 +105,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     strategy_ = std::move(strategy);
     feet_ = locomotion_->Feet();
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
-    contacts_ = std::make_unique<ContactFinder>(*world_->robot(), static_cast<std::int32_t>(scenario_.scene.objects.size()),
-                                                world_->ground_ids(), feet_);
+    contacts_ = std::make_unique<ContactFinder>(*world_->robot(), world_->ground_caster(), world_->ground_ids(), feet_);
     if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
     if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
       goal_m_ = scenario_.robot->waypoints_m.back();
@@ -202,7 +201,8 @@ const SampleFrame& Simulation::Step() {
                  [&] {
                    if (!locomotion_) return;
                    clearance_m = robot->ClearanceTo(world_->ground_ids(), outcome_.min_clearance_m);
-                   contacts_now_ = contacts_->Find();
+                   // the clearance is exact when below the running minimum, else only bounded by it
+                   contacts_now_ = contacts_->Find(std::min(clearance_m, outcome_.min_clearance_m));
                  });
   if (delivery_->active()) delivery_->Deliver(frame_, delivered_);
   if (locomotion_) KnowRobot(state_, *robot, feet_, half_width_m_, knowledge_);

@@ -39,6 +39,9 @@ class World {
   /// `ground` only (an obstacle is never stepped on).
   const TerrainQuery& terrain() const { return terrain_; }
 
+  /// The objects flagged `ground`, alone, in a caster of their own (object ids as in caster()).
+  const RayCaster& ground_caster() const { return ground_caster_; }
+
   /// Object ids: the scene's objects in scenario order, then the robot's links.
   const std::string& object_name(std::int32_t object_id) const { return object_names_.at(object_id); }
   const std::vector<std::string>& object_names() const { return object_names_; }
