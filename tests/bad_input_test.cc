@@ -171,7 +171,7 @@ TEST(BadInputTest, StartInsideAColumn) {
 
 TEST(BadInputTest, StartOnAnUnknownObject) {
   ExpectRefusedFile("start_on_unknown.yaml",
-                    {"start_on_unknown.yaml:13: robot.start.on: no object 'crat' in the scene (did you mean 'crate'?)"});
+                    {"start_on_unknown.yaml:14: robot.start.on: no object 'crat' in the scene (did you mean 'crate'?)"});
 }
 
 TEST(BadInputTest, SensorInsideItsOwnLinkIsAWarning) {

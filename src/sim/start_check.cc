@@ -1,6 +1,7 @@
 #include "sim/start_check.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <set>
@@ -90,7 +91,7 @@ std::vector<std::string> StartProblems(const Scenario& scenario, World& world, L
       const SceneObject& object = scenario.scene.objects[support.object_id];
       if (!first || object.ground || object.name == start_on) continue;  // one line per object
       problems.push_back(where + "the robot would start standing on object '" + object.name + "' (its foot '" +
-                         model.link_name(support.foot_link) + "' on it" + Format(" at z = %.3f m", support.z_m) +
+                         model.link_name(support.foot_link) + "' on it" + Format(" at z = %.3f m", std::abs(support.z_m) < 5e-4 ? 0.0 : support.z_m /* no "-0.000" */) +
                          "), not on the ground: the gait stands the robot on the surface below its start; start "
                          "it elsewhere, or give `on: " + object.name + "` in robot.start to start on it on purpose");
     }
