@@ -169,6 +169,14 @@ TEST(BadInputTest, StartInsideAColumn) {
   EXPECT_EQ(result.output.find("step down"), std::string::npos) << result.output;
 }
 
+TEST(BadInputTest, StartWithALegInAMeshObject) {
+  // the cube mesh around the left knee: the left thigh and tibia are named, nothing else
+  const auto result = ExpectRefusedFile(
+      "start_into_mesh.yaml", {"start_into_mesh.yaml: robot.start: the robot starts inside object 'mesh_crate': "
+                               "links 'left_thigh', 'left_tibia' reach into it"});
+  EXPECT_EQ(result.output.find("right_"), std::string::npos) << result.output;
+}
+
 TEST(BadInputTest, StartOnAnUnknownObject) {
   ExpectRefusedFile("start_on_unknown.yaml",
                     {"start_on_unknown.yaml:14: robot.start.on: no object 'crat' in the scene (did you mean 'crate'?)"});

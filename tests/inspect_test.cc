@@ -4,8 +4,9 @@
 // when it is absent), the leg map it suggests — found by axes and heights,
 // not names — is written into a scenario with sensors on the shins at the
 // front surface it reports; `proxsim validate` accepts it, and `proxsim run`
-// walks the robot forward. Also: a scenario file inspects its robot, and a
-// missing file is bad input (exit 2).
+// walks the robot forward. Also: a scenario file inspects its robot, a
+// missing file is bad input (exit 2), and a sensor inside the H1's shin mesh
+// gets the warning a sensor inside its own link gets.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -170,6 +171,31 @@ TEST(InspectTest, H1LegMapFoundByGeometryWalks) {
     EXPECT_LT(x_m, 0.12);
   }
   ExpectWalks("h1", WalkScenario(urdf, inspect), "pelvis");
+}
+
+TEST(InspectTest, H1SensorInsideItsShinMeshIsWarned) {
+  SKIP_WITHOUT_H1();
+  // halfway down, the H1's shin mesh is a shell from about x = 0 (behind) to
+  // the reported front: a sensor at half the front's x is inside the mesh,
+  // one at the front is on it (no warning)
+  const std::string urdf = kH1Urdf.lexically_normal().string();
+  const nlohmann::json inspect = InspectJson(urdf);
+  const nlohmann::json& front = inspect["shanks"]["left"]["front_surface"][1]["xyz_m"];
+  const double x_m = front[0].get<double>(), z_m = front[2].get<double>();
+  const std::string yaml = WalkScenario(urdf, inspect) + "  - {name: buried, type: ideal, link: left_knee_link, pose: {xyz_m: [" +
+                           std::to_string(x_m / 2) + ", 0, " + std::to_string(z_m) + "]}}\n";
+  const fs::path dir = FreshDir("inspect_h1_inside");
+  fs::create_directories(dir);
+  std::ofstream(dir / "walk.yaml") << yaml;
+  const CommandResult run =
+      RunProxsim("run " + (dir / "walk.yaml").string() + " --out " + (dir / "out").string() + " --no-report");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: " + (dir / "walk.yaml").string() +
+                            ": sensor 'buried' is inside its own link 'left_knee_link'"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("sensor 'shin_left' is inside"), std::string::npos) << run.output;
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -6,8 +6,9 @@
 // Boxes, spheres and cylinders are solids; a plane has no inside (only its
 // z = 0 surface); a mesh is solid where it encloses the point, decided by
 // the parity of a ray's crossings (three rays, the majority wins, so a ray
-// through an edge or a small hole does not decide alone). An open mesh that
-// encloses nothing has no inside.
+// through an edge or a small hole does not decide alone). Cost: a few passes
+// over the mesh's triangles per point, for checks of a few points (a sensor's
+// origin); sim/start_check.cc checks thousands with the ray caster instead.
 //
 // Frames: O the shape's own frame.
 #pragma once

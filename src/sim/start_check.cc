@@ -4,10 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <set>
 
 #include "scene/shape_inside.h"
-#include "scene/shape_points.h"
+
 
 namespace proxsim {
 
@@ -68,6 +69,74 @@ std::vector<FootSupport> FootSupports(const World& world, const RobotInScene& ro
   return supports;
 }
 
+
+// The links of the robot whose surface reaches more than kOverlap_m into a
+// scene object that is not ground, by object. Each surface sample casts a
+// ray up and one down (the robot transparent): when the first surface met is
+// an object's inside (its normal along the ray: met from within), the sample
+// is inside that object, as deep as its distance to that object's surface
+// (scene/shape_inside.h for a box, sphere or cylinder; the caster's distance
+// to the triangles for a mesh). Embree keeps this fast on meshes of any size. (An object nested in another
+// can hide the outer one from both rays; the inner one is still found.)
+struct ObjectOverlap {
+  std::int32_t object_id = -1;
+  std::set<int> links;  // by index: model order
+  double deepest_m = 0;
+  Vec3 p_W_deepest = Vec3::Zero();
+};
+
+std::vector<ObjectOverlap> Overlaps(const Scenario& scenario, const World& world, const RobotInScene& robot) {
+  std::vector<Vec3> p_W;
+  std::vector<int> link_of;
+  for (int link = 0; link < robot.model().link_count(); ++link) {
+    for (const Vec3& p_L : robot.surface_points_L(link)) {
+      p_W.push_back(robot.X_WL(link) * p_L);
+      link_of.push_back(link);
+    }
+  }
+  std::vector<Ray> rays;
+  for (const Vec3& p : p_W) {
+    for (const float dz : {1.0f, -1.0f}) {
+      rays.push_back({.origin_W = p.cast<float>(), .direction_W = Vec3f(0, 0, dz), .max_range_m = 1e4f, .see_robot = false});
+    }
+  }
+  std::vector<Hit> hits(rays.size());
+  world.caster().Cast(rays, hits);
+  std::map<std::int32_t, ObjectOverlap> by_object;
+  std::map<std::int32_t, std::vector<std::int32_t>> all_but;  // DistanceToWorld's exclude list: every other object
+  for (std::size_t r = 0; r < rays.size(); ++r) {
+    const Hit& hit = hits[r];
+    if (!hit.is_hit() || hit.object_id >= world.first_robot_object_id()) continue;
+    const SceneObject& object = scenario.scene.objects[hit.object_id];
+    if (object.ground || std::holds_alternative<Plane>(object.shape)) continue;  // a plane has no inside
+    if (hit.normal_W.dot(rays[r].direction_W) <= 0) continue;  // met from outside
+    const Vec3& p = p_W[r / 2];
+    double depth_m = 0;
+    if (std::holds_alternative<Mesh>(object.shape)) {
+      // a mesh's distance is to its triangles (Embree's point query: fast on any mesh)
+      auto [others, fresh] = all_but.try_emplace(hit.object_id);
+      if (fresh) {
+        for (std::int32_t id = 0; id < world.first_robot_object_id(); ++id)
+          if (id != hit.object_id) others->second.push_back(id);
+      }
+      depth_m = world.caster().DistanceToWorld(p, others->second);
+    } else {
+      // the caster's distance to a solid is 0 inside it: the closed form instead
+      depth_m = DepthInside_m(object.shape, object.X_WO.inverse() * p);
+    }
+    if (depth_m <= kOverlap_m) continue;
+    ObjectOverlap& overlap = by_object[hit.object_id];
+    overlap.object_id = hit.object_id;
+    overlap.links.insert(link_of[r / 2]);
+    if (depth_m > overlap.deepest_m) {
+      overlap.deepest_m = depth_m;
+      overlap.p_W_deepest = p;
+    }
+  }
+  std::vector<ObjectOverlap> overlaps;
+  for (auto& [id, overlap] : by_object) overlaps.push_back(std::move(overlap));
+  return overlaps;
+}
 }  // namespace
 
 std::vector<std::string> StartProblems(const Scenario& scenario, World& world, Locomotion& locomotion) {
@@ -111,42 +180,15 @@ std::vector<std::string> StartProblems(const Scenario& scenario, World& world, L
 
   // 2. the robot's surface inside an object other than its ground: the links
   // that reach into each object, one line per object
-  for (std::size_t id = 0; id < scenario.scene.objects.size(); ++id) {
-    const SceneObject& object = scenario.scene.objects[id];
-    if (object.ground || std::holds_alternative<Plane>(object.shape)) continue;  // a plane has no inside
-    // the object's bounding box in its own frame, to skip far points cheaply
-    Vec3 lo_O = Vec3::Constant(std::numeric_limits<double>::infinity()), hi_O = -lo_O;
-    for (const Vec3& p_O : ShapeOutlinePoints_O(object.shape)) {
-      lo_O = lo_O.cwiseMin(p_O);
-      hi_O = hi_O.cwiseMax(p_O);
-    }
-    const Pose X_OW = object.X_WO.inverse();
+  for (const ObjectOverlap& overlap : Overlaps(scenario, world, robot)) {
     std::vector<std::string> links;
-    double deepest_m = 0;
-    Vec3 p_W_deepest = Vec3::Zero();
-    for (int link = 0; link < model.link_count(); ++link) {
-      bool inside = false;
-      for (const Vec3& p_L : robot.surface_points_L(link)) {
-        const Vec3 p_W = robot.X_WL(link) * p_L;
-        const Vec3 p_O = X_OW * p_W;
-        if ((p_O.array() < lo_O.array() - kOverlap_m).any() || (p_O.array() > hi_O.array() + kOverlap_m).any()) continue;
-        const double depth_m = DepthInside_m(object.shape, p_O);
-        if (depth_m <= kOverlap_m) continue;
-        inside = true;
-        if (depth_m > deepest_m) {
-          deepest_m = depth_m;
-          p_W_deepest = p_W;
-        }
-      }
-      if (inside) links.push_back(model.link_name(link));
-    }
-    if (links.empty()) continue;
-    problems.push_back(where + "the robot starts inside object '" + object.name + "': link" +
-                       (links.size() == 1 ? " " : "s ") + QuotedList(links) +
+    for (const int link : overlap.links) links.push_back(model.link_name(link));
+    problems.push_back(where + "the robot starts inside object '" + scenario.scene.objects[overlap.object_id].name +
+                       "': link" + (links.size() == 1 ? " " : "s ") + QuotedList(links) +
                        (links.size() == 1 ? " reaches" : " reach") +
-                       Format(" into it (up to %.3f m deep, at (%.3f, %.3f, ", deepest_m, p_W_deepest.x(),
-                              p_W_deepest.y()) +
-                       Format("%.3f) m); start the robot clear of it", p_W_deepest.z()));
+                       Format(" into it (up to %.3f m deep, at (%.3f, %.3f, ", overlap.deepest_m,
+                              overlap.p_W_deepest.x(), overlap.p_W_deepest.y()) +
+                       Format("%.3f) m); start the robot clear of it", overlap.p_W_deepest.z()));
   }
   locomotion.Reset();
   return problems;
