@@ -197,10 +197,14 @@ bool ShapeFromUrdf(const urdf::Geometry& g, const std::string& where, UrdfMeshes
   return false;
 }
 
-// A xacro file declares the xacro namespace (xmlns:xacro="...") or uses its
-// elements (<xacro:macro>, <xacro:include>...).
+// A xacro file uses xacro's elements (<xacro:macro>, <xacro:include>...) or,
+// declaring its namespace (xmlns:xacro="..."), its substitutions (${...},
+// $(...)). The namespace alone is not enough: xacro's own output may keep the
+// declaration on a URDF that has nothing left to expand.
 bool IsXacro(const std::string& text) {
-  return text.find("xmlns:xacro") != std::string::npos || text.find("<xacro:") != std::string::npos;
+  if (text.find("<xacro:") != std::string::npos) return true;
+  return text.find("xmlns:xacro") != std::string::npos &&
+         (text.find("${") != std::string::npos || text.find("$(") != std::string::npos);
 }
 
 Pose JointMotion(const RobotJoint& j, double q) {
@@ -244,8 +248,8 @@ RobotModel RobotModel::Builtin(const std::string& name, const UrdfOptions& optio
 RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::string& source,
                                     const UrdfOptions& options) {
   // urdfdom reads a xacro file as a URDF and drops its macros: the robot would
-  // then lack links and joints, blamed elsewhere. Recognised by its namespace
-  // (the file's content, not its name) or a xacro element.
+  // then lack links and joints, blamed elsewhere. Recognised by its content
+  // (IsXacro), not its name.
   if (IsXacro(urdf_text)) {
     throw InputError(source + ": this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)");
   }
