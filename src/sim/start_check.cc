@@ -45,7 +45,7 @@ struct FootSupport {
 };
 
 std::vector<FootSupport> FootSupports(const World& world, const RobotInScene& robot,
-                                                       const std::vector<FootFrame>& feet) {
+                                      const std::vector<FootFrame>& feet) {
   std::vector<Ray> rays;
   for (const FootFrame& foot : feet) {
     Vec3 p_W_low = Vec3::Constant(std::numeric_limits<double>::infinity());
@@ -62,13 +62,14 @@ std::vector<FootSupport> FootSupports(const World& world, const RobotInScene& ro
   world.caster().Cast(rays, hits);
   std::vector<FootSupport> supports;
   for (std::size_t i = 0; i < feet.size(); ++i) {
-    const bool on_scene = hits[i].is_hit() && hits[i].object_id < world.first_robot_object_id();
+    // a surface facing down was met from within an object: nothing stands on that
+    const bool on_scene = hits[i].is_hit() && hits[i].object_id < world.first_robot_object_id() &&
+                          hits[i].normal_W.z() > 0;
     supports.push_back({feet[i].link, on_scene ? hits[i].object_id : -1,
                         static_cast<double>(rays[i].origin_W.z()) - static_cast<double>(hits[i].distance_m)});
   }
   return supports;
 }
-
 
 // The links of the robot whose surface reaches more than kOverlap_m into a
 // scene object that is not ground, by object. Each surface sample casts a
@@ -76,8 +77,9 @@ std::vector<FootSupport> FootSupports(const World& world, const RobotInScene& ro
 // an object's inside (its normal along the ray: met from within), the sample
 // is inside that object, as deep as its distance to that object's surface
 // (scene/shape_inside.h for a box, sphere or cylinder; the caster's distance
-// to the triangles for a mesh). Embree keeps this fast on meshes of any size. (An object nested in another
-// can hide the outer one from both rays; the inner one is still found.)
+// to the triangles for a mesh). Embree keeps this fast on meshes of any size.
+// (An object nested in another can hide the outer one from both rays; the
+// inner one is still found.)
 struct ObjectOverlap {
   std::int32_t object_id = -1;
   std::set<int> links;  // by index: model order
@@ -97,7 +99,8 @@ std::vector<ObjectOverlap> Overlaps(const Scenario& scenario, const World& world
   std::vector<Ray> rays;
   for (const Vec3& p : p_W) {
     for (const float dz : {1.0f, -1.0f}) {
-      rays.push_back({.origin_W = p.cast<float>(), .direction_W = Vec3f(0, 0, dz), .max_range_m = 1e4f, .see_robot = false});
+      rays.push_back(
+          {.origin_W = p.cast<float>(), .direction_W = Vec3f(0, 0, dz), .max_range_m = 1e4f, .see_robot = false});
     }
   }
   std::vector<Hit> hits(rays.size());
@@ -137,6 +140,7 @@ std::vector<ObjectOverlap> Overlaps(const Scenario& scenario, const World& world
   for (auto& [id, overlap] : by_object) overlaps.push_back(std::move(overlap));
   return overlaps;
 }
+
 }  // namespace
 
 std::vector<std::string> StartProblems(const Scenario& scenario, World& world, Locomotion& locomotion) {
@@ -159,13 +163,15 @@ std::vector<std::string> StartProblems(const Scenario& scenario, World& world, L
       const bool first = supports.insert(support.object_id).second;
       const SceneObject& object = scenario.scene.objects[support.object_id];
       if (!first || object.ground || object.name == start_on) continue;  // one line per object
+      const double z_m = std::abs(support.z_m) < 5e-4 ? 0.0 : support.z_m;  // no "-0.000"
       problems.push_back(where + "the robot would start standing on object '" + object.name + "' (its foot '" +
-                         model.link_name(support.foot_link) + "' on it" + Format(" at z = %.3f m", std::abs(support.z_m) < 5e-4 ? 0.0 : support.z_m /* no "-0.000" */) +
+                         model.link_name(support.foot_link) + "' on it" + Format(" at z = %.3f m", z_m) +
                          "), not on the ground: the gait stands the robot on the surface below its start; start "
                          "it elsewhere, or give `on: " + object.name + "` in robot.start to start on it on purpose");
     }
     if (!start_on.empty()) {
-      const auto on = std::ranges::find_if(scenario.scene.objects, [&](const SceneObject& o) { return o.name == start_on; });
+      const auto on =
+          std::ranges::find_if(scenario.scene.objects, [&](const SceneObject& o) { return o.name == start_on; });
       const auto on_id = static_cast<std::int32_t>(on - scenario.scene.objects.begin());
       if (on != scenario.scene.objects.end() && !supports.contains(on_id)) {
         std::vector<std::string> under;
