@@ -24,6 +24,10 @@ namespace {
 // A sensor on its link's surface is how sensors are mounted: no warning.
 std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const SampleFrame& frame) {
   constexpr double kOnSurface_m = 1e-9;
+  // A sensor mounted on its link's surface, at a point computed from the
+  // link's float mesh vertices (`proxsim inspect` reports them), may land a
+  // few 1e-8 m inside it: only deeper than this is inside.
+  constexpr double kOnLinkSurface_m = 1e-4;
   const Scenario& scenario = sim.scenario();
   std::vector<std::string> warnings;
   for (std::size_t s = 0; s < scenario.sensors.size() && s < frame.sensors.size(); ++s) {
@@ -49,7 +53,7 @@ std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const Sampl
     const RobotLink& robot_link = sim.robot()->model().link(link);
     const Vec3 p_LS = sim.robot()->X_WL(link).inverse() * p_WS;
     for (const LinkShape& shape : robot_link.shapes) {
-      if (DepthInside_m(shape.shape, shape.X_LO.inverse() * p_LS) <= kOnSurface_m) continue;
+      if (DepthInside_m(shape.shape, shape.X_LO.inverse() * p_LS) <= kOnLinkSurface_m) continue;
       warnings.push_back(sensor + " is inside its own link '" + robot_link.name + "' (" + where +
                          "); it sees that link from within (echoes `self`); move it out to the link's surface "
                          "(`proxsim inspect` lists where it is)");
