@@ -177,6 +177,22 @@ TEST(BadInputTest, StartWithALegInAMeshObject) {
   EXPECT_EQ(result.output.find("right_"), std::string::npos) << result.output;
 }
 
+TEST(BadInputTest, StartOnAnObjectItIsNotAbove) {
+  ExpectRefusedFile("start_on_elsewhere.yaml",
+                    {"start_on_elsewhere.yaml: robot.start: on: 'crate', but the robot's feet at its start "
+                     "(3.000, 0.000) m stand on 'floor'; place the start above 'crate' or leave `on` out"});
+}
+
+TEST(BadInputTest, StartOnPurposeRuns) {
+  // the crate under the feet, named by robot.start.on: the robot starts on it and steps down (exit 0)
+  const auto out = FreshDir("start_on_purpose");
+  const CommandResult result = RunProxsim("run " + std::string(PROXSIM_TEST_DATA_DIR) +
+                                          "/cli/start_on_crate_on_purpose.yaml --out " + out.string() + " --no-report");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output.find("cannot_step"), std::string::npos) << result.output;
+  std::filesystem::remove_all(out);
+}
+
 TEST(BadInputTest, StartOnAnUnknownObject) {
   ExpectRefusedFile("start_on_unknown.yaml",
                     {"start_on_unknown.yaml:14: robot.start.on: no object 'crat' in the scene (did you mean 'crate'?)"});
