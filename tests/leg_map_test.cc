@@ -294,7 +294,8 @@ TEST_F(LegMapTest, BadMapsAndHeldJointsAreRefusedSayingWhichAndWhy) {
 // `proxsim inspect` (through the binary) finds the strider's map by axes and
 // heights, past the hip yaw before and the hip roll after the hip pitch, a
 // knee axis of the other sign and the ankle roll; its shin's front is the
-// cylinder's surface, 0.04 m ahead of the knee–ankle line.
+// cylinder's surface, 0.04 m ahead of the knee–ankle line, also when the
+// shin's shapes hang on a fixed link below the knee's.
 TEST_F(LegMapTest, InspectSuggestsTheMapByGeometry) {
   const std::string urdf = WriteStrider(dir_);
   const testing::CommandResult result = testing::RunProxsim("inspect " + urdf + " --json");
@@ -313,6 +314,19 @@ TEST_F(LegMapTest, InspectSuggestsTheMapByGeometry) {
     EXPECT_NEAR(spot["xyz_m"][0].get<double>(), 0.04, 1e-9);
     EXPECT_NEAR(spot["xyz_m"][2].get<double>(), -kShank_m * spot["fraction"].get<double>(), 1e-9);
   }
+  // the shin's shapes on a fixed link below the knee's: that link is the shank
+  const std::string shell = R"(<link name="l_shin_shell"><visual><origin xyz="0 0 -0.19"/><geometry><cylinder radius="0.04" length="0.38"/></geometry></visual></link>
+  <joint name="l_shell_fixed" type="fixed"><parent link="l_shin"/><child link="l_shin_shell"/></joint>)";
+  const std::string bare_shin = Replace(
+      StriderUrdf(shell),
+      R"(<link name="l_shin"><visual><origin xyz="0 0 -0.19"/><geometry><cylinder radius="0.04" length="0.38"/></geometry></visual></link>)",
+      R"(<link name="l_shin"/>)");
+  const testing::CommandResult moved = testing::RunProxsim("inspect " + WriteStrider(dir_, bare_shin) + " --json");
+  ASSERT_EQ(moved.exit_code, 0) << moved.output;
+  const nlohmann::json moved_inspect = nlohmann::json::parse(moved.output);
+  EXPECT_EQ(moved_inspect["legs"]["left"]["knee"], "l_knee");
+  EXPECT_EQ(moved_inspect["shanks"]["left"]["link"], "l_shin_shell");
+  EXPECT_EQ(moved_inspect["shanks"]["left"]["front_surface"].size(), 3u);
 }
 
 }  // namespace

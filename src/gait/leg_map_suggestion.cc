@@ -60,6 +60,21 @@ std::vector<FootCandidate> FindFeet(const RobotModel& model, const RobotSummary&
   return feet;
 }
 
+// The first link with geometry among those fixed to `link` (directly or
+// through other fixed joints), breadth first; −1 when there is none.
+int FirstFixedWithShapes(const RobotModel& model, int link) {
+  std::vector<int> todo = {link};
+  for (std::size_t i = 0; i < todo.size(); ++i) {
+    for (const int j : model.link(todo[i]).child_joints) {
+      if (model.joint(j).type != JointType::kFixed) continue;
+      const int child = model.joint(j).child_link;
+      if (!model.link(child).shapes.empty()) return child;
+      todo.push_back(child);
+    }
+  }
+  return -1;
+}
+
 // Hip, knee and ankle pitch on the chain to `foot`, by axis and height.
 LegSuggestion SuggestLeg(const RobotModel& model, const RobotSummary& summary, const FootCandidate& foot) {
   LegSuggestion leg;
@@ -91,8 +106,14 @@ LegSuggestion SuggestLeg(const RobotModel& model, const RobotSummary& summary, c
   }
   leg.names = LegNames{model.joint_name(hip), model.joint_name(knee), model.joint_name(ankle), foot_name};
 
-  // the shank's front, between the knee and the ankle
+  // the shank: the knee's child link, or when it has no geometry the first
+  // link with some that moves with it (a URDF may hang the shin's shapes on a
+  // link fixed to it)
   leg.shank_link = model.joint(knee).child_link;
+  if (model.link(leg.shank_link).shapes.empty()) {
+    if (const int shapes = FirstFixedWithShapes(model, leg.shank_link); shapes >= 0) leg.shank_link = shapes;
+  }
+  // its front, between the knee and the ankle
   const RobotLink& shank = model.link(leg.shank_link);
   const Pose X_LW = summary.X_WL[leg.shank_link].inverse();
   const Vec3 p_L_knee = X_LW * summary.X_WJ[knee].translation();

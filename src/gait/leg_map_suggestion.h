@@ -8,8 +8,9 @@
 // accepted is what `proxsim validate` accepts.
 //
 // With it, where a sensor can sit on each shank (the link the knee joint
-// moves): the point of the shank's geometry farthest forward (the root's +x)
-// at a few heights between the knee and the ankle.
+// moves, or a link fixed to it that has geometry when it has none): the
+// point of the shank's geometry farthest forward (the root's +x) at a few
+// heights between the knee and the ankle.
 //
 // Frames: W world = the root link's frame at the reference pose (every joint
 // 0), L a link.
@@ -42,7 +43,7 @@ struct ShankSpot {
 struct LegSuggestion {
   std::optional<LegNames> names;  ///< none when no leg map could be read off this side
   std::string problem;            ///< why not
-  int shank_link = -1;            ///< the knee joint's child link, when there is a knee
+  int shank_link = -1;            ///< the knee's child link (or one fixed to it with geometry), when there is a knee
   std::vector<ShankSpot> shank_front;  ///< at kShankFractions, where the front line meets the shank
 };
 
