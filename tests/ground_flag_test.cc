@@ -87,14 +87,17 @@ TEST(GroundFlagTest, AGroundThatIsNotTrueOrFalseIsRefusedAtItsLine) {
 
 // The biped standing on a 0.5 m thick box named `name` (its top at z = 0),
 // `ground_key` added to it, a wall's face 2 m ahead; a short walk of 0.4 s.
+// A box that is not ground is started on on purpose (`robot.start.on`): a
+// start on an object that is not ground is refused otherwise.
 Scenario StandingOn(const std::string& name, const std::string& ground_key) {
+  const std::string start = ground_key.empty() ? "  start: {on: " + name + "}\n" : "";
   return LoadScenarioText(
       "proxsim: 1\nduration_s: 0.4\nrate_hz: 50\n"
       "scene:\n"
       "  objects:\n"
       "    - {name: " + name + ", box: {size_m: [4, 3, 0.5]}, pose: {xyz_m: [0, 0, -0.25]}" + ground_key + "}\n"
       "    - {name: wall, box: {size_m: [0.1, 3, 2]}, pose: {xyz_m: [2.05, 0, 1]}}\n"
-      "robot:\n  model: builtin:biped\n  path: {waypoints_m: [[0, 0], [3, 0]]}\n"
+      "robot:\n  model: builtin:biped\n  path: {waypoints_m: [[0, 0], [3, 0]]}\n" + start +
       "sensors:\n  - {name: s, type: ideal, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.2]}}\n",
       name + ".yaml");
 }

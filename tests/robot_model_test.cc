@@ -141,3 +141,37 @@ TEST(RobotModel, BrokenUrdfsAreInputErrorsNamingTheFile) {
 
 }  // namespace
 }  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+TEST(RobotModel, XacroIsRecognisedByItsContentNotItsName) {
+  // an element of xacro's, or its namespace with a substitution: "this is xacro", one problem
+  for (const char* text :
+       {R"(<robot name="r"><xacro:macro name="m"/><link name="base"/></robot>)",
+        R"(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base">
+             <visual><geometry><box size="${w} 0.1 0.1"/></geometry></visual></link></robot>)"}) {
+    // the whole message: one line, nothing else
+    EXPECT_EQ(ErrorOf([&] { RobotModel::FromUrdfText(text, "r.urdf"); }),
+              "r.urdf: this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)");
+  }
+  // xacro's output may keep the namespace on a URDF with nothing left to expand: it loads
+  const RobotModel expanded = RobotModel::FromUrdfText(
+      R"(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base">
+           <visual><geometry><box size="0.2 0.1 0.1"/></geometry></visual></link></robot>)",
+      "expanded.urdf");
+  EXPECT_EQ(expanded.link_count(), 1);
+}
+
+TEST(RobotModel, JointLimitsKeepVelocityAndEffort) {
+  const RobotModel m = RobotModel::FromUrdfText(kTwoLink, "two_link.urdf");
+  const RobotJoint& knee = m.joint(m.JointIndex("knee"));
+  EXPECT_TRUE(knee.has_limits);
+  EXPECT_EQ(knee.upper, 2.5);
+  EXPECT_EQ(knee.velocity, 1.0);
+  EXPECT_EQ(knee.effort, 1.0);
+  EXPECT_FALSE(m.joint(m.JointIndex("ankle_fixed")).has_limits);
+}
+
+}  // namespace
+}  // namespace proxsim

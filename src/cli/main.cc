@@ -1,6 +1,7 @@
 // The proxsim command line (docs/cli.md):
 //   proxsim run [SCENARIO.yaml] [--out DIR] [--seed N] [--threads N]
 //   proxsim validate SCENARIO.yaml
+//   proxsim inspect ROBOT [--json]   (a robot's links, joints and leg map, docs/robots.md)
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
 //   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
@@ -19,6 +20,7 @@
 
 #include "bench/bench_suite.h"
 #include "core/input_error.h"
+#include "inspect_command.h"
 #include "output/readings_columns.h"
 #include "output/run_manifest.h"
 #include "scenario/scenario.h"
@@ -236,6 +238,13 @@ int main(int argc, char** argv) {
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
   validate->add_option("scenario", validate_path, "scenario YAML file")->required();
 
+  std::string inspect_target;
+  bool inspect_json = false;
+  CLI::App* inspect = app.add_subcommand(
+      "inspect", "list a robot's links, sizes, joints and limits, and suggest its leg map and shank sensor spots");
+  inspect->add_option("robot", inspect_target, "a URDF file, a scenario file (its robot) or builtin:biped")->required();
+  inspect->add_flag("--json", inspect_json, "print one JSON object (keys: docs/robots.md)");
+
   CLI::App* columns = app.add_subcommand("columns", "print the readings' columns (name, type, unit, meaning) as a Markdown table");
 
   try {
@@ -286,6 +295,7 @@ int main(int argc, char** argv) {
       return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
     }
     if (*validate) return Validate(validate_path);
+    if (*inspect) return proxsim::InspectCommand(inspect_target, inspect_json);
     if (*columns) {
       std::fputs(proxsim::ReadingsColumnsMarkdown().c_str(), stdout);
       return 0;

@@ -76,6 +76,13 @@ class UrdfMeshes {
       return std::nullopt;
     }
     const MeshLookup lookup = ResolveMeshUri(m.filename, urdf_dir_, options_.package_paths);
+    if (!lookup.path && !lookup.missing_package.empty()) {
+      // a package that is nowhere: one line for it, however many meshes name it
+      auto [missing, first] = missing_packages_.try_emplace(lookup.missing_package);
+      if (first) missing->second.line = where + ": mesh '" + m.filename + "' not found: " + lookup.problem;
+      else ++missing->second.more_meshes;
+      return std::nullopt;
+    }
     if (!lookup.path) {
       problems->push_back(where + ": mesh '" + m.filename + "' not found: " + lookup.problem);
       return std::nullopt;
@@ -120,6 +127,18 @@ class UrdfMeshes {
   /// Mesh files read (successfully or not).
   std::size_t file_count() const { return read_.size(); }
 
+  /// One problem per package that was found nowhere: the first mesh naming it,
+  /// the folders searched, and how many other meshes name it.
+  void AddMissingPackages(std::vector<std::string>* problems) const {
+    for (const auto& [name, missing] : missing_packages_) {
+      std::string line = missing.line;
+      if (missing.more_meshes > 0)
+        line += " (and " + std::to_string(missing.more_meshes) + " other mesh" + (missing.more_meshes == 1 ? "" : "es") +
+                " of package '" + name + "')";
+      problems->push_back(std::move(line));
+    }
+  }
+
  private:
   struct FileRead {
     std::shared_ptr<const TriangleMesh> data;  // null when the file could not be read
@@ -127,7 +146,12 @@ class UrdfMeshes {
   };
   const UrdfOptions& options_;
   std::filesystem::path urdf_dir_;
+  struct MissingPackage {
+    std::string line;     // the first mesh's problem
+    int more_meshes = 0;  // other meshes naming the same package
+  };
   std::map<std::string, FileRead> read_;
+  std::map<std::string, MissingPackage> missing_packages_;
   std::map<std::pair<std::string, std::array<double, 3>>, std::shared_ptr<const TriangleMesh>> scaled_;
 };
 
@@ -173,6 +197,16 @@ bool ShapeFromUrdf(const urdf::Geometry& g, const std::string& where, UrdfMeshes
   return false;
 }
 
+// A xacro file uses xacro's elements (<xacro:macro>, <xacro:include>...) or,
+// declaring its namespace (xmlns:xacro="..."), its substitutions (${...},
+// $(...)). The namespace alone is not enough: xacro's own output may keep the
+// declaration on a URDF that has nothing left to expand.
+bool IsXacro(const std::string& text) {
+  if (text.find("<xacro:") != std::string::npos) return true;
+  return text.find("xmlns:xacro") != std::string::npos &&
+         (text.find("${") != std::string::npos || text.find("$(") != std::string::npos);
+}
+
 Pose JointMotion(const RobotJoint& j, double q) {
   Pose M = Pose::Identity();
   switch (j.type) {
@@ -213,6 +247,12 @@ RobotModel RobotModel::Builtin(const std::string& name, const UrdfOptions& optio
 
 RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::string& source,
                                     const UrdfOptions& options) {
+  // urdfdom reads a xacro file as a URDF and drops its macros: the robot would
+  // then lack links and joints, blamed elsewhere. Recognised by its content
+  // (IsXacro), not its name.
+  if (IsXacro(urdf_text)) {
+    throw InputError(source + ": this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)");
+  }
   std::vector<std::string> messages;
   const urdf::ModelInterfaceSharedPtr urdf = ParseCapturingErrors(urdf_text, &messages);
   if (!urdf) {
@@ -305,8 +345,11 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
         }
       }
       if (uj->limits) {
+        joint.has_limits = true;
         joint.lower = uj->limits->lower;
         joint.upper = uj->limits->upper;
+        joint.velocity = uj->limits->velocity;
+        joint.effort = uj->limits->effort;
       }
       model.links_[link_index].child_joints.push_back(static_cast<int>(model.joints_.size()));
       model.joints_.push_back(std::move(joint));
@@ -326,6 +369,7 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
       problems.push_back(source + ": link '" + name +
                          "' is not connected to the root link '" + root->name + "' (a cycle or a second tree)");
   }
+  meshes.AddMissingPackages(&problems);
   if (!problems.empty()) throw InputError(problems);
   model.root_link_ = 0;
   model.mesh_file_count_ = meshes.file_count();

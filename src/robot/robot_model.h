@@ -60,6 +60,9 @@ struct RobotJoint {
   Vec3 axis_J = Vec3::UnitX();   ///< unit axis in J (URDF <axis>)
   double lower = 0.0;            ///< rad or m; only meaningful for revolute/prismatic
   double upper = 0.0;            ///< rad or m
+  bool has_limits = false;       ///< the URDF gives <limit>
+  double velocity = 0.0;         ///< <limit velocity>: rad/s or m/s (0 when not given)
+  double effort = 0.0;           ///< <limit effort>: N·m or N (0 when not given)
 };
 
 /// A URDF robot: links, joints, shapes and forward kinematics.

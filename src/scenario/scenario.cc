@@ -104,7 +104,7 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   // the sections
   const std::filesystem::path base_dir = BaseDirOf(source);
   ReadScene(reader, (*top)["scene"], base_dir, scenario);
-  if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir);
+  if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir, scenario.scene);
   scenario.sensors = ReadSensors(reader, (*top)["sensors"], scenario.robot.has_value());
   scenario.map = ReadTerrainMap(reader, (*top)["map"], scenario.sensors, scenario.robot.has_value());
 

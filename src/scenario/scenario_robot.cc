@@ -134,7 +134,8 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
 
 }  // namespace
 
-RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir) {
+RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
+                      const Scene& scene) {
   RobotConfig robot;
   const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
                                       "geometry", "package_paths", "legs", "joints_deg", "on_collision"});
@@ -188,10 +189,25 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
                                              "(every collision is logged and the walk goes on), got '" + *mode + "'");
   }
 
-  // start: {xyz_m, yaw_deg}
-  if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg"})) {
+  // start: {xyz_m, yaw_deg, on}; `on` names the object the robot starts on
+  // on purpose (sim/start_check.h refuses any other start on or in an object)
+  if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg", "on"})) {
     robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
     robot.start_yaw_rad = DegToRad(reader.Number((*start)["yaw_deg"]).value_or(0.0));
+    if (const Field on = (*start)["on"]) {
+      if (const auto object = reader.String(on)) {
+        std::vector<std::string> names;
+        for (const SceneObject& o : scene.objects) names.push_back(o.name);
+        if (std::ranges::find(names, *object) != names.end()) {
+          robot.start_on = *object;
+        } else {
+          const auto nearest = NearestKey(*object, names);
+          reader.Fail(on, "no object '" + *object + "' in the scene" +
+                              (nearest ? " (did you mean '" + *nearest + "'?)" : "") +
+                              "; expected the name of the object the robot starts on");
+        }
+      }
+    }
   }
 
   // gait: {stride_m, period_s, max_step_m}; stride or period absent scales with
