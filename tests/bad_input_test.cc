@@ -145,19 +145,20 @@ TEST(BadInputTest, XacroIsNamedInOneLine) {
 }
 
 TEST(BadInputTest, StartOnABoxUnderTheFeet) {
-  // the gait would stand the robot on the crate's top: refused, naming the crate and a foot
+  // feet stand only on ground: the robot would start with its feet in the crate, refused naming it and the links
   ExpectRefusedFile("start_on_crate.yaml",
-                    {"start_on_crate.yaml: robot.start: the robot would start standing on object 'crate' (its foot '",
-                     "_foot' on it at z = 0.100 m), not on the ground", "`on: crate`"});
+                    {"start_on_crate.yaml: robot.start: the robot starts inside object 'crate': links ",
+                     "'left_foot'", "'right_foot'", "`on: crate`"});
   const CommandResult validate = RunProxsim("validate " + kBadDir + "/start_on_crate.yaml");
   EXPECT_EQ(validate.exit_code, 2) << validate.output;
-  EXPECT_NE(validate.output.find("standing on object 'crate'"), std::string::npos) << validate.output;
+  EXPECT_NE(validate.output.find("inside object 'crate'"), std::string::npos) << validate.output;
 }
 
 TEST(BadInputTest, StartAtTheTable) {
+  // under the table: its top cuts the thighs
   ExpectRefusedFile("start_at_table.yaml",
-                    {"start_at_table.yaml: robot.start: the robot would start standing on object 'table_top'",
-                     "_foot' on it at z = 0.750 m"});
+                    {"start_at_table.yaml: robot.start: the robot starts inside object 'table_top': links ",
+                     "'left_thigh'", "'right_thigh'"});
 }
 
 TEST(BadInputTest, StartInsideAColumn) {

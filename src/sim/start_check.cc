@@ -194,7 +194,9 @@ std::vector<std::string> StartProblems(const Scenario& scenario, World& world, L
                        (links.size() == 1 ? " reaches" : " reach") +
                        Format(" into it (up to %.3f m deep, at (%.3f, %.3f, ", overlap.deepest_m,
                               overlap.p_W_deepest.x(), overlap.p_W_deepest.y()) +
-                       Format("%.3f) m); start the robot clear of it", overlap.p_W_deepest.z()));
+                       Format("%.3f) m); start the robot clear of it", overlap.p_W_deepest.z()) +
+                       " (feet stand only on ground: to start standing on it, give `on: " +
+                       scenario.scene.objects[overlap.object_id].name + "` in robot.start)");
   }
   locomotion.Reset();
   return problems;
