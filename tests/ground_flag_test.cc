@@ -116,14 +116,27 @@ Walked Walk(Scenario scenario) {
 }
 
 TEST(GroundFlagTest, TheClearanceLeavesOutTheDeclaredGroundNotWhatIsNamedFloor) {
-  // named floor_x, not declared: an obstacle the soles touch
-  const Walked floor_x = Walk(StandingOn("floor_x", ""));
-  EXPECT_TRUE(floor_x.ground_ids.empty());
-  EXPECT_LT(floor_x.min_clearance_m, 0.005);
   // named slab, declared ground: left out, the wall ahead is the nearest thing
   const Walked slab = Walk(StandingOn("slab", ", ground: true"));
   EXPECT_EQ(slab.ground_ids, std::vector<std::int32_t>{0});
   EXPECT_GT(slab.min_clearance_m, 1.0);
+  // named floor_x, not declared but started on on purpose (robot.start.on): the
+  // robot's ground for that run, left out the same way
+  const Walked floor_x = Walk(StandingOn("floor_x", ""));
+  EXPECT_EQ(floor_x.ground_ids, std::vector<std::int32_t>{0});
+  EXPECT_GT(floor_x.min_clearance_m, 1.0);
+  // a name is not a declaration: floor_y, beside the walk and not declared, is
+  // an obstacle to the clearance, 0.1 m from the feet's sides at most
+  Scenario beside = StandingOn("slab", ", ground: true");
+  SceneObject floor_y = beside.scene.objects[1];
+  floor_y.name = "floor_y";
+  floor_y.shape = Box{Vec3(2.0, 0.2, 0.02)};
+  floor_y.X_WO = Pose::Identity();
+  floor_y.X_WO.translation() = Vec3(0.0, 0.35, 0.01);
+  beside.scene.objects.push_back(floor_y);
+  const Walked with_floor_y = Walk(beside);
+  EXPECT_EQ(with_floor_y.ground_ids, std::vector<std::int32_t>{0});
+  EXPECT_LT(with_floor_y.min_clearance_m, 0.15);
 }
 
 }  // namespace
