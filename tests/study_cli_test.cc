@@ -154,6 +154,32 @@ TEST_F(StudyCliTest, ResumingAnotherStudysJournalIsRefused) {
   EXPECT_NE(other.output.find("belongs to another study"), std::string::npos) << other.output;
 }
 
+TEST_F(StudyCliTest, AJournalLineOfTheWrongShapeIsAnInputErrorNotAnOutOfBoundsRead) {
+  // issue 23 (c): a line with another study's number of metrics once read past
+  // the end of a vector (study_answers.cc) on --resume
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "long.yaml") << kLongStudy;
+  const std::string study = (dir_ / "long.yaml").string();
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(RunProxsim("study " + study + " --no-report --threads 2 --out " + out.string()).exit_code, 0);
+  const std::string whole = ReadFile(out / "journal.jsonl");
+  const std::string fingerprint = whole.substr(0, whole.find('\n') + 1);
+  const char* const kBadLines[] = {
+      R"({"job": 0, "metrics": []})",
+      R"({"job": 0, "metrics": [{"h": [], "n": 1, "fa": 0, "self": 0, "graze": 0, "floor": 0}]})",
+      R"({"job": 100000, "metrics": []})",
+      R"({"job": -1, "metrics": []})",
+      R"([1, 2, 3])",
+  };
+  for (const char* line : kBadLines) {
+    SCOPED_TRACE(line);
+    std::ofstream(out / "journal.jsonl", std::ios::trunc) << fingerprint << line << "\n";
+    const auto resumed = RunProxsim("study " + study + " --no-report --threads 1 --resume --out " + out.string());
+    EXPECT_EQ(resumed.exit_code, 2) << resumed.output;
+    EXPECT_NE(resumed.output.find("journal.jsonl:2: journal line"), std::string::npos) << resumed.output;
+  }
+}
+
 TEST_F(StudyCliTest, BadStudiesListEveryProblemBeforeAnyRun) {
   fs::create_directories(dir_);
   std::ofstream(dir_ / "bad.yaml")

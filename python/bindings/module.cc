@@ -9,6 +9,12 @@
 // `problems` lists the CLI's messages; a wrong value (threads < 1, a stride
 // <= 0, a malformed path) raises ValueError; a step after the last sample or
 // after close() raises RuntimeError. Nothing here aborts the interpreter.
+//
+// Threads: every method of a Simulation (and of its Robot) holds the object's
+// own mutex, so one Simulation shared by several threads is safe: a second
+// call made while another thread is inside step() waits for that step to end
+// (with the GIL released while it waits, so the stepping thread can finish).
+// Calls are serialised, not interleaved; one Simulation per thread is faster.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -17,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -39,6 +46,22 @@ using Clock = std::chrono::steady_clock;
 // proxsim.InputError, created at import and raised for every InputError
 PyObject* g_input_error = nullptr;
 
+// Takes a Simulation's mutex for the current call. Called with the GIL held:
+// when another thread holds the mutex (inside step(), GIL released), waits
+// for it with the GIL released, or the two threads would deadlock.
+class ObjectLock {
+ public:
+  explicit ObjectLock(std::mutex& mutex) : lock_(mutex, std::try_to_lock) {
+    if (!lock_.owns_lock()) {
+      py::gil_scoped_release release;
+      lock_.lock();
+    }
+  }
+
+ private:
+  std::unique_lock<std::mutex> lock_;
+};
+
 py::array_t<double> Vector(const Vec3& v) {
   py::array_t<double> a(3);
   auto out = a.mutable_unchecked<1>();
@@ -53,10 +76,19 @@ py::object JsonToPython(const nlohmann::json& json) {
 // Commands for scripts: the simulation's own RobotCommands
 class PyRobot {
  public:
-  explicit PyRobot(RobotCommands* commands) : commands_(commands) {}
-  void Stop() { commands_->Stop(); }
-  void Resume() { commands_->Resume(); }
-  void SetStride(double stride_m) { commands_->SetStride(stride_m); }
+  PyRobot(RobotCommands* commands, std::mutex* mutex) : commands_(commands), mutex_(mutex) {}
+  void Stop() {
+    ObjectLock lock(*mutex_);
+    commands_->Stop();
+  }
+  void Resume() {
+    ObjectLock lock(*mutex_);
+    commands_->Resume();
+  }
+  void SetStride(double stride_m) {
+    ObjectLock lock(*mutex_);
+    commands_->SetStride(stride_m);
+  }
   void SetPath(const py::object& waypoints) {
     // any sequence of [x, y] pairs, or an (n, 2) array
     const py::array_t<double, py::array::c_style | py::array::forcecast> array(waypoints);
@@ -66,11 +98,13 @@ class PyRobot {
     std::vector<Vec2> path;
     const auto a = array.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i) path.emplace_back(a(i, 0), a(i, 1));
+    ObjectLock lock(*mutex_);
     commands_->SetPath(std::move(path));
   }
 
  private:
   RobotCommands* commands_;
+  std::mutex* mutex_;  ///< the owning Simulation's: commands change what a step does
 };
 
 class PySimulation {
@@ -84,7 +118,7 @@ class PySimulation {
     if (!scenario_strategy && scenario.robot) scenario.robot->strategy.reset();
     initial_seed_ = scenario.seed;
     sim_ = std::make_unique<Simulation>(std::move(scenario), threads);
-    if (sim_->commands() != nullptr) robot_ = std::make_unique<PyRobot>(sim_->commands());
+    if (sim_->commands() != nullptr) robot_ = std::make_unique<PyRobot>(sim_->commands(), &mutex_);
     StartRecording();
   }
 
@@ -100,6 +134,7 @@ class PySimulation {
   }
 
   py::dict Step() {
+    ObjectLock lock(mutex_);
     if (closed_) throw std::runtime_error("step: the simulation is closed");
     if (sim_->done()) {
       throw std::runtime_error("step: every sample of the episode has been taken (sim.done); call reset() for another");
@@ -114,6 +149,7 @@ class PySimulation {
   }
 
   py::dict Truth() const {
+    ObjectLock lock(mutex_);
     const SampleFrame& frame = sim_->frame();
     const std::size_t n = frame.sensors.size();
     py::list status, object;
@@ -147,17 +183,22 @@ class PySimulation {
   }
 
   void Reset(std::optional<std::uint64_t> seed) {
+    ObjectLock lock(mutex_);
     if (closed_) throw std::runtime_error("reset: the simulation is closed");
     recorder_.reset();  // an unfinished episode's files are dropped (their temporary names removed)
     sim_->Reset(seed.value_or(initial_seed_));
     StartRecording();
   }
 
-  py::object Summary() const { return JsonToPython(recorder_->Summary(!sim_->done())); }
+  py::object Summary() const {
+    ObjectLock lock(mutex_);
+    return JsonToPython(recorder_->Summary(!sim_->done()));
+  }
 
   // The terrain map as the robot has built it so far (what a strategy reads):
   // dense float32 arrays over its tiles, NaN where unknown, and its hazards.
   py::object TerrainMapDict() const {
+    ObjectLock lock(mutex_);
     const TerrainMap* map = sim_->terrain_map();
     if (map == nullptr) return py::none();
     const ElevationGrid& grid = map->grid();
@@ -206,19 +247,32 @@ class PySimulation {
   }
 
   void Close() {
+    ObjectLock lock(mutex_);
     if (closed_) return;
     closed_ = true;
     if (out_dir_.empty()) return;
     const double loop_wall_s = samples_ > 0 ? std::chrono::duration<double>(Clock::now() - loop_start_).count() : 0.0;
     recorder_->Finish(!sim_->done());
-    WriteTimings(out_dir_, std::chrono::duration<double>(Clock::now() - start_).count(), loop_wall_s, threads_,
+    WriteTimings(recorder_->out_dir(), std::chrono::duration<double>(Clock::now() - start_).count(), loop_wall_s, threads_,
                  recorder_->samples(), sim_->scenario().rate_hz);
   }
 
-  bool done() const { return sim_->done(); }
-  double t_s() const { return sim_->frame().t_s; }
-  std::int64_t sample_count() const { return sim_->sample_count(); }
-  std::uint64_t seed() const { return sim_->scenario().seed; }
+  bool done() const {
+    ObjectLock lock(mutex_);
+    return sim_->done();
+  }
+  double t_s() const {
+    ObjectLock lock(mutex_);
+    return sim_->frame().t_s;
+  }
+  std::int64_t sample_count() const {
+    ObjectLock lock(mutex_);
+    return sim_->sample_count();
+  }
+  std::uint64_t seed() const {
+    ObjectLock lock(mutex_);
+    return sim_->scenario().seed;
+  }
   py::object robot(py::object self) const {
     // the commands object lives as long as the simulation that owns it
     return robot_ ? py::cast(robot_.get(), py::return_value_policy::reference_internal, self) : py::none();
@@ -308,6 +362,7 @@ class PySimulation {
     return robot;
   }
 
+  mutable std::mutex mutex_;  ///< one call at a time (see the file comment)
   std::unique_ptr<Simulation> sim_;
   std::unique_ptr<PyRobot> robot_;
   std::unique_ptr<RunRecorder> recorder_;

@@ -139,7 +139,7 @@ std::filesystem::path ResolveScenarioPath(const std::filesystem::path& base_dir,
 Pose ReadPose(YamlReader& reader, const Field& field) {
   const auto map = reader.Map(field, {"xyz_m", "rpy_deg"});
   if (!map) return Pose::Identity();
-  const Vec3 xyz_m = reader.Vector3((*map)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(Vec3::Zero());
+  const Vec3 xyz_m = reader.Vector3((*map)["xyz_m"], Coordinate(), "[x, y, z] in metres").value_or(Vec3::Zero());
   const Vec3 rpy_deg =
       reader.Vector3((*map)["rpy_deg"], AnyNumber(), "[roll, pitch, yaw] in degrees").value_or(Vec3::Zero());
   return PoseFromXyzRpy(xyz_m, rpy_deg * (kPi / 180.0));

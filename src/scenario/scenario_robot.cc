@@ -181,7 +181,7 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
 
   // start: {xyz_m, yaw_deg}
   if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg"})) {
-    robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
+    robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], Coordinate(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
     robot.start_yaw_rad = DegToRad(reader.Number((*start)["yaw_deg"]).value_or(0.0));
   }
 
@@ -200,7 +200,7 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   if (const auto path = reader.Map((*map)["path"], {"waypoints_m"})) {
     if (const auto points = reader.List((*path)["waypoints_m"], "a list of [x, y] points in metres")) {
       for (const Field& point : *points) {
-        if (const auto xy = reader.Numbers(point, 2, AnyNumber(), "[x, y] in metres")) {
+        if (const auto xy = reader.Numbers(point, 2, Coordinate(), "[x, y] in metres")) {
           robot.waypoints_m.emplace_back((*xy)[0], (*xy)[1]);
         }
       }

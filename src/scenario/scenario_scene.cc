@@ -29,7 +29,7 @@ Box ReadBox(YamlReader& reader, const Field& field) {
   if (!map) return box;
   const Field size = (*map)["size_m"];
   if (reader.Require(size, "size_m: [x, y, z], the full extents in metres")) {
-    if (auto size_m = reader.Vector3(size, PositiveNumber("m"), "[x, y, z], the full extents in metres")) {
+    if (auto size_m = reader.Vector3(size, PositiveLength(), "[x, y, z], the full extents in metres")) {
       box.size_m = *size_m;
     }
   }
@@ -43,7 +43,7 @@ Sphere ReadSphere(YamlReader& reader, const Field& field) {
   if (!map) return sphere;
   const Field radius = (*map)["radius_m"];
   if (reader.Require(radius, "radius_m, a finite number > 0 m")) {
-    sphere.radius_m = reader.Number(radius, PositiveNumber("m")).value_or(sphere.radius_m);
+    sphere.radius_m = reader.Number(radius, PositiveLength()).value_or(sphere.radius_m);
   }
   return sphere;
 }
@@ -56,10 +56,10 @@ Cylinder ReadCylinder(YamlReader& reader, const Field& field) {
   const Field radius = (*map)["radius_m"];
   const Field length = (*map)["length_m"];
   if (reader.Require(radius, "radius_m, a finite number > 0 m")) {
-    cylinder.radius_m = reader.Number(radius, PositiveNumber("m")).value_or(cylinder.radius_m);
+    cylinder.radius_m = reader.Number(radius, PositiveLength()).value_or(cylinder.radius_m);
   }
   if (reader.Require(length, "length_m, a finite number > 0 m")) {
-    cylinder.length_m = reader.Number(length, PositiveNumber("m")).value_or(cylinder.length_m);
+    cylinder.length_m = reader.Number(length, PositiveLength()).value_or(cylinder.length_m);
   }
   return cylinder;
 }

@@ -1,8 +1,11 @@
 #include "terrain/octomap_recorder.h"
 
+#include <sstream>
 #include <stdexcept>
 
 #include <octomap/OcTree.h>
+
+#include "core/atomic_file.h"
 
 namespace proxsim {
 
@@ -47,7 +50,10 @@ void OctomapRecorder::WriteBinary(const std::string& path) const {
     impl_->tree.prune();  // merges children that agree: a smaller file, the same occupancy
     impl_->dirty = false;
   }
-  if (!impl_->tree.writeBinaryConst(path)) throw std::runtime_error("cannot write the OctoMap tree " + path);
+  // through AtomicFile (never through a link), not OctoMap's own ofstream
+  std::ostringstream bytes(std::ios::binary);
+  if (!impl_->tree.writeBinaryConst(bytes)) throw std::runtime_error("cannot write the OctoMap tree " + path);
+  WriteFileAtomically(path, bytes.str());
 }
 
 std::size_t OctomapRecorder::leaf_count() const { return impl_->tree.getNumLeafNodes(); }
