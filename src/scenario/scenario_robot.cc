@@ -16,6 +16,12 @@
 namespace proxsim {
 
 namespace {
+// The gaits proxsim walks (bipeds from toys to adults, slow to running pace).
+constexpr double kMinStride_m = 0.01, kMaxStride_m = 3.0;
+constexpr double kMinGaitPeriod_s = 0.1, kMaxGaitPeriod_s = 30.0;
+}  // namespace
+
+namespace {
 
 constexpr const char* kBuiltinPrefix = "builtin:";
 
@@ -191,9 +197,15 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m"})) {
     robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
     robot.gait.derive_period_from_legs = !gait->Has("period_s");
-    robot.gait.stride_m = reader.Number((*gait)["stride_m"], PositiveNumber("m")).value_or(robot.gait.stride_m);
-    robot.gait.period_s = reader.Number((*gait)["period_s"], PositiveNumber("s")).value_or(robot.gait.period_s);
-    robot.gait.max_step_m = reader.Number((*gait)["max_step_m"], PositiveNumber("m")).value_or(0.0);
+    // a walking gait, not a degenerate one: a period of 1e-9 s walked the
+    // robot kilometres per sample and the terrain corridor never ended (issue 23)
+    NumberRule stride = NumberIn(kMinStride_m, kMaxStride_m, "m");
+    stride.expected += " (a stride a walking robot can take)";
+    NumberRule period = NumberIn(kMinGaitPeriod_s, kMaxGaitPeriod_s, "s");
+    period.expected += " (a gait cycle a walking robot can take)";
+    robot.gait.stride_m = reader.Number((*gait)["stride_m"], stride).value_or(robot.gait.stride_m);
+    robot.gait.period_s = reader.Number((*gait)["period_s"], period).value_or(robot.gait.period_s);
+    robot.gait.max_step_m = reader.Number((*gait)["max_step_m"], stride).value_or(0.0);
   }
 
   // path: {waypoints_m: [[x, y], ...]}
