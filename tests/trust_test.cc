@@ -19,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_helpers.h"
 
 extern char** environ;
@@ -324,6 +326,40 @@ TEST_F(TrustTest, ASecondRunOrStudyIntoAFolderInUseFailsAtOnceNamingTheHolder) {
   EXPECT_FALSE(fs::exists(out / ".proxsim.lock")) << "the lock file outlived its run";
   // the folder is free again
   EXPECT_EQ(ProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
+}
+
+// ----- (i) names with commas and quotes
+
+TEST_F(TrustTest, NamesWithCommasAndQuotesAreQuotedInCsvAndTheReportReadsThem) {
+  const fs::path scenario = dir_ / "names.yaml";
+  std::ofstream(scenario) << "proxsim: 1\nduration_s: 0.2\nrate_hz: 20\nscene:\n  objects:\n"
+                          << "    - {name: 'wall, north \"A\"', box: {size_m: [0.2, 4, 2]}, pose: {xyz_m: [1.6, 0, 1]}}\n"
+                          << "sensors:\n  - {name: 'front, \"left\"', type: ideal, pose: {xyz_m: [0, 0, 1]}}\n"
+                          << "  - {name: plain, type: ideal, pose: {xyz_m: [0, 0.5, 1]}}\n";
+  const fs::path out = dir_ / "out";
+  const auto result = ProxsimWithin("run " + scenario.string() + " --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto csv = testing::ReadCsv(out / "readings.csv");
+  ASSERT_FALSE(csv.rows.empty());
+  std::ifstream lines(out / "readings.csv");
+  std::string line;
+  while (std::getline(lines, line)) EXPECT_EQ(testing::SplitCsvLine(line).size(), csv.header.size()) << line;
+  const auto rows = testing::RowsOf(csv, "front, \"left\"");
+  ASSERT_FALSE(rows.empty());
+  EXPECT_EQ(rows.front().at("object"), "wall, north \"A\"");
+  EXPECT_EQ(rows.front().at("d_m"), "1.5");
+  // the JSON files parse, and plot (Python's csv module) draws them again
+  EXPECT_NO_THROW((void)nlohmann::json::parse(ReadFile(out / "summary.json")));
+  EXPECT_NO_THROW((void)nlohmann::json::parse(ReadFile(out / "scene.json")));
+  const auto plot = ProxsimWithin("plot " + out.string(), 300);
+  EXPECT_EQ(plot.exit_code, 0) << plot.output;
+}
+
+TEST_F(TrustTest, NamesWithControlCharactersOrInvalidUtf8AreInputErrors) {
+  ExpectRefused(Scenario("newline", "    - {name: \"two\\nlines\", box: {size_m: [1, 1, 1]}}\n"),
+                {"newline.yaml:", "name", "a control character"});
+  ExpectRefused(Scenario("latin1", "    - {name: \"caf\xe9\", box: {size_m: [1, 1, 1]}}\n"),
+                {"latin1.yaml:", "name"});
 }
 
 // ----- smaller ones

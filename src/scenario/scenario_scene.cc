@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "core/nearest_key.h"
+#include "core/text_fields.h"
 #include "scenario/scenario_sections.h"
 #include "scene/mesh_loader.h"
 
@@ -181,6 +182,9 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
     if (reader.Require(name, "name, unique in the scene")) {
       if (const auto text = reader.String(name)) {
         scene_object.name = *text;
+        // printable UTF-8 only: the JSON outputs stay valid (commas are quoted in CSV)
+        if (const std::string problem = NamingProblem(*text); !problem.empty())
+          reader.Fail(name, "expected a name of printable UTF-8 text, got " + problem);
         const auto [previous, inserted] = name_origin.emplace(*text, item.path);
         if (!inserted) reader.Fail(name, "duplicate object name '" + *text + "' (already used by " + previous->second + ")");
       }
