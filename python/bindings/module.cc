@@ -46,6 +46,35 @@ using Clock = std::chrono::steady_clock;
 // proxsim.InputError, created at import and raised for every InputError
 PyObject* g_input_error = nullptr;
 
+// An integer argument read by hand: pybind11's own conversion answers an
+// out-of-range int with a TypeError that names neither the argument nor the range.
+std::optional<std::uint64_t> SeedArgument(const py::object& value, const std::string& name) {
+  if (value.is_none()) return std::nullopt;
+  if (!PyLong_Check(value.ptr()) || PyBool_Check(value.ptr())) {
+    throw py::type_error(name + ": expected an int in [0, 2**64 - 1] or None, got " +
+                         py::repr(value).cast<std::string>());
+  }
+  const unsigned long long seed = PyLong_AsUnsignedLongLong(value.ptr());
+  if (PyErr_Occurred() != nullptr) {
+    PyErr_Clear();
+    throw py::value_error(name + ": expected an int in [0, 2**64 - 1], got " + py::repr(value).cast<std::string>());
+  }
+  return seed;
+}
+
+int ThreadsArgument(const py::object& value) {
+  constexpr long kMaxThreads = 256;  // as the CLI's --threads
+  if (!PyLong_Check(value.ptr()) || PyBool_Check(value.ptr())) {
+    throw py::type_error("threads: expected an int in [1, 256], got " + py::repr(value).cast<std::string>());
+  }
+  int overflow = 0;
+  const long threads = PyLong_AsLongAndOverflow(value.ptr(), &overflow);
+  if (overflow != 0 || threads < 1 || threads > kMaxThreads) {
+    throw py::value_error("threads: expected an int in [1, 256], got " + py::repr(value).cast<std::string>());
+  }
+  return static_cast<int>(threads);
+}
+
 // Takes a Simulation's mutex for the current call. Called with the GIL held:
 // when another thread holds the mutex (inside step(), GIL released), waits
 // for it with the GIL released, or the two threads would deadlock.
@@ -112,7 +141,6 @@ class PySimulation {
   PySimulation(Scenario scenario, std::optional<std::uint64_t> seed, int threads, std::optional<std::string> out,
                bool scenario_strategy)
       : out_dir_(out.value_or("")), threads_(threads) {
-    if (threads < 1) throw std::invalid_argument("threads must be >= 1, got " + std::to_string(threads));
     if (seed) scenario.seed = *seed;
     // a script that drives the robot itself drops the scenario's strategy
     if (!scenario_strategy && scenario.robot) scenario.robot->strategy.reset();
@@ -122,14 +150,22 @@ class PySimulation {
     StartRecording();
   }
 
-  static std::unique_ptr<PySimulation> FromFile(const std::string& path, std::optional<std::uint64_t> seed,
-                                                int threads, std::optional<std::string> out, bool scenario_strategy) {
-    return std::make_unique<PySimulation>(LoadScenarioFile(path), seed, threads, std::move(out), scenario_strategy);
+  static std::unique_ptr<PySimulation> FromFile(const std::string& path, const py::object& seed,
+                                                const py::object& threads, std::optional<std::string> out,
+                                                bool scenario_strategy) {
+    // the integers first: a bad one is named before a long load
+    const auto seed_value = SeedArgument(seed, "seed");
+    const int thread_count = ThreadsArgument(threads);
+    return std::make_unique<PySimulation>(LoadScenarioFile(path), seed_value, thread_count, std::move(out),
+                                          scenario_strategy);
   }
 
-  static std::unique_ptr<PySimulation> Builtin(const std::string& name, std::optional<std::uint64_t> seed,
-                                               int threads, std::optional<std::string> out, bool scenario_strategy) {
-    return std::make_unique<PySimulation>(LoadBuiltinScenario(name), seed, threads, std::move(out),
+  static std::unique_ptr<PySimulation> Builtin(const std::string& name, const py::object& seed,
+                                               const py::object& threads, std::optional<std::string> out,
+                                               bool scenario_strategy) {
+    const auto seed_value = SeedArgument(seed, "seed");
+    const int thread_count = ThreadsArgument(threads);
+    return std::make_unique<PySimulation>(LoadBuiltinScenario(name), seed_value, thread_count, std::move(out),
                                           scenario_strategy);
   }
 
@@ -182,7 +218,8 @@ class PySimulation {
     return truth;
   }
 
-  void Reset(std::optional<std::uint64_t> seed) {
+  void Reset(const py::object& seed_argument) {
+    const std::optional<std::uint64_t> seed = SeedArgument(seed_argument, "reset: seed");
     ObjectLock lock(mutex_);
     if (closed_) throw std::runtime_error("reset: the simulation is closed");
     recorder_.reset();  // an unfinished episode's files are dropped (their temporary names removed)
@@ -255,6 +292,7 @@ class PySimulation {
     recorder_->Finish(!sim_->done());
     WriteTimings(recorder_->out_dir(), std::chrono::duration<double>(Clock::now() - start_).count(), loop_wall_s, threads_,
                  recorder_->samples(), sim_->scenario().rate_hz);
+    recorder_->ReleaseFolder();  // written: another run may take the folder
   }
 
   bool done() const {

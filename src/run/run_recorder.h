@@ -51,6 +51,8 @@ class RunRecorder {
   const std::string& out_dir() const { return out_dir_; }
   /// The claimed folder (its lock), to hold past the recorder (the report); null without files.
   std::shared_ptr<OutputFolder> folder() const { return folder_; }
+  /// Lets the folder go (its lock ends with the last holder) once the files are written.
+  void ReleaseFolder() { folder_.reset(); }
 
  private:
   const Simulation& sim_;

@@ -71,8 +71,8 @@ NumberRule Coordinate() {
 NumberRule PositiveLength() {
   NumberRule rule = PositiveNumber("m");
   rule.max = 2 * kMaxCoordinate_m;
-  rule.expected = "a finite number > 0 m and at most " + FormatNumber(rule.max) +
-                  " m (the coordinate limit: rays are cast in single precision; docs/trust.md)";
+  rule.expected = "a finite number at most " + FormatNumber(rule.max) +
+                  " m (the coordinate limit: rays are cast in single precision; docs/trust.md) and > 0 m";
   return rule;
 }
 
