@@ -1,6 +1,7 @@
 // RobotModel: forward kinematics against closed-form trigonometry on a planar
 // two-link leg written here, the shipped biped's shape and size, and broken
 // URDFs refused with the file named.
+#include <chrono>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -137,6 +138,42 @@ TEST(RobotModel, BrokenUrdfsAreInputErrorsNamingTheFile) {
   EXPECT_NE(ErrorOf([] { RobotModel::FromUrdfFile("/nonexistent/robot.urdf"); }).find("/nonexistent/robot.urdf"),
             std::string::npos);
   EXPECT_NE(ErrorOf([] { RobotModel::Builtin("quadruped"); }).find("builtin:quadruped"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// Issue 23 (n): a 100,000-link URDF took 224 s (name lookups by linear scan,
+// and a joint-by-link double loop); the loader is now linear in links. Both
+// shapes a generator might produce: one long chain, and a wide tree.
+std::string GeneratedUrdf(int links, bool chain) {
+  std::string urdf = "<robot name=\"many\">\n";
+  for (int i = 0; i < links; ++i) urdf += "<link name=\"l" + std::to_string(i) + "\"/>\n";
+  for (int i = 1; i < links; ++i) {
+    const int parent = chain ? i - 1 : (i - 1) / 8;
+    urdf += "<joint name=\"j" + std::to_string(i) + "\" type=\"revolute\"><parent link=\"l" + std::to_string(parent) +
+            "\"/><child link=\"l" + std::to_string(i) + "\"/><axis xyz=\"0 0 1\"/>"
+            "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n";
+  }
+  return urdf + "</robot>\n";
+}
+
+TEST(RobotModel, AHundredThousandLinksLoadInSeconds) {
+  for (const bool chain : {false, true}) {
+    SCOPED_TRACE(chain ? "a chain" : "a tree of fan-out 8");
+    const std::string urdf = GeneratedUrdf(100000, chain);
+    const auto start = std::chrono::steady_clock::now();
+    const RobotModel model = RobotModel::FromUrdfText(urdf, "generated.urdf");
+    const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(model.link_count(), 100000);
+    EXPECT_EQ(model.joint_count(), 99999);
+    EXPECT_EQ(model.LinkIndex("l99999"), 99999);
+    EXPECT_EQ(model.joint(model.JointIndex("j77")).child_link, model.LinkIndex("l77"));
+    EXPECT_LT(load_s, 20.0) << "not linear in links any more";
+  }
 }
 
 }  // namespace

@@ -180,6 +180,32 @@ TEST_F(StudyCliTest, AJournalLineOfTheWrongShapeIsAnInputErrorNotAnOutOfBoundsRe
   }
 }
 
+TEST_F(StudyCliTest, AStudyTooLargeIsRefusedBeforeAnythingIsBuilt) {
+  // issue 23 (m): 1.9 million candidates ended in std::bad_alloc; the size is now counted first
+  fs::create_directories(dir_);
+  const std::string base = "proxsim_study: 1\nbase: " + std::string(PROXSIM_SOURCE_DIR) +
+                           "/data/scenarios/paper_dining_room.yaml\n";
+  std::ofstream(dir_ / "huge.yaml") << base << "candidates:\n  axes:\n    type: [laser, ultrasonic]\n"
+                                    << "    link: left_tibia\n    along_m: {from: -0.4, to: 0, step: 0.0004}\n"
+                                    << "    pitch_deg: {from: 0, to: 94, step: 0.1}\n";
+  const auto huge = RunCommand("timeout -s KILL 60 " + std::string(PROXSIM_BINARY) + " study " +
+                               (dir_ / "huge.yaml").string() + " --out " + (dir_ / "out").string());
+  EXPECT_EQ(huge.exit_code, 2) << huge.output;
+  EXPECT_NE(huge.output.find("the axes make 1.884e+06 candidates (2 types x 1 links x 1001"), std::string::npos) << huge.output;
+  EXPECT_NE(huge.output.find("--allow-large"), std::string::npos) << huge.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+
+  // 100 candidates x 1 scene x 20000 seeds = 2e6 runs
+  std::ofstream(dir_ / "many_runs.yaml") << base << "candidates:\n  axes:\n    type: laser\n    link: left_tibia\n"
+                                         << "    pitch_deg: {from: 0, to: 99, step: 1}\n"
+                                         << "seeds: {from: 1, to: 20000}\n";
+  const auto runs = RunCommand("timeout -s KILL 60 " + std::string(PROXSIM_BINARY) + " study " +
+                               (dir_ / "many_runs.yaml").string() + " --out " + (dir_ / "out").string());
+  EXPECT_EQ(runs.exit_code, 2) << runs.output;
+  EXPECT_NE(runs.output.find("= 2000000 runs; expected at most 1000000 (pass --allow-large"), std::string::npos)
+      << runs.output;
+}
+
 TEST_F(StudyCliTest, BadStudiesListEveryProblemBeforeAnyRun) {
   fs::create_directories(dir_);
   std::ofstream(dir_ / "bad.yaml")
