@@ -364,6 +364,16 @@ TEST_F(TrustTest, NamesWithControlCharactersOrInvalidUtf8AreInputErrors) {
 
 // ----- smaller ones
 
+TEST_F(TrustTest, LegMapProblemsComeWithTheScenarioLevelOnes) {
+  // they once appeared only after the scenario-level problems were fixed
+  const fs::path scenario = dir_ / "legs.yaml";
+  std::ofstream(scenario) << "proxsim: 1\nduration_s: -1\nrobot:\n  model: builtin:biped\n  legs:\n"
+                          << "    left:  {hip: left_hip_pich, knee: left_knee_pitch, ankle: left_ankle_pitch, foot: left_foot}\n"
+                          << "    right: {hip: right_hip_pitch, knee: right_knee_pitch, ankle: right_ankle_pitch, foot: right_foot}\n"
+                          << "sensors:\n  - {name: s, type: ideal, link: left_tibia}\n";
+  ExpectRefused(scenario, {"legs.yaml:2: duration_s", "robot.legs.left.hip: no joint 'left_hip_pich'"});
+}
+
 TEST_F(TrustTest, SeedsOutsideSixtyFourBitsAreRefusedNotWrapped) {
   for (const char* seed : {"-1", "18446744073709551616", "1e3", "0x10"}) {
     const auto result = ProxsimWithin("run " + kWorld + " --no-report --seed " + seed + " --out " + (dir_ / "o").string());
