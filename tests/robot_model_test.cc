@@ -172,7 +172,9 @@ TEST(RobotModel, AHundredThousandLinksLoadInSeconds) {
     EXPECT_EQ(model.joint_count(), 99999);
     EXPECT_EQ(model.LinkIndex("l99999"), 99999);
     EXPECT_EQ(model.joint(model.JointIndex("j77")).child_link, model.LinkIndex("l77"));
-    EXPECT_LT(load_s, 20.0) << "not linear in links any more";
+    // about 3 s here (release, idle machine); the quadratic loader took 224 s: a loose bound
+    // that still catches it, under ASan and on a loaded machine
+    EXPECT_LT(load_s, 90.0) << "not linear in links any more";
   }
 }
 

@@ -4,6 +4,7 @@
 // redoing a job; bad study files list every problem before any run.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -178,6 +179,36 @@ TEST_F(StudyCliTest, AJournalLineOfTheWrongShapeIsAnInputErrorNotAnOutOfBoundsRe
     EXPECT_EQ(resumed.exit_code, 2) << resumed.output;
     EXPECT_NE(resumed.output.find("journal.jsonl:2: journal line"), std::string::npos) << resumed.output;
   }
+}
+
+TEST_F(StudyCliTest, TwoStudiesIntoOneFolderAtOnceTheSecondFailsNamingTheFirst) {
+  // issue 23 (h): both once exited 0, their journals spliced
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "long.yaml") << kLongStudy;
+  const std::string study = (dir_ / "long.yaml").string();
+  const fs::path out = dir_ / "out";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string out_arg = out.string();
+    const int null_fd = open("/dev/null", O_WRONLY);
+    dup2(null_fd, STDOUT_FILENO);
+    dup2(null_fd, STDERR_FILENO);
+    execl(PROXSIM_BINARY, PROXSIM_BINARY, "study", study.c_str(), "--no-report", "--threads", "1", "--out",
+          out_arg.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (std::chrono::steady_clock::now() < deadline && !fs::exists(out / "journal.jsonl"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const auto second = RunProxsim("study " + study + " --no-report --threads 1 --out " + out.string());
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the first study failed";
+  EXPECT_EQ(second.exit_code, 2) << second.output;
+  EXPECT_NE(second.output.find("in use by pid " + std::to_string(pid) + ": proxsim study"), std::string::npos)
+      << second.output;
+  EXPECT_EQ(LineCount(out / "journal.jsonl"), 25u) << "one study's 24 jobs and its fingerprint, nothing spliced";
 }
 
 TEST_F(StudyCliTest, AStudyTooLargeIsRefusedBeforeAnythingIsBuilt) {

@@ -31,6 +31,31 @@ std::string ReadWhole(const std::string& path) {
   return bytes.str();
 }
 
+// The first byte that is not a byte order mark or white space, however far in
+// (a glTF behind megabytes of spaces is still JSON to Assimp); 0 when none.
+char FirstSignificantByte(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char chunk[65536];
+  bool first = true;
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    std::string_view text(chunk, static_cast<std::size_t>(in.gcount()));
+    if (first && text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+    first = false;
+    for (const char c : text)
+      if (!std::isspace(static_cast<unsigned char>(c))) return c;
+  }
+  return 0;
+}
+
+// The first bytes only: enough to tell the format (a large OBJ is not read twice)
+std::string ReadHead(const std::string& path, std::size_t bytes) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(bytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(bytes));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
 std::string_view TrimStart(std::string_view text) {
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
@@ -194,7 +219,7 @@ void CheckGlb(std::string_view bytes, const std::string& path) {
 
 // OFF: "[ST][C][N][4][n]OFF", then "vertices faces edges"; each vertex takes at
 // least 6 bytes ("0 0 0\n"), each face 8 ("3 0 1 2\n")
-void CheckOff(std::string_view text, const std::string& path) {
+void CheckOff(std::string_view text, std::uintmax_t file_bytes, const std::string& path) {
   std::istringstream words{std::string(text.substr(0, 4096))};
   std::string magic;
   words >> magic;
@@ -209,11 +234,11 @@ void CheckOff(std::string_view text, const std::string& path) {
   std::istringstream counts(counts_line);
   double vertices = 0, faces = 0;
   counts >> vertices >> faces;
-  const double room = static_cast<double>(text.size());
+  const double room = static_cast<double>(file_bytes);
   if (!(vertices >= 0) || !(faces >= 0) || vertices > kMaxDeclaredElements || faces > kMaxDeclaredElements ||
       vertices * 6 + faces * 8 > room) {
     throw InputError(path + ": OFF header declares " + counts_line + " (vertices faces) but the file holds " +
-                     std::to_string(text.size()) + " bytes (at least 6 per vertex and 8 per face; limit " +
+                     std::to_string(file_bytes) + " bytes (at least 6 per vertex and 8 per face; limit " +
                      std::to_string(kMaxDeclaredElements) + " of each)");
   }
 }
@@ -235,17 +260,22 @@ std::string RegularFileProblem(const std::string& path, unsigned long long max_b
 void PrescanMeshFile(const std::string& path) {
   if (const std::string problem = RegularFileProblem(path, kMaxMeshFileBytes); !problem.empty())
     throw InputError(problem);
-  const std::string bytes = ReadWhole(path);
   // by content, not by extension: Assimp also picks its reader by content
-  if (bytes.starts_with("glTF")) return CheckGlb(bytes, path);
-  const std::string_view text = TrimStart(bytes);
-  if (text.starts_with("{")) return CheckGltfJson(text, path, 0);
-  if (text.starts_with("<")) {
-    if (const auto problem = NestingProblem(ScanXmlNesting(text, kMaxNestingDepth), path, "XML elements", kMaxNestingDepth))
+  const std::string head = ReadHead(path, 4096);
+  const std::string_view start = TrimStart(head);
+  if (head.starts_with("glTF")) return CheckGlb(ReadWhole(path), path);
+  const char first = FirstSignificantByte(path);
+  if (first == '{') {
+    const std::string bytes = ReadWhole(path);
+    return CheckGltfJson(TrimStart(bytes), path, 0);
+  }
+  if (first == '<') {
+    const std::string bytes = ReadWhole(path);
+    if (const auto problem = NestingProblem(ScanXmlNesting(bytes, kMaxNestingDepth), path, "XML elements", kMaxNestingDepth))
       throw InputError(*problem);
     return;
   }
-  CheckOff(text, path);
+  CheckOff(start, std::filesystem::file_size(path), path);
 }
 
 bool MeshIOSystem::Exists(const char* path) const { return RegularFileProblem(path, kMaxMeshFileBytes).empty(); }
