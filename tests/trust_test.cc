@@ -101,6 +101,13 @@ TEST_F(TrustTest, GltfWith200000NestedBracketsInItsExtrasIsRefused) {
   ExpectRefused(MeshScenario("extras", dir_ / "extras.gltf"), {"extras.gltf", "JSON nested deeper than 256 levels"});
 }
 
+TEST_F(TrustTest, DeepJsonBehindMegabytesOfWhiteSpaceIsStillFound) {
+  // the format is told by the first significant byte, however far in
+  Write(dir_ / "spaced.gltf", std::string(2 << 20, ' ') + R"({"asset":{"version":"2.0","extras":)" +
+                                  Repeat("[", 100000) + Repeat("]", 100000) + "}}");
+  ExpectRefused(MeshScenario("spaced", dir_ / "spaced.gltf"), {"spaced.gltf", "JSON nested deeper than 256 levels"});
+}
+
 TEST_F(TrustTest, GlbWhoseJsonChunkNestsTooDeepIsRefused) {
   const std::string json = R"({"asset":{"version":"2.0","extras":)" + Repeat("[", 100000) + Repeat("]", 100000) + "}}";
   std::string glb = "glTF";
