@@ -13,6 +13,7 @@
 #include <memory>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -295,6 +296,9 @@ int main(int argc, char** argv) {
     if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format, run_force);
     if (*bench && !bench_from.empty()) {
       std::string report;
+      // a regular file only: a FIFO would block the read for ever
+      if (std::error_code ec; !std::filesystem::is_regular_file(bench_from, ec))
+        throw proxsim::InputError(bench_from + ": not a regular file; expected the output of `proxsim bench --json`");
       try {
         std::ifstream saved(bench_from);
         report = proxsim::bench::BenchReport(nlohmann::json::parse(saved));
