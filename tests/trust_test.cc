@@ -177,6 +177,14 @@ TEST_F(TrustTest, AMeshThatIsDevZeroOrAFifoIsRefusedNotRead) {
   EXPECT_NE(result.exit_code, 137) << "hung on the FIFO: " << result.output;
 }
 
+TEST_F(TrustTest, BenchFromAFifoIsRefusedNotRead) {
+  const fs::path fifo = dir_ / "bench.json";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  const auto result = ProxsimWithin("bench --from " + fifo.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("not a regular file"), std::string::npos) << result.output;
+}
+
 // ----- (l) degenerate gaits
 
 TEST_F(TrustTest, AGaitPeriodOf1e9SecondsIsAnInputError) {
