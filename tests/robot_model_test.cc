@@ -1,6 +1,7 @@
 // RobotModel: forward kinematics against closed-form trigonometry on a planar
 // two-link leg written here, the shipped biped's shape and size, and broken
 // URDFs refused with the file named.
+#include <chrono>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -171,6 +172,35 @@ TEST(RobotModel, JointLimitsKeepVelocityAndEffort) {
   EXPECT_EQ(knee.velocity, 1.0);
   EXPECT_EQ(knee.effort, 1.0);
   EXPECT_FALSE(m.joint(m.JointIndex("ankle_fixed")).has_limits);
+}
+
+// Issue 23 (n): a 100,000-link URDF took 224 s (name lookups by linear scan,
+// and a joint-by-link double loop); the loader is now linear in links. Both
+// shapes a generator might produce: one long chain, and a wide tree.
+std::string GeneratedUrdf(int links, bool chain) {
+  std::string urdf = "<robot name=\"many\">\n";
+  for (int i = 0; i < links; ++i) urdf += "<link name=\"l" + std::to_string(i) + "\"/>\n";
+  for (int i = 1; i < links; ++i) {
+    const int parent = chain ? i - 1 : (i - 1) / 8;
+    urdf += "<joint name=\"j" + std::to_string(i) + "\" type=\"revolute\"><parent link=\"l" + std::to_string(parent) +
+            "\"/><child link=\"l" + std::to_string(i) + "\"/><axis xyz=\"0 0 1\"/>"
+            "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n";
+  }
+  return urdf + "</robot>\n";
+}
+
+TEST(RobotModel, AHundredThousandLinksLoad) {
+  for (const bool chain : {false, true}) {
+    SCOPED_TRACE(chain ? "a chain" : "a tree of fan-out 8");
+    const std::string urdf = GeneratedUrdf(100000, chain);
+    // (how long it takes is not asserted here: no test depends on timing; the
+    // quadratic loader would have made this test run for minutes)
+    const RobotModel model = RobotModel::FromUrdfText(urdf, "generated.urdf");
+    EXPECT_EQ(model.link_count(), 100000);
+    EXPECT_EQ(model.joint_count(), 99999);
+    EXPECT_EQ(model.LinkIndex("l99999"), 99999);
+    EXPECT_EQ(model.joint(model.JointIndex("j77")).child_link, model.LinkIndex("l77"));
+  }
 }
 
 }  // namespace

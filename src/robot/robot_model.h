@@ -26,6 +26,7 @@
 
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/geometry.h"
@@ -122,6 +123,7 @@ class RobotModel {
   std::string source_;
   std::vector<RobotLink> links_;
   std::vector<RobotJoint> joints_;
+  std::unordered_map<std::string, int> link_of_, joint_of_;  ///< names to indices (LinkIndex, JointIndex)
   std::vector<int> joint_order_;  ///< joints parents-first, for forward kinematics
   int root_link_ = -1;
   std::size_t mesh_file_count_ = 0;

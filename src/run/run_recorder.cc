@@ -66,14 +66,18 @@ std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const Sampl
 }  // namespace
 
 RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, ReadingsFormat format,
-                         std::function<void(const std::string&)> warn)
-    : sim_(sim), out_dir_(out_dir), warn_(std::move(warn)) {
+                         std::function<void(const std::string&)> warn, bool force)
+    : sim_(sim), warn_(std::move(warn)) {
+  if (!out_dir.empty()) {
+    folder_ = std::make_shared<OutputFolder>(out_dir, ClaimOptions{.command = "run", .force = force});
+    out_dir_ = folder_->path();
+    TrackCommitsUnder(out_dir_);  // the manifest lists exactly the files this run commits
+  }
   const Scenario& scenario = sim.scenario();
   const std::vector<std::string>& object_names = sim.world().object_names();
   const std::filesystem::path out(out_dir_);
   // the sinks in the order summary.json lists their files
   if (!out_dir_.empty()) {
-    std::filesystem::create_directories(out_dir_);
     // the folder holds one run: the previous run's files go (the user's own stay)
     RemovePreviousRun(out_dir_);
     sinks_.push_back(MakeReadingsSink(format, out_dir_, scenario, object_names));
@@ -87,7 +91,9 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
   sinks_.push_back(std::make_unique<StatisticsSink>(scenario, object_names));
 }
 
-RunRecorder::~RunRecorder() = default;
+RunRecorder::~RunRecorder() {
+  if (!out_dir_.empty()) StopTrackingCommits(out_dir_);
+}
 
 void RunRecorder::Add(const SampleFrame& frame) {
   ++samples_;
