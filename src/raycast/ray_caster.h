@@ -74,8 +74,8 @@ class RayCaster {
 
   /// The world surface nearest p_W, as DistanceToWorld measures it, and which
   /// object it belongs to: object_id -1 when nothing is nearer than below_m.
-  /// depth_m: how deep p_W lies inside that object when it is a box, sphere,
-  /// cylinder or plane (analytic_shapes.h DepthInside), else 0.
+  /// depth_m: how deep p_W lies inside that object when it is a box, sphere
+  /// or cylinder (scene/shape_inside.h), else 0.
   struct NearestSurface {
     double distance_m = std::numeric_limits<double>::infinity();
     std::int32_t object_id = -1;

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "raycast/analytic_shapes.h"
+#include "scene/shape_inside.h"
 
 namespace proxsim {
 
@@ -146,7 +147,7 @@ RayCaster::NearestSurface RayCaster::NearestToWorld(const Vec3& p_W, std::span<c
       if (distance_m < best_m || (distance_m == 0 && nearest.object_id < 0)) {
         best_m = distance_m;
         nearest.object_id = geom.object_id;
-        nearest.depth_m = distance_m > 0 ? 0.0 : DepthInside(geom.shape, p_O);
+        nearest.depth_m = distance_m > 0 ? 0.0 : std::max(DepthInside_m(geom.shape, p_O), 0.0);
       }
     }
 

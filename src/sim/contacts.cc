@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "raycast/analytic_shapes.h"
+#include "scene/shape_inside.h"
 
 namespace proxsim {
 
@@ -31,7 +32,7 @@ double DistanceToLinkShape(const Shape& shape, const Vec3& p_O, double* depth_m)
     }
     return distance_m;
   }
-  if (distance_m == 0) *depth_m = DepthInside(shape, p_O);
+  if (distance_m == 0) *depth_m = std::max(DepthInside_m(shape, p_O), 0.0);
   return distance_m;
 }
 

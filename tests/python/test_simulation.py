@@ -163,9 +163,10 @@ def test_bad_scenario_raises_input_error_with_the_cli_messages(tmp_path):
 
 
 def test_a_start_on_an_object_is_an_input_error_naming_it_unless_on_says_so():
-    # a box under the robot's feet: refused as the CLI refuses it (exit 2), naming the box and a foot
+    # a box under the robot's feet (feet stand only on ground): refused as the CLI refuses it (exit 2),
+    # naming the box and the links in it
     bad = os.path.join(SOURCE_DIR, "tests", "data", "bad_input", "start_on_crate.yaml")
-    with pytest.raises(proxsim.InputError, match="would start standing on object 'crate' \\(its foot 'left_foot'"):
+    with pytest.raises(proxsim.InputError, match="starts inside object 'crate': links .*'left_foot'"):
         proxsim.Simulation(bad)
     assert run_cli("validate", bad).returncode == 2
     # the same box started on on purpose
