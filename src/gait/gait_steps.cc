@@ -108,6 +108,10 @@ StepPose StepPlanner::Evaluate(const StepPlan& plan, double p) const {
     if (deficit > 0) p_PA.y() += deficit;
   }
   pose.swing = legs_.SolveAnkle(plan.swing, p_PA, pitch);
+  // over uneven ground the foot carried level may ask the ankle for more than
+  // it bends: in the air the foot tilts instead (continuous: at toe-off the
+  // planted foot's pitch is within the limits, or the step is not taken)
+  if (plan.terrain && p >= kDoubleSupportEnd) pose.swing = legs_.PitchWithinAnkleLimits(plan.swing, pose.swing);
   return pose;
 }
 
@@ -179,7 +183,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   plan.k_from = plan.k_to = k;
   plan.g_from = plan.g_to = PushOffGain(legs_, plan.stance, k);
   plan.yaw_from = plan.yaw_to = yaw_rad;
-  plan.floor_z_m = plan.landing_z_m = p_W_start.z();
+  plan.floor_z_m = plan.landing_z_m = plan.highest_ground_z_m = p_W_start.z();
   const LegAnglesRad stance = CurveLegAngles(0.0, k);
   const Rotation R = Eigen::AngleAxisd(yaw_rad, Vec3::UnitZ()).toRotationMatrix();
   const Vec3 p_P_heel = legs_.Point3(Side::kLeft, stance, FootPoint::kHeel);
@@ -207,7 +211,7 @@ StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to)
   plan.g_to = PushOffGain(legs_, plan.stance, k_to);
   plan.yaw_from = prev.yaw_to;
   plan.yaw_to = yaw_to;
-  plan.floor_z_m = plan.landing_z_m = prev.landing_z_m;
+  plan.floor_z_m = plan.landing_z_m = plan.highest_ground_z_m = prev.landing_z_m;
   // latch the new stance heel where it struck, on the floor
   plan.p_W_heel = strike.X_WP * legs_.Point3(plan.stance, strike.swing, FootPoint::kHeel);
   plan.p_W_heel.z() = plan.floor_z_m;

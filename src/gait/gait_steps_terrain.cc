@@ -210,6 +210,9 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
                        .toe_from_ankle = legs_.FootOffset(plan->swing, FootPoint::kToe)};
   const std::size_t own_from = profile.SegmentAt(ToH(*plan, plan->p_W_trailing_toe).x());
   const std::size_t own_to = foothold.segment;
+  plan->highest_ground_z_m = std::max(plan->floor_z_m, foothold.z_m);
+  for (std::size_t i = std::min(own_from, own_to); i <= std::max(own_from, own_to); ++i)
+    plan->highest_ground_z_m = std::max(plan->highest_ground_z_m, profile.segments()[i].z_m);
   const auto phase = [](int j) { return kDoubleSupportEnd + (0.5 - kDoubleSupportEnd) * j / kSwingChecks; };
   // (an edge counts within the distance the sole moved since the last check)
   const auto moved = [&](const Vec2& ankle, double pitch, const Vec2& last_ankle, double last_pitch) {
@@ -241,8 +244,9 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
     last_pitch = SwingPitch(*plan, phase(0));
     for (int j = 1; j < kSwingChecks; ++j) {
       const double u = static_cast<double>(j) / kSwingChecks;
-      const double pitch = SwingPitch(*plan, phase(j));
-      const LegAnglesRad a = legs_.SolveAnkle(plan->swing, ArcAnkle(*plan, phase(j), X_WP_at[j]), pitch);
+      const LegAnglesRad a = legs_.PitchWithinAnkleLimits(
+          plan->swing, legs_.SolveAnkle(plan->swing, ArcAnkle(*plan, phase(j), X_WP_at[j]), SwingPitch(*plan, phase(j))));
+      const double pitch = a.pitch;  // the foot's pitch as Evaluate tilts it
       const Vec2xz a_P = legs_.Ankle(plan->swing, a);
       const Vec2 ankle_H = ToH(*plan, X_WP_at[j].translation()) + Vec2(a_P.x(), a_P.y());
       const double deficit = SoleDeficit(profile, ankle_H, pitch, sole, kSwingClearance_m, own_from, own_to,

@@ -3,6 +3,7 @@
 // console_bridge; we capture those lines and put them in the InputError.
 #include "robot/robot_model.h"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
@@ -307,6 +308,8 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
       if (uj->limits) {
         joint.lower = uj->limits->lower;
         joint.upper = uj->limits->upper;
+        joint.velocity_rad_s = std::max(0.0, uj->limits->velocity);
+        joint.effort_N_m = std::max(0.0, uj->limits->effort);
       }
       model.links_[link_index].child_joints.push_back(static_cast<int>(model.joints_.size()));
       model.joints_.push_back(std::move(joint));

@@ -60,6 +60,12 @@ struct RobotJoint {
   Vec3 axis_J = Vec3::UnitX();   ///< unit axis in J (URDF <axis>)
   double lower = 0.0;            ///< rad or m; only meaningful for revolute/prismatic
   double upper = 0.0;            ///< rad or m
+  /// URDF <limit velocity>: the joint's top speed, rad/s (m/s for prismatic);
+  /// 0 when the URDF gives none (no speed limit)
+  double velocity_rad_s = 0.0;
+  /// URDF <limit effort>, N·m (N for prismatic); 0 when not given. Read for
+  /// completeness: the kinematic gait applies no forces
+  double effort_N_m = 0.0;
 };
 
 /// A URDF robot: links, joints, shapes and forward kinematics.

@@ -1,0 +1,87 @@
+#include "gait/step_safety.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+
+namespace proxsim {
+
+namespace {
+
+const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
+
+double PhaseAt(int i) { return 0.5 * i / kStepSafetySamples; }
+
+// Highest sole point (heel or toe) minus the knee, in the pelvis's upright
+// sagittal plane (its z is the world's): ≥ 0 is a folded leg.
+double SoleAboveKnee_m(const BipedLegs& legs, Side s, const LegAnglesRad& a) {
+  const LegGeometry& g = legs.leg(s);
+  const double knee_z = g.p_PH.z() - g.thigh_m * std::cos(a.hip);
+  return std::max(legs.Point(s, a, FootPoint::kHeel).y(), legs.Point(s, a, FootPoint::kToe).y()) - knee_z;
+}
+
+}  // namespace
+
+std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
+                             double duration_s) {
+  const BipedLegs& legs = planner.legs();
+  const double dt_s = duration_s / kStepSafetySamples;  // p runs over [0, 0.5] in duration_s
+  char text[320];
+  StepPose last;
+  for (int i = 0; i <= kStepSafetySamples; ++i) {
+    const double p = PhaseAt(i);
+    const StepPose pose = planner.Evaluate(plan, p);
+    for (const Side side : {plan.stance, plan.swing}) {
+      const LegAnglesRad& a = side == plan.stance ? pose.stance : pose.swing;
+      const char* role = side == plan.stance ? "stance" : "swing";
+      if (const auto excess = limits.AngleExcess(side, a)) {
+        std::snprintf(text, sizeof text, "the %s %s leg at %.0f%% of the step: ", role, SideName(side), 200 * p);
+        return text + excess->Describe();
+      }
+      if (i > 0) {
+        const LegAnglesRad& b = side == plan.stance ? last.stance : last.swing;
+        if (const auto excess = limits.SpeedExcess(side, b, a, dt_s)) {
+          std::snprintf(text, sizeof text, "the %s %s leg at %.0f%% of a %.2f s step: ", role, SideName(side),
+                        200 * p, duration_s);
+          return text + excess->Describe();
+        }
+      }
+      const double fold_m = SoleAboveKnee_m(legs, side, a);
+      if (fold_m >= 0) {
+        std::snprintf(text, sizeof text, "the %s %s leg would fold at %.0f%% of the step: its sole %.2f m above "
+                      "its own knee", role, SideName(side), 200 * p, fold_m);
+        return text;
+      }
+    }
+    if (p >= kDoubleSupportEnd) {
+      const double sole_z = pose.X_WP.translation().z() + legs.LowestSoleZ(plan.swing, pose.swing);
+      const double above_m = sole_z - plan.highest_ground_z_m;
+      if (above_m > kMaxLiftAboveGround_m) {
+        std::snprintf(text, sizeof text, "the %s swing foot would rise %.2f m above the highest ground it passes "
+                      "over (at most %.2f m) at %.0f%% of the step", SideName(plan.swing), above_m,
+                      kMaxLiftAboveGround_m, 200 * p);
+        return text;
+      }
+    }
+    last = pose;
+  }
+  return "";
+}
+
+double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
+                              double at_least_s) {
+  // speeds at duration D are (|Δq| / Δp)·(0.5 / D): the largest ratio at
+  // at_least_s scales the duration that brings it down to the margin
+  const double dt_s = at_least_s / kStepSafetySamples;
+  double ratio = 0;
+  StepPose last = planner.Evaluate(plan, 0.0);
+  for (int i = 1; i <= kStepSafetySamples; ++i) {
+    const StepPose pose = planner.Evaluate(plan, PhaseAt(i));
+    ratio = std::max(ratio, limits.SpeedRatio(plan.stance, last.stance, pose.stance, dt_s));
+    ratio = std::max(ratio, limits.SpeedRatio(plan.swing, last.swing, pose.swing, dt_s));
+    last = pose;
+  }
+  return ratio > kSpeedMargin ? at_least_s * ratio / kSpeedMargin : at_least_s;
+}
+
+}  // namespace proxsim
