@@ -129,7 +129,8 @@ Outcome WalkAndCheck(const Robot& robot, double stride_m) {
     out << "proxsim: 1\nseed: 1\nduration_s: 40\nrate_hz: 100\nscene: {builtin: stairs}\nrobot:\n"
         << robot.robot_yaml << "  start: {xyz_m: [0, 0, 0], yaw_deg: 0}\n"
         << "  gait: {stride_m: " << stride_m << "}\n"
-        << "  path: {waypoints_m: [[0, 0], [" << kPathEnd_x_m << ", 0]]}\n";
+        << "  path: {waypoints_m: [[0, 0], [" << kPathEnd_x_m << ", 0]]}\n"
+        << "sensors:\n  - {name: ahead, type: ideal, link: world, pose: {xyz_m: [0, 0, 2], rpy_deg: [0, 90, 0]}}\n";
   }
   const auto result = RunProxsim("run " + scenario.string() + " --no-report --out " + (dir / "out").string());
   EXPECT_EQ(result.exit_code, 0) << result.output;

@@ -10,7 +10,7 @@ namespace {
 
 const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
 
-double PhaseAt(int i) { return 0.5 * i / kStepSafetySamples; }
+double PhaseAt(int i) { return 0.5 * i / kStepSafetySamples; }  // evenly over the stance phase
 
 // Highest sole point (heel or toe) minus the knee, in the pelvis's upright
 // sagittal plane (its z is the world's): ≥ 0 is a folded leg.
@@ -25,12 +25,14 @@ double SoleAboveKnee_m(const BipedLegs& legs, Side s, const LegAnglesRad& a) {
 std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
                              double duration_s) {
   const BipedLegs& legs = planner.legs();
-  const double dt_s = duration_s / kStepSafetySamples;  // p runs over [0, 0.5] in duration_s
+  // the speed window in stance phase (p runs over [0, 0.5] in duration_s)
+  const double window = std::min(0.5, 0.5 * kSpeedWindow_s / duration_s);
   char text[320];
-  StepPose last;
-  for (int i = 0; i <= kStepSafetySamples; ++i) {
-    const double p = PhaseAt(i);
+  for (int i = -1; i <= kStepSafetySamples; ++i) {
+    // p = 0, then the ends of the speed windows [p − window, p] from p = window to 0.5
+    const double p = i < 0 ? 0.0 : window + (0.5 - window) * i / kStepSafetySamples;
     const StepPose pose = planner.Evaluate(plan, p);
+    const StepPose before = i < 0 ? pose : planner.Evaluate(plan, p - window);
     for (const Side side : {plan.stance, plan.swing}) {
       const LegAnglesRad& a = side == plan.stance ? pose.stance : pose.swing;
       const char* role = side == plan.stance ? "stance" : "swing";
@@ -38,9 +40,9 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
         std::snprintf(text, sizeof text, "the %s %s leg at %.0f%% of the step: ", role, SideName(side), 200 * p);
         return text + excess->Describe();
       }
-      if (i > 0) {
-        const LegAnglesRad& b = side == plan.stance ? last.stance : last.swing;
-        if (const auto excess = limits.SpeedExcess(side, b, a, dt_s)) {
+      if (i >= 0) {
+        const LegAnglesRad& b = side == plan.stance ? before.stance : before.swing;
+        if (const auto excess = limits.SpeedExcess(side, b, a, 2 * window * duration_s)) {
           std::snprintf(text, sizeof text, "the %s %s leg at %.0f%% of a %.2f s step: ", role, SideName(side),
                         200 * p, duration_s);
           return text + excess->Describe();
@@ -63,7 +65,6 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
         return text;
       }
     }
-    last = pose;
   }
   return "";
 }
