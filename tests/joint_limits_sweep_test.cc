@@ -203,8 +203,10 @@ Outcome WalkAndCheck(const Robot& robot, double stride_m) {
   // the soles: the bottom back and front of each foot's collision box, on its centre line
   for (const Leg& leg : robot.legs) {
     const urdf::LinkConstSharedPtr foot = urdf->getLink(leg.foot);
-    ASSERT_TRUE(foot && foot->collision && foot->collision->geometry) << leg.foot;
-    ASSERT_EQ(foot->collision->geometry->type, urdf::Geometry::BOX) << leg.foot;
+    const bool box_foot = foot && foot->collision && foot->collision->geometry &&
+                          foot->collision->geometry->type == urdf::Geometry::BOX;
+    EXPECT_TRUE(box_foot) << leg.foot << ": this test reads the sole from a collision box";
+    if (!box_foot) return outcome;
     const auto& box = static_cast<const urdf::Box&>(*foot->collision->geometry);
     const Eigen::Isometry3d X_LO = FromUrdf(foot->collision->origin);
     const Eigen::Vector3d heel_L = X_LO * Eigen::Vector3d(-box.dim.x / 2, 0, -box.dim.z / 2);
