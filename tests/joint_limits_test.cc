@@ -20,10 +20,11 @@ namespace {
 TEST(JointLimits, TheBipedsUrdfLimitsAreRead) {
   const RobotModel m = RobotModel::Builtin("biped");
   const RobotJoint& knee = m.joint(m.JointIndex("left_knee_pitch"));
-  // data/robots/biped.urdf: <limit lower="0.0" upper="2.4" effort="300" velocity="8"/>
+  // data/robots/biped.urdf: <limit lower="0.0" upper="2.4" effort="300" velocity="12"/>
   EXPECT_EQ(knee.lower, 0.0);
   EXPECT_EQ(knee.upper, 2.4);
-  EXPECT_EQ(knee.velocity_rad_s, 8.0);
+  EXPECT_EQ(knee.velocity_rad_s, 12.0);
+  EXPECT_EQ(m.joint(m.JointIndex("left_ankle_pitch")).velocity_rad_s, 8.0);
   EXPECT_EQ(knee.effort_N_m, 300.0);
   EXPECT_EQ(m.joint(m.JointIndex("left_ankle_pitch")).effort_N_m, 200.0);
 }
@@ -66,15 +67,14 @@ TEST(JointLimits, ExcessNamesTheJointTheValueAndTheLimit) {
   EXPECT_EQ(excess->limit, 2.4);
   EXPECT_EQ(excess->Describe(), "joint 'right_knee_pitch' needs 143.2 deg, beyond its limit 137.5 deg");
 
-  // 0.1 rad of knee in 10 ms: 10 rad/s against 8
+  // 0.1 rad of ankle in 10 ms: 10 rad/s against 8
   LegAnglesRad from, to;
-  to.knee = 0.1;
-  to.pitch = -0.1;
+  to.pitch = 0.1;  // hip and knee still: the ankle alone turns
   const auto fast = limits.SpeedExcess(Side::kLeft, from, to, 0.01);
   ASSERT_TRUE(fast.has_value());
-  EXPECT_EQ(fast->joint, "left_knee_pitch");
+  EXPECT_EQ(fast->joint, "left_ankle_pitch");
   EXPECT_NEAR(fast->needed, 10.0, 1e-9);
-  EXPECT_EQ(fast->Describe(), "joint 'left_knee_pitch' needs 10.00 rad/s, beyond its velocity limit 8.00 rad/s");
+  EXPECT_EQ(fast->Describe(), "joint 'left_ankle_pitch' needs 10.00 rad/s, beyond its velocity limit 8.00 rad/s");
   EXPECT_FALSE(limits.SpeedExcess(Side::kLeft, from, to, 0.02).has_value());  // 5 rad/s
 }
 
