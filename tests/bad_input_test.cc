@@ -129,7 +129,7 @@ TEST(BadInputTest, LegMapThatDoesNotFitTheRobot) {
 TEST(BadInputTest, GaitBeyondTheJointLimits) {
   ExpectRefusedFile("gait_too_fast.yaml",
                     {"builtin:biped: gait: stride_m 0.60 m at period_s 0.300 s cannot be walked on level ground within "
-                     "the URDF's joint limits", "joint 'right_knee_pitch' needs ", "beyond its velocity limit 8.00 rad/s"});
+                     "the URDF's joint limits", "joint 'right_knee_pitch' needs ", "beyond its velocity limit 12.00 rad/s"});
   ExpectRefusedFile("gait_beyond_limits.yaml",
                     {"builtin:biped: gait: stride_m 3.00 m", "joint '", " needs ", "beyond its"});
   const CommandResult validate = RunProxsim("validate " + kBadDir + "/gait_too_fast.yaml");
