@@ -81,8 +81,9 @@ std::vector<LocomotionEvent> GaitWalker::TakeEvents() {
 }
 
 double GaitWalker::Duration_s(const StepPlan& plan) const {
-  const double duration_s = StepDuration_s(plan, gait_.period_s);
-  return plan.terrain ? SpeedLimitedDuration_s(*planner_, *limits_, plan, duration_s) : duration_s;
+  // a step whose joints would move too fast (a sharp turn, a change of
+  // stride, a step up) is slowed; steady walking is not (the load checked it)
+  return SpeedLimitedDuration_s(*planner_, *limits_, plan, StepDuration_s(plan, gait_.period_s));
 }
 
 std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s) const {

@@ -49,8 +49,8 @@
 // outside its URDF range or beyond its top speed, fold a leg, or lift a foot
 // far above what it clears is refused the same way (`cannot_step`, the joint,
 // the angle or speed needed and the limit), so that no sample ever holds an
-// impossible pose; a terrain step is slowed rather than refused for its
-// joints' speeds. A gait the legs cannot walk on level ground is an input
+// impossible pose; a step is slowed rather than refused for its joints'
+// speeds. A gait the legs cannot walk on level ground is an input
 // error at load (gait/level_gait_check.h).
 #pragma once
 
@@ -113,7 +113,7 @@ class GaitWalker : public Locomotion {
   // What one step may do on uneven ground, from the legs and the stride.
   FootholdLimits Limits() const;
   // How long `plan` lasts: half the period, longer for a terrain step that
-  // must rise or fall slowly or whose joints would move too fast (step_safety.h).
+  // must rise or fall slowly, or for any step whose joints would move too fast (step_safety.h).
   double Duration_s(const StepPlan& plan) const;
   // Why `plan` is not to be taken ("" if it is): no foothold (the planner's
   // reason) or a step beyond the legs' limits (UnsafeStepReason, the one place

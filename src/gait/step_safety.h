@@ -17,10 +17,10 @@
 // foothold: it stands before it with a `cannot_step` event
 // (gait/gait_walker.h). A fall outcome can be put on the same answer later.
 //
-// Speeds scale with 1/duration, so a terrain step whose joints would move too
-// fast is slowed rather than refused (SpeedLimitedDuration_s); a flat-floor
-// step keeps half the gait period, which the load's check of the level gait
-// (gait/level_gait_check.h) has already found within the limits.
+// Speeds scale with 1/duration, so a step whose joints would move too fast (a
+// sharp turn, a step up) is slowed rather than refused (SpeedLimitedDuration_s);
+// steady walking on level ground keeps half the gait period, which the load's
+// check (gait/level_gait_check.h) has found within the limits.
 #pragma once
 
 #include <string>
