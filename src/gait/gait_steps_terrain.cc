@@ -22,6 +22,11 @@ constexpr double kPelvisRampEnds = 0.15;
 constexpr int kSwingChecks = 64;
 // Rounds of lifting the arc higher when the legs' IK lands the sole lower than the arc.
 constexpr int kLiftRounds = 4;
+// A deficit where the lift has barely risen (near lift-off and landing) sizes
+// the lift as if the plateau's shape there were this: dividing by the shape
+// itself flung the foot metres up for a millimetre's deficit next to the tread
+// it leaves (the swing leg then folded back over the pelvis, pointing at it).
+constexpr double kLiftShapeFloor = 0.2;
 // A sole this close to its clearance counts as clearing it, m.
 constexpr double kClearanceSlack_m = 2e-4;
 // Heights within this of the stance tread are the stance tread's level, m (the
@@ -210,8 +215,12 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
                        .toe_from_ankle = legs_.FootOffset(plan->swing, FootPoint::kToe)};
   const std::size_t own_from = profile.SegmentAt(ToH(*plan, plan->p_W_trailing_toe).x());
   const std::size_t own_to = foothold.segment;
+  // the highest ground under the swing's sweep: from under the sole as it
+  // leaves (its heel a sole's length behind the latched toe) to the foothold
+  const std::size_t sweep_from =
+      profile.SegmentAt(ToH(*plan, plan->p_W_trailing_toe).x() - (sg.toe_x_m - sg.heel_x_m));
   plan->highest_ground_z_m = std::max(plan->floor_z_m, foothold.z_m);
-  for (std::size_t i = std::min(own_from, own_to); i <= std::max(own_from, own_to); ++i)
+  for (std::size_t i = std::min(sweep_from, own_to); i <= std::max({sweep_from, own_from, own_to}); ++i)
     plan->highest_ground_z_m = std::max(plan->highest_ground_z_m, profile.segments()[i].z_m);
   const auto phase = [](int j) { return kDoubleSupportEnd + (0.5 - kDoubleSupportEnd) * j / kSwingChecks; };
   // (an edge counts within the distance the sole moved since the last check)
@@ -229,7 +238,7 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
     const double pitch = SwingPitch(*plan, phase(j));
     const double deficit = SoleDeficit(profile, ankle, pitch, sole, kSwingClearance_m, own_from, own_to,
                                        moved(ankle, pitch, last_ankle, last_pitch));
-    if (deficit > 0) lift = std::max(lift, deficit / std::max(SwingArc::LiftShape(u), 1e-3));
+    if (deficit > 0) lift = std::max(lift, deficit / std::max(SwingArc::LiftShape(u), kLiftShapeFloor));
     last_ankle = ankle;
     last_pitch = pitch;
   }
@@ -252,7 +261,7 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
       const double deficit = SoleDeficit(profile, ankle_H, pitch, sole, kSwingClearance_m, own_from, own_to,
                                          moved(ankle_H, pitch, last_ankle, last_pitch));
       worst = std::max(worst, deficit);
-      if (deficit > kClearanceSlack_m) more = std::max(more, deficit / std::max(SwingArc::LiftShape(u), 1e-3));
+      if (deficit > kClearanceSlack_m) more = std::max(more, deficit / std::max(SwingArc::LiftShape(u), kLiftShapeFloor));
       last_ankle = ankle_H;
       last_pitch = pitch;
     }
