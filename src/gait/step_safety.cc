@@ -8,9 +8,10 @@ namespace proxsim {
 
 namespace {
 
-const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
+// Rounds of slowing a step whose joints would move too fast.
+constexpr int kSlowingRounds = 6;
 
-double PhaseAt(int i) { return 0.5 * i / kStepSafetySamples; }  // evenly over the stance phase
+const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
 
 // Highest sole point (heel or toe) minus the knee, in the pelvis's upright
 // sagittal plane (its z is the world's): ≥ 0 is a folded leg.
@@ -71,18 +72,28 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
 
 double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
                               double at_least_s) {
-  // speeds at duration D are (|Δq| / Δp)·(0.5 / D): the largest ratio at
-  // at_least_s scales the duration that brings it down to the margin
-  const double dt_s = at_least_s / kStepSafetySamples;
-  double ratio = 0;
-  StepPose last = planner.Evaluate(plan, 0.0);
-  for (int i = 1; i <= kStepSafetySamples; ++i) {
-    const StepPose pose = planner.Evaluate(plan, PhaseAt(i));
-    ratio = std::max(ratio, limits.SpeedRatio(plan.stance, last.stance, pose.stance, dt_s));
-    ratio = std::max(ratio, limits.SpeedRatio(plan.swing, last.swing, pose.swing, dt_s));
-    last = pose;
+  // the same windows as UnsafeStepReason's: the fastest joint's mean speed
+  // over kSpeedWindow_s, relative to its top speed, at duration d
+  const auto ratio_at = [&](double d) {
+    const double window = std::min(0.5, 0.5 * kSpeedWindow_s / d);
+    double ratio = 0;
+    for (int i = 0; i <= kStepSafetySamples; ++i) {
+      const double p = window + (0.5 - window) * i / kStepSafetySamples;
+      const StepPose pose = planner.Evaluate(plan, p), before = planner.Evaluate(plan, p - window);
+      ratio = std::max(ratio, limits.SpeedRatio(plan.stance, before.stance, pose.stance, 2 * window * d));
+      ratio = std::max(ratio, limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
+    }
+    return ratio;
+  };
+  // speeds scale about as 1/d, but the window moves in phase as d grows: a
+  // few rounds of scaling by the ratio found
+  double d = at_least_s;
+  for (int round = 0; round < kSlowingRounds; ++round) {
+    const double ratio = ratio_at(d);
+    if (ratio <= kSpeedMargin) break;
+    d *= ratio / kSpeedMargin;
   }
-  return ratio > kSpeedMargin ? at_least_s * ratio / kSpeedMargin : at_least_s;
+  return d;
 }
 
 }  // namespace proxsim
