@@ -320,11 +320,12 @@ TEST(StopStrategyOnDrops, StopsBeforeAWideHole) {
 }
 
 TEST(StopStrategyOnDrops, StopsBeforeTheCoursesSmallHole) {
-  // the built-in course from x = 4.2: its 0.25 m hole (0.5 m deep) begins at x = 5
+  // the built-in course from x = 4.3 (the rear foot clear of the last step,
+  // which ends at x = 4.0): its 0.25 m hole (0.5 m deep) begins at x = 5
   const std::string yaml =
       "proxsim: 1\nseed: 13\nduration_s: 8\nrate_hz: 100\nscene: {builtin: stairs}\n"
-      "robot:\n  model: builtin:biped\n  start: {xyz_m: [4.2, 0, 0], yaw_deg: 0}\n"
-      "  gait: {stride_m: 0.6, period_s: 1.2}\n  path: {waypoints_m: [[4.2, 0], [8.5, 0]]}\n" +
+      "robot:\n  model: builtin:biped\n  start: {xyz_m: [4.3, 0, 0], yaw_deg: 0}\n"
+      "  gait: {stride_m: 0.5, period_s: 1.2}\n  path: {waypoints_m: [[4.3, 0], [8.5, 0]]}\n" +
       Sensors();
   ExpectStoppedBeforeTheEdgeAt(WalkWithTheRule(yaml, "course.yaml"), 5.0);
 }

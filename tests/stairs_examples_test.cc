@@ -93,6 +93,7 @@ TEST(StairsExamples, StairsWalkClimbsDescendsStepsOverTheSmallHoleAndStopsBefore
   EXPECT_TRUE(run.summary["robot"]["stopped"].get<bool>());
   EXPECT_EQ(run.summary["robot"]["stop_reason"], "cannot_step");
   EXPECT_GE(run.summary["robot"]["stop_t_s"].get<double>(), run.LoggedAt("cannot_step"));
+  EXPECT_EQ(run.summary["robot"]["outcome"], "refused");  // unsafe_steps: refuse
 
   // every tibia sensor detects the steps (a riser or a tread) and a hole's far wall
   for (const std::string sensor : {"ideal", "laser", "ultrasonic", "reflectance"}) {
@@ -112,7 +113,15 @@ TEST(StairsExamples, StairsHoleWalksOnOverTheSmallHole) {
   const Example run = RunExample("stairs_hole");
   EXPECT_GT(run.Last("pelvis", "x"), kSmallHoleFar_x_m);
   EXPECT_LT(std::max(run.Last("left_foot", "x"), run.Last("right_foot", "x")), kWideHoleNear_x_m);
-  EXPECT_TRUE(run.Logged("cannot_step"));
+  // no strategy stops it before the wide hole: under unsafe_steps: fall (the
+  // default) the step its legs cannot take is taken, and the episode ends there
+  EXPECT_FALSE(run.Logged("cannot_step"));
+  ASSERT_TRUE(run.Logged("fall"));
+  EXPECT_NE(run.Detail("fall").find("a gap of 0.60 m"), std::string::npos) << run.Detail("fall");
+  EXPECT_EQ(run.summary["robot"]["outcome"], "fell");
+  EXPECT_DOUBLE_EQ(run.summary["robot"]["outcome_t_s"].get<double>(), run.LoggedAt("fall"));
+  EXPECT_NE(run.cli_output.find("robot: walked"), std::string::npos);
+  EXPECT_NE(run.cli_output.find("fell at t = "), std::string::npos) << run.cli_output;
 }
 
 TEST(StairsExamples, HoleStopRuleStopsBeforeTheSmallHoleFromTheReadings) {
@@ -121,6 +130,7 @@ TEST(StairsExamples, HoleStopRuleStopsBeforeTheSmallHoleFromTheReadings) {
   EXPECT_FALSE(run.Logged("cannot_step"));
   EXPECT_TRUE(run.summary["robot"]["stopped"].get<bool>());
   EXPECT_EQ(run.summary["robot"]["stop_reason"], "strategy");
+  EXPECT_EQ(run.summary["robot"]["outcome"], "stopped");
   // the ankles (the toes are 0.2 m ahead of them at most) short of the edge at x = 5
   EXPECT_LT(std::max(run.Last("left_foot", "x"), run.Last("right_foot", "x")) + 0.2, 5.0);
 }

@@ -17,10 +17,13 @@ that stood resumes), < 0.5 stops at the next double support; stride_m, clipped
 to [min_stride_m, max_stride_m], is the stride from the next step on.
 
 Reward: the metres gained toward the path's last waypoint since the last step,
-minus collision_penalty when the robot touches an obstacle (the truth's
-clearance at or below 0), which also terminates the episode; reaching the goal
-terminates it too. An episode is truncated at the scenario's duration_s.
-The reward and termination use the truth; the agent's observation never does.
+minus collision_penalty when the robot's body meets the world (a collision:
+summary.json robot.collisions) and minus fall_penalty when it falls (a step
+its legs cannot take, gait.unsafe_steps: fall). The episode terminates when
+the robot collided, fell or reached its goal (info["outcome"] says which, as
+summary.json's robot.outcome does); it is truncated at the scenario's
+duration_s. The reward and termination use the truth; the agent's
+observation never does.
 """
 import numpy as np
 
@@ -32,7 +35,8 @@ class WalkEnv:
     metadata = {"render_modes": []}
     render_mode = None
 
-    def __init__(self, scenario, *, threads=1, min_stride_m=0.3, max_stride_m=1.0, collision_penalty=10.0):
+    def __init__(self, scenario, *, threads=1, min_stride_m=0.3, max_stride_m=1.0, collision_penalty=10.0,
+                 fall_penalty=10.0):
         if isinstance(scenario, str) and scenario.startswith("builtin:"):
             self._sim = Simulation.builtin(scenario[len("builtin:"):], threads=threads, scenario_strategy=False)
         else:
@@ -44,6 +48,7 @@ class WalkEnv:
         self._min_stride_m = float(min_stride_m)
         self._max_stride_m = float(max_stride_m)
         self._collision_penalty = float(collision_penalty)
+        self._fall_penalty = float(fall_penalty)
         n = len(self._sim.sensor_names)
         inf = np.inf
         low = np.array([0.0, 0.0, 0.0] * n + [-inf, -inf, -np.pi, 0.0, 0.0, 0.0], dtype=np.float32)
@@ -54,6 +59,7 @@ class WalkEnv:
         self._goal = None
         self._last_distance = None
         self._walking = True
+        self._collisions = 0
 
     @property
     def simulation(self):
@@ -81,6 +87,7 @@ class WalkEnv:
         waypoints = summary["inputs"]["robot"]["path"]["waypoints_m"]
         self._goal = np.array(waypoints[-1], dtype=float) if waypoints else None
         self._walking = True
+        self._collisions = 0
         obs = self._sim.step()
         self._last_distance = self._distance_to_goal(obs)
         return self._vector(obs), {"t_s": obs["t_s"], "raw": obs}
@@ -100,12 +107,17 @@ class WalkEnv:
         distance = self._distance_to_goal(obs)
         reward = self._last_distance - distance
         self._last_distance = distance
-        collided = truth["min_clearance_m"] <= 0.0
-        if collided:
+        outcome = truth["outcome"]
+        collided, fell = outcome == "collided", outcome == "fell"
+        if truth["collisions"] > self._collisions:  # a new collision this step
             reward -= self._collision_penalty
-        terminated = bool(collided or truth["reached_goal"])
+        self._collisions = truth["collisions"]
+        if fell:
+            reward -= self._fall_penalty
+        terminated = bool(collided or fell or outcome == "reached_goal")
         truncated = bool(self._sim.done and not terminated)
-        info = {"t_s": obs["t_s"], "raw": obs, "collided": collided, "reached_goal": truth["reached_goal"]}
+        info = {"t_s": obs["t_s"], "raw": obs, "outcome": outcome, "collided": collided, "fell": fell,
+                "reached_goal": truth["reached_goal"]}
         return self._vector(obs), float(reward), terminated, truncated, info
 
     def close(self):

@@ -64,7 +64,10 @@ json RunBench(const BenchOptions& options) {
   } else if (options.end_to_end) {
     scene_1m = MakeBenchDiningRoom(1'000'000);
   }
-  if (options.robots) result["robots"] = RobotsSection(options.quick);
+  if (options.robots) {
+    result["robots"] = RobotsSection(options.quick);
+    result["contacts"] = ContactsSection(options.quick);
+  }
   if (options.terrain) result["terrain"] = TerrainSection(options.quick);
   if (options.study) result["study"] = StudyInScratch(options.quick);
   if (options.map) result["terrain_map"] = MapSection(options.quick);
@@ -83,6 +86,7 @@ std::string BenchReport(const json& r) {
   out << RaysReport(r) << EndToEndReport(r);
   if (r.contains("closed_loop")) out << ClosedLoopReport(r.at("closed_loop"));
   if (r.contains("robots")) out << RobotsReport(r.at("robots"));
+  if (r.contains("contacts")) out << ContactsReport(r.at("contacts"));
   if (r.contains("terrain")) out << TerrainReport(r.at("terrain"));
   if (r.contains("terrain_map")) out << MapReport(r.at("terrain_map"));
   if (r.contains("study")) out << StudyReport(r.at("study"));

@@ -11,6 +11,7 @@
 #include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
+#include "sim/contacts.h"
 #include "sim/robot_in_scene.h"
 #include "sim/simulation.h"
 
@@ -48,7 +49,76 @@ double SecondsPerStep(const Scenario& scenario, int repeats) {
   return best;
 }
 
+// What checking the robot's contacts costs per sample of `scenario`: the same
+// poses as its own run, placed in a world of their own, each checked by a
+// ContactFinder as the simulation checks them; against the whole step.
+struct ContactCost {
+  double step_s = 0, contacts_s = 0;
+};
+ContactCost ContactCostPerStep(const Scenario& scenario, int repeats) {
+  ContactCost best{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  for (int i = 0; i < repeats; ++i) {
+    Simulation sim(scenario, 1);
+    World world(scenario, &sim.locomotion()->model(), 1);
+    const std::vector<FootFrame> feet = sim.locomotion()->Feet();
+    ContactFinder finder(*world.robot(), world.ground_caster(), world.ground_ids(), feet);
+    double step_s = 0, contacts_s = 0, min_clearance_m = std::numeric_limits<double>::infinity();
+    std::int64_t steps = 0;
+    while (!sim.done()) {
+      const auto start = Clock::now();
+      sim.Step();
+      step_s += Since(start);
+      world.robot()->Place(*sim.robot_state());
+      world.caster().Commit();
+      // the clearance the simulation measures anyway (its summary's truth), untimed
+      const double clearance_m = world.robot()->ClearanceTo(world.ground_ids(), min_clearance_m);
+      const auto contacts_start = Clock::now();
+      finder.Find(std::min(clearance_m, min_clearance_m));
+      contacts_s += Since(contacts_start);
+      min_clearance_m = std::min(min_clearance_m, clearance_m);
+      ++steps;
+    }
+    best.step_s = std::min(best.step_s, step_s / static_cast<double>(steps));
+    best.contacts_s = std::min(best.contacts_s, contacts_s / static_cast<double>(steps));
+  }
+  return best;
+}
+
 }  // namespace
+
+nlohmann::json ContactsSection(bool quick) {
+  nlohmann::json section;
+  const int repeats = quick ? 2 : 5;
+  const Scenario paper = LoadBuiltinScenario("paper");
+  const auto record = [&](const std::string& key, const Scenario& scenario) {
+    const ContactCost cost = ContactCostPerStep(scenario, repeats);
+    section[key + "_step_s"] = cost.step_s;
+    section[key + "_contacts_s"] = cost.contacts_s;
+    section[key + "_contacts_share"] = cost.contacts_s / cost.step_s;
+    std::fprintf(stderr, "contacts: %s, a paper-like sample %.1f us, its contact check %.1f us (%.1f %%)\n", key.c_str(),
+                 1e6 * cost.step_s, 1e6 * cost.contacts_s, 100 * cost.contacts_s / cost.step_s);
+  };
+  record("biped", PaperLike(paper, "left_tibia", paper.sensors[0].X_LS));
+  if (std::filesystem::is_regular_file(kH1Scenario)) {
+    const Scenario h1 = LoadScenarioFile(kH1Scenario.string());
+    record("h1", PaperLike(h1, "left_knee_link", PoseFromXyzRpy(Vec3(0.06, 0, -0.30), Vec3(0, DegToRad(15), 0))));
+  }
+  return section;
+}
+
+std::string ContactsReport(const nlohmann::json& s) {
+  std::string report = "\ncontacts (sim/contacts.h) per paper-like sample (target: at most 10 % biped, 20 % H1):\n";
+  for (const char* key : {"biped", "h1"}) {
+    if (!s.contains(std::string(key) + "_step_s")) continue;
+    char line[256];
+    std::snprintf(line, sizeof line, "  %s: %.1f us of %.1f us (%.1f %%)\n", key,
+                  1e6 * s.at(std::string(key) + "_contacts_s").get<double>(),
+                  1e6 * s.at(std::string(key) + "_step_s").get<double>(),
+                  100 * s.at(std::string(key) + "_contacts_share").get<double>());
+    report += line;
+  }
+  return report;
+}
 
 nlohmann::json RobotsSection(bool quick) {
   nlohmann::json section;

@@ -21,4 +21,10 @@ nlohmann::json RobotsSection(bool quick);
 /// The section's lines for the Markdown report.
 std::string RobotsReport(const nlohmann::json& section);
 
+/// What the contact check (sim/contacts.h) costs in a paper-like sample, with
+/// the built-in biped and (when its folder is there) the H1's meshes:
+/// `{biped,h1}_{step_s,contacts_s,contacts_share}`.
+nlohmann::json ContactsSection(bool quick);
+std::string ContactsReport(const nlohmann::json& section);
+
 }  // namespace proxsim::bench

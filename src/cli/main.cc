@@ -104,15 +104,24 @@ int Run(const std::string& scenario_path, const std::string& out_dir, std::optio
   }
   if (const auto robot = result.summary.find("robot"); robot != result.summary.end()) {
     const auto& r = *robot;
-    // why it stands, as summary.json's stop_reason says
+    // how the episode ended (summary.json's outcome), or why the robot stands (its stop_reason)
+    const std::string outcome = r["outcome"].get<std::string>();
     std::string motion = "still walking at the end";
-    if (r["stopped"].get<bool>()) {
+    char at[48];
+    std::snprintf(at, sizeof at, " at t = %.2f s", r["outcome_t_s"].get<double>());
+    if (outcome == "collided") {
+      const auto& first = r["collisions"].at(0);
+      const std::string with = first.contains("object") ? first["object"].get<std::string>()
+                                                         : "its own " + first["other_link"].get<std::string>();
+      motion = "collided with " + with + " (" + first["link"].get<std::string>() + ")" + at;
+    } else if (outcome == "fell") {
+      motion = std::string("fell") + at + " (" + r["outcome_detail"].get<std::string>().substr(6) + ")";
+    } else if (r["stopped"].get<bool>()) {
       const std::string reason = r["stop_reason"].get<std::string>();
-      char at[48];
       std::snprintf(at, sizeof at, " at t = %.2f s", r["stop_t_s"].get<double>());
       motion = reason == "strategy"      ? std::string("stopped by its strategy") + at
                : reason == "cannot_step" ? std::string("standing before a step its legs cannot take (cannot_step") + at + ")"
-                                         : std::string("standing at the end of its path since") + at;
+                                         : std::string("standing at the end of its path since ") + (at + 4);
     }
     std::printf("  robot: walked %.2f m, %s, min clearance %s m\n", r["distance_walked_m"].get<double>(), motion.c_str(),
                 r["min_clearance_m"].is_null() ? "n/a" : std::to_string(r["min_clearance_m"].get<double>()).c_str());

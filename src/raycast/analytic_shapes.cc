@@ -127,6 +127,22 @@ double DistanceToCylinder(const Cylinder& cylinder, const Vec3& p_O) {
 
 double DistanceToPlane(const Vec3& p_O) { return std::abs(p_O.z()); }
 
+double DepthInside(const Shape& shape, const Vec3& p_O) {
+  if (const auto* box = std::get_if<Box>(&shape)) {
+    // inside every slab: the nearest face is the one with the least margin
+    const Vec3 margin = 0.5 * box->size_m - p_O.cwiseAbs();
+    return std::max(margin.minCoeff(), 0.0);
+  }
+  if (const auto* sphere = std::get_if<Sphere>(&shape)) return std::max(sphere->radius_m - p_O.norm(), 0.0);
+  if (const auto* cylinder = std::get_if<Cylinder>(&shape)) {
+    const double radial = cylinder->radius_m - p_O.head<2>().norm();
+    const double axial = 0.5 * cylinder->length_m - std::abs(p_O.z());
+    return std::max(std::min(radial, axial), 0.0);
+  }
+  if (std::holds_alternative<Plane>(shape)) return std::max(-p_O.z(), 0.0);
+  return 0.0;
+}
+
 double DistanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = (b - a).cross(c - a);
   const double n_sq = n.squaredNorm();

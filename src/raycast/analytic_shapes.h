@@ -55,6 +55,12 @@ double DistanceToCylinder(const Cylinder& cylinder, const Vec3& p_O);
 /// Distance from p_O to the unbounded z = 0 plane.
 double DistanceToPlane(const Vec3& p_O);
 
+/// How deep p_O lies inside a solid box, sphere or capped cylinder: the
+/// distance from p_O to its surface when inside, 0 outside or on it. For a
+/// plane, how far below z = 0 (its solid side taken as z < 0, as a floor's).
+/// 0 for a mesh (no inside is known for a triangle soup).
+double DepthInside(const Shape& shape, const Vec3& p_O);
+
 /// Distance from p to the triangle (a, b, c), edges and corners included.
 double DistanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 

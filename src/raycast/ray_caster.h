@@ -72,6 +72,18 @@ class RayCaster {
   double DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
                          double below_m = std::numeric_limits<double>::infinity()) const;
 
+  /// The world surface nearest p_W, as DistanceToWorld measures it, and which
+  /// object it belongs to: object_id -1 when nothing is nearer than below_m.
+  /// depth_m: how deep p_W lies inside that object when it is a box, sphere,
+  /// cylinder or plane (analytic_shapes.h DepthInside), else 0.
+  struct NearestSurface {
+    double distance_m = std::numeric_limits<double>::infinity();
+    std::int32_t object_id = -1;
+    double depth_m = 0;
+  };
+  NearestSurface NearestToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
+                                double below_m = std::numeric_limits<double>::infinity()) const;
+
   /// Number of triangles held (meshes and boxes), for reports.
   std::size_t triangle_count() const;
 

@@ -24,6 +24,7 @@ struct PointQueryState {
   std::span<const std::int32_t> exclude_object_ids;
   Vec3 p_B = Vec3::Zero();
   double best_distance_m = std::numeric_limits<double>::infinity();
+  std::int32_t best_object_id = -1;
 };
 
 bool IsExcluded(std::int32_t object_id, std::span<const std::int32_t> exclude_object_ids) {
@@ -54,6 +55,7 @@ bool MeshPointQueryCallback(RTCPointQueryFunctionArguments* args) {
 
   // shrink the search sphere (a hair above, so float rounding prunes nothing closer)
   state.best_distance_m = distance_m;
+  state.best_object_id = geom.object_id;
   args->query->radius = static_cast<float>(distance_m * (1 + 1e-6) + 1e-6);
   return true;
 }
@@ -112,10 +114,17 @@ RTCScene RayCaster::Impl::MeshQueryScene(Body& body, std::span<const std::int32_
 
 double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
                                   double below_m) const {
+  return NearestToWorld(p_W, exclude_object_ids, below_m).distance_m;
+}
+
+RayCaster::NearestSurface RayCaster::NearestToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
+                                                    double below_m) const {
+  NearestSurface nearest;
+  nearest.distance_m = below_m;
   // no distance is below a cap <= 0 (and a point query needs a positive radius)
-  if (!(below_m > 0)) return below_m;
+  if (!(below_m > 0)) return nearest;
   // the cap is the first best: nothing at or beyond it is measured
-  double best_m = below_m;
+  double& best_m = nearest.distance_m;
   for (const auto& body_ptr : impl_->bodies) {
     const Body& body = *body_ptr;
     if (body.kind != BodyKind::kWorld) continue;
@@ -134,7 +143,11 @@ double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t>
         case GeomKind::kPlane: distance_m = DistanceToPlane(p_O); break;
         case GeomKind::kMesh: break;
       }
-      best_m = std::min(best_m, distance_m);
+      if (distance_m < best_m || (distance_m == 0 && nearest.object_id < 0)) {
+        best_m = distance_m;
+        nearest.object_id = geom.object_id;
+        nearest.depth_m = distance_m > 0 ? 0.0 : DepthInside(geom.shape, p_O);
+      }
     }
 
     // meshes: Embree's point query walks the body's BVH within a search radius.
@@ -169,9 +182,13 @@ double RayCaster::DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t>
       // a triangle within the radius: nothing outside it can be nearer
       if (last || state.best_distance_m <= radius_m) break;
     }
-    best_m = std::min(best_m, state.best_distance_m);
+    if (state.best_distance_m < best_m) {
+      best_m = state.best_distance_m;
+      nearest.object_id = state.best_object_id;
+      nearest.depth_m = 0;
+    }
   }
-  return best_m;
+  return nearest;
 }
 
 }  // namespace proxsim

@@ -34,7 +34,20 @@ struct SensorConfig {
 
 /// A robot: what its walk needs (gait/gait_config.h) plus the model it is
 /// built from and what drives it.
+/// `gait.unsafe_steps`: what a step the legs cannot take does (docs/outcomes.md).
+enum class UnsafeSteps {
+  kFall,    ///< it is taken: the robot falls there and the episode ends (default)
+  kRefuse,  ///< the legs stand before it (`cannot_step`), the episode goes on
+};
+/// `robot.on_collision`: what a contact of the robot's body with the world does.
+enum class OnCollision {
+  kStop,      ///< the episode ends at the first one (default)
+  kContinue,  ///< every one is logged and the walk goes on
+};
+
 struct RobotConfig : WalkConfig {
+  UnsafeSteps unsafe_steps = UnsafeSteps::kFall;
+  OnCollision on_collision = OnCollision::kStop;
   std::string model = "builtin:biped";  ///< "builtin:biped" or a URDF path (relative to the scenario file)
   std::optional<StrategyConfig> strategy;  ///< the built-in strategy (`robot.strategy`, or `stop_distance_m` for stop); none when absent
   std::string trajectory_file;              ///< recorded trajectory CSV to replay instead of the gait

@@ -137,7 +137,7 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir) {
   RobotConfig robot;
   const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
-                                      "geometry", "package_paths", "legs", "joints_deg"});
+                                      "geometry", "package_paths", "legs", "joints_deg", "on_collision"});
   if (!map) return robot;
 
   // model: builtin:NAME, or a URDF file
@@ -179,6 +179,15 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   robot.legs = ReadLegs(reader, (*map)["legs"]);
   robot.joints_rad = ReadJointAngles(reader, (*map)["joints_deg"]);
 
+  // on_collision: stop | continue
+  if (const Field on_collision = (*map)["on_collision"]) {
+    const auto mode = reader.String(on_collision);
+    if (mode == "stop") robot.on_collision = OnCollision::kStop;
+    else if (mode == "continue") robot.on_collision = OnCollision::kContinue;
+    else if (mode) reader.Fail(on_collision, "expected stop (the episode ends at the first collision) or continue "
+                                             "(every collision is logged and the walk goes on), got '" + *mode + "'");
+  }
+
   // start: {xyz_m, yaw_deg}
   if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg"})) {
     robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
@@ -188,7 +197,14 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   // gait: {stride_m, period_s, max_step_m}; stride or period absent scales with
   // the legs, max_step_m absent comes from them
   robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
-  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m"})) {
+  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m", "unsafe_steps"})) {
+    if (const Field unsafe = (*gait)["unsafe_steps"]) {
+      const auto mode = reader.String(unsafe);
+      if (mode == "fall") robot.unsafe_steps = UnsafeSteps::kFall;
+      else if (mode == "refuse") robot.unsafe_steps = UnsafeSteps::kRefuse;
+      else if (mode) reader.Fail(unsafe, "expected fall (a step the legs cannot take is taken, and the robot falls) or "
+                                         "refuse (the legs stand before it), got '" + *mode + "'");
+    }
     robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
     robot.gait.derive_period_from_legs = !gait->Has("period_s");
     robot.gait.stride_m = reader.Number((*gait)["stride_m"], PositiveNumber("m")).value_or(robot.gait.stride_m);

@@ -1,6 +1,9 @@
-// The gait's terrain (gait/terrain_query.h) answered by the world's ray
-// caster: vertical rays down from the asked points, the robot's own links
-// transparent, so that the feet stand on the scene's true surface.
+// The gait's terrain (gait/terrain_query.h) answered by a ray caster of the
+// scene's ground: vertical rays down from the asked points, so that the feet
+// stand on the scene's true ground. Only the objects flagged `ground` are in
+// that caster (World builds it): a line over an obstacle, a chair or a table
+// meets the ground below it, so a foot is never planned on one (walking into
+// it is a collision).
 //
 // Frames: W world.
 #pragma once
@@ -14,7 +17,8 @@ namespace proxsim {
 
 class CasterTerrain : public TerrainQuery {
  public:
-  /// `caster` must outlive this and be committed before the first query.
+  /// `caster` holds the ground (and nothing else the feet may not stand on);
+  /// it must outlive this and be committed before the first query.
   explicit CasterTerrain(const RayCaster& caster) : caster_(caster) {}
 
   void HeightsBelow(std::span<const Vec3> from_W, double depth_m, std::span<double> z_W) const override;

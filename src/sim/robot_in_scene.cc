@@ -17,6 +17,12 @@ constexpr double kClearanceSpacing_m = 0.02;
 // empty queries. On the bench's heavy scenario 2 to 10 cm cost the same;
 // without per-point bounds, 10 cm cost twice as much as 2 cm.
 constexpr double kBoundMargin_m = 0.05;
+// A query asked only for what lies very near (the contacts' 0.1 mm) still
+// measures this far at least: a bound of a few centimetres would be spent by
+// a swinging foot in a sample or two, and every sample of the robot measured
+// again and again (closed-form shapes cost the same whatever the cap; only
+// meshes' point queries grow with it).
+constexpr double kMinBoundReach_m = 0.25;
 // Rounding in the poses and distances is far below this: a skip never hinges
 // on the last bits of a bound.
 constexpr double kBoundSlack_m = 1e-9;
@@ -73,24 +79,36 @@ void RobotInScene::Place(const RobotState& state) {
   }
 }
 
-double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_ids, double below_m) {
+RobotInScene::BoundsSlot& RobotInScene::SlotFor(std::span<const std::int32_t> exclude_object_ids,
+                                                 const SampleMask* mask, const RayCaster* against) {
+  constexpr std::size_t kSlots = 4;  // the clearance, the contacts with objects and with the ground
   constexpr double kNoBound = -std::numeric_limits<double>::infinity();
-  // the bounds hold for one exclude list: start afresh on another
-  if (clearance_bounds_.empty() || !std::ranges::equal(exclude_object_ids, bounds_exclude_ids_)) {
-    clearance_bounds_.assign(link_samples_.size(), ClearanceBounds{});
-    for (std::size_t link = 0; link < link_samples_.size(); ++link) {
-      clearance_bounds_[link].point_lower_m.assign(link_samples_[link].points_L.size(), kNoBound);
-      clearance_bounds_[link].p_W_ref.assign(link_samples_[link].points_L.size(), Vec3::Zero());
-    }
-    bounds_exclude_ids_.assign(exclude_object_ids.begin(), exclude_object_ids.end());
+  for (BoundsSlot& slot : bounds_slots_)
+    if (slot.mask == mask && slot.against == against && std::ranges::equal(exclude_object_ids, slot.exclude_ids))
+      return slot;
+  if (bounds_slots_.size() == kSlots) bounds_slots_.erase(bounds_slots_.begin());
+  BoundsSlot& slot = bounds_slots_.emplace_back();
+  slot.exclude_ids.assign(exclude_object_ids.begin(), exclude_object_ids.end());
+  slot.mask = mask;
+  slot.against = against;
+  slot.links.assign(link_samples_.size(), ClearanceBounds{});
+  for (std::size_t link = 0; link < link_samples_.size(); ++link) {
+    slot.links[link].point_lower_m.assign(link_samples_[link].points_L.size(), kNoBound);
+    slot.links[link].p_W_ref.assign(link_samples_[link].points_L.size(), Vec3::Zero());
   }
+  return slot;
+}
 
+double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_ids, double below_m,
+                                 const SampleMask* mask, const RayCaster* against) {
+  BoundsSlot& slot = SlotFor(exclude_object_ids, mask, against);
+  const RayCaster& world = against != nullptr ? *against : caster_;
   double best_m = below_m;
   for (int link = 0; link < static_cast<int>(link_samples_.size()); ++link) {
     const LinkSamples& samples = link_samples_[link];
     if (samples.points_L.empty()) continue;
     const Pose& X_WL = X_WL_[link];
-    ClearanceBounds& bounds = clearance_bounds_[link];
+    ClearanceBounds& bounds = slot.links[link];
 
     // no sample has moved farther than the link's travel since its bound was taken: skip it when it cannot win
     const double travel_m = MaxTravel_m(bounds.X_WL_ref, X_WL, samples.center_L, samples.radius_m);
@@ -99,13 +117,14 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
     // else each sample the same way with its own bound and travel, and the
     // ones that could win measured with capped queries: a distance below the
     // cap is exact, and only those can lower best_m (the cap is above it)
-    const double cap_m = best_m + kBoundMargin_m;
+    const double cap_m = std::max(best_m, kMinBoundReach_m) + kBoundMargin_m;
     double link_lower_m = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < samples.points_L.size(); ++i) {
+      if (mask != nullptr && !(*mask)[link][i]) continue;
       const Vec3 p_W = X_WL * samples.points_L[i];
       double lower_m = bounds.point_lower_m[i] - (p_W - bounds.p_W_ref[i]).norm() - kBoundSlack_m;
       if (lower_m < best_m) {
-        lower_m = caster_.DistanceToWorld(p_W, exclude_object_ids, cap_m);
+        lower_m = world.DistanceToWorld(p_W, exclude_object_ids, cap_m);
         bounds.point_lower_m[i] = lower_m;
         bounds.p_W_ref[i] = p_W;
         best_m = std::min(best_m, lower_m);
@@ -116,6 +135,30 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
     bounds.X_WL_ref = X_WL;
   }
   return best_m;
+}
+
+std::vector<RobotInScene::NearSample> RobotInScene::SamplesNear(std::span<const std::int32_t> exclude_object_ids,
+                                                                double within_m, const SampleMask* mask,
+                                                                const RayCaster* against) const {
+  const RayCaster& world = against != nullptr ? *against : caster_;
+  std::vector<NearSample> near;
+  for (int link = 0; link < static_cast<int>(link_samples_.size()); ++link) {
+    const LinkSamples& samples = link_samples_[link];
+    if (samples.points_L.empty()) continue;
+    const Pose& X_WL = X_WL_[link];
+    // a link whose bounding sphere is clear of the world by more than within_m has no such sample
+    if (world.DistanceToWorld(X_WL * samples.center_L, exclude_object_ids, samples.radius_m + within_m) >=
+        samples.radius_m + within_m) {
+      continue;
+    }
+    for (std::size_t i = 0; i < samples.points_L.size(); ++i) {
+      if (mask != nullptr && !(*mask)[link][i]) continue;
+      const Vec3 p_W = X_WL * samples.points_L[i];
+      const RayCaster::NearestSurface nearest = world.NearestToWorld(p_W, exclude_object_ids, within_m);
+      if (nearest.object_id >= 0 && nearest.distance_m <= within_m) near.push_back({link, p_W, nearest});
+    }
+  }
+  return near;
 }
 
 std::vector<LinkShapes> RobotInScene::LinkGeometry() const {

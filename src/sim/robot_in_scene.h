@@ -44,17 +44,37 @@ class RobotInScene {
   const std::vector<Vec3>& surface_points_L(int link) const { return link_samples_[link].points_L; }
 
   /// Forgets ClearanceTo's bounds (a new episode: the measure starts afresh).
-  void ForgetClearanceBounds() { clearance_bounds_.clear(); }
+  void ForgetClearanceBounds() { bounds_slots_.clear(); }
 
-  /// Least distance between the robot's surface (sampled every 2 cm) and any
-  /// world object of its ray caster other than the excluded ones (the floor it
-  /// walks on), when it is below `below_m`; otherwise some value >= below_m.
-  /// Links and samples that cannot come closer are skipped, which keeps a
-  /// running minimum cheap: each remembers a lower bound of its clearance from
-  /// when it was last measured, valid while the world bodies stay as they are
-  /// (the bounds start afresh when the exclude list differs from the last call's).
+  /// Which of a link's surface samples a query counts: [link][sample], true
+  /// to count it (a foot's sole points are left out against the ground).
+  using SampleMask = std::vector<std::vector<bool>>;
+
+  /// Least distance between the robot's surface (sampled every 2 cm; the
+  /// samples `mask` counts, every one without a mask) and any world object of
+  /// its ray caster other than the excluded ones (the floor it walks on), when
+  /// it is below `below_m`; otherwise some value >= below_m. Links and samples
+  /// that cannot come closer are skipped, which keeps a running minimum cheap:
+  /// each remembers a lower bound of its clearance from when it was last
+  /// measured, valid while the world bodies stay as they are. Bounds are kept
+  /// for each (exclude list, mask) asked for, a few at a time.
+  /// `against`: the world bodies of another ray caster than the robot's own
+  /// (a caster of the ground alone, say), or null for its own.
   double ClearanceTo(std::span<const std::int32_t> exclude_object_ids,
-                     double below_m = std::numeric_limits<double>::infinity());
+                     double below_m = std::numeric_limits<double>::infinity(), const SampleMask* mask = nullptr,
+                     const RayCaster* against = nullptr);
+
+  /// One sample of the robot's surface nearer than `within_m` to a world
+  /// object other than the excluded ones (and counted by `mask`).
+  struct NearSample {
+    int link = -1;
+    Vec3 p_W = Vec3::Zero();
+    RayCaster::NearestSurface nearest;
+  };
+  /// Every such sample at this pose (for contacts: call it once ClearanceTo
+  /// has found something within reach, it measures every candidate sample).
+  std::vector<NearSample> SamplesNear(std::span<const std::int32_t> exclude_object_ids, double within_m,
+                                      const SampleMask* mask = nullptr, const RayCaster* against = nullptr) const;
 
   /// Link shapes for scene.json.
   std::vector<LinkShapes> LinkGeometry() const;
@@ -74,13 +94,21 @@ class RobotInScene {
     std::vector<Vec3> p_W_ref;
   };
 
+  // ClearanceTo's memory for one (exclude list, mask): bounds per link
+  struct BoundsSlot {
+    std::vector<std::int32_t> exclude_ids;
+    const SampleMask* mask = nullptr;
+    const RayCaster* against = nullptr;
+    std::vector<ClearanceBounds> links;
+  };
+  BoundsSlot& SlotFor(std::span<const std::int32_t> exclude_object_ids, const SampleMask* mask,
+                      const RayCaster* against);
+
   const RobotModel& model_;
   RayCaster& caster_;
   std::vector<int> link_body_;  // body index of each link in the caster (-1: no shapes)
   std::vector<LinkSamples> link_samples_;
-  // ClearanceTo's memory: bounds per link, and the exclude list they hold for
-  std::vector<ClearanceBounds> clearance_bounds_;
-  std::vector<std::int32_t> bounds_exclude_ids_;
+  std::vector<BoundsSlot> bounds_slots_;  // the most recently used last
   std::vector<Pose> X_WL_;
 };
 

@@ -93,7 +93,17 @@ nlohmann::json RobotOutcomeJson(const Simulation& sim) {
   for (const StrategyEvent& event : sim.events()) {
     events.push_back({{"t_s", event.t_s}, {"event", event.event}, {"detail", event.detail}});
   }
+  nlohmann::json collisions = nlohmann::json::array();
+  for (const auto& c : outcome.collisions) {
+    collisions.push_back({{"t_s", c.t_s}, {"link", c.link}, {c.self ? "other_link" : "object", c.object},
+                          {"depth_m", c.depth_m}, {"p_W", {c.p_W.x(), c.p_W.y(), c.p_W.z()}}});
+  }
+  const Simulation::Outcome episode = sim.outcome();
   return {{"model", sim.robot()->model().source()},
+          {"outcome", episode.name},
+          {"outcome_t_s", episode.t_s},
+          {"outcome_detail", episode.detail},
+          {"collisions", collisions},
           {"strategy", sim.strategy() ? nlohmann::json(sim.strategy()->name()) : nlohmann::json(nullptr)},
           {"stopped", outcome.stopped},
           {"stop_t_s", NullUnless(outcome.stopped, outcome.stop_t_s)},

@@ -105,6 +105,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     strategy_ = std::move(strategy);
     feet_ = locomotion_->Feet();
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
+    contacts_ = std::make_unique<ContactFinder>(*world_->robot(), world_->ground_caster(), world_->ground_ids(), feet_);
     if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
     if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
       goal_m_ = scenario_.robot->waypoints_m.back();
@@ -151,6 +152,8 @@ void Simulation::Reset(std::uint64_t seed) {
   reader_->Reset();
   delivery_->Clear();
   outcome_ = RobotOutcome{};
+  contacts_now_.clear();
+  contacts_before_.clear();
   stop_pending_ = false;
   walking_since_t_s_ = 0;
   cannot_step_t_s_ = -std::numeric_limits<double>::infinity();
@@ -172,10 +175,17 @@ const SampleFrame& Simulation::Step() {
   if (locomotion_) {
     // every link at its pose of this very sample time
     state_ = locomotion_->Advance(frame_.t_s);
+    std::string unsafe_step;
     for (LocomotionEvent& event : locomotion_->TakeEvents()) {
-      if (event.event == "cannot_step") cannot_step_t_s_ = frame_.t_s;
+      if (event.event == "cannot_step") {
+        cannot_step_t_s_ = frame_.t_s;
+        unsafe_step = event.detail;
+        // under unsafe_steps: fall the step is taken, not refused: the fall is the event
+        if (scenario_.robot && scenario_.robot->unsafe_steps == UnsafeSteps::kFall) continue;
+      }
       event_log_->Log(std::move(event.event), std::move(event.detail));
     }
+    if (!unsafe_step.empty() && scenario_.robot && scenario_.robot->unsafe_steps == UnsafeSteps::kFall) Fall(unsafe_step);
     robot->Place(state_);
     world_->caster().Commit();
     frame_.robot = {.present = true,
@@ -189,14 +199,20 @@ const SampleFrame& Simulation::Step() {
   double clearance_m = std::numeric_limits<double>::infinity();
   runner_.Invoke([this] { reader_->Read(frame_, runner_); },
                  [&] {
-                   if (locomotion_) clearance_m = robot->ClearanceTo(world_->ground_ids(), outcome_.min_clearance_m);
+                   if (!locomotion_) return;
+                   clearance_m = robot->ClearanceTo(world_->ground_ids(), outcome_.min_clearance_m);
+                   // the clearance is exact when below the running minimum, else only bounded by it
+                   contacts_now_ = contacts_->Find(std::min(clearance_m, outcome_.min_clearance_m));
                  });
   if (delivery_->active()) delivery_->Deliver(frame_, delivered_);
   if (locomotion_) KnowRobot(state_, *robot, feet_, half_width_m_, knowledge_);
   FillObservation();
   // the map learns from what was delivered, before the strategy reads it
   if (terrain_map_) terrain_map_->Update(observation_);
-  if (locomotion_) UpdateRobot(clearance_m);
+  if (locomotion_) {
+    UpdateRobot(clearance_m);
+    UpdateContacts(contacts_now_);
+  }
   return frame_;
 }
 
@@ -249,6 +265,62 @@ void Simulation::UpdateRobot(double clearance_m) {
     outcome_.min_clearance_m = clearance_m;
     outcome_.min_clearance_t_s = frame_.t_s;
   }
+}
+
+void Simulation::Fall(const std::string& reason) {
+  if (outcome_.ended) return;
+  outcome_.fell = outcome_.ended = true;
+  outcome_.end_t_s = frame_.t_s;
+  outcome_.end_detail = "fell: " + reason;
+  event_log_->Log("fall", outcome_.end_detail);
+}
+
+void Simulation::UpdateContacts(const std::vector<Contact>& contacts) {
+  const auto same = [](const Contact& a, const Contact& b) {
+    return a.link == b.link && a.object_id == b.object_id && a.other_link == b.other_link;
+  };
+  const RobotModel& model = world_->robot()->model();
+  for (const Contact& contact : contacts) {
+    // a contact that lasts is one collision, logged when it begins
+    if (std::any_of(contacts_before_.begin(), contacts_before_.end(), [&](const Contact& c) { return same(c, contact); }))
+      continue;
+    RobotOutcome::Collision collision{.t_s = frame_.t_s,
+                                      .link = model.link_name(contact.link),
+                                      .object = contact.object_id >= 0 ? world_->object_name(contact.object_id)
+                                                                       : model.link_name(contact.other_link),
+                                      .self = contact.object_id < 0,
+                                      .depth_m = contact.depth_m,
+                                      .p_W = contact.p_W};
+    char detail[256];
+    std::snprintf(detail, sizeof detail, "%s %s %s, %.0f mm deep at (%.2f, %.2f, %.2f)", collision.link.c_str(),
+                  collision.self ? "touched its own" : "struck", collision.object.c_str(), 1000 * contact.depth_m,
+                  contact.p_W.x(), contact.p_W.y(), contact.p_W.z());
+    event_log_->Log("collision", detail);
+    outcome_.collisions.push_back(std::move(collision));
+    if (scenario_.robot && scenario_.robot->on_collision == OnCollision::kStop && !outcome_.ended) {
+      outcome_.collided = outcome_.ended = true;
+      outcome_.end_t_s = frame_.t_s;
+      outcome_.end_detail = std::string("collided: ") + detail;
+    }
+  }
+  contacts_before_ = contacts;
+}
+
+Simulation::Outcome Simulation::outcome() const {
+  if (outcome_.collided) return {"collided", outcome_.end_t_s, outcome_.end_detail};
+  // under on_collision: continue the walk went on, but the episode still collided
+  if (!outcome_.collisions.empty()) {
+    const RobotOutcome::Collision& first = outcome_.collisions.front();
+    return {"collided", first.t_s, "collided: " + first.link + (first.self ? " touched its own " : " struck ") +
+                                       first.object + " (on_collision: continue; " +
+                                       std::to_string(outcome_.collisions.size()) + " collisions in all)"};
+  }
+  if (outcome_.fell) return {"fell", outcome_.end_t_s, outcome_.end_detail};
+  if (outcome_.reached_goal) return {"reached_goal", outcome_.reached_goal_t_s, "reached the path's last waypoint"};
+  if (outcome_.stopped && outcome_.stop_reason == "strategy") return {"stopped", outcome_.stop_t_s, "stopped by its strategy, standing"};
+  if (outcome_.stopped && outcome_.stop_reason == "cannot_step")
+    return {"refused", outcome_.stop_t_s, "standing before a step its legs cannot take (unsafe_steps: refuse)"};
+  return {"time_up", frame_.t_s, "the episode's time ran out"};
 }
 
 void Simulation::UpdateStanding() {

@@ -22,6 +22,7 @@
 #include "core/parallel.h"
 #include "gait/locomotion.h"
 #include "scenario/scenario.h"
+#include "sim/contacts.h"
 #include "sim/delivery_queue.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"
@@ -49,8 +50,9 @@ class Simulation {
   /// sample 0 next, the robot at its start, nothing in flight, no outcome.
   void Reset(std::uint64_t seed);
 
-  /// True once every sample of the episode has been taken.
-  bool done() const { return next_sample_ >= sample_count_; }
+  /// True once every sample of the episode has been taken, or the episode
+  /// ended early: the robot collided (robot.on_collision: stop) or fell.
+  bool done() const { return next_sample_ >= sample_count_ || outcome_.ended; }
 
   /// Takes the next sample and returns it (valid until the next Step). Requires !done().
   const SampleFrame& Step();
@@ -103,7 +105,32 @@ class Simulation {
     double reached_goal_t_s = 0;
     double min_clearance_m = std::numeric_limits<double>::infinity();
     double min_clearance_t_s = 0;
+    /// Contacts of the robot's body with the world or itself (sim/contacts.h),
+    /// each logged when it begins: link, object or other link, depth, point.
+    struct Collision {
+      double t_s = 0;
+      std::string link;
+      std::string object;  ///< the scene object, or the other link of a self-collision
+      bool self = false;
+      double depth_m = 0;
+      Vec3 p_W = Vec3::Zero();
+    };
+    std::vector<Collision> collisions;
+    bool collided = false;  ///< a contact ended the episode (on_collision: stop)
+    bool fell = false;      ///< an unsafe step was taken (unsafe_steps: fall)
+    bool ended = false;     ///< the episode ended before its last sample (collided or fell)
+    double end_t_s = 0;
+    std::string end_detail;
   };
+  /// The episode's outcome as summary.json states it: reached_goal, stopped
+  /// (by its strategy, standing), collided, fell, refused (standing before an
+  /// unsafe step its legs refused) or time_up; with its time and a line for a person.
+  struct Outcome {
+    std::string name;
+    double t_s = 0;
+    std::string detail;
+  };
+  Outcome outcome() const;
   const RobotOutcome& robot_outcome() const { return outcome_; }
 
   /// The strategy's events and the episode's own (stopped, goal_reached), in time order.
@@ -117,6 +144,10 @@ class Simulation {
   void UpdateRobot(double clearance_m);
   // standing still: since when and why (RobotOutcome::stopped)
   void UpdateStanding();
+  // the contacts of this sample: logged when new, the end of the episode under on_collision: stop
+  void UpdateContacts(const std::vector<Contact>& contacts);
+  // an unsafe step under unsafe_steps: fall
+  void Fall(const std::string& reason);
   void FillObservation();
   StrategySetup MakeSetup() const;
   std::unique_ptr<TerrainMap> MakeTerrainMap() const;
@@ -147,6 +178,8 @@ class Simulation {
   Observation observation_;
   RobotOutcome outcome_;
   std::vector<StrategyEvent> events_;
+  std::unique_ptr<ContactFinder> contacts_;         // null without a robot
+  std::vector<Contact> contacts_now_, contacts_before_;  // this sample's and the last one's
   bool stop_pending_ = false;         // a stop command not resumed since
   double walking_since_t_s_ = 0;      // when the robot last started walking
   double cannot_step_t_s_ = -std::numeric_limits<double>::infinity();  // the last cannot_step event

@@ -39,6 +39,15 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   for (std::size_t id = 0; id < scenario.scene.objects.size(); ++id) {
     if (scenario.scene.objects[id].ground) ground_ids_.push_back(static_cast<std::int32_t>(id));
   }
+  // the ground alone, in a caster of its own: a line down through an obstacle
+  // resting on the floor meets the floor under it, even where the two touch
+  std::vector<BodyShape> ground_shapes;
+  for (const std::int32_t id : ground_ids_) {
+    const SceneObject& object = scenario.scene.objects[id];
+    ground_shapes.push_back({object.shape, object.X_WO, id});
+  }
+  ground_caster_.AddBody(std::move(ground_shapes), BodyKind::kWorld);
+  ground_caster_.Commit();
 
   // the robot: its links are bodies too, with object ids after the scene's
   if (robot_model != nullptr) {

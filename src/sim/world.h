@@ -35,8 +35,12 @@ class World {
 
   RayCaster& caster() { return caster_; }
   const RayCaster& caster() const { return caster_; }
-  /// The scene's true surface for the gait's footsteps (the robot transparent).
+  /// The scene's true ground for the gait's footsteps: the objects flagged
+  /// `ground` only (an obstacle is never stepped on).
   const TerrainQuery& terrain() const { return terrain_; }
+
+  /// The objects flagged `ground`, alone, in a caster of their own (object ids as in caster()).
+  const RayCaster& ground_caster() const { return ground_caster_; }
 
   /// Object ids: the scene's objects in scenario order, then the robot's links.
   const std::string& object_name(std::int32_t object_id) const { return object_names_.at(object_id); }
@@ -60,7 +64,8 @@ class World {
 
  private:
   RayCaster caster_;
-  CasterTerrain terrain_{caster_};
+  RayCaster ground_caster_;            // the objects flagged ground, alone: where feet may land
+  CasterTerrain terrain_{ground_caster_};
   std::vector<std::string> object_names_;
   std::int32_t first_robot_object_id_ = 0;
   std::vector<std::int32_t> ground_ids_;

@@ -209,3 +209,18 @@ def test_threads_do_not_change_the_readings():
         with proxsim.Simulation.builtin("paper", threads=threads) as sim:
             runs.append(np.array([sim.step()["readings"]["d_m"] for _ in range(200)]))
     np.testing.assert_array_equal(runs[0], runs[1])
+
+
+def test_a_strategy_that_steers_into_the_table_collides_naming_the_table_and_the_link():
+    # the paper's robot, its path turned toward the dining table (top at 0.75 m over (2.0, 1.3))
+    with proxsim.Simulation.builtin("paper", scenario_strategy=False) as sim:
+        while not sim.done:
+            if sim.step()["t_s"] == pytest.approx(0.5):
+                sim.robot.set_path([[2.0, 1.3]])
+        robot = sim.summary()["robot"]
+    assert robot["outcome"] == "collided", robot["outcome_detail"]
+    first = robot["collisions"][0]
+    assert first["object"].startswith("table"), first
+    assert first["link"] in {"pelvis", "left_thigh", "right_thigh", "left_tibia", "right_tibia", "left_foot",
+                             "right_foot"}, first
+    assert robot["outcome_t_s"] < 5.0  # the episode ended there, before its time ran out
