@@ -128,7 +128,7 @@ Outcome WalkAndCheck(const Robot& robot, double stride_m) {
     std::ofstream out(scenario);
     out << "proxsim: 1\nseed: 1\nduration_s: 40\nrate_hz: 100\nscene: {builtin: stairs}\nrobot:\n"
         << robot.robot_yaml << "  start: {xyz_m: [0, 0, 0], yaw_deg: 0}\n"
-        << "  gait: {stride_m: " << stride_m << "}\n"
+        << "  gait: {stride_m: " << stride_m << ", unsafe_steps: refuse}\n"
         << "  path: {waypoints_m: [[0, 0], [" << kPathEnd_x_m << ", 0]]}\n"
         << "sensors:\n  - {name: ahead, type: ideal, link: world, pose: {xyz_m: [0, 0, 2], rpy_deg: [0, 90, 0]}}\n";
   }

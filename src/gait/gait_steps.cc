@@ -66,7 +66,14 @@ double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
   const double s = Smoothstep(std::clamp(p / 0.5, 0.0, 1.0));
   const double pitch = CurveLegAngles(p + 0.5, Amplitude(plan, p)).pitch + plan.swing_start_pitch * (1 - s);
   // over uneven ground the foot is carried level (the toe up, off the edges), as the arc lifts it
-  return plan.terrain ? pitch * (1 - SwingArc::LiftShape(SwingProgress(p))) : pitch;
+  if (!plan.terrain) return pitch;
+  const double u = SwingProgress(p);
+  const double level = pitch * (1 - SwingArc::LiftShape(u));
+  if (!plan.swing_arc.hold_pitch || p < kDoubleSupportEnd) return level;
+  // or, once off the ground, it keeps its toe-off pitch until the carry starts,
+  // then levels as it travels
+  const double c = plan.swing_arc.CarryShape(u);
+  return plan.swing_arc.start_pitch_rad * (1 - c) + level * c;
 }
 
 Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {

@@ -217,6 +217,11 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
       y_min = std::min(y_min, p.y());
       y_max = std::max(y_max, p.y());
     }
+    // the faces at either end of the sole (a pitched foot's front face leads it into a riser)
+    for (const Vec3& p : points_P) {
+      if (p.x() >= toe - kSoleBand_m) g.toe_top_m = std::max(g.toe_top_m, p.z() - lowest);
+      if (p.x() <= heel + kSoleBand_m) g.heel_top_m = std::max(g.heel_top_m, p.z() - lowest);
+    }
     const Vec3& p_PA = p_P[2];
     g.sole_z_m = lowest - p_PA.z();
     g.heel_x_m = heel - p_PA.x();
@@ -315,13 +320,14 @@ LegAnglesRad BipedLegs::SolveAnkle(Side s, const Vec2xz& p_PA, double pitch) con
   return a;
 }
 
-LegAnglesRad BipedLegs::PitchWithinAnkleLimits(Side s, const LegAnglesRad& a) const {
+LegAnglesRad BipedLegs::PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, double margin_rad) const {
   const LegGeometry& g = leg(s);
   const RobotJoint& ankle = model_.joint(g.ankle_joint);
-  if (ankle.type != JointType::kRevolute || !(ankle.lower < ankle.upper)) return a;
+  if (ankle.type != JointType::kRevolute || !(ankle.lower + 2 * margin_rad < ankle.upper)) return a;
   // q_ankle = s_a·(θS − θS0 − ψ): the pitches at the two limits
   const double shank = (a.hip - a.knee) - g.shank0_rad;
-  const double at_lower = shank - ankle.lower / g.ankle_sign, at_upper = shank - ankle.upper / g.ankle_sign;
+  const double at_lower = shank - (ankle.lower + margin_rad) / g.ankle_sign,
+               at_upper = shank - (ankle.upper - margin_rad) / g.ankle_sign;
   LegAnglesRad out = a;
   out.pitch = std::clamp(a.pitch, std::min(at_lower, at_upper), std::max(at_lower, at_upper));
   return out;

@@ -61,6 +61,8 @@ struct LegGeometry {
   double sole_z_m = 0;       ///< sole below the ankle joint (< 0)
   double sole_y_m = 0;       ///< y of the sole's centre line in P
   double half_width_m = 0;   ///< half the sole's width
+  double toe_top_m = 0;      ///< the foot's front face: its highest point at the toe's x, above the sole
+  double heel_top_m = 0;     ///< its back face's, at the heel's x
   Vec3 p_L_heel = Vec3::Zero(), p_L_sole = Vec3::Zero(), p_L_toe = Vec3::Zero();  ///< in the foot link frame
   double leg_length_m = 0;   ///< hip joint above the sole, standing straight
   /// +1: the knee's URDF limits let it flex (knee > 0, the lower end moving
@@ -111,7 +113,9 @@ class BipedLegs {
   /// `a` with its foot pitch moved, if it must be, to the nearest pitch at
   /// which the ankle joint is within its URDF limits (hip and knee unchanged:
   /// a swing foot in the air may tilt, the ankle's position does not depend on it).
-  LegAnglesRad PitchWithinAnkleLimits(Side s, const LegAnglesRad& a) const;
+  /// `margin_rad` > 0 keeps it that far inside them (never outside: narrower
+  /// limits than the URDF's).
+  LegAnglesRad PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, double margin_rad = 0) const;
   /// Offset (x, z) of a foot point from the ankle at foot pitch 0.
   Vec2xz FootOffset(Side s, FootPoint which) const;
 
