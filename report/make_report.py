@@ -98,7 +98,7 @@ def main(argv=None):
         track = path.xy if has_robot else None
         jobs.append((lambda: terrain_figure(plt, terrain, track), "terrain"))
     for sensor in run.sensors:
-        jobs.append((lambda s=sensor: curve_figure(plt, s), f"curve_{_safe(sensor.name)}"))
+        jobs.append((lambda s=sensor: curve_figure(plt, s, run.outcome), f"curve_{_safe(sensor.name)}"))
         jobs.append((lambda s=sensor: profile_figure(plt, run, path, has_robot, s),
                      f"profile_{_safe(sensor.name)}"))
     _JOBS[:] = [(lambda j=j: save(j[0](), j[1])) for j in jobs]

@@ -116,6 +116,103 @@ TEST(BadInputTest, RobotMeshNotFound) {
                      "ROS_PACKAGE_PATH: ", "the URDF's folder and its ancestors: "});
 }
 
+TEST(BadInputTest, MissingPackagesOneLineEach) {
+  // four meshes of two packages that are nowhere: one line per package, not per mesh
+  const auto result = ExpectRefusedFile(
+      "missing_packages.yaml",
+      {"missing_packages.urdf: link 'pelvis' (visual): mesh 'package://gone_robot/meshes/pelvis.stl' not found: "
+       "package 'gone_robot' not found; searched robot.package_paths: ",
+       "(and 2 other meshes of package 'gone_robot')",
+       "mesh 'package://gone_hands/meshes/hand.stl' not found: package 'gone_hands' not found; searched",
+       "the URDF's folder and its ancestors: "});
+  EXPECT_NE(result.output.find("2 problems in the input"), std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("thigh.stl"), std::string::npos) << "a line per mesh:\n" << result.output;
+}
+
+TEST(BadInputTest, XacroIsNamedInOneLine) {
+  // a .urdf file that is xacro (its xmlns:xacro): one line, not the leg map's eight "no joint" lines
+  const auto result = ExpectRefusedFile(
+      "xacro_robot.yaml",
+      {"xacro_robot.urdf: this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)"});
+  EXPECT_NE(result.output.find("1 problem in the input"), std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("no joint"), std::string::npos) << result.output;
+  // the same through validate and inspect
+  for (const std::string command : {"validate " + kBadDir + "/xacro_robot.yaml", "inspect " + kBadDir + "/xacro_robot.urdf"}) {
+    const CommandResult other = RunProxsim(command);
+    EXPECT_EQ(other.exit_code, 2) << command << "\n" << other.output;
+    EXPECT_NE(other.output.find("this is xacro: expand it first"), std::string::npos) << other.output;
+  }
+}
+
+TEST(BadInputTest, StartOnABoxUnderTheFeet) {
+  // feet stand only on ground: the robot would start with its feet in the crate, refused naming it and the links
+  ExpectRefusedFile("start_on_crate.yaml",
+                    {"start_on_crate.yaml: robot.start: the robot starts inside object 'crate': links ",
+                     "'left_foot'", "'right_foot'", "`on: crate`"});
+  const CommandResult validate = RunProxsim("validate " + kBadDir + "/start_on_crate.yaml");
+  EXPECT_EQ(validate.exit_code, 2) << validate.output;
+  EXPECT_NE(validate.output.find("inside object 'crate'"), std::string::npos) << validate.output;
+}
+
+TEST(BadInputTest, StartAtTheTable) {
+  // under the table: its top cuts the thighs
+  ExpectRefusedFile("start_at_table.yaml",
+                    {"start_at_table.yaml: robot.start: the robot starts inside object 'table_top': links ",
+                     "'left_thigh'", "'right_thigh'"});
+}
+
+TEST(BadInputTest, StartInsideAColumn) {
+  // nothing to stand on below a start inside the column: the robot's links are in it
+  const auto result = ExpectRefusedFile(
+      "start_inside_column.yaml",
+      {"start_inside_column.yaml: robot.start: the robot starts inside object 'column': links 'pelvis', ",
+       "'left_tibia'", "reach into it", "start the robot clear of it"});
+  EXPECT_EQ(result.output.find("step down"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, StartWithALegInAMeshObject) {
+  // the cube mesh around the left knee: the left thigh and tibia are named, nothing else
+  const auto result = ExpectRefusedFile(
+      "start_into_mesh.yaml", {"start_into_mesh.yaml: robot.start: the robot starts inside object 'mesh_crate': "
+                               "links 'left_thigh', 'left_tibia' reach into it"});
+  EXPECT_EQ(result.output.find("right_"), std::string::npos) << result.output;
+}
+
+TEST(BadInputTest, StartOnAnObjectItIsNotAbove) {
+  ExpectRefusedFile("start_on_elsewhere.yaml",
+                    {"start_on_elsewhere.yaml: robot.start: on: 'crate', but the robot's feet at its start "
+                     "(3.000, 0.000) m stand on 'floor'; place the start above 'crate' or leave `on` out"});
+}
+
+TEST(BadInputTest, StartOnPurposeRuns) {
+  // the crate under the feet, named by robot.start.on: the robot starts on it and steps down (exit 0)
+  const auto out = FreshDir("start_on_purpose");
+  const CommandResult result = RunProxsim("run " + std::string(PROXSIM_TEST_DATA_DIR) +
+                                          "/cli/start_on_crate_on_purpose.yaml --out " + out.string() + " --no-report");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output.find("cannot_step"), std::string::npos) << result.output;
+  std::filesystem::remove_all(out);
+}
+
+TEST(BadInputTest, StartOnAnUnknownObject) {
+  ExpectRefusedFile("start_on_unknown.yaml",
+                    {"start_on_unknown.yaml:14: robot.start.on: no object 'crat' in the scene (did you mean 'crate'?)"});
+}
+
+TEST(BadInputTest, SensorInsideItsOwnLinkIsAWarning) {
+  // the same warning as a sensor inside a scene object; one mounted on its link's surface gets none
+  const auto out = FreshDir("bad_input_inside_link");
+  const CommandResult result =
+      RunProxsim("run " + kBadDir + "/sensor_inside_link.yaml --out " + out.string() + " --no-report");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("proxsim: warning: " + kBadDir +
+                               "/sensor_inside_link.yaml: sensor 'swallowed' is inside its own link 'left_tibia'"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(result.output.find("sensor 'mounted'"), std::string::npos) << result.output;
+  EXPECT_NE(testing::ReadFile(out / "summary.json").find("is inside its own link 'left_tibia'"), std::string::npos);
+}
+
 TEST(BadInputTest, LegMapThatDoesNotFitTheRobot) {
   ExpectRefusedFile(
       "bad_legs.yaml", {"builtin:biped: robot.joints_deg.neck_joint: the joint is not revolute",

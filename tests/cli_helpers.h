@@ -60,22 +60,41 @@ struct Csv {
   std::vector<std::map<std::string, std::string>> rows;
 };
 
+/// One CSV record as its fields, RFC 4180: a field in double quotes may hold
+/// commas and doubled quotes (proxsim quotes names that need it).
+inline std::vector<std::string> SplitCsvLine(const std::string& text) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
 inline Csv ReadCsv(const std::filesystem::path& path) {
   Csv csv;
   std::ifstream in(path);
   std::string line;
-  auto split = [](const std::string& text) {
-    std::vector<std::string> fields;
-    std::string field;
-    std::stringstream stream(text);
-    while (std::getline(stream, field, ',')) fields.push_back(field);
-    if (!text.empty() && text.back() == ',') fields.emplace_back();
-    return fields;
-  };
   if (!std::getline(in, line)) return csv;
-  csv.header = split(line);
+  csv.header = SplitCsvLine(line);
   while (std::getline(in, line)) {
-    const auto fields = split(line);
+    const auto fields = SplitCsvLine(line);
     std::map<std::string, std::string> row;
     for (std::size_t i = 0; i < csv.header.size() && i < fields.size(); ++i) row[csv.header[i]] = fields[i];
     csv.rows.push_back(std::move(row));

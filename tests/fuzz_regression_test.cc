@@ -21,6 +21,7 @@
 #include "scenario/scenario.h"
 #include "robot/robot_model.h"
 #include "scene/mesh_loader.h"
+#include "study/study_journal.h"
 
 namespace proxsim {
 namespace {
@@ -94,6 +95,28 @@ TEST(FuzzRegressionTest, Trajectory) {
   ReplayTarget("trajectory", [&](const std::string& text) {
     auto player = TrajectoryPlayer::FromCsvText(biped, text, "fuzz.csv");
     for (double t_s : {-1.0, 0.0, 0.01, 0.5, 1.0, 100.0}) player.Advance(t_s);
+  });
+}
+
+TEST(FuzzRegressionTest, Journal) {
+  // as fuzz/fuzz_journal.cc: every line against a study of 3 candidates, 2 hazards, 6 jobs
+  const JournalShape shape{6, 3, 2};
+  ReplayTarget("journal", [&](const std::string& text) {
+    std::istringstream lines(text);
+    bool refused = false;
+    for (std::string line; std::getline(lines, line);) {
+      const nlohmann::json json = nlohmann::json::parse(line, nullptr, false);
+      if (json.is_discarded() || json.contains("study")) continue;
+      try {
+        const JournalEntry entry = ParseJournalLine(json, shape);
+        EXPECT_LT(entry.job, shape.jobs);
+        ASSERT_EQ(entry.metrics.size(), shape.candidates);
+        for (const RunMetrics& m : entry.metrics) EXPECT_EQ(m.hazards.size(), shape.hazards);
+      } catch (const InputError&) {
+        refused = true;
+      }
+    }
+    if (refused) throw InputError("a line was refused");
   });
 }
 

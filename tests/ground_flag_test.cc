@@ -87,14 +87,17 @@ TEST(GroundFlagTest, AGroundThatIsNotTrueOrFalseIsRefusedAtItsLine) {
 
 // The biped standing on a 0.5 m thick box named `name` (its top at z = 0),
 // `ground_key` added to it, a wall's face 2 m ahead; a short walk of 0.4 s.
+// A box that is not ground is started on on purpose (`robot.start.on`): a
+// start on an object that is not ground is refused otherwise.
 Scenario StandingOn(const std::string& name, const std::string& ground_key) {
+  const std::string start = ground_key.empty() ? "  start: {on: " + name + "}\n" : "";
   return LoadScenarioText(
       "proxsim: 1\nduration_s: 0.4\nrate_hz: 50\n"
       "scene:\n"
       "  objects:\n"
       "    - {name: " + name + ", box: {size_m: [4, 3, 0.5]}, pose: {xyz_m: [0, 0, -0.25]}" + ground_key + "}\n"
       "    - {name: wall, box: {size_m: [0.1, 3, 2]}, pose: {xyz_m: [2.05, 0, 1]}}\n"
-      "robot:\n  model: builtin:biped\n  path: {waypoints_m: [[0, 0], [3, 0]]}\n"
+      "robot:\n  model: builtin:biped\n  path: {waypoints_m: [[0, 0], [3, 0]]}\n" + start +
       "sensors:\n  - {name: s, type: ideal, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.2]}}\n",
       name + ".yaml");
 }
@@ -113,14 +116,27 @@ Walked Walk(Scenario scenario) {
 }
 
 TEST(GroundFlagTest, TheClearanceLeavesOutTheDeclaredGroundNotWhatIsNamedFloor) {
-  // named floor_x, not declared: an obstacle the soles touch
-  const Walked floor_x = Walk(StandingOn("floor_x", ""));
-  EXPECT_TRUE(floor_x.ground_ids.empty());
-  EXPECT_LT(floor_x.min_clearance_m, 0.005);
   // named slab, declared ground: left out, the wall ahead is the nearest thing
   const Walked slab = Walk(StandingOn("slab", ", ground: true"));
   EXPECT_EQ(slab.ground_ids, std::vector<std::int32_t>{0});
   EXPECT_GT(slab.min_clearance_m, 1.0);
+  // named floor_x, not declared but started on on purpose (robot.start.on): the
+  // robot's ground for that run, left out the same way
+  const Walked floor_x = Walk(StandingOn("floor_x", ""));
+  EXPECT_EQ(floor_x.ground_ids, std::vector<std::int32_t>{0});
+  EXPECT_GT(floor_x.min_clearance_m, 1.0);
+  // a name is not a declaration: floor_y, beside the walk and not declared, is
+  // an obstacle to the clearance, 0.1 m from the feet's sides at most
+  Scenario beside = StandingOn("slab", ", ground: true");
+  SceneObject floor_y = beside.scene.objects[1];
+  floor_y.name = "floor_y";
+  floor_y.shape = Box{Vec3(2.0, 0.2, 0.02)};
+  floor_y.X_WO = Pose::Identity();
+  floor_y.X_WO.translation() = Vec3(0.0, 0.35, 0.01);
+  beside.scene.objects.push_back(floor_y);
+  const Walked with_floor_y = Walk(beside);
+  EXPECT_EQ(with_floor_y.ground_ids, std::vector<std::int32_t>{0});
+  EXPECT_LT(with_floor_y.min_clearance_m, 0.15);
 }
 
 }  // namespace

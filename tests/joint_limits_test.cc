@@ -23,10 +23,10 @@ TEST(JointLimits, TheBipedsUrdfLimitsAreRead) {
   // data/robots/biped.urdf: <limit lower="0.0" upper="2.4" effort="300" velocity="12"/>
   EXPECT_EQ(knee.lower, 0.0);
   EXPECT_EQ(knee.upper, 2.4);
-  EXPECT_EQ(knee.velocity_rad_s, 12.0);
-  EXPECT_EQ(m.joint(m.JointIndex("left_ankle_pitch")).velocity_rad_s, 8.0);
-  EXPECT_EQ(knee.effort_N_m, 300.0);
-  EXPECT_EQ(m.joint(m.JointIndex("left_ankle_pitch")).effort_N_m, 200.0);
+  EXPECT_EQ(knee.velocity, 12.0);
+  EXPECT_EQ(m.joint(m.JointIndex("left_ankle_pitch")).velocity, 8.0);
+  EXPECT_EQ(knee.effort, 300.0);
+  EXPECT_EQ(m.joint(m.JointIndex("left_ankle_pitch")).effort, 200.0);
 }
 
 TEST(JointLimits, KneeBendsTheWayItsLimitsAllow) {

@@ -5,14 +5,17 @@
 // (STL written by the test). The leg map reads its geometry from the URDF
 // (checked against numbers computed here), its joint values reproduce the
 // model's own forward kinematics, it walks with its loaded feet planted and
-// nothing under the floor, default stride and period scale with its legs, and
-// every kind of bad map is refused with a message that says which and why.
+// nothing under the floor, default stride and period scale with its legs,
+// every kind of bad map is refused with a message that says which and why,
+// and `proxsim inspect` finds its map from its geometry.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_helpers.h"
 #include "input_error_helpers.h"
@@ -286,6 +289,44 @@ TEST_F(LegMapTest, BadMapsAndHeldJointsAreRefusedSayingWhichAndWhy) {
                  {"robot.joints_deg.l_hip_yaww: no joint 'l_hip_yaww' in the URDF (did you mean 'l_hip_yaw'?)",
                   "robot.joints_deg.l_knee: the gait drives this joint",
                   "robot.joints_deg.r_hip_roll: 30° is outside the joint's limits [-17.19°, 17.19°]"});
+}
+
+// `proxsim inspect` (through the binary) finds the strider's map by axes and
+// heights, past the hip yaw before and the hip roll after the hip pitch, a
+// knee axis of the other sign and the ankle roll; its shin's front is the
+// cylinder's surface, 0.04 m ahead of the knee–ankle line, also when the
+// shin's shapes hang on a fixed link below the knee's.
+TEST_F(LegMapTest, InspectSuggestsTheMapByGeometry) {
+  const std::string urdf = WriteStrider(dir_);
+  const testing::CommandResult result = testing::RunProxsim("inspect " + urdf + " --json");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const nlohmann::json inspect = nlohmann::json::parse(result.output);
+  EXPECT_TRUE(inspect["legs_accepted"].get<bool>()) << inspect["legs_problems"].dump();
+  const auto legs = StriderLegs();
+  for (const auto& [side, leg] : {std::pair{"left", legs[0]}, std::pair{"right", legs[1]}}) {
+    EXPECT_EQ(inspect["legs"][side], (nlohmann::json{{"hip", leg.hip}, {"knee", leg.knee}, {"ankle", leg.ankle},
+                                                    {"foot", leg.foot}}))
+        << side;
+  }
+  EXPECT_EQ(inspect["shanks"]["left"]["link"], "l_shin");
+  for (const auto& spot : inspect["shanks"]["left"]["front_surface"]) {
+    // closed form in double (no ray caster): rounding only
+    EXPECT_NEAR(spot["xyz_m"][0].get<double>(), 0.04, 1e-9);
+    EXPECT_NEAR(spot["xyz_m"][2].get<double>(), -kShank_m * spot["fraction"].get<double>(), 1e-9);
+  }
+  // the shin's shapes on a fixed link below the knee's: that link is the shank
+  const std::string shell = R"(<link name="l_shin_shell"><visual><origin xyz="0 0 -0.19"/><geometry><cylinder radius="0.04" length="0.38"/></geometry></visual></link>
+  <joint name="l_shell_fixed" type="fixed"><parent link="l_shin"/><child link="l_shin_shell"/></joint>)";
+  const std::string bare_shin = Replace(
+      StriderUrdf(shell),
+      R"(<link name="l_shin"><visual><origin xyz="0 0 -0.19"/><geometry><cylinder radius="0.04" length="0.38"/></geometry></visual></link>)",
+      R"(<link name="l_shin"/>)");
+  const testing::CommandResult moved = testing::RunProxsim("inspect " + WriteStrider(dir_, bare_shin) + " --json");
+  ASSERT_EQ(moved.exit_code, 0) << moved.output;
+  const nlohmann::json moved_inspect = nlohmann::json::parse(moved.output);
+  EXPECT_EQ(moved_inspect["legs"]["left"]["knee"], "l_knee");
+  EXPECT_EQ(moved_inspect["shanks"]["left"]["link"], "l_shin_shell");
+  EXPECT_EQ(moved_inspect["shanks"]["left"]["front_surface"].size(), 3u);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // RobotModel: forward kinematics against closed-form trigonometry on a planar
 // two-link leg written here, the shipped biped's shape and size, and broken
 // URDFs refused with the file named.
+#include <chrono>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -137,6 +138,69 @@ TEST(RobotModel, BrokenUrdfsAreInputErrorsNamingTheFile) {
   EXPECT_NE(ErrorOf([] { RobotModel::FromUrdfFile("/nonexistent/robot.urdf"); }).find("/nonexistent/robot.urdf"),
             std::string::npos);
   EXPECT_NE(ErrorOf([] { RobotModel::Builtin("quadruped"); }).find("builtin:quadruped"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+TEST(RobotModel, XacroIsRecognisedByItsContentNotItsName) {
+  // an element of xacro's, or its namespace with a substitution: "this is xacro", one problem
+  for (const char* text :
+       {R"(<robot name="r"><xacro:macro name="m"/><link name="base"/></robot>)",
+        R"(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base">
+             <visual><geometry><box size="${w} 0.1 0.1"/></geometry></visual></link></robot>)"}) {
+    // the whole message: one line, nothing else
+    EXPECT_EQ(ErrorOf([&] { RobotModel::FromUrdfText(text, "r.urdf"); }),
+              "r.urdf: this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)");
+  }
+  // xacro's output may keep the namespace on a URDF with nothing left to expand: it loads
+  const RobotModel expanded = RobotModel::FromUrdfText(
+      R"(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base">
+           <visual><geometry><box size="0.2 0.1 0.1"/></geometry></visual></link></robot>)",
+      "expanded.urdf");
+  EXPECT_EQ(expanded.link_count(), 1);
+}
+
+TEST(RobotModel, JointLimitsKeepVelocityAndEffort) {
+  const RobotModel m = RobotModel::FromUrdfText(kTwoLink, "two_link.urdf");
+  const RobotJoint& knee = m.joint(m.JointIndex("knee"));
+  EXPECT_TRUE(knee.has_limits);
+  EXPECT_EQ(knee.upper, 2.5);
+  EXPECT_EQ(knee.velocity, 1.0);
+  EXPECT_EQ(knee.effort, 1.0);
+  EXPECT_FALSE(m.joint(m.JointIndex("ankle_fixed")).has_limits);
+}
+
+// Issue 23 (n): a 100,000-link URDF took 224 s (name lookups by linear scan,
+// and a joint-by-link double loop); the loader is now linear in links. Both
+// shapes a generator might produce: one long chain, and a wide tree.
+std::string GeneratedUrdf(int links, bool chain) {
+  std::string urdf = "<robot name=\"many\">\n";
+  for (int i = 0; i < links; ++i) urdf += "<link name=\"l" + std::to_string(i) + "\"/>\n";
+  for (int i = 1; i < links; ++i) {
+    const int parent = chain ? i - 1 : (i - 1) / 8;
+    urdf += "<joint name=\"j" + std::to_string(i) + "\" type=\"revolute\"><parent link=\"l" + std::to_string(parent) +
+            "\"/><child link=\"l" + std::to_string(i) + "\"/><axis xyz=\"0 0 1\"/>"
+            "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n";
+  }
+  return urdf + "</robot>\n";
+}
+
+TEST(RobotModel, AHundredThousandLinksLoad) {
+  for (const bool chain : {false, true}) {
+    SCOPED_TRACE(chain ? "a chain" : "a tree of fan-out 8");
+    const std::string urdf = GeneratedUrdf(100000, chain);
+    // (how long it takes is not asserted here: no test depends on timing; the
+    // quadratic loader would have made this test run for minutes)
+    const RobotModel model = RobotModel::FromUrdfText(urdf, "generated.urdf");
+    EXPECT_EQ(model.link_count(), 100000);
+    EXPECT_EQ(model.joint_count(), 99999);
+    EXPECT_EQ(model.LinkIndex("l99999"), 99999);
+    EXPECT_EQ(model.joint(model.JointIndex("j77")).child_link, model.LinkIndex("l77"));
+  }
 }
 
 }  // namespace

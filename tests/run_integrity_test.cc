@@ -7,6 +7,8 @@
 //  - the default run gives byte-identical files with --threads 1, 2 and 8, and
 //    so does a run with enough beam rays for the work to be shared out.
 #include <gtest/gtest.h>
+
+#include <sys/resource.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -184,22 +186,53 @@ TEST(RunIntegrityTest, UnwritableFolderIsAClearErrorWithNothingWritten) {
 }
 
 TEST(AtomicFileTest, FullDiskIsAnErrorAndLeavesNoFile) {
-  // NAME.tmp is a link to /dev/full: every write fails with ENOSPC once flushed
+  // a file-size limit of 1 MiB stands for a full disk (NAME.tmp can no longer
+  // be a link to /dev/full: AtomicFile never writes through a link): every
+  // write past it fails (EFBIG) once flushed
   const auto dir = FreshDir("full_disk");
   fs::create_directories(dir);
   const fs::path path = dir / "readings.csv";
-  fs::create_symlink("/dev/full", path.string() + ".tmp");
+  struct rlimit saved {};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto saved_handler = signal(SIGXFSZ, SIG_IGN);
+  struct rlimit small = saved;
+  small.rlim_cur = 1 << 20;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
   try {
     AtomicFile file(path.string());
     file.Write(std::string(3 << 20, 'x'));  // more than the buffer: fails in Write or in Commit
     file.Commit();
-    ADD_FAILURE() << "writing to a full disk did not throw";
+    ADD_FAILURE() << "writing past the limit did not throw";
   } catch (const std::runtime_error& error) {
-    EXPECT_NE(std::string(error.what()).find("No space left on device"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("File too large"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find(path.string() + ".tmp"), std::string::npos) << error.what();
   }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  signal(SIGXFSZ, saved_handler);
   EXPECT_FALSE(fs::exists(path));
   EXPECT_FALSE(fs::exists(fs::symlink_status(path.string() + ".tmp")));
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFileTest, APlantedLinkUnderTheTemporaryNameIsRefusedNotFollowed) {
+  // issue 23 (e): summary.json.tmp planted as a link made the run overwrite its target
+  const auto dir = FreshDir("planted_link");
+  fs::create_directories(dir);
+  { std::ofstream(dir / "precious.txt") << "the user's\n"; }
+  fs::create_symlink(dir / "precious.txt", dir / "summary.json.tmp");
+  EXPECT_THROW(WriteFileAtomically((dir / "summary.json").string(), "{}\n"), std::runtime_error);
+  EXPECT_EQ(ReadFile(dir / "precious.txt"), "the user's\n");
+  // a link under the final name is replaced, its target untouched
+  fs::remove(dir / "summary.json.tmp");
+  fs::create_symlink(dir / "precious.txt", dir / "summary.json");
+  WriteFileAtomically((dir / "summary.json").string(), "{}\n");
+  EXPECT_FALSE(fs::is_symlink(dir / "summary.json"));
+  EXPECT_EQ(ReadFile(dir / "precious.txt"), "the user's\n");
+  // a folder that is a link is never written through
+  fs::create_directories(dir / "elsewhere");
+  fs::create_directory_symlink(dir / "elsewhere", dir / "readings");
+  EXPECT_THROW(WriteFileAtomically((dir / "readings" / "t_s.npy").string(), "x"), std::runtime_error);
+  EXPECT_TRUE(fs::is_empty(dir / "elsewhere"));
   fs::remove_all(dir);
 }
 

@@ -428,8 +428,8 @@ TEST(ScenarioErrorTest, NonPositiveDurationRateSizesAndGait) {
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:8:", "scene.objects[2].cylinder.length_m:", "> 0 m, got 0"}));
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:9:", "scene.objects[3].mesh.scale:", "a number > 0", "got 0"}));
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:9:", "scene.objects[3].mesh.file:", "x.obj"}));  // still loaded
-  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:11:", "robot.gait.stride_m:", "> 0 m, got 0"}));
-  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:11:", "robot.gait.period_s:", "> 0 s, got -1"}));
+  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:11:", "robot.gait.stride_m:", "in [0.01, 3] m (a stride a walking robot can take), got 0"}));
+  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:11:", "robot.gait.period_s:", "in [0.1, 30] s (a gait cycle a walking robot can take), got -1"}));
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:12:", "robot.stop_distance_m:", "> 0 m, got -0.1"}));
 }
 

@@ -4,6 +4,7 @@
 // redoing a job; bad study files list every problem before any run.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -181,6 +182,88 @@ TEST_F(StudyCliTest, ResumingAnotherStudysJournalIsRefused) {
   const auto other = RunProxsim("study " + kExample + " --no-report --resume --out " + out);
   EXPECT_EQ(other.exit_code, 2) << other.output;
   EXPECT_NE(other.output.find("belongs to another study"), std::string::npos) << other.output;
+}
+
+TEST_F(StudyCliTest, AJournalLineOfTheWrongShapeIsAnInputErrorNotAnOutOfBoundsRead) {
+  // issue 23 (c): a line with another study's number of metrics once read past
+  // the end of a vector (study_answers.cc) on --resume
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "long.yaml") << kLongStudy;
+  const std::string study = (dir_ / "long.yaml").string();
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(RunProxsim("study " + study + " --no-report --threads 2 --out " + out.string()).exit_code, 0);
+  const std::string whole = ReadFile(out / "journal.jsonl");
+  const std::string fingerprint = whole.substr(0, whole.find('\n') + 1);
+  const char* const kBadLines[] = {
+      R"({"job": 0, "metrics": []})",
+      R"({"job": 0, "metrics": [{"h": [], "n": 1, "fa": 0, "self": 0, "graze": 0, "floor": 0}]})",
+      R"({"job": 100000, "metrics": []})",
+      R"({"job": -1, "metrics": []})",
+      R"([1, 2, 3])",
+  };
+  for (const char* line : kBadLines) {
+    SCOPED_TRACE(line);
+    std::ofstream(out / "journal.jsonl", std::ios::trunc) << fingerprint << line << "\n";
+    const auto resumed = RunProxsim("study " + study + " --no-report --threads 1 --resume --out " + out.string());
+    EXPECT_EQ(resumed.exit_code, 2) << resumed.output;
+    EXPECT_NE(resumed.output.find("journal.jsonl:2: journal line"), std::string::npos) << resumed.output;
+  }
+}
+
+TEST_F(StudyCliTest, TwoStudiesIntoOneFolderAtOnceTheSecondFailsNamingTheFirst) {
+  // issue 23 (h): both once exited 0, their journals spliced
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "long.yaml") << kLongStudy;
+  const std::string study = (dir_ / "long.yaml").string();
+  const fs::path out = dir_ / "out";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string out_arg = out.string();
+    const int null_fd = open("/dev/null", O_WRONLY);
+    dup2(null_fd, STDOUT_FILENO);
+    dup2(null_fd, STDERR_FILENO);
+    execl(PROXSIM_BINARY, PROXSIM_BINARY, "study", study.c_str(), "--no-report", "--threads", "1", "--out",
+          out_arg.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (std::chrono::steady_clock::now() < deadline && !fs::exists(out / "journal.jsonl"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const auto second = RunProxsim("study " + study + " --no-report --threads 1 --out " + out.string());
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the first study failed";
+  EXPECT_EQ(second.exit_code, 2) << second.output;
+  EXPECT_NE(second.output.find("in use by pid " + std::to_string(pid) + ": proxsim study"), std::string::npos)
+      << second.output;
+  EXPECT_EQ(LineCount(out / "journal.jsonl"), 25u) << "one study's 24 jobs and its fingerprint, nothing spliced";
+}
+
+TEST_F(StudyCliTest, AStudyTooLargeIsRefusedBeforeAnythingIsBuilt) {
+  // issue 23 (m): 1.9 million candidates ended in std::bad_alloc; the size is now counted first
+  fs::create_directories(dir_);
+  const std::string base = "proxsim_study: 1\nbase: " + std::string(PROXSIM_SOURCE_DIR) +
+                           "/data/scenarios/paper_dining_room.yaml\n";
+  std::ofstream(dir_ / "huge.yaml") << base << "candidates:\n  axes:\n    type: [laser, ultrasonic]\n"
+                                    << "    link: left_tibia\n    along_m: {from: -0.4, to: 0, step: 0.0004}\n"
+                                    << "    pitch_deg: {from: 0, to: 94, step: 0.1}\n";
+  const auto huge = RunCommand("timeout -s KILL 60 " + std::string(PROXSIM_BINARY) + " study " +
+                               (dir_ / "huge.yaml").string() + " --out " + (dir_ / "out").string());
+  EXPECT_EQ(huge.exit_code, 2) << huge.output;
+  EXPECT_NE(huge.output.find("the axes make 1.884e+06 candidates (2 types x 1 links x 1001"), std::string::npos) << huge.output;
+  EXPECT_NE(huge.output.find("--allow-large"), std::string::npos) << huge.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+
+  // 100 candidates x 1 scene x 20000 seeds = 2e6 runs
+  std::ofstream(dir_ / "many_runs.yaml") << base << "candidates:\n  axes:\n    type: laser\n    link: left_tibia\n"
+                                         << "    pitch_deg: {from: 0, to: 99, step: 1}\n"
+                                         << "seeds: {from: 1, to: 20000}\n";
+  const auto runs = RunCommand("timeout -s KILL 60 " + std::string(PROXSIM_BINARY) + " study " +
+                               (dir_ / "many_runs.yaml").string() + " --out " + (dir_ / "out").string());
+  EXPECT_EQ(runs.exit_code, 2) << runs.output;
+  EXPECT_NE(runs.output.find("= 2000000 runs; expected at most 1000000 (pass --allow-large"), std::string::npos)
+      << runs.output;
 }
 
 TEST_F(StudyCliTest, BadStudiesListEveryProblemBeforeAnyRun) {

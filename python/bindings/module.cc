@@ -9,6 +9,12 @@
 // `problems` lists the CLI's messages; a wrong value (threads < 1, a stride
 // <= 0, a malformed path) raises ValueError; a step after the last sample or
 // after close() raises RuntimeError. Nothing here aborts the interpreter.
+//
+// Threads: every method of a Simulation (and of its Robot) holds the object's
+// own mutex, so one Simulation shared by several threads is safe: a second
+// call made while another thread is inside step() waits for that step to end
+// (with the GIL released while it waits, so the stepping thread can finish).
+// Calls are serialised, not interleaved; one Simulation per thread is faster.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -17,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -38,6 +45,51 @@ using Clock = std::chrono::steady_clock;
 
 // proxsim.InputError, created at import and raised for every InputError
 PyObject* g_input_error = nullptr;
+
+// An integer argument read by hand: pybind11's own conversion answers an
+// out-of-range int with a TypeError that names neither the argument nor the range.
+std::optional<std::uint64_t> SeedArgument(const py::object& value, const std::string& name) {
+  if (value.is_none()) return std::nullopt;
+  if (!PyLong_Check(value.ptr()) || PyBool_Check(value.ptr())) {
+    throw py::type_error(name + ": expected an int in [0, 2**64 - 1] or None, got " +
+                         py::repr(value).cast<std::string>());
+  }
+  const unsigned long long seed = PyLong_AsUnsignedLongLong(value.ptr());
+  if (PyErr_Occurred() != nullptr) {
+    PyErr_Clear();
+    throw py::value_error(name + ": expected an int in [0, 2**64 - 1], got " + py::repr(value).cast<std::string>());
+  }
+  return seed;
+}
+
+int ThreadsArgument(const py::object& value) {
+  constexpr long kMaxThreads = 256;  // as the CLI's --threads
+  if (!PyLong_Check(value.ptr()) || PyBool_Check(value.ptr())) {
+    throw py::type_error("threads: expected an int in [1, 256], got " + py::repr(value).cast<std::string>());
+  }
+  int overflow = 0;
+  const long threads = PyLong_AsLongAndOverflow(value.ptr(), &overflow);
+  if (overflow != 0 || threads < 1 || threads > kMaxThreads) {
+    throw py::value_error("threads: expected an int in [1, 256], got " + py::repr(value).cast<std::string>());
+  }
+  return static_cast<int>(threads);
+}
+
+// Takes a Simulation's mutex for the current call. Called with the GIL held:
+// when another thread holds the mutex (inside step(), GIL released), waits
+// for it with the GIL released, or the two threads would deadlock.
+class ObjectLock {
+ public:
+  explicit ObjectLock(std::mutex& mutex) : lock_(mutex, std::try_to_lock) {
+    if (!lock_.owns_lock()) {
+      py::gil_scoped_release release;
+      lock_.lock();
+    }
+  }
+
+ private:
+  std::unique_lock<std::mutex> lock_;
+};
 
 py::array_t<double> Vector(const Vec3& v) {
   py::array_t<double> a(3);
@@ -67,10 +119,19 @@ py::object JsonToPython(const nlohmann::json& json) {
 // Commands for scripts: the simulation's own RobotCommands
 class PyRobot {
  public:
-  explicit PyRobot(RobotCommands* commands) : commands_(commands) {}
-  void Stop() { commands_->Stop(); }
-  void Resume() { commands_->Resume(); }
-  void SetStride(double stride_m) { commands_->SetStride(stride_m); }
+  PyRobot(RobotCommands* commands, std::mutex* mutex) : commands_(commands), mutex_(mutex) {}
+  void Stop() {
+    ObjectLock lock(*mutex_);
+    commands_->Stop();
+  }
+  void Resume() {
+    ObjectLock lock(*mutex_);
+    commands_->Resume();
+  }
+  void SetStride(double stride_m) {
+    ObjectLock lock(*mutex_);
+    commands_->SetStride(stride_m);
+  }
   void SetPath(const py::object& waypoints) {
     // any sequence of [x, y] pairs, or an (n, 2) array
     const py::array_t<double, py::array::c_style | py::array::forcecast> array(waypoints);
@@ -80,11 +141,13 @@ class PyRobot {
     std::vector<Vec2> path;
     const auto a = array.unchecked<2>();
     for (py::ssize_t i = 0; i < a.shape(0); ++i) path.emplace_back(a(i, 0), a(i, 1));
+    ObjectLock lock(*mutex_);
     commands_->SetPath(std::move(path));
   }
 
  private:
   RobotCommands* commands_;
+  std::mutex* mutex_;  ///< the owning Simulation's: commands change what a step does
 };
 
 class PySimulation {
@@ -92,13 +155,12 @@ class PySimulation {
   PySimulation(Scenario scenario, std::optional<std::uint64_t> seed, int threads, std::optional<std::string> out,
                bool scenario_strategy)
       : out_dir_(out.value_or("")), threads_(threads) {
-    if (threads < 1) throw std::invalid_argument("threads must be >= 1, got " + std::to_string(threads));
     if (seed) scenario.seed = *seed;
     // a script that drives the robot itself drops the scenario's strategy
     if (!scenario_strategy && scenario.robot) scenario.robot->strategy.reset();
     initial_seed_ = scenario.seed;
     sim_ = std::make_unique<Simulation>(std::move(scenario), threads);
-    if (sim_->commands() != nullptr) robot_ = std::make_unique<PyRobot>(sim_->commands());
+    if (sim_->commands() != nullptr) robot_ = std::make_unique<PyRobot>(sim_->commands(), &mutex_);
     if (sim_->robot() != nullptr) {
       const RobotModel& model = sim_->robot()->model();
       for (int j = 0; j < model.joint_count(); ++j)
@@ -107,18 +169,27 @@ class PySimulation {
     StartRecording();
   }
 
-  static std::unique_ptr<PySimulation> FromFile(const std::string& path, std::optional<std::uint64_t> seed,
-                                                int threads, std::optional<std::string> out, bool scenario_strategy) {
-    return std::make_unique<PySimulation>(LoadScenarioFile(path), seed, threads, std::move(out), scenario_strategy);
+  static std::unique_ptr<PySimulation> FromFile(const std::string& path, const py::object& seed,
+                                                const py::object& threads, std::optional<std::string> out,
+                                                bool scenario_strategy) {
+    // the integers first: a bad one is named before a long load
+    const auto seed_value = SeedArgument(seed, "seed");
+    const int thread_count = ThreadsArgument(threads);
+    return std::make_unique<PySimulation>(LoadScenarioFile(path), seed_value, thread_count, std::move(out),
+                                          scenario_strategy);
   }
 
-  static std::unique_ptr<PySimulation> Builtin(const std::string& name, std::optional<std::uint64_t> seed,
-                                               int threads, std::optional<std::string> out, bool scenario_strategy) {
-    return std::make_unique<PySimulation>(LoadBuiltinScenario(name), seed, threads, std::move(out),
+  static std::unique_ptr<PySimulation> Builtin(const std::string& name, const py::object& seed,
+                                               const py::object& threads, std::optional<std::string> out,
+                                               bool scenario_strategy) {
+    const auto seed_value = SeedArgument(seed, "seed");
+    const int thread_count = ThreadsArgument(threads);
+    return std::make_unique<PySimulation>(LoadBuiltinScenario(name), seed_value, thread_count, std::move(out),
                                           scenario_strategy);
   }
 
   py::dict Step() {
+    ObjectLock lock(mutex_);
     if (closed_) throw std::runtime_error("step: the simulation is closed");
     if (sim_->done()) {
       throw std::runtime_error("step: every sample of the episode has been taken (sim.done); call reset() for another");
@@ -133,6 +204,7 @@ class PySimulation {
   }
 
   py::dict Truth() const {
+    ObjectLock lock(mutex_);
     const SampleFrame& frame = sim_->frame();
     const std::size_t n = frame.sensors.size();
     py::list status, object;
@@ -170,18 +242,24 @@ class PySimulation {
     return truth;
   }
 
-  void Reset(std::optional<std::uint64_t> seed) {
+  void Reset(const py::object& seed_argument) {
+    const std::optional<std::uint64_t> seed = SeedArgument(seed_argument, "reset: seed");
+    ObjectLock lock(mutex_);
     if (closed_) throw std::runtime_error("reset: the simulation is closed");
     recorder_.reset();  // an unfinished episode's files are dropped (their temporary names removed)
     sim_->Reset(seed.value_or(initial_seed_));
     StartRecording();
   }
 
-  py::object Summary() const { return JsonToPython(recorder_->Summary(!sim_->done())); }
+  py::object Summary() const {
+    ObjectLock lock(mutex_);
+    return JsonToPython(recorder_->Summary(!sim_->done()));
+  }
 
   // The terrain map as the robot has built it so far (what a strategy reads):
   // dense float32 arrays over its tiles, NaN where unknown, and its hazards.
   py::object TerrainMapDict() const {
+    ObjectLock lock(mutex_);
     const TerrainMap* map = sim_->terrain_map();
     if (map == nullptr) return py::none();
     const ElevationGrid& grid = map->grid();
@@ -230,19 +308,33 @@ class PySimulation {
   }
 
   void Close() {
+    ObjectLock lock(mutex_);
     if (closed_) return;
     closed_ = true;
     if (out_dir_.empty()) return;
     const double loop_wall_s = samples_ > 0 ? std::chrono::duration<double>(Clock::now() - loop_start_).count() : 0.0;
     recorder_->Finish(!sim_->done());
-    WriteTimings(out_dir_, std::chrono::duration<double>(Clock::now() - start_).count(), loop_wall_s, threads_,
+    WriteTimings(recorder_->out_dir(), std::chrono::duration<double>(Clock::now() - start_).count(), loop_wall_s, threads_,
                  recorder_->samples(), sim_->scenario().rate_hz);
+    recorder_->ReleaseFolder();  // written: another run may take the folder
   }
 
-  bool done() const { return sim_->done(); }
-  double t_s() const { return sim_->frame().t_s; }
-  std::int64_t sample_count() const { return sim_->sample_count(); }
-  std::uint64_t seed() const { return sim_->scenario().seed; }
+  bool done() const {
+    ObjectLock lock(mutex_);
+    return sim_->done();
+  }
+  double t_s() const {
+    ObjectLock lock(mutex_);
+    return sim_->frame().t_s;
+  }
+  std::int64_t sample_count() const {
+    ObjectLock lock(mutex_);
+    return sim_->sample_count();
+  }
+  std::uint64_t seed() const {
+    ObjectLock lock(mutex_);
+    return sim_->scenario().seed;
+  }
   py::object robot(py::object self) const {
     // the commands object lives as long as the simulation that owns it
     return robot_ ? py::cast(robot_.get(), py::return_value_policy::reference_internal, self) : py::none();
@@ -331,6 +423,7 @@ class PySimulation {
     return robot;
   }
 
+  mutable std::mutex mutex_;  ///< one call at a time (see the file comment)
   std::unique_ptr<Simulation> sim_;
   ObservationKeys keys_;
   std::unique_ptr<PyRobot> robot_;

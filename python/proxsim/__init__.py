@@ -7,6 +7,11 @@
     sim.robot.stop()                 # commands take effect from the next step
     sim.truth()                      # the truth, for analysis only
 
+Threads: one Simulation may be shared by threads; each call holds the
+object's lock, and a second call made while another thread is inside step()
+waits for it (docs/trust.md). With out=DIR the folder is locked until close().
+Out-of-range seed or threads raise ValueError naming the argument.
+
 See docs/strategies.md for the whole contract, and proxsim.WalkEnv for a
 Gymnasium-style environment.
 """

@@ -1,6 +1,6 @@
 """The paper's comparison (Figs 8–15 side by side): one column per sensor type
 (ideal, laser, ultrasonic, reflectance), the distance curve above the profile."""
-from .curve_figure import draw_curve
+from .curve_figure import OUTCOME_COLORS, draw_curve
 from .figure_legend import fit_bottom_legend
 from .profile_figure import draw_profile, object_legend_handles
 from .run_data import STATUSES
@@ -27,7 +27,7 @@ def paper_figure(plt, run, path, has_robot):
     fig, axes = plt.subplots(2, n, figsize=(width_in, plots_in), squeeze=False)
     ids = set()
     for j, sensor in enumerate(cols):
-        draw_curve(axes[0, j], sensor, compact=True)
+        draw_curve(axes[0, j], sensor, compact=True, outcome=run.outcome)
         ids |= draw_profile(axes[1, j], run, path, has_robot, sensor, compact=True)
         axes[0, j].set_title(f"{TYPE_LABELS.get(sensor.type, sensor.type)}\n{sensor.name}", fontsize=10)
         axes[1, j].set_title(f"profile: {sensor.name}", fontsize=10)
@@ -37,6 +37,9 @@ def paper_figure(plt, run, path, has_robot):
     status_handles.append(Line2D([], [], color="#222222", lw=0.8, label="noise-free"))
     status_handles.append(Line2D([], [], color="#b03030", ls="--", lw=0.9, label="d_max"))
     status_handles.append(Line2D([], [], color="#777777", lw=0.6, label="sensor track"))
+    if run.outcome and run.outcome["name"] in OUTCOME_COLORS:
+        status_handles.append(Line2D([], [], color=OUTCOME_COLORS[run.outcome["name"]], ls="-.", lw=1.1,
+                                     label=f"{run.outcome['name'].replace('_', ' ')} at {run.outcome['t_s']:.2f} s"))
     legend_in = fit_bottom_legend(fig, status_handles + object_legend_handles(run, ids))
     # the legend's rows below the plots: the figure grows by them
     title_in, xlabel_in = 0.95, 0.55

@@ -47,16 +47,29 @@ class Run:
     poses: dict              # link name -> (t_s N, p N×3, quat_wxyz N×4); empty when no robot
     profile: dict            # x, y, z, sensor, t_s, object: 1-D arrays (detections, world frame)
     events: list = None      # summary.json robot.events: [{t_s, event, detail}], [] without a robot
+    collisions: list = None  # summary.json robot.collisions: [{t_s, link, object | other_link, depth_m, p_W}]
+    outcome: dict = None     # summary.json robot.{outcome, outcome_t_s, outcome_detail}; None without a robot
 
 
-def _read_events(out_dir):
-    """The strategy's and the episode's events, from summary.json (none when absent)."""
+def _read_robot(out_dir):
+    """summary.json's robot section ({} without a robot, or when the summary cannot be read)."""
     try:
         with open(os.path.join(out_dir, "summary.json")) as f:
-            robot = json.load(f).get("robot") or {}
+            return json.load(f).get("robot") or {}
     except (OSError, ValueError):
-        return []
+        return {}
+
+
+def _read_events(robot):
+    """The strategy's and the episode's events."""
     return list(robot.get("events") or [])
+
+
+def _read_outcome(robot):
+    """How the episode ended: {name, t_s, detail}, or None (no robot, or a summary from before outcomes)."""
+    if "outcome" not in robot:
+        return None
+    return {"name": robot["outcome"], "t_s": robot.get("outcome_t_s"), "detail": robot.get("outcome_detail", "")}
 
 
 def _floats(rows, key):
@@ -290,5 +303,7 @@ def _read_profile(out_dir):
 def load_run(out_dir):
     """Reads a finished run; raises RunError naming the file when one is unreadable."""
     scene = _read_scene(out_dir)
+    robot = _read_robot(out_dir)
     return Run(out_dir=out_dir, scene=scene, sensors=_read_readings(out_dir, scene),
-               poses=_read_poses(out_dir), profile=_read_profile(out_dir), events=_read_events(out_dir))
+               poses=_read_poses(out_dir), profile=_read_profile(out_dir), events=_read_events(robot),
+               collisions=list(robot.get("collisions") or []), outcome=_read_outcome(robot))

@@ -104,6 +104,7 @@ def viewer_data(run, terrain=None):
         "sensors": sensors,
         "profile": profile,
         "events": [{"t": e["t_s"], "event": e["event"], "detail": e.get("detail", "")} for e in (run.events or [])],
+        "collisions": [{"t": c["t_s"], "link": c["link"], "p": c["p_W"]} for c in (run.collisions or [])],
         "terrain": terrain_viewer_data(terrain),
     }
 

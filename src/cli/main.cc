@@ -1,6 +1,7 @@
 // The proxsim command line (docs/cli.md):
 //   proxsim run [SCENARIO.yaml] [--out DIR] [--seed N] [--threads N]
 //   proxsim validate SCENARIO.yaml
+//   proxsim inspect ROBOT [--json]   (a robot's links, joints and leg map, docs/robots.md)
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
 //   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
@@ -9,8 +10,11 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <charconv>
+#include <memory>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -19,6 +23,8 @@
 
 #include "bench/bench_suite.h"
 #include "core/input_error.h"
+#include "inspect_command.h"
+#include "core/output_folder.h"
 #include "output/readings_columns.h"
 #include "output/run_manifest.h"
 #include "scenario/scenario.h"
@@ -41,6 +47,20 @@ static_assert(std::atomic<int>::is_always_lock_free, "written from a signal hand
 
 extern "C" void OnStopSignal(int signal_number) { g_stop_signal.store(signal_number); }
 
+// While a run loads (the scenario, the robot, the meshes: seconds for a large
+// file), nothing has been written: a stop signal ends the process at once,
+// with the exit code a completed interruption would give. _exit is
+// async-signal-safe; no destructor needs to run.
+extern "C" void OnSignalWhileLoading(int signal_number) { _exit(128 + signal_number); }
+
+void InstallLoadingHandlers() {
+  struct sigaction action {};
+  action.sa_handler = OnSignalWhileLoading;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
 void InstallStopHandlers() {
   struct sigaction action {};
   action.sa_handler = OnStopSignal;
@@ -61,18 +81,38 @@ proxsim::Scenario LoadScenarioArgument(const std::string& path) {
   return path.empty() ? proxsim::LoadBuiltinScenario("paper") : proxsim::LoadScenarioFile(path);
 }
 
-int Run(const std::string& scenario_path, const std::string& out_dir, std::optional<std::uint64_t> seed,
-        int threads, bool report, const std::string& format) {
+// --seed as text, read strictly: CLI11 turned -1 and 2^64 into 2^64 - 1
+std::optional<std::uint64_t> ParseSeed(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) {
+    throw proxsim::InputError("--seed: expected a whole number in [0, 18446744073709551615], got " + text);
+  }
+  return value;
+}
+
+// --out: refused at once when empty (it once printed "outputs in /" and wrote nothing)
+void CheckOutArgument(const std::string& out_dir) {
+  if (out_dir.empty()) throw proxsim::InputError("--out: an empty path; give the folder for the outputs");
+}
+
+int Run(const std::string& scenario_path, const std::string& out_dir, const std::string& seed_text, int threads,
+        bool report, const std::string& format, bool force) {
+  CheckOutArgument(out_dir);
+  const std::optional<std::uint64_t> seed = ParseSeed(seed_text);
+  InstallLoadingHandlers();  // a stop signal while loading ends the process at once
   proxsim::Scenario scenario = LoadScenarioArgument(scenario_path);
   if (seed) scenario.seed = *seed;
   proxsim::RunOptions options;
   options.out_dir = out_dir;
   options.threads = threads;
   options.format = format == "npy" ? proxsim::ReadingsFormat::kNpy : proxsim::ReadingsFormat::kCsv;
+  options.force = force;
   options.progress = isatty(STDERR_FILENO) != 0;
   options.stop_signal = &g_stop_signal;
   options.warn = [](const std::string& warning) { std::fprintf(stderr, "proxsim: warning: %s\n", warning.c_str()); };
-  InstallStopHandlers();
+  options.on_loaded = InstallStopHandlers;  // from here on a stop commits what was written
   const proxsim::RunResult result = proxsim::RunScenario(scenario, options);
   if (result.interrupted) {
     const int signal_number = g_stop_signal.load();
@@ -148,14 +188,18 @@ int Validate(const std::string& scenario_path) {
   return 0;
 }
 
-int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report) {
-  const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path);
+int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
+          bool force, bool allow_large) {
+  CheckOutArgument(out_dir);
+  const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, allow_large);
   bool writer = false;
+  std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
   const proxsim::StudyResults results = proxsim::RunStudy(
-      study, {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true},
+      study,
+      {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true, .force = force, .folder = &folder},
       &writer);
   if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
-  const nlohmann::json selection = proxsim::WriteStudyAnswers(study, results, out_dir);
+  const nlohmann::json selection = proxsim::WriteStudyAnswers(study, results, folder->path());
   std::printf("proxsim study: %s — %zu runs\n", study_path.c_str(),
               study.candidates.size() * study.variants.size() * study.seeds.size());
   std::printf("best %d sensors (greedy, hazards covered then lead, over %zu items):\n", study.select_sensors,
@@ -187,13 +231,16 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", PROXSIM_VERSION);
 
   std::string scenario_path, out_dir = "proxsim-out";
-  std::optional<std::uint64_t> seed;
+  std::string seed;  // parsed by ParseSeed: CLI11 wraps -1 and 2^64 round
   int threads = 1;
   CLI::App* run = app.add_subcommand("run", "run a scenario (default: the paper's experiment)");
   run->add_option("scenario", scenario_path, "scenario YAML file; none runs the built-in paper experiment")
       ->check(CLI::ExistingFile);
   run->add_option("--out", out_dir, "output folder")->capture_default_str();
-  run->add_option("--seed", seed, "seed of the sensor noise (overrides the scenario's)");
+  run->add_option("--seed", seed, "seed of the sensor noise, 0 to 2^64-1 (overrides the scenario's)");
+  bool run_force = false;
+  run->add_flag("--force", run_force,
+                "write into a non-empty folder that holds no previous run (its files are never removed)");
   run->add_option("--threads", threads, "ray-casting threads")->check(CLI::Range(1, 256))->capture_default_str();
   bool no_report = false;
   run->add_flag("--no-report", no_report, "skip the figures and the viewer (the data files are still written)");
@@ -231,10 +278,22 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 256));
   study->add_flag("--resume", study_resume, "finish a study that was stopped, keeping the runs it had finished");
   study->add_flag("--no-report", study_no_report, "skip the figures and the HTML page");
+  bool study_force = false, study_allow_large = false;
+  study->add_flag("--force", study_force,
+                  "write into a non-empty folder that holds no previous study (its files are never removed)");
+  study->add_flag("--allow-large", study_allow_large,
+                  "run a study beyond the size bounds (10000 candidates, 1000000 runs; docs/studies.md)");
 
   std::string validate_path;
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
   validate->add_option("scenario", validate_path, "scenario YAML file")->required();
+
+  std::string inspect_target;
+  bool inspect_json = false;
+  CLI::App* inspect = app.add_subcommand(
+      "inspect", "list a robot's links, sizes, joints and limits, and suggest its leg map and shank sensor spots");
+  inspect->add_option("robot", inspect_target, "a URDF file, a scenario file (its robot) or builtin:biped")->required();
+  inspect->add_flag("--json", inspect_json, "print one JSON object (keys: docs/robots.md)");
 
   CLI::App* columns = app.add_subcommand("columns", "print the readings' columns (name, type, unit, meaning) as a Markdown table");
 
@@ -246,9 +305,12 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format);
+    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format, run_force);
     if (*bench && !bench_from.empty()) {
       std::string report;
+      // a regular file only: a FIFO would block the read for ever
+      if (std::error_code ec; !std::filesystem::is_regular_file(bench_from, ec))
+        throw proxsim::InputError(bench_from + ": not a regular file; expected the output of `proxsim bench --json`");
       try {
         std::ifstream saved(bench_from);
         report = proxsim::bench::BenchReport(nlohmann::json::parse(saved));
@@ -283,14 +345,19 @@ int main(int argc, char** argv) {
                                    "(or another) to get a consistent set");
         throw proxsim::InputError(lines);
       }
+      // redrawing replaces report/: hold the folder against a run into it meanwhile
+      const proxsim::OutputFolder folder(plot_dir, {.command = "plot", .create = false, .check_contents = false});
       return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
     }
     if (*validate) return Validate(validate_path);
+    if (*inspect) return proxsim::InspectCommand(inspect_target, inspect_json);
     if (*columns) {
       std::fputs(proxsim::ReadingsColumnsMarkdown().c_str(), stdout);
       return 0;
     }
-    if (*study) return Study(study_path, study_out, study_threads, study_resume, !study_no_report);
+    if (*study)
+      return Study(study_path, study_out, study_threads, study_resume, !study_no_report, study_force,
+                   study_allow_large);
   } catch (const proxsim::InputError& error) {
     return PrintInputError(error);
   } catch (const std::exception& error) {

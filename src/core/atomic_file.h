@@ -2,11 +2,19 @@
 // it is written to "NAME.tmp" and renamed by Commit(). A run that fails or is
 // killed leaves no file that looks finished. Write errors (a full disk, an
 // unwritable folder) throw std::runtime_error naming the file.
+//
+// Never through a symbolic link (issue 23): the file's folder is opened with
+// O_NOFOLLOW (a folder that is a link is refused), "NAME.tmp" is created with
+// O_CREAT | O_EXCL | O_NOFOLLOW relative to that folder's descriptor (a link
+// planted under that name is refused, never followed; a regular file left by
+// a killed run is replaced) and renamed into place with renameat, which
+// replaces a link under the final name rather than writing through it.
 #pragma once
 
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace proxsim {
 
@@ -29,11 +37,21 @@ class AtomicFile {
 
  private:
   std::string path_;
-  std::string tmp_path_;
+  std::string name_, tmp_name_;  ///< within the folder
+  int dir_fd_ = -1;              ///< the file's folder, opened without following a link
   std::FILE* file_ = nullptr;
 };
 
 /// Writes a whole file atomically.
 void WriteFileAtomically(const std::string& path, std::string_view content);
+
+/// Starts recording the files committed under `dir` (a run's output folder,
+/// as the writers name it): the run's manifest lists exactly those, so a
+/// user's own files beside them are never taken for the run's.
+void TrackCommitsUnder(const std::string& dir);
+/// The files committed under `dir` since TrackCommitsUnder, relative to it.
+std::vector<std::string> CommittedUnder(const std::string& dir);
+/// Stops recording for `dir`.
+void StopTrackingCommits(const std::string& dir);
 
 }  // namespace proxsim

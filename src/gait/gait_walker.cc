@@ -107,7 +107,9 @@ void GaitWalker::Start() {
   events_.clear();
   last_cannot_step_.clear();
   // on a terrain, the robot stands on the surface below its start; above no
-  // surface it walks on a flat floor at its start height
+  // surface it walks on a flat floor at its start height. (Whatever lies below:
+  // sim/start_check.h refuses, before the run, a start this puts on an object
+  // that is not ground, unless robot.start.on names it.)
   Vec3 start = initial_.start_xyz_m;
   const TerrainQuery* terrain = terrain_;
   if (terrain != nullptr) {

@@ -1,5 +1,6 @@
 #include "gait/joint_limits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -30,7 +31,7 @@ LegLimits::LegLimits(const BipedLegs& legs) : legs_(legs) {
       limit.has_range = joint.type == JointType::kRevolute && joint.lower < joint.upper;
       limit.lower_rad = joint.lower;
       limit.upper_rad = joint.upper;
-      limit.velocity_rad_s = joint.velocity_rad_s;
+      limit.velocity_rad_s = std::max(0.0, joint.velocity);  // (a negative URDF velocity: no limit)
     }
   }
 }

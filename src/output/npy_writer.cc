@@ -55,22 +55,18 @@ struct NpyReadingsWriter::Column {
 NpyReadingsWriter::NpyReadingsWriter(const std::string& out_dir, const Scenario& scenario,
                                      std::vector<std::string> object_names)
     : dir_((std::filesystem::path(out_dir) / "readings").string()),
-      tmp_dir_(dir_ + ".tmp"),
       scenario_(scenario),
       names_(scenario, std::move(object_names)) {
-  std::filesystem::remove_all(tmp_dir_);
-  std::filesystem::create_directories(tmp_dir_);
+  // each column is its own atomic file in readings/ (a folder that is a link
+  // is refused by AtomicFile); nothing else in the folder is touched: a
+  // user's files there stay, the previous run's went by its manifest
+  std::filesystem::create_directories(dir_);
   for (const ReadingsColumn& column : ReadingsColumns()) {
-    columns_.push_back(std::make_unique<Column>(tmp_dir_ + "/" + column.name + ".npy", NpyDtype(column.type)));
+    columns_.push_back(std::make_unique<Column>(dir_ + "/" + column.name + ".npy", NpyDtype(column.type)));
   }
 }
 
-NpyReadingsWriter::~NpyReadingsWriter() {
-  if (committed_) return;
-  columns_.clear();  // each AtomicFile removes its temporary file
-  std::error_code ignored;
-  std::filesystem::remove_all(tmp_dir_, ignored);
-}
+NpyReadingsWriter::~NpyReadingsWriter() = default;  // each uncommitted AtomicFile removes its temporary file
 
 void NpyReadingsWriter::Add(const SampleFrame& frame) {
   const std::span<const ReadingsColumn> spec = ReadingsColumns();
@@ -110,11 +106,7 @@ void NpyReadingsWriter::Commit() {
 
   nlohmann::json codes = ColumnsJson(names_);
   codes["rows"] = rows_;
-  WriteFileAtomically(tmp_dir_ + "/columns.json", codes.dump(1) + "\n");
-
-  std::filesystem::remove_all(dir_);
-  std::filesystem::rename(tmp_dir_, dir_);
-  committed_ = true;
+  WriteFileAtomically(dir_ + "/columns.json", codes.dump(1) + "\n");
 }
 
 void NpyReadingsWriter::AddToSummary(nlohmann::json& summary) const { summary["outputs"].push_back("readings/"); }

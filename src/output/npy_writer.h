@@ -35,12 +35,11 @@ class NpyReadingsWriter : public RunSink {
 
  private:
   struct Column;
-  std::string dir_, tmp_dir_;
+  std::string dir_;
   const Scenario& scenario_;
   ColumnNames names_;
   std::vector<std::unique_ptr<Column>> columns_;
   std::int64_t rows_ = 0;
-  bool committed_ = false;
 };
 
 }  // namespace proxsim

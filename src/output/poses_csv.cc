@@ -1,6 +1,7 @@
 #include "output/poses_csv.h"
 
 #include "core/number_format.h"
+#include "core/text_fields.h"
 
 namespace proxsim {
 
@@ -17,7 +18,7 @@ void PosesCsvWriter::Add(const SampleFrame& frame) {
     line_.clear();
     AppendNumber(line_, frame.t_s);
     line_ += ',';
-    line_ += model.link_name(link);
+    AppendCsvField(line_, model.link_name(link));  // a URDF's link names may hold commas
     for (double value : {X.translation().x(), X.translation().y(), X.translation().z(), q.w(), q.x(), q.y(), q.z()}) {
       line_ += ',';
       AppendNumber(line_, value);

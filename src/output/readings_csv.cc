@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/number_format.h"
+#include "core/text_fields.h"
 
 namespace proxsim {
 
@@ -33,7 +34,7 @@ void ReadingsCsvWriter::Add(const SampleFrame& frame) {
         case ColumnType::kInt32: line_ += std::to_string(static_cast<long long>(value)); break;
         case ColumnType::kCode32:
         case ColumnType::kCode8:
-          if (value >= 0) line_ += names_[column.codes][static_cast<std::size_t>(value)];
+          if (value >= 0) AppendCsvField(line_, names_[column.codes][static_cast<std::size_t>(value)]);
           break;
         case ColumnType::kBool: line_ += value != 0 ? '1' : '0'; break;
       }

@@ -1,5 +1,9 @@
 #include "output/run_manifest.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -18,35 +22,86 @@ namespace {
 namespace fs = std::filesystem;
 constexpr const char* kManifest = "manifest.json";
 
-std::string Digest(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return "";
-  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a 64
+// FNV-1a 64 of what `fd` reads, hex; closes fd; empty when it cannot be read
+std::string DigestOfFd(int fd) {
+  if (fd < 0) return "";
+  std::uint64_t hash = 1469598103934665603ull;
   char buffer[65536];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    for (std::streamsize i = 0; i < in.gcount(); ++i) {
+  ssize_t n;
+  while ((n = ::read(fd, buffer, sizeof buffer)) > 0) {
+    for (ssize_t i = 0; i < n; ++i) {
       hash ^= static_cast<unsigned char>(buffer[i]);
       hash *= 1099511628211ull;
     }
   }
+  ::close(fd);
+  if (n < 0) return "";
   char text[17];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
   return text;
 }
 
-// "readings/" → every file under it; a file → itself; missing → nothing
+std::string Digest(const fs::path& file) {
+  return DigestOfFd(::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+}
+
+// A manifest path split into its folders and its name; empty when it could
+// leave the folder ("..", ".", an absolute path, an empty part).
+std::vector<std::string> SafeParts(const std::string& path) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t slash = std::min(path.find('/', start), path.size());
+    const std::string part = path.substr(start, slash - start);
+    if (part.empty() || part == "." || part == "..") return {};
+    parts.push_back(part);
+    start = slash + 1;
+  }
+  return parts;
+}
+
+// Removes dir/path only if it is a regular file of `bytes` bytes and `digest`,
+// reached through real folders (never a link), then the folders that leaves
+// empty; every step relative to a descriptor opened with O_NOFOLLOW.
+void RemoveListedFile(const fs::path& dir, const ManifestFile& file) {
+  const std::vector<std::string> parts = SafeParts(file.path);
+  if (parts.empty() || file.digest.empty()) return;  // unsafe, or no digest to prove it ours
+  std::vector<int> fds{::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
+  for (std::size_t i = 0; i + 1 < parts.size() && fds.back() >= 0; ++i)
+    fds.push_back(::openat(fds.back(), parts[i].c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+  if (fds.back() >= 0) {
+    const int parent = fds.back();
+    const char* name = parts.back().c_str();
+    struct stat info {};
+    if (::fstatat(parent, name, &info, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(info.st_mode) &&
+        static_cast<std::uintmax_t>(info.st_size) == file.bytes &&
+        DigestOfFd(::openat(parent, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC)) == file.digest) {
+      ::unlinkat(parent, name, 0);
+      // the folders it leaves empty (rmdir refuses a non-empty one)
+      for (std::size_t i = fds.size() - 1; i >= 1; --i) {
+        if (fds[i] < 0 || ::unlinkat(fds[i - 1], parts[i - 1].c_str(), AT_REMOVEDIR) != 0) break;
+      }
+    }
+  }
+  for (const int fd : fds)
+    if (fd >= 0) ::close(fd);
+}
+
+// "readings/" → the files this process committed under it (a user's own files
+// there are not the run's); a file → itself; missing → nothing
 std::vector<ManifestFile> Expand(const fs::path& dir, const std::string& path) {
   std::vector<ManifestFile> files;
   std::error_code ec;
-  const fs::path full = dir / path;
-  if (fs::is_directory(full, ec)) {
-    for (const auto& entry : fs::recursive_directory_iterator(full, ec)) {
-      if (entry.is_regular_file(ec)) {
-        files.push_back({fs::relative(entry.path(), dir, ec).generic_string(), entry.file_size(ec)});
-      }
-    }
-  } else if (fs::is_regular_file(full, ec)) {
-    files.push_back({fs::path(path).generic_string(), fs::file_size(full, ec)});
+  const auto add = [&](const std::string& relative) {
+    const fs::path full = dir / relative;
+    if (fs::is_regular_file(fs::symlink_status(full, ec)))
+      files.push_back({relative, fs::file_size(full, ec), Digest(full)});
+  };
+  if (path.ends_with('/')) {
+    for (const std::string& relative : CommittedUnder(dir.string()))
+      if (relative.starts_with(path)) add(relative);
+  } else {
+    add(fs::path(path).generic_string());
   }
   return files;
 }
@@ -58,22 +113,14 @@ void Write(const fs::path& dir, RunManifest manifest) {
                                    [](const ManifestFile& a, const ManifestFile& b) { return a.path == b.path; }),
                        manifest.files.end());
   nlohmann::json files = nlohmann::json::array();
-  for (const ManifestFile& f : manifest.files) files.push_back({{"path", f.path}, {"bytes", f.bytes}});
+  for (const ManifestFile& f : manifest.files)
+    files.push_back({{"path", f.path}, {"bytes", f.bytes}, {"fnv1a64", f.digest}});
   const nlohmann::json json = {{"proxsim_run_manifest", 1},
                                {"about", "the files one proxsim run wrote here; the next run into this folder "
-                                         "removes exactly these"},
+                                         "removes exactly these, when they are still these bytes"},
                                {"summary_fnv1a64", manifest.summary_digest},
                                {"files", files}};
   WriteFileAtomically((dir / kManifest).string(), json.dump(2) + "\n");
-}
-
-// removes dir/path's parents up to dir while they are empty
-void RemoveEmptyParents(const fs::path& dir, fs::path path) {
-  std::error_code ec;
-  for (path = path.parent_path(); !path.empty() && path != "." && path != dir; path = path.parent_path()) {
-    if (!fs::is_directory(dir / path, ec) || !fs::is_empty(dir / path, ec)) break;
-    fs::remove(dir / path, ec);
-  }
 }
 
 }  // namespace
@@ -91,15 +138,20 @@ std::optional<RunManifest> ReadRunManifest(const std::string& dir) {
   std::stringstream text;
   text << in.rdbuf();
   const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, false);
-  if (json.is_discarded() || !json.contains("files")) return std::nullopt;
+  if (json.is_discarded() || !json.is_object() || !json.contains("files") || !json["files"].is_array())
+    return std::nullopt;
   RunManifest manifest;
-  manifest.summary_digest = json.value("summary_fnv1a64", "");
+  if (json.contains("summary_fnv1a64") && json["summary_fnv1a64"].is_string())
+    manifest.summary_digest = json["summary_fnv1a64"];
   for (const auto& f : json["files"]) {
-    if (!f.contains("path") || !f["path"].is_string()) continue;
+    if (!f.is_object() || !f.contains("path") || !f["path"].is_string()) continue;
     const std::string path = f["path"];
     // never outside the folder, whatever the file says
-    if (path.empty() || path.front() == '/' || fs::path(path).lexically_normal().string().starts_with("..")) continue;
-    manifest.files.push_back({path, f.value("bytes", std::uintmax_t{0})});
+    if (SafeParts(path).empty()) continue;
+    const auto bytes = f.find("bytes");
+    const auto digest = f.find("fnv1a64");
+    manifest.files.push_back({path, bytes != f.end() && bytes->is_number_unsigned() ? bytes->get<std::uintmax_t>() : 0,
+                              digest != f.end() && digest->is_string() ? digest->get<std::string>() : ""});
   }
   return manifest;
 }
@@ -107,12 +159,13 @@ std::optional<RunManifest> ReadRunManifest(const std::string& dir) {
 void RemovePreviousRun(const std::string& dir) {
   const auto manifest = ReadRunManifest(dir);
   if (!manifest) return;
-  std::error_code ec;
-  for (const ManifestFile& f : manifest->files) {
-    fs::remove(fs::path(dir) / f.path, ec);
-    RemoveEmptyParents(dir, f.path);
-  }
-  fs::remove(fs::path(dir) / kManifest, ec);
+  for (const ManifestFile& f : manifest->files) RemoveListedFile(dir, f);
+  // the manifest itself, when it is a regular file (never a link's target)
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  struct stat info {};
+  if (fd >= 0 && ::fstatat(fd, kManifest, &info, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(info.st_mode))
+    ::unlinkat(fd, kManifest, 0);
+  if (fd >= 0) ::close(fd);
 }
 
 void WriteRunManifest(const std::string& dir, const std::vector<std::string>& paths) {
@@ -138,11 +191,9 @@ void AddToRunManifest(const std::string& dir, const std::vector<std::string>& pa
 void RemoveFromRunManifest(const std::string& dir, const std::string& subdir) {
   auto manifest = ReadRunManifest(dir);
   if (!manifest) return;
-  std::error_code ec;
   std::erase_if(manifest->files, [&](const ManifestFile& f) {
     if (!f.path.starts_with(subdir)) return false;
-    fs::remove(fs::path(dir) / f.path, ec);
-    RemoveEmptyParents(dir, f.path);
+    RemoveListedFile(dir, f);
     return true;
   });
   Write(dir, *manifest);

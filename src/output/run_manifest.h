@@ -15,6 +15,7 @@ namespace proxsim {
 struct ManifestFile {
   std::string path;  ///< relative to the run folder, '/' separated
   std::uintmax_t bytes = 0;
+  std::string digest;  ///< FNV-1a 64 of its bytes, hex; a file is removed only when size and digest agree
 };
 
 struct RunManifest {
@@ -25,12 +26,15 @@ struct RunManifest {
 /// The folder's manifest; nullopt when it has none (or it cannot be read).
 std::optional<RunManifest> ReadRunManifest(const std::string& dir);
 
-/// Removes every file the folder's manifest lists, the folders that leaves
+/// Removes every file the folder's manifest lists — only when it is still a
+/// regular file of the listed size and digest, reached through real folders
+/// (a folder that is a link is never entered) — the folders that leaves
 /// empty, and the manifest itself. Nothing else is touched.
 void RemovePreviousRun(const std::string& dir);
 
-/// Writes manifest.json listing `paths` as they are now (a path ending in '/'
-/// stands for every file under that folder; paths that do not exist are skipped).
+/// Writes manifest.json listing `paths` as they are now, with sizes and
+/// digests (a path ending in '/' stands for the files this process committed
+/// under that folder, core/atomic_file.h; paths that do not exist are skipped).
 void WriteRunManifest(const std::string& dir, const std::vector<std::string>& paths);
 
 /// Adds `paths` (as in WriteRunManifest) to the folder's manifest.

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace proxsim {
 
@@ -65,6 +66,16 @@ void MapHit(const RTCRayHit8& packet, std::size_t lane, int direct_body,
   hit->object_id = geom.object_id;
 }
 
+// Far below Embree's own bound (FLT_LARGE, 1.844e18), far above the scene's
+// coordinate limit (core/input_limits.h).
+constexpr float kMaxRayOrigin_m = 1e15f;
+const Ray kHarmlessRay{Vec3f::Zero(), Vec3f::UnitX(), 1.0f};
+
+bool RayEmbreeCanTake(const Ray& ray) {
+  return ray.origin_W.allFinite() && ray.direction_W.allFinite() && !ray.direction_W.isZero() &&
+         ray.origin_W.cwiseAbs().maxCoeff() < kMaxRayOrigin_m && !std::isnan(ray.max_range_m) && ray.max_range_m >= 0;
+}
+
 /// Casts rays[0..n) (n <= 8) as one packet: into the world, then the lanes
 /// that see the robot into the robot's scene up to their world hit (Embree
 /// only reports a nearer one). Each lane is intersected on its own, so a
@@ -74,8 +85,12 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
   alignas(32) int valid[kPacketRays];
   RTCRayHit8 packet;
   for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-    valid[lane] = lane < n ? -1 : 0;
-    const Ray& ray = rays[lane < n ? lane : 0];  // inactive lanes: any finite ray (Embree skips them)
+    // Embree asserts (aborts) on a ray it cannot represent (|origin| beyond
+    // ~1.8e18, non-finite values): such a lane is left out and sees nothing.
+    // Input checks (the coordinate limit) keep real runs far from this.
+    const bool representable = lane < n && RayEmbreeCanTake(rays[lane]);
+    valid[lane] = representable ? -1 : 0;
+    const Ray& ray = representable ? rays[lane] : kHarmlessRay;  // inactive lanes: any finite ray
     packet.ray.org_x[lane] = ray.origin_W.x();
     packet.ray.org_y[lane] = ray.origin_W.y();
     packet.ray.org_z[lane] = ray.origin_W.z();
@@ -102,7 +117,7 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
   if (!scenes.robot) return;
   bool any = false;
   for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-    valid[lane] = lane < n && rays[lane].see_robot ? -1 : 0;
+    valid[lane] = lane < n && rays[lane].see_robot && RayEmbreeCanTake(rays[lane]) ? -1 : 0;
     any = any || valid[lane];
     packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
     packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -72,8 +73,28 @@ int RunPythonScript(std::vector<std::string> args) {
 
 }  // namespace
 
+namespace {
+
+namespace fs = std::filesystem;
+
+// size and modification time of a file: how a script's writes are told from a user's files
+using FileStamp = std::pair<std::uintmax_t, fs::file_time_type>;
+
+// The regular files under out_dir/sub (no link followed), relative to out_dir.
+std::map<std::string, FileStamp> StampsUnder(const std::string& out_dir, const std::string& sub) {
+  std::map<std::string, FileStamp> stamps;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(fs::path(out_dir) / sub, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (!it->is_regular_file(ec) || it->is_symlink(ec)) continue;
+    stamps[fs::relative(it->path(), out_dir, ec).generic_string()] = {it->file_size(ec), it->last_write_time(ec)};
+  }
+  return stamps;
+}
+
+}  // namespace
+
 int MakeReport(const std::string& out_dir) {
-  namespace fs = std::filesystem;
   const std::string script = PROXSIM_REPORT_SCRIPT;
   const std::string bundle = PROXSIM_VIEWER_BUNDLE;
 
@@ -98,10 +119,28 @@ int MakeReport(const std::string& out_dir) {
     return 1;
   }
 
-  // the previous report's files go; the new ones join the run's manifest
+  // the script writes into report/: it must be a real folder, never a link to elsewhere
+  const fs::path report = fs::path(out_dir) / "report";
+  const fs::file_status report_status = fs::symlink_status(report, ec);
+  if (fs::exists(report_status) && !fs::is_directory(report_status)) {
+    std::cerr << "proxsim: cannot draw the report: " << report.string()
+              << " is a symbolic link or not a folder; proxsim never writes through a link\n";
+    return 1;
+  }
+
+  // the previous report's files go; the ones the script writes join the run's
+  // manifest — a user's own files in report/ are neither removed nor listed
   RemoveFromRunManifest(out_dir, "report/");
+  const std::map<std::string, FileStamp> before = StampsUnder(out_dir, "report");
   const int status = RunPythonScript({kPython, script, out_dir, "--viewer-bundle", bundle});
-  if (status == 0) AddToRunManifest(out_dir, {"report/"});
+  if (status == 0) {
+    std::vector<std::string> written;
+    for (const auto& [path, stamp] : StampsUnder(out_dir, "report")) {
+      const auto old = before.find(path);
+      if (old == before.end() || old->second != stamp) written.push_back(path);
+    }
+    AddToRunManifest(out_dir, written);
+  }
   return status;
 }
 

@@ -69,10 +69,10 @@ std::string Join(const std::vector<std::string>& items) {
 }
 
 MeshLookup FileOrProblem(const fs::path& path, const std::string& form) {
-  if (IsRegularFile(path)) return {path, ""};
+  if (IsRegularFile(path)) return {path, "", ""};
   std::error_code error;
   const bool exists = fs::exists(path, error);
-  return {std::nullopt, form + " '" + path.string() + (exists ? "' is not a regular file" : "' does not exist")};
+  return {std::nullopt, form + " '" + path.string() + (exists ? "' is not a regular file" : "' does not exist"), ""};
 }
 
 // package://NAME/rest through the three places, in order
@@ -82,7 +82,7 @@ MeshLookup ResolvePackageUri(const std::string& uri, const fs::path& urdf_dir,
   const std::size_t slash = body.find('/');
   const std::string name = body.substr(0, slash);
   const std::string rest = slash == std::string::npos ? "" : body.substr(slash + 1);
-  if (name.empty() || rest.empty()) return {std::nullopt, "expected package://PACKAGE/path/to/file"};
+  if (name.empty() || rest.empty()) return {std::nullopt, "expected package://PACKAGE/path/to/file", ""};
 
   std::vector<std::string> searched, without_file;
   // a candidate package root: the file is there, or it is noted as lacking it
@@ -100,7 +100,7 @@ MeshLookup ResolvePackageUri(const std::string& uri, const fs::path& urdf_dir,
     for (const std::string& folder : list) {
       folders.push_back(folder);
       for (const fs::path& root : PackagesIn(folder, name))
-        if (const auto file = try_root(root)) return {*file, ""};
+        if (const auto file = try_root(root)) return {*file, "", ""};
     }
     searched.push_back(label + ": " + Join(folders));
   }
@@ -112,7 +112,7 @@ MeshLookup ResolvePackageUri(const std::string& uri, const fs::path& urdf_dir,
   for (int depth = 0; depth < 256 && !dir.empty(); ++depth) {
     ancestors.push_back(dir.string());
     if (IsPackage(dir, name))
-      if (const auto file = try_root(dir)) return {*file, ""};
+      if (const auto file = try_root(dir)) return {*file, "", ""};
     if (dir == dir.root_path() || dir.parent_path() == dir) break;
     dir = dir.parent_path();
   }
@@ -121,7 +121,7 @@ MeshLookup ResolvePackageUri(const std::string& uri, const fs::path& urdf_dir,
   std::string problem = "package '" + name + "' ";
   problem += without_file.empty() ? "not found" : "found at " + Join(without_file) + " but without '" + rest + "'";
   problem += "; searched " + searched[0] + "; " + searched[1] + "; " + searched[2];
-  return {std::nullopt, problem};
+  return {std::nullopt, problem, without_file.empty() ? name : ""};
 }
 
 }  // namespace
@@ -156,9 +156,9 @@ MeshLookup ResolveMeshUri(const std::string& uri, const fs::path& urdf_dir, std:
     form = "the file:// path";
   } else if (const std::size_t colon = uri.find("://"); colon != std::string::npos) {
     return {std::nullopt, "unsupported URI scheme '" + uri.substr(0, colon) +
-                              "://' (expected a path, file:// or package://)"};
+                              "://' (expected a path, file:// or package://)", ""};
   }
-  if (rest.empty()) return {std::nullopt, "an empty file name"};
+  if (rest.empty()) return {std::nullopt, "an empty file name", ""};
   const fs::path path(rest);
   return FileOrProblem(path.is_absolute() ? path : urdf_dir / path, form);
 }

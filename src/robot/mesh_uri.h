@@ -26,6 +26,9 @@ namespace proxsim {
 struct MeshLookup {
   std::optional<std::filesystem::path> path;  ///< the file, when found
   std::string problem;                       ///< why not, when not found
+  /// A package:// URI whose package is nowhere (not merely one lacking the
+  /// file): its name, so that a URDF naming it many times reports it once.
+  std::string missing_package;
 };
 
 /// Resolves `uri` for a URDF in `urdf_dir` (empty: the current folder).

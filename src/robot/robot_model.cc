@@ -12,14 +12,18 @@
 #include <optional>
 #include <queue>
 #include <sstream>
+#include <unordered_map>
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include "core/embedded_files.h"
 #include "core/input_error.h"
+#include "core/input_limits.h"
+#include "core/nesting_scan.h"
 #include "robot/mesh_uri.h"
 #include "scene/mesh_loader.h"
+#include "scene/mesh_prescan.h"
 
 namespace proxsim {
 
@@ -77,6 +81,13 @@ class UrdfMeshes {
       return std::nullopt;
     }
     const MeshLookup lookup = ResolveMeshUri(m.filename, urdf_dir_, options_.package_paths);
+    if (!lookup.path && !lookup.missing_package.empty()) {
+      // a package that is nowhere: one line for it, however many meshes name it
+      auto [missing, first] = missing_packages_.try_emplace(lookup.missing_package);
+      if (first) missing->second.line = where + ": mesh '" + m.filename + "' not found: " + lookup.problem;
+      else ++missing->second.more_meshes;
+      return std::nullopt;
+    }
     if (!lookup.path) {
       problems->push_back(where + ": mesh '" + m.filename + "' not found: " + lookup.problem);
       return std::nullopt;
@@ -121,6 +132,18 @@ class UrdfMeshes {
   /// Mesh files read (successfully or not).
   std::size_t file_count() const { return read_.size(); }
 
+  /// One problem per package that was found nowhere: the first mesh naming it,
+  /// the folders searched, and how many other meshes name it.
+  void AddMissingPackages(std::vector<std::string>* problems) const {
+    for (const auto& [name, missing] : missing_packages_) {
+      std::string line = missing.line;
+      if (missing.more_meshes > 0)
+        line += " (and " + std::to_string(missing.more_meshes) + " other mesh" + (missing.more_meshes == 1 ? "" : "es") +
+                " of package '" + name + "')";
+      problems->push_back(std::move(line));
+    }
+  }
+
  private:
   struct FileRead {
     std::shared_ptr<const TriangleMesh> data;  // null when the file could not be read
@@ -128,7 +151,12 @@ class UrdfMeshes {
   };
   const UrdfOptions& options_;
   std::filesystem::path urdf_dir_;
+  struct MissingPackage {
+    std::string line;     // the first mesh's problem
+    int more_meshes = 0;  // other meshes naming the same package
+  };
   std::map<std::string, FileRead> read_;
+  std::map<std::string, MissingPackage> missing_packages_;
   std::map<std::pair<std::string, std::array<double, 3>>, std::shared_ptr<const TriangleMesh>> scaled_;
 };
 
@@ -174,6 +202,16 @@ bool ShapeFromUrdf(const urdf::Geometry& g, const std::string& where, UrdfMeshes
   return false;
 }
 
+// A xacro file uses xacro's elements (<xacro:macro>, <xacro:include>...) or,
+// declaring its namespace (xmlns:xacro="..."), its substitutions (${...},
+// $(...)). The namespace alone is not enough: xacro's own output may keep the
+// declaration on a URDF that has nothing left to expand.
+bool IsXacro(const std::string& text) {
+  if (text.find("<xacro:") != std::string::npos) return true;
+  return text.find("xmlns:xacro") != std::string::npos &&
+         (text.find("${") != std::string::npos || text.find("$(") != std::string::npos);
+}
+
 Pose JointMotion(const RobotJoint& j, double q) {
   Pose M = Pose::Identity();
   switch (j.type) {
@@ -197,6 +235,9 @@ const char* LinkGeometryKindName(LinkGeometryKind kind) {
 }
 
 RobotModel RobotModel::FromUrdfFile(const std::string& path, const UrdfOptions& options) {
+  // a regular file of bounded size: a FIFO or /dev/zero would never end
+  if (const std::string problem = RegularFileProblem(path, kMaxUrdfBytes); !problem.empty())
+    throw InputError(problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the URDF file (missing or unreadable)");
   std::stringstream text;
@@ -214,6 +255,25 @@ RobotModel RobotModel::Builtin(const std::string& name, const UrdfOptions& optio
 
 RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::string& source,
                                     const UrdfOptions& options) {
+  // TinyXML (inside urdfdom) recurses once per nested element: bound the
+  // nesting, the size and the number of links before it parses anything
+  if (urdf_text.size() > kMaxUrdfBytes) {
+    throw InputError(source + ": " + std::to_string(urdf_text.size()) + " bytes, beyond the URDF limit of " +
+                     std::to_string(kMaxUrdfBytes) + " bytes (docs/trust.md)");
+  }
+  const NestingScan scan = ScanXmlNesting(urdf_text, kMaxNestingDepth);
+  if (const auto problem = NestingProblem(scan, source, "XML elements", kMaxNestingDepth)) throw InputError(*problem);
+  if (scan.elements > 8 * kMaxUrdfLinks) {
+    throw InputError(source + ": " + std::to_string(scan.elements) + " XML elements, beyond the limit of " +
+                     std::to_string(8 * kMaxUrdfLinks) + " (" + std::to_string(kMaxUrdfLinks) +
+                     " links with their joints; docs/trust.md)");
+  }
+  // urdfdom reads a xacro file as a URDF and drops its macros: the robot would
+  // then lack links and joints, blamed elsewhere. Recognised by its content
+  // (IsXacro), not its name.
+  if (IsXacro(urdf_text)) {
+    throw InputError(source + ": this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)");
+  }
   std::vector<std::string> messages;
   const urdf::ModelInterfaceSharedPtr urdf = ParseCapturingErrors(urdf_text, &messages);
   if (!urdf) {
@@ -245,13 +305,15 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
 
   // Breadth-first from the root: link 0 is the root, every joint comes after
   // its parent link, so joint order is a valid forward-kinematics order.
+  // names to indices as they are added: linear in links, not quadratic
+  std::unordered_map<std::string, int> link_of, joint_of;
   std::queue<urdf::LinkConstSharedPtr> todo;
   todo.push(root);
   while (!todo.empty()) {
     const urdf::LinkConstSharedPtr ul = todo.front();
     todo.pop();
     const int link_index = static_cast<int>(model.links_.size());
-    if (model.LinkIndex(ul->name) >= 0) {
+    if (!link_of.try_emplace(ul->name, link_index).second) {
       problems.push_back(source + ": link '" + ul->name + "' is reached twice from the root (a cycle)");
       continue;
     }
@@ -273,7 +335,10 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
           source + ": link '" + ul->name + "' (" + LinkGeometryKindName(link.shapes_kind) + ")";
       if (ShapeFromUrdf(*g, where, meshes, &shape, &problems)) link.shapes.push_back({shape, PoseFromUrdf(origin)});
     }
-    if (ul->parent_joint) link.parent_joint = model.JointIndex(ul->parent_joint->name);
+    if (ul->parent_joint) {
+      const auto joint = joint_of.find(ul->parent_joint->name);
+      link.parent_joint = joint == joint_of.end() ? -1 : joint->second;
+    }
     model.links_.push_back(std::move(link));
 
     for (const auto& uj : ul->child_joints) {
@@ -306,47 +371,48 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
         }
       }
       if (uj->limits) {
+        joint.has_limits = true;
         joint.lower = uj->limits->lower;
         joint.upper = uj->limits->upper;
-        joint.velocity_rad_s = std::max(0.0, uj->limits->velocity);
-        joint.effort_N_m = std::max(0.0, uj->limits->effort);
+        joint.velocity = uj->limits->velocity;
+        joint.effort = uj->limits->effort;
       }
       model.links_[link_index].child_joints.push_back(static_cast<int>(model.joints_.size()));
+      joint_of.try_emplace(joint.name, static_cast<int>(model.joints_.size()));
       model.joints_.push_back(std::move(joint));
       todo.push(child);
     }
   }
   // Child link indices: links were appended in the same breadth-first order.
-  for (int j = 0; j < model.joint_count(); ++j) {
-    // the child of joint j is the link whose parent_joint is j
-    for (int l = 0; l < model.link_count(); ++l)
-      if (model.links_[l].parent_joint == j) model.joints_[j].child_link = l;
-  }
+  // the child of joint j is the link whose parent_joint is j
+  for (int l = 0; l < model.link_count(); ++l)
+    if (model.links_[l].parent_joint >= 0) model.joints_[model.links_[l].parent_joint].child_link = l;
   // Every link must hang from the root: urdfdom accepts a separate cycle of
   // links (each has a parent, none reaches the root).
   for (const auto& [name, ul] : urdf->links_) {
-    if (model.LinkIndex(name) < 0)
+    if (!link_of.contains(name))
       problems.push_back(source + ": link '" + name +
                          "' is not connected to the root link '" + root->name + "' (a cycle or a second tree)");
   }
+  meshes.AddMissingPackages(&problems);
   if (!problems.empty()) throw InputError(problems);
   model.root_link_ = 0;
   model.mesh_file_count_ = meshes.file_count();
+  model.link_of_ = std::move(link_of);
+  model.joint_of_ = std::move(joint_of);
   model.joint_order_.resize(model.joints_.size());
   for (int j = 0; j < model.joint_count(); ++j) model.joint_order_[j] = j;
   return model;
 }
 
 int RobotModel::LinkIndex(const std::string& name) const {
-  for (int i = 0; i < link_count(); ++i)
-    if (links_[i].name == name) return i;
-  return -1;
+  const auto it = link_of_.find(name);
+  return it == link_of_.end() ? -1 : it->second;
 }
 
 int RobotModel::JointIndex(const std::string& name) const {
-  for (int i = 0; i < joint_count(); ++i)
-    if (joints_[i].name == name) return i;
-  return -1;
+  const auto it = joint_of_.find(name);
+  return it == joint_of_.end() ? -1 : it->second;
 }
 
 std::size_t RobotModel::MeshTriangleCount() const {

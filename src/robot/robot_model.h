@@ -26,6 +26,7 @@
 
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/geometry.h"
@@ -60,12 +61,9 @@ struct RobotJoint {
   Vec3 axis_J = Vec3::UnitX();   ///< unit axis in J (URDF <axis>)
   double lower = 0.0;            ///< rad or m; only meaningful for revolute/prismatic
   double upper = 0.0;            ///< rad or m
-  /// URDF <limit velocity>: the joint's top speed, rad/s (m/s for prismatic);
-  /// 0 when the URDF gives none (no speed limit)
-  double velocity_rad_s = 0.0;
-  /// URDF <limit effort>, N·m (N for prismatic); 0 when not given. Read for
-  /// completeness: the kinematic gait applies no forces
-  double effort_N_m = 0.0;
+  bool has_limits = false;       ///< the URDF gives <limit>
+  double velocity = 0.0;         ///< <limit velocity>: rad/s or m/s (0 when not given)
+  double effort = 0.0;           ///< <limit effort>: N·m or N (0 when not given)
 };
 
 /// A URDF robot: links, joints, shapes and forward kinematics.
@@ -125,6 +123,7 @@ class RobotModel {
   std::string source_;
   std::vector<RobotLink> links_;
   std::vector<RobotJoint> joints_;
+  std::unordered_map<std::string, int> link_of_, joint_of_;  ///< names to indices (LinkIndex, JointIndex)
   std::vector<int> joint_order_;  ///< joints parents-first, for forward kinematics
   int root_link_ = -1;
   std::size_t mesh_file_count_ = 0;

@@ -43,7 +43,8 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   const auto start = Clock::now();
   // everything that can fail on bad input happens before the folder is made
   Simulation sim(scenario, options.threads);
-  RunRecorder recorder(sim, options.out_dir, options.format, options.warn);
+  if (options.on_loaded) options.on_loaded();
+  RunRecorder recorder(sim, options.out_dir, options.format, options.warn, options.force);
   ProgressLine progress(options.progress);
 
   // the loop: one sample per step, streamed out as it is taken
@@ -67,9 +68,11 @@ RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
 
   // timings live apart from the summary so that reruns give byte-identical summaries
   result.wall_s = SecondsSince(start);
-  if (!options.out_dir.empty()) {
-    WriteTimings(options.out_dir, result.wall_s, loop_wall_s, options.threads, recorder.samples(), scenario.rate_hz);
+  if (!recorder.out_dir().empty()) {
+    WriteTimings(recorder.out_dir(), result.wall_s, loop_wall_s, options.threads, recorder.samples(),
+                 scenario.rate_hz);
   }
+  result.folder = recorder.folder();
   return result;
 }
 

@@ -11,45 +11,53 @@
 #include "output/scene_json.h"
 #include "output/statistics_sink.h"
 #include "output/terrain_sink.h"
+#include "scene/shape_inside.h"
 #include "sim/run_summary.h"
 
 namespace proxsim {
 
 namespace {
 
-// How far p_O lies inside the solid shape (negative: outside); planes count
-// their z = 0 surface only, meshes have no inside here (nullopt).
-std::optional<double> DepthInside(const Shape& shape, const Vec3& p_O) {
-  if (const auto* box = std::get_if<Box>(&shape)) return ((box->size_m / 2) - p_O.cwiseAbs()).minCoeff();
-  if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->radius_m - p_O.norm();
-  if (const auto* cylinder = std::get_if<Cylinder>(&shape)) {
-    return std::min(cylinder->radius_m - p_O.head<2>().norm(), cylinder->length_m / 2 - std::abs(p_O.z()));
-  }
-  if (std::holds_alternative<Plane>(shape)) return -std::abs(p_O.z());
-  return std::nullopt;
-}
-
 // Suspicious but legal: a sensor whose ray starts inside a scene object, or
-// exactly on its surface (its rays may then hit that surface at d = 0).
-std::vector<std::string> SensorsInsideObjects(const Scenario& scenario, const SampleFrame& frame) {
+// exactly on its surface (its rays may then hit that surface at d = 0), or
+// inside the link it is fixed on (its rays then see only that link, `self`).
+// A sensor on its link's surface is how sensors are mounted: no warning.
+std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const SampleFrame& frame) {
   constexpr double kOnSurface_m = 1e-9;
+  // A sensor mounted on its link's surface, at a point computed from the
+  // link's float mesh vertices (`proxsim inspect` reports them), may land a
+  // few 1e-8 m inside it: only deeper than this is inside.
+  constexpr double kOnLinkSurface_m = 1e-4;
+  const Scenario& scenario = sim.scenario();
   std::vector<std::string> warnings;
   for (std::size_t s = 0; s < scenario.sensors.size() && s < frame.sensors.size(); ++s) {
     const Vec3& p_WS = frame.sensors[s].p_WS;
+    char where[160];
+    std::snprintf(where, sizeof where, "at t = %g s its origin (%g, %g, %g) m", frame.t_s, p_WS.x(), p_WS.y(),
+                  p_WS.z());
+    const std::string sensor = scenario.source + ": sensor '" + scenario.sensors[s].name + "'";
     for (const SceneObject& object : scenario.scene.objects) {
-      const auto depth_m = DepthInside(object.shape, object.X_WO.inverse() * p_WS);
-      if (!depth_m || *depth_m < -kOnSurface_m) continue;
-      char where[160];
-      std::snprintf(where, sizeof where, "at t = %g s its origin (%g, %g, %g) m", frame.t_s, p_WS.x(), p_WS.y(),
-                    p_WS.z());
-      const std::string sensor = scenario.source + ": sensor '" + scenario.sensors[s].name + "'";
-      if (*depth_m > kOnSurface_m) {
+      const double depth_m = DepthInside_m(object.shape, object.X_WO.inverse() * p_WS);
+      if (depth_m < -kOnSurface_m) continue;
+      if (depth_m > kOnSurface_m) {
         warnings.push_back(sensor + " is inside object '" + object.name + "' (" + where +
                            "); it sees that object from within");
       } else {
         warnings.push_back(sensor + " starts on the surface of object '" + object.name + "' (" + where +
                            "); its rays may hit that surface at d = 0");
       }
+    }
+    // its own link, at its pose of this sample (a sensor that sees through the robot does not mind)
+    const int link = sim.world().sensor_link(s);
+    if (link < 0 || sim.robot() == nullptr || !scenario.sensors[s].see_robot) continue;
+    const RobotLink& robot_link = sim.robot()->model().link(link);
+    const Vec3 p_LS = sim.robot()->X_WL(link).inverse() * p_WS;
+    for (const LinkShape& shape : robot_link.shapes) {
+      if (DepthInside_m(shape.shape, shape.X_LO.inverse() * p_LS) <= kOnLinkSurface_m) continue;
+      warnings.push_back(sensor + " is inside its own link '" + robot_link.name + "' (" + where +
+                         "); it sees that link from within (echoes `self`); move it out to the link's surface "
+                         "(`proxsim inspect` lists where it is)");
+      break;  // one line per sensor and link
     }
   }
   return warnings;
@@ -58,14 +66,18 @@ std::vector<std::string> SensorsInsideObjects(const Scenario& scenario, const Sa
 }  // namespace
 
 RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, ReadingsFormat format,
-                         std::function<void(const std::string&)> warn)
-    : sim_(sim), out_dir_(out_dir), warn_(std::move(warn)) {
+                         std::function<void(const std::string&)> warn, bool force)
+    : sim_(sim), warn_(std::move(warn)) {
+  if (!out_dir.empty()) {
+    folder_ = std::make_shared<OutputFolder>(out_dir, ClaimOptions{.command = "run", .force = force});
+    out_dir_ = folder_->path();
+    TrackCommitsUnder(out_dir_);  // the manifest lists exactly the files this run commits
+  }
   const Scenario& scenario = sim.scenario();
   const std::vector<std::string>& object_names = sim.world().object_names();
   const std::filesystem::path out(out_dir_);
   // the sinks in the order summary.json lists their files
   if (!out_dir_.empty()) {
-    std::filesystem::create_directories(out_dir_);
     // the folder holds one run: the previous run's files go (the user's own stay)
     RemovePreviousRun(out_dir_);
     sinks_.push_back(MakeReadingsSink(format, out_dir_, scenario, object_names));
@@ -79,13 +91,15 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
   sinks_.push_back(std::make_unique<StatisticsSink>(scenario, object_names));
 }
 
-RunRecorder::~RunRecorder() = default;
+RunRecorder::~RunRecorder() {
+  if (!out_dir_.empty()) StopTrackingCommits(out_dir_);
+}
 
 void RunRecorder::Add(const SampleFrame& frame) {
   ++samples_;
   last_t_s_ = frame.t_s;
   if (frame.sample == 0) {
-    warnings_ = SensorsInsideObjects(sim_.scenario(), frame);
+    warnings_ = SensorsInsideObjects(sim_, frame);
     if (warn_)
       for (const std::string& warning : warnings_) warn_(warning);
   }

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/output_folder.h"
 #include "output/readings_sink.h"
 #include "output/run_sink.h"
 #include "sim/simulation.h"
@@ -22,11 +23,14 @@ namespace proxsim {
 
 class RunRecorder {
  public:
-  /// Creates `out_dir` and opens the streamed files (an empty out_dir: no
-  /// files, the statistics only); `sim` must outlive the recorder. `warn`
-  /// receives warnings about suspicious but legal input.
+  /// Claims `out_dir` (core/output_folder.h: refused when it is "/", the
+  /// home folder, held by another process, or not empty and not a previous
+  /// run's unless `force`), removes the previous run's files and opens the
+  /// streamed files (an empty out_dir: no files, the statistics only); `sim`
+  /// must outlive the recorder. `warn` receives warnings about suspicious but
+  /// legal input.
   RunRecorder(const Simulation& sim, const std::string& out_dir, ReadingsFormat format,
-              std::function<void(const std::string&)> warn = {});
+              std::function<void(const std::string&)> warn = {}, bool force = false);
   ~RunRecorder();
   RunRecorder(const RunRecorder&) = delete;
   RunRecorder& operator=(const RunRecorder&) = delete;
@@ -43,9 +47,17 @@ class RunRecorder {
 
   std::int64_t samples() const { return samples_; }
 
+  /// The claimed folder's real path (empty without files); write beside the run's files through it.
+  const std::string& out_dir() const { return out_dir_; }
+  /// The claimed folder (its lock), to hold past the recorder (the report); null without files.
+  std::shared_ptr<OutputFolder> folder() const { return folder_; }
+  /// Lets the folder go (its lock ends with the last holder) once the files are written.
+  void ReleaseFolder() { folder_.reset(); }
+
  private:
   const Simulation& sim_;
-  std::string out_dir_;
+  std::shared_ptr<OutputFolder> folder_;  ///< claimed and locked while the recorder (or a holder) lives
+  std::string out_dir_;                   ///< folder_'s real path
   std::function<void(const std::string&)> warn_;
   std::vector<std::unique_ptr<RunSink>> sinks_;
   std::vector<std::string> warnings_;

@@ -13,7 +13,9 @@
 // loaded.
 #include "scenario/scenario.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -21,6 +23,7 @@
 
 #include "core/embedded_files.h"
 #include "core/input_error.h"
+#include "gait/gait_walker.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
@@ -104,7 +107,7 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   // the sections
   const std::filesystem::path base_dir = BaseDirOf(source);
   ReadScene(reader, (*top)["scene"], base_dir, scenario);
-  if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir);
+  if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir, scenario.scene);
   scenario.sensors = ReadSensors(reader, (*top)["sensors"], scenario.robot.has_value());
   scenario.map = ReadTerrainMap(reader, (*top)["map"], scenario.sensors, scenario.robot.has_value());
 
@@ -139,11 +142,36 @@ std::filesystem::path ResolveScenarioPath(const std::filesystem::path& base_dir,
 Pose ReadPose(YamlReader& reader, const Field& field) {
   const auto map = reader.Map(field, {"xyz_m", "rpy_deg"});
   if (!map) return Pose::Identity();
-  const Vec3 xyz_m = reader.Vector3((*map)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(Vec3::Zero());
+  const Vec3 xyz_m = reader.Vector3((*map)["xyz_m"], Coordinate(), "[x, y, z] in metres").value_or(Vec3::Zero());
   const Vec3 rpy_deg =
       reader.Vector3((*map)["rpy_deg"], AnyNumber(), "[roll, pitch, yaw] in degrees").value_or(Vec3::Zero());
   return PoseFromXyzRpy(xyz_m, rpy_deg * (kPi / 180.0));
 }
+
+namespace {
+
+// The problems building the scenario's walking robot would report (the URDF,
+// the leg map, the held joints); none when it has no walking robot or its
+// model file is missing (already reported by the scenario's own checks).
+std::vector<std::string> RobotProblems(const Scenario& scenario) {
+  if (!scenario.robot || !scenario.robot->trajectory_file.empty()) return {};
+  const RobotConfig& robot = *scenario.robot;
+  const bool builtin = robot.model.starts_with("builtin:");
+  std::error_code error;
+  if (!builtin && !std::filesystem::is_regular_file(robot.model, error)) return {};
+  try {
+    const UrdfOptions options{.geometry = robot.geometry, .package_paths = robot.package_paths};
+    GaitWalker(builtin ? RobotModel::Builtin(robot.model.substr(8), options) : RobotModel::FromUrdfFile(robot.model, options),
+               robot);
+  } catch (const InputError& robot_error) {
+    return robot_error.problems();
+  } catch (const std::exception&) {
+    // not an input problem: the run reports it when it builds the robot
+  }
+  return {};
+}
+
+}  // namespace
 
 Scenario LoadScenarioText(const std::string& yaml_text, const std::string& source) {
   YamlReader reader(source);
@@ -162,7 +190,14 @@ Scenario LoadScenarioText(const std::string& yaml_text, const std::string& sourc
   }
 
   Scenario scenario = ReadScenario(reader, document, source);
-  if (reader.HasProblems()) throw InputError(reader.Problems());
+  if (reader.HasProblems()) {
+    // every problem at once: the robot's (its leg map, its held joints) are
+    // otherwise found only when the simulation is built, after these are fixed
+    std::vector<std::string> problems = reader.Problems();
+    for (const std::string& problem : RobotProblems(scenario))
+      if (std::find(problems.begin(), problems.end(), problem) == problems.end()) problems.push_back(problem);
+    throw InputError(problems);
+  }
   return scenario;
 }
 

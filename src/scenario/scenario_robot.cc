@@ -16,6 +16,12 @@
 namespace proxsim {
 
 namespace {
+// The gaits proxsim walks (bipeds from toys to adults, slow to running pace).
+constexpr double kMinStride_m = 0.01, kMaxStride_m = 3.0;
+constexpr double kMinGaitPeriod_s = 0.1, kMaxGaitPeriod_s = 30.0;
+}  // namespace
+
+namespace {
 
 constexpr const char* kBuiltinPrefix = "builtin:";
 
@@ -134,7 +140,8 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
 
 }  // namespace
 
-RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir) {
+RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
+                      const Scene& scene) {
   RobotConfig robot;
   const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
                                       "geometry", "package_paths", "legs", "joints_deg", "on_collision"});
@@ -188,10 +195,25 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
                                              "(every collision is logged and the walk goes on), got '" + *mode + "'");
   }
 
-  // start: {xyz_m, yaw_deg}
-  if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg"})) {
-    robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], AnyNumber(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
+  // start: {xyz_m, yaw_deg, on}; `on` names the object the robot starts on
+  // on purpose (sim/start_check.h refuses any other start on or in an object)
+  if (const auto start = reader.Map((*map)["start"], {"xyz_m", "yaw_deg", "on"})) {
+    robot.start_xyz_m = reader.Vector3((*start)["xyz_m"], Coordinate(), "[x, y, z] in metres").value_or(robot.start_xyz_m);
     robot.start_yaw_rad = DegToRad(reader.Number((*start)["yaw_deg"]).value_or(0.0));
+    if (const Field on = (*start)["on"]) {
+      if (const auto object = reader.String(on)) {
+        std::vector<std::string> names;
+        for (const SceneObject& o : scene.objects) names.push_back(o.name);
+        if (std::ranges::find(names, *object) != names.end()) {
+          robot.start_on = *object;
+        } else {
+          const auto nearest = NearestKey(*object, names);
+          reader.Fail(on, "no object '" + *object + "' in the scene" +
+                              (nearest ? " (did you mean '" + *nearest + "'?)" : "") +
+                              "; expected the name of the object the robot starts on");
+        }
+      }
+    }
   }
 
   // gait: {stride_m, period_s, max_step_m}; stride or period absent scales with
@@ -207,16 +229,22 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     }
     robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
     robot.gait.derive_period_from_legs = !gait->Has("period_s");
-    robot.gait.stride_m = reader.Number((*gait)["stride_m"], PositiveNumber("m")).value_or(robot.gait.stride_m);
-    robot.gait.period_s = reader.Number((*gait)["period_s"], PositiveNumber("s")).value_or(robot.gait.period_s);
-    robot.gait.max_step_m = reader.Number((*gait)["max_step_m"], PositiveNumber("m")).value_or(0.0);
+    // a walking gait, not a degenerate one: a period of 1e-9 s walked the
+    // robot kilometres per sample and the terrain corridor never ended (issue 23)
+    NumberRule stride = NumberIn(kMinStride_m, kMaxStride_m, "m");
+    stride.expected += " (a stride a walking robot can take)";
+    NumberRule period = NumberIn(kMinGaitPeriod_s, kMaxGaitPeriod_s, "s");
+    period.expected += " (a gait cycle a walking robot can take)";
+    robot.gait.stride_m = reader.Number((*gait)["stride_m"], stride).value_or(robot.gait.stride_m);
+    robot.gait.period_s = reader.Number((*gait)["period_s"], period).value_or(robot.gait.period_s);
+    robot.gait.max_step_m = reader.Number((*gait)["max_step_m"], stride).value_or(0.0);
   }
 
   // path: {waypoints_m: [[x, y], ...]}
   if (const auto path = reader.Map((*map)["path"], {"waypoints_m"})) {
     if (const auto points = reader.List((*path)["waypoints_m"], "a list of [x, y] points in metres")) {
       for (const Field& point : *points) {
-        if (const auto xy = reader.Numbers(point, 2, AnyNumber(), "[x, y] in metres")) {
+        if (const auto xy = reader.Numbers(point, 2, Coordinate(), "[x, y] in metres")) {
           robot.waypoints_m.emplace_back((*xy)[0], (*xy)[1]);
         }
       }

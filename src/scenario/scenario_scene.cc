@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "core/nearest_key.h"
+#include "core/text_fields.h"
 #include "scenario/scenario_sections.h"
 #include "scene/mesh_loader.h"
 
@@ -29,7 +30,7 @@ Box ReadBox(YamlReader& reader, const Field& field) {
   if (!map) return box;
   const Field size = (*map)["size_m"];
   if (reader.Require(size, "size_m: [x, y, z], the full extents in metres")) {
-    if (auto size_m = reader.Vector3(size, PositiveNumber("m"), "[x, y, z], the full extents in metres")) {
+    if (auto size_m = reader.Vector3(size, PositiveLength(), "[x, y, z], the full extents in metres")) {
       box.size_m = *size_m;
     }
   }
@@ -43,7 +44,7 @@ Sphere ReadSphere(YamlReader& reader, const Field& field) {
   if (!map) return sphere;
   const Field radius = (*map)["radius_m"];
   if (reader.Require(radius, "radius_m, a finite number > 0 m")) {
-    sphere.radius_m = reader.Number(radius, PositiveNumber("m")).value_or(sphere.radius_m);
+    sphere.radius_m = reader.Number(radius, PositiveLength()).value_or(sphere.radius_m);
   }
   return sphere;
 }
@@ -56,10 +57,10 @@ Cylinder ReadCylinder(YamlReader& reader, const Field& field) {
   const Field radius = (*map)["radius_m"];
   const Field length = (*map)["length_m"];
   if (reader.Require(radius, "radius_m, a finite number > 0 m")) {
-    cylinder.radius_m = reader.Number(radius, PositiveNumber("m")).value_or(cylinder.radius_m);
+    cylinder.radius_m = reader.Number(radius, PositiveLength()).value_or(cylinder.radius_m);
   }
   if (reader.Require(length, "length_m, a finite number > 0 m")) {
-    cylinder.length_m = reader.Number(length, PositiveNumber("m")).value_or(cylinder.length_m);
+    cylinder.length_m = reader.Number(length, PositiveLength()).value_or(cylinder.length_m);
   }
   return cylinder;
 }
@@ -181,6 +182,9 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
     if (reader.Require(name, "name, unique in the scene")) {
       if (const auto text = reader.String(name)) {
         scene_object.name = *text;
+        // printable UTF-8 only: the JSON outputs stay valid (commas are quoted in CSV)
+        if (const std::string problem = NamingProblem(*text); !problem.empty())
+          reader.Fail(name, "expected a name of printable UTF-8 text, got " + problem);
         const auto [previous, inserted] = name_origin.emplace(*text, item.path);
         if (!inserted) reader.Fail(name, "duplicate object name '" + *text + "' (already used by " + previous->second + ")");
       }

@@ -26,8 +26,10 @@ Pose ReadPose(YamlReader& reader, const Field& field);
 /// meshes loaded; object names unique across both.
 void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scenario& scenario);
 
-/// `robot: {model, start, gait, path, strategy, stop_distance_m, trajectory}`; file paths resolved.
-RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir);
+/// `robot: {model, start, gait, path, strategy, stop_distance_m, trajectory}`; file paths resolved;
+/// `start.on` must name an object of `scene`.
+RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
+                      const Scene& scene);
 
 /// `sensors: [...]`: presets from `type`, overrides, SensorSpec::Validate();
 /// without a robot, every link must be "world".

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/nearest_key.h"
+#include "core/text_fields.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
@@ -247,6 +248,9 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
     if (reader.Require(name, "name, unique among the sensors")) {
       if (const auto text = reader.String(name)) {
         sensor.name = *text;
+        // printable UTF-8 only: the JSON outputs stay valid (commas are quoted in CSV)
+        if (const std::string problem = NamingProblem(*text); !problem.empty())
+          reader.Fail(name, "expected a name of printable UTF-8 text, got " + problem);
         const auto [previous, inserted] = name_origin.emplace(*text, item.path);
         if (!inserted) reader.Fail(name, "duplicate sensor name '" + *text + "' (already used by " + previous->second + ")");
       }

@@ -3,6 +3,8 @@
 // every node with its position; its lines count from 0, ours from 1.
 #include "scenario/yaml_reader.h"
 
+#include "core/input_limits.h"
+
 #include <algorithm>
 #include <cassert>
 #include <charconv>
@@ -57,6 +59,20 @@ NumberRule NonNegativeNumber(const std::string& unit) {
   NumberRule rule;
   rule.min = 0;
   rule.expected = WithUnit("a finite number >= 0", unit);
+  return rule;
+}
+
+NumberRule Coordinate() {
+  NumberRule rule = NumberIn(-kMaxCoordinate_m, kMaxCoordinate_m, "m");
+  rule.expected += " (the coordinate limit: rays are cast in single precision; docs/trust.md)";
+  return rule;
+}
+
+NumberRule PositiveLength() {
+  NumberRule rule = PositiveNumber("m");
+  rule.max = 2 * kMaxCoordinate_m;
+  rule.expected = "a finite number at most " + FormatNumber(rule.max) +
+                  " m (the coordinate limit: rays are cast in single precision; docs/trust.md) and > 0 m";
   return rule;
 }
 

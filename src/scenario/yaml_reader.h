@@ -49,6 +49,11 @@ NumberRule PositiveNumber(const std::string& unit = "");
 NumberRule NonNegativeNumber(const std::string& unit = "");
 /// A finite number in [min, max].
 NumberRule NumberIn(double min, double max, const std::string& unit = "");
+/// A position in metres within ±kMaxCoordinate_m (core/input_limits.h): rays
+/// are cast in single precision, too coarse beyond it.
+NumberRule Coordinate();
+/// A length > 0 m and at most 2·kMaxCoordinate_m (a box, a radius).
+NumberRule PositiveLength();
 
 /// A short rendering of a node for "got …": a scalar's text (quoted when the
 /// file quoted it), a flat list as [a, b], otherwise "a map", "a list of N items", "nothing".

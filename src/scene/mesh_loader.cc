@@ -11,7 +11,9 @@
 //
 // Assimp 5.2's PLY reader loops forever on a header without `end_header` and
 // can crash on a truncated binary body, so PLY files get a header check of
-// our own first (CheckPlyFile); other formats go to Assimp as they are.
+// our own first (CheckPlyFile). Every file also passes PrescanMeshFile
+// (mesh_prescan.h: a regular file, nesting depth, declared sizes) before
+// Assimp sees it, and Assimp opens files only through MeshIOSystem.
 #include "scene/mesh_loader.h"
 
 #include <assimp/postprocess.h>
@@ -20,6 +22,7 @@
 
 #include <assimp/Importer.hpp>
 #include <array>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -27,6 +30,8 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/input_limits.h"
+#include "scene/mesh_prescan.h"
 
 namespace proxsim {
 
@@ -58,7 +63,7 @@ void CheckPlyFile(const std::string& path) {
   // walk the header, adding up the least size of a binary body
   constexpr std::size_t kMaxHeaderBytes = 1 << 16;
   bool binary = false, ended = false, has_format = false, in_element = false;
-  std::size_t element_count = 0, least_body_bytes = 0;
+  std::size_t element_count = 0, least_body_bytes = 0, least_ascii_entries = 0;
   int line_no = 1;
   const auto fail = [&](const std::string& why) {
     throw InputError(path + ":" + std::to_string(line_no) + ": PLY header: " + why);
@@ -88,8 +93,12 @@ void CheckPlyFile(const std::string& path) {
     } else if (keyword == "element") {
       std::string name;
       if (!(words >> name >> element_count)) fail("expected 'element NAME COUNT'");
-      if (element_count > (std::size_t{1} << 32)) fail("element '" + name + "' has an absurd count");
+      if (element_count > kMaxDeclaredElements) {
+        fail("element '" + name + "' declares " + std::to_string(element_count) + " entries, beyond the limit of " +
+             std::to_string(kMaxDeclaredElements));
+      }
       in_element = true;
+      least_ascii_entries += element_count;
     } else if (keyword == "property") {
       if (!in_element) fail("a property before any element");
       std::string type, name;
@@ -112,7 +121,16 @@ void CheckPlyFile(const std::string& path) {
   if (ended && !has_format) fail("no format line");
   if (!ended) throw InputError(path + ": PLY header has no end_header line");
 
-  // a binary body shorter than the header promises is truncated
+  // a body shorter than the header promises is truncated (an ASCII entry takes 2 bytes at least)
+  if (!binary) {
+    const std::streamoff body_start = in.tellg();
+    in.seekg(0, std::ios::end);
+    const auto body_bytes = static_cast<std::size_t>(in.tellg() - body_start);
+    if (body_bytes < least_ascii_entries * 2) {
+      throw InputError(path + ": PLY file is truncated (" + std::to_string(body_bytes) + " bytes of data for " +
+                       std::to_string(least_ascii_entries) + " declared elements)");
+    }
+  }
   if (binary) {
     const std::streamoff body_start = in.tellg();
     in.seekg(0, std::ios::end);
@@ -131,6 +149,7 @@ std::shared_ptr<const TriangleMesh> LoadMeshFile(const std::string& path, const 
   std::error_code error;
   if (!std::filesystem::exists(path, error)) throw InputError(path + ": mesh file not found");
   if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a directory, expected a mesh file");
+  PrescanMeshFile(path);  // a regular file, bounded nesting and sizes: before any parser
   if (!std::ifstream(path).good()) throw InputError(path + ": mesh file cannot be opened for reading");
 
   CheckPlyFile(path);
@@ -141,9 +160,12 @@ std::shared_ptr<const TriangleMesh> LoadMeshFile(const std::string& path, const 
   // transforms and join identical vertices ourselves; ValidateDataStructure
   // refuses out-of-range indices and empty faces before we read them.
   Assimp::Importer importer;
+  auto* io = new MeshIOSystem;  // the importer owns it
+  importer.SetIOHandler(io);
   const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
   if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
-    throw InputError(path + ": cannot read the mesh file (" + importer.GetErrorString() + ")");
+    const std::string refused = io->refusal().empty() ? "" : "; " + io->refusal();
+    throw InputError(path + ": cannot read the mesh file (" + importer.GetErrorString() + refused + ")");
   }
 
   // walk the node tree, baking each node's transform into the vertices of the
@@ -151,7 +173,7 @@ std::shared_ptr<const TriangleMesh> LoadMeshFile(const std::string& path, const 
   // lines are dropped (a file of lines only reports "no triangles")
   auto mesh = std::make_shared<TriangleMesh>();
   std::map<std::array<float, 3>, std::uint32_t> vertex_index;  // identical vertices joined
-  constexpr int kMaxDepth = 256;
+  constexpr int kMaxDepth = kMaxNestingDepth;
   const auto add_node = [&](const auto& self, const aiNode& node, const aiMatrix4x4& X_parent, int depth) -> void {
     if (depth > kMaxDepth) throw InputError(path + ": node tree deeper than " + std::to_string(kMaxDepth));
     const aiMatrix4x4 X = X_parent * node.mTransformation;
@@ -166,6 +188,14 @@ std::shared_ptr<const TriangleMesh> LoadMeshFile(const std::string& path, const 
         if (!p_O.allFinite()) {
           throw InputError(path + ": vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
                            " is not finite (after scaling)");
+        }
+        // single-precision ray casting resolves no finer than ~1 cm beyond this
+        if (p_O.cwiseAbs().maxCoeff() > kMaxCoordinate_m) {
+          char where[96];
+          std::snprintf(where, sizeof where, "(%g, %g, %g) m", p_O.x(), p_O.y(), p_O.z());
+          throw InputError(path + ": vertex " + std::to_string(v) + " of mesh " + std::to_string(m) + " at " + where +
+                           " (after scaling) is beyond the coordinate limit of ±" + std::to_string(int(kMaxCoordinate_m)) +
+                           " m (rays are cast in single precision; docs/trust.md)");
         }
         const auto [it, added] = vertex_index.try_emplace({p_O.x(), p_O.y(), p_O.z()},
                                                            static_cast<std::uint32_t>(mesh->vertices_O.size()));

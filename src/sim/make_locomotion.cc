@@ -9,17 +9,17 @@ namespace {
 
 constexpr const char* kBuiltinPrefix = "builtin:";
 
-RobotModel LoadModel(const RobotConfig& config) {
+}  // namespace
+
+RobotModel LoadRobotModel(const RobotConfig& config) {
   const UrdfOptions options{.geometry = config.geometry, .package_paths = config.package_paths};
   if (config.model.starts_with(kBuiltinPrefix))
     return RobotModel::Builtin(config.model.substr(std::string(kBuiltinPrefix).size()), options);
   return RobotModel::FromUrdfFile(config.model, options);
 }
 
-}  // namespace
-
 std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config) {
-  RobotModel model = LoadModel(config);
+  RobotModel model = LoadRobotModel(config);
   if (!config.trajectory_file.empty()) {
     return std::make_unique<TrajectoryPlayer>(std::move(model), config.trajectory_file);
   }

@@ -11,6 +11,10 @@
 
 namespace proxsim {
 
+/// The robot's model alone (`robot.model`, `geometry`, `package_paths`), as
+/// the motion loads it. Throws InputError on a bad URDF or mesh.
+RobotModel LoadRobotModel(const RobotConfig& config);
+
 /// Throws InputError on a bad robot, gait or trajectory.
 std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config);
 

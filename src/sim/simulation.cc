@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "sim/make_locomotion.h"
 #include "sim/robot_knowledge.h"
+#include "sim/start_check.h"
 #include "strategy/make_strategy.h"
 
 namespace proxsim {
@@ -79,7 +80,8 @@ RobotCommands* Simulation::commands() { return commands_.get(); }
 
 void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy) {
   locomotion_ = std::move(locomotion);
-  if (!locomotion_ && scenario_.robot) locomotion_ = MakeLocomotion(*scenario_.robot);
+  const bool own_locomotion = !locomotion_ && scenario_.robot;
+  if (own_locomotion) locomotion_ = MakeLocomotion(*scenario_.robot);
   world_ = std::make_unique<World>(scenario_, locomotion_ ? &locomotion_->model() : nullptr, threads);
   // (after the robot and the world, whose problems come first) a run without
   // sensors would write an empty report and claim success
@@ -101,6 +103,12 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
   if (locomotion_) {
     // the gait plans its footsteps on the scene's true surface
     locomotion_->SetTerrain(&world_->terrain());
+    // the scenario's own robot must start clear of the scene's objects, on its
+    // ground (an injected motion is the caller's: it is not stepped here)
+    if (own_locomotion) {
+      const std::vector<std::string> problems = StartProblems(scenario_, *world_, *locomotion_);
+      if (!problems.empty()) throw InputError(problems);
+    }
     commands_ = std::make_unique<Commands>(*this);
     strategy_ = std::move(strategy);
     feet_ = locomotion_->Feet();

@@ -36,8 +36,11 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
   first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
   // the ground is what the scene declares so (SceneObject::ground), whatever its name
+  // (and the object the robot starts on on purpose, robot.start.on: it stands on it)
+  const std::string start_on = scenario.robot ? scenario.robot->start_on : "";
   for (std::size_t id = 0; id < scenario.scene.objects.size(); ++id) {
-    if (scenario.scene.objects[id].ground) ground_ids_.push_back(static_cast<std::int32_t>(id));
+    const SceneObject& object = scenario.scene.objects[id];
+    if (object.ground || (!start_on.empty() && object.name == start_on)) ground_ids_.push_back(static_cast<std::int32_t>(id));
   }
   // the ground alone, in a caster of its own: a line down through an obstacle
   // resting on the floor meets the floor under it, even where the two touch

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "core/atomic_file.h"
+#include "core/text_fields.h"
 #include "study/study_selection.h"
 
 namespace proxsim {
@@ -77,17 +78,18 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
   // results.csv: one row per run, every parameter and metric
   std::string csv = "candidate,type,part,link,along_m,forward_m,pitch_deg,yaw_deg,scene,seed,samples,false_alarms,"
                     "self_share,grazing_share,floor_coverage";
-  for (const std::string& h : study.hazards) csv += "," + h + "_detected," + h + "_first_t_s," + h + "_lead_m";
+  for (const std::string& h : study.hazards)
+    csv += "," + CsvField(h + "_detected") + "," + CsvField(h + "_first_t_s") + "," + CsvField(h + "_lead_m");
   csv += "\n";
   for (std::size_t c = 0; c < n; ++c) {
     const Candidate& cand = study.candidates[c];
     for (std::size_t v = 0; v < study.variants.size(); ++v) {
       for (std::size_t s = 0; s < study.seeds.size(); ++s) {
         const RunMetrics& m = results[v][s][c];
-        csv += cand.id + "," + SensorTypeName(cand.sensor.spec.type) + "," + cand.sensor.spec.part + "," +
-               cand.sensor.link + "," +
+        csv += CsvField(cand.id) + "," + SensorTypeName(cand.sensor.spec.type) + "," + cand.sensor.spec.part + "," +
+               CsvField(cand.sensor.link) + "," +
                Number(cand.along_m) + "," + Number(cand.forward_m) + "," + Number(cand.pitch_deg) + "," +
-               Number(cand.yaw_deg) + "," + study.variants[v].name + "," + std::to_string(study.seeds[s]) + "," +
+               Number(cand.yaw_deg) + "," + CsvField(study.variants[v].name) + "," + std::to_string(study.seeds[s]) + "," +
                std::to_string(m.samples) + "," + std::to_string(m.false_alarms) + "," + Number(m.self_share) + "," +
                Number(m.grazing_share) + "," + Number(m.floor_coverage);
         for (const HazardResult& h : m.hazards) {
@@ -133,8 +135,8 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
     const Row& row = rows[r];
     const Candidate& cand = study.candidates[row.c];
     rank[row.c] = r;
-    ranking += std::to_string(r + 1) + "," + cand.id + "," + SensorTypeName(cand.sensor.spec.type) + "," +
-               cand.sensor.spec.part + "," + cand.sensor.link + "," + Number(cand.along_m) + "," + Number(cand.forward_m) + "," +
+    ranking += std::to_string(r + 1) + "," + CsvField(cand.id) + "," + SensorTypeName(cand.sensor.spec.type) + "," +
+               cand.sensor.spec.part + "," + CsvField(cand.sensor.link) + "," + Number(cand.along_m) + "," + Number(cand.forward_m) + "," +
                Number(cand.pitch_deg) + "," + Number(cand.yaw_deg) + "," + Number(row.rate.mean) + "," +
                Number(row.rate.ci95) + "," + Number(row.lead.mean) + "," + Number(row.lead.ci95) + "," +
                Number(row.false_alarms) + "," + Number(row.self_share) + "," + Number(row.grazing_share) + "," +

@@ -112,7 +112,7 @@ Candidate MakeCandidate(const SensorSpec& spec, const std::string& type, const s
 }
 
 // (the links are checked when each variant's world is built, before any run)
-void ReadCandidates(YamlReader& reader, const Field& field, StudyConfig& study) {
+void ReadCandidates(YamlReader& reader, const Field& field, StudyConfig& study, bool allow_large) {
   const auto map = reader.Map(field, {"axes", "list"});
   if (!map) return;
   if (!(*map)["axes"] && !(*map)["list"]) reader.Fail(field, "expected axes, a list, or both: no candidate to study");
@@ -126,6 +126,24 @@ void ReadCandidates(YamlReader& reader, const Field& field, StudyConfig& study) 
     const auto forward = NumberAxis(reader, (*axes)["forward_m"], {0.0});
     const auto pitch = NumberAxis(reader, (*axes)["pitch_deg"], {0.0});
     const auto yaw = NumberAxis(reader, (*axes)["yaw_deg"], {0.0});
+    // the product is counted before any candidate is made (in double: it may overflow)
+    const double product = static_cast<double>(types.size()) * links.size() * along.size() * forward.size() *
+                           pitch.size() * yaw.size();
+    const std::size_t limit = allow_large ? kHardMaxStudyCandidates : kMaxStudyCandidates;
+    if (product > static_cast<double>(limit)) {
+      char count[32];
+      std::snprintf(count, sizeof count, "%.4g", product);
+      reader.Fail((*map)["axes"], std::string("the axes make ") + count + " candidates (" +
+                                      std::to_string(types.size()) + " types x " + std::to_string(links.size()) +
+                                      " links x " + std::to_string(along.size()) + " x " +
+                                      std::to_string(forward.size()) + " x " + std::to_string(pitch.size()) + " x " +
+                                      std::to_string(yaw.size()) + " positions and angles); expected at most " +
+                                      std::to_string(limit) +
+                                      (allow_large ? " even with --allow-large"
+                                                   : " (each is a sensor in every job's simulation); narrow the "
+                                                     "axes, or pass --allow-large"));
+      return;
+    }
     for (const std::string& type : types) {
       const auto spec = SpecOf(type);
       if (!spec) {
@@ -247,7 +265,7 @@ void ReadVariants(YamlReader& reader, const Field& field, const std::optional<Sc
 
 }  // namespace
 
-StudyConfig LoadStudyFile(const std::string& path) {
+StudyConfig LoadStudyFile(const std::string& path, bool allow_large) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": cannot read the study file: no such file");
   std::ifstream file(path, std::ios::binary);
@@ -285,7 +303,7 @@ StudyConfig LoadStudyFile(const std::string& path) {
     }
   }
   if (reader.Require((*top)["candidates"], "the candidate mountings (axes or a list)")) {
-    ReadCandidates(reader, (*top)["candidates"], study);
+    ReadCandidates(reader, (*top)["candidates"], study, allow_large);
   }
   if ((*top)["scenes"]) {
     ReadVariants(reader, (*top)["scenes"], base, base_dir, study);
@@ -322,6 +340,15 @@ StudyConfig LoadStudyFile(const std::string& path) {
     }
   }
   if (!reader.HasProblems() && study.candidates.empty()) reader.Fail((*top)["candidates"], "no candidate to study");
+  // the whole study's size, before any world is built or any run starts
+  const double runs = static_cast<double>(study.candidates.size()) * study.variants.size() * study.seeds.size();
+  if (!allow_large && runs > static_cast<double>(kMaxStudyRuns)) {
+    reader.Fail((*top)["seeds"], std::to_string(study.candidates.size()) + " candidates x " +
+                                     std::to_string(study.variants.size()) + " scenes x " +
+                                     std::to_string(study.seeds.size()) + " seeds = " +
+                                     std::to_string(static_cast<std::uint64_t>(runs)) + " runs; expected at most " +
+                                     std::to_string(kMaxStudyRuns) + " (pass --allow-large to run it anyway)");
+  }
   if (reader.HasProblems()) throw InputError(reader.Problems());
   return study;
 }

@@ -57,7 +57,16 @@ struct StudyConfig {
   std::vector<std::string> select_types;  ///< the types the selection may pick; empty: every type
 };
 
+/// A study's size, bounded before anything is built (issue 23: a study of
+/// 1.9 million candidates ended in std::bad_alloc). Every candidate is a
+/// sensor in each job's simulation; a run is a candidate in a scene with a seed.
+inline constexpr std::size_t kMaxStudyCandidates = 10'000;
+inline constexpr std::size_t kMaxStudyRuns = 1'000'000;
+/// Even with allow_large: beyond this the candidates alone would not fit in memory.
+inline constexpr std::size_t kHardMaxStudyCandidates = 1'000'000;
+
 /// Reads and validates a study; throws InputError listing every problem.
-StudyConfig LoadStudyFile(const std::string& path);
+/// `allow_large` (--allow-large) lifts kMaxStudyCandidates and kMaxStudyRuns.
+StudyConfig LoadStudyFile(const std::string& path, bool allow_large = false);
 
 }  // namespace proxsim

@@ -17,7 +17,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "study/study_journal.h"
 #include "study/study_mpi.h"
 
 namespace proxsim {
@@ -29,36 +31,6 @@ using nlohmann::json;
 
 // ----- a job's metrics as JSON (the journal and the MPI messages)
 
-json ToJson(const std::vector<RunMetrics>& runs) {
-  json out = json::array();
-  for (const RunMetrics& m : runs) {
-    json hazards = json::array();
-    for (const HazardResult& h : m.hazards) hazards.push_back({h.applies, h.detected, h.first_t_s, h.lead_m});
-    out.push_back({{"h", hazards},
-                   {"n", m.samples},
-                   {"fa", m.false_alarms},
-                   {"self", m.self_share},
-                   {"graze", m.grazing_share},
-                   {"floor", m.floor_coverage}});
-  }
-  return out;
-}
-
-std::vector<RunMetrics> FromJson(const json& in) {
-  std::vector<RunMetrics> runs;
-  for (const json& r : in) {
-    RunMetrics m;
-    for (const json& h : r.at("h")) m.hazards.push_back({h.at(0), h.at(1), h.at(2), h.at(3)});
-    m.samples = r.at("n");
-    m.false_alarms = r.at("fa");
-    m.self_share = r.at("self");
-    m.grazing_share = r.at("graze");
-    m.floor_coverage = r.at("floor");
-    runs.push_back(std::move(m));
-  }
-  return runs;
-}
-
 // What makes a journal belong to this study: the candidates, variants, seeds, hazards.
 std::string Fingerprint(const StudyConfig& study) {
   std::string text;
@@ -66,7 +38,17 @@ std::string Fingerprint(const StudyConfig& study) {
   for (const SceneVariant& v : study.variants) text += v.name + ";";
   for (std::uint64_t s : study.seeds) text += std::to_string(s) + ";";
   for (const std::string& h : study.hazards) text += h + ";";
-  return std::to_string(std::hash<std::string>{}(text));
+  // FNV-1a 64: the same in every build (std::hash is not), with the shape in clear
+  std::uint64_t hash = 1469598103934665603ull;
+  for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return std::to_string(study.candidates.size()) + "c" + std::to_string(study.variants.size()) + "v" +
+         std::to_string(study.seeds.size()) + "s" + std::to_string(study.hazards.size()) + "h-" + hex;
+}
+
+JournalShape ShapeOf(const StudyConfig& study) {
+  return {study.variants.size() * study.seeds.size(), study.candidates.size(), study.hazards.size()};
 }
 
 // ----- one worker's simulations: a world per variant, built once, reset per job
@@ -110,15 +92,15 @@ class Worker {
 
 class Journal {
  public:
-  Journal(const std::string& path, const std::string& fingerprint, bool resume, std::size_t jobs)
-      : path_(path), done_(jobs) {
+  Journal(const std::string& path, const std::string& fingerprint, bool resume, const JournalShape& shape)
+      : path_(path), shape_(shape), done_(shape.jobs) {
     if (resume) Load(fingerprint);
-    // rewrite what was read (a line cut by a kill is dropped), then append
-    std::ofstream out(path_, std::ios::trunc);
-    out << json{{"study", fingerprint}}.dump() << "\n";
-    for (const auto& [job, line] : lines_) out << line << "\n";
-    out.close();
-    fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND);
+    // rewrite what was read (a line cut by a kill is dropped), then append;
+    // neither step follows a link planted under the journal's name
+    std::string text = json{{"study", fingerprint}}.dump() + "\n";
+    for (const auto& [job, line] : lines_) text += line + "\n";
+    WriteFileAtomically(path_, text);
+    fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_NOFOLLOW | O_CLOEXEC);
     if (fd_ < 0) throw std::runtime_error("cannot write the study's journal " + path_);
   }
   ~Journal() {
@@ -147,7 +129,7 @@ class Journal {
     if (!in) return;  // nothing to resume: start afresh
     std::string line;
     bool first = true;
-    while (std::getline(in, line)) {
+    for (int line_no = 1; std::getline(in, line); ++line_no) {
       const json entry = json::parse(line, nullptr, false);
       if (entry.is_discarded()) continue;  // the line a kill cut short
       if (first) {
@@ -158,15 +140,20 @@ class Journal {
         }
         continue;
       }
-      const std::size_t job = entry.at("job");
-      if (job < done_.size()) {
+      // every line checked against this study's shape before it is used
+      try {
+        const std::size_t job = ParseJournalLine(entry, shape_).job;
         lines_[job] = line;
         done_[job] = true;
+      } catch (const InputError& error) {
+        throw InputError(path_ + ":" + std::to_string(line_no) + ": " + error.problems().front() +
+                         "; remove the journal or give another --out");
       }
     }
   }
 
   std::string path_;
+  JournalShape shape_;
   std::vector<bool> done_;
   std::map<std::size_t, std::string> lines_;
   std::mutex mutex_;
@@ -245,14 +232,17 @@ StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, boo
     for (;;) {
       const long job = mpi.ExchangeWithWriter(result);
       if (job < 0) break;
-      result = json{{"job", job}, {"metrics", ToJson(workers[0]->Run(static_cast<std::size_t>(job)))}}.dump();
+      result = json{{"job", job}, {"metrics", JournalMetricsJson(workers[0]->Run(static_cast<std::size_t>(job)))}}.dump();
     }
     return {};
   }
 
-  std::filesystem::create_directories(options.out_dir);
-  Journal journal((std::filesystem::path(options.out_dir) / "journal.jsonl").string(), Fingerprint(study),
-                  options.resume, jobs);
+  // the folder, claimed and locked: a second study (or run) into it fails at once
+  auto folder = std::make_shared<OutputFolder>(
+      options.out_dir, ClaimOptions{.command = "study", .force = options.force, .ours = "journal.jsonl"});
+  if (options.folder != nullptr) *options.folder = folder;
+  Journal journal((std::filesystem::path(folder->path()) / "journal.jsonl").string(), Fingerprint(study),
+                  options.resume, ShapeOf(study));
   Progress progress(options.progress, jobs, journal.done_count(), study.candidates.size());
   if (options.progress) {
     std::fprintf(stderr,
@@ -285,8 +275,9 @@ StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, boo
   if (mpi.size() > 1) {
     dispatcher = std::thread([&] {
       mpi.ServeWorkers(take, [&](const std::string& message) {
-        const json entry = json::parse(message);
-        record(entry.at("job"), entry.at("metrics"));
+        // a worker's message has a journal line's form: checked the same way
+        const JournalEntry entry = ParseJournalLine(json::parse(message), ShapeOf(study));
+        record(entry.job, JournalMetricsJson(entry.metrics));
       });
     });
   }
@@ -296,7 +287,7 @@ StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, boo
   for (auto& worker : workers) {
     pool.emplace_back([&, w = worker.get()] {
       try {
-        for (long job = take(); job >= 0; job = take()) record(job, ToJson(w->Run(static_cast<std::size_t>(job))));
+        for (long job = take(); job >= 0; job = take()) record(job, JournalMetricsJson(w->Run(static_cast<std::size_t>(job))));
       } catch (...) {
         std::lock_guard lock(failure_mutex);
         failure = std::current_exception();
@@ -310,7 +301,8 @@ StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, boo
   // every job's metrics, from the journal: the same whatever ran them
   StudyResults results(study.variants.size(), std::vector<std::vector<RunMetrics>>(study.seeds.size()));
   for (const auto& [job, line] : journal.lines()) {
-    results[job / study.seeds.size()][job % study.seeds.size()] = FromJson(json::parse(line).at("metrics"));
+    results[job / study.seeds.size()][job % study.seeds.size()] =
+        ParseJournalLine(json::parse(line), ShapeOf(study)).metrics;
   }
   return results;
 }

@@ -1,9 +1,11 @@
 #include "terrain/octomap_recorder.h"
 
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include <octomap/OcTree.h>
+
+#include "core/atomic_file.h"
 
 namespace proxsim {
 
@@ -51,18 +53,19 @@ void OctomapRecorder::WriteBinary(const std::string& path) const {
   // OctoMap's .bt layout as its writeBinaryConst writes it: the header, then
   // the nodes through writeBinaryData (a template compiled here). The
   // library's own writeBinaryConst is compiled without NDEBUG in Debian's
-  // package and prints " done." on stderr at every call.
+  // package and prints " done." on stderr at every call. The bytes go
+  // through AtomicFile (never through a link), not an ofstream of our own.
   const octomap::OcTree& tree = impl_->tree;
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << "# Octomap OcTree binary file\n"
-      << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
-      << "id " << tree.getTreeType() << "\n"
-      << "size " << tree.size() << "\n"
-      << "res " << tree.getResolution() << "\n"
-      << "data\n";
-  tree.writeBinaryData(out);
-  out.close();
-  if (!out) throw std::runtime_error("cannot write the OctoMap tree " + path);
+  std::ostringstream bytes(std::ios::binary);
+  bytes << "# Octomap OcTree binary file\n"
+        << "# (feel free to add / change comments, but leave the first line as it is!)\n#\n"
+        << "id " << tree.getTreeType() << "\n"
+        << "size " << tree.size() << "\n"
+        << "res " << tree.getResolution() << "\n"
+        << "data\n";
+  tree.writeBinaryData(bytes);
+  if (!bytes) throw std::runtime_error("cannot write the OctoMap tree " + path);
+  WriteFileAtomically(path, bytes.str());
 }
 
 std::size_t OctomapRecorder::leaf_count() const { return impl_->tree.getNumLeafNodes(); }

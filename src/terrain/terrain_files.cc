@@ -88,18 +88,18 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
                                         : CellBox{extent.ix_min - margin, extent.iy_min - margin, extent.ix_max + margin,
                                                   extent.iy_max + margin};
 
-  // the files, when asked for, in a folder renamed into place at the end
-  const std::filesystem::path final_dir(dir), tmp_dir(dir + ".tmp");
+  // the files, when asked for, each an atomic file in the folder: a user's own
+  // files there stay (the previous run's went by its manifest)
+  const std::filesystem::path final_dir(dir);
   // one file per array, in kArrayNames' order
   static constexpr const char* kArrayNames[] = {"elevation.npy", "variance.npy", "upper_bound.npy", "truth.npy",
                                                 "hits.npy", "first_update_t_s.npy", "last_update_t_s.npy"};
   enum { kElevation, kVariance, kUpperBound, kTruth, kHits, kFirstT, kLastT };
   std::vector<std::unique_ptr<NpyRows>> arrays;
   if (!dir.empty()) {
-    std::filesystem::remove_all(tmp_dir);
-    std::filesystem::create_directories(tmp_dir);
+    std::filesystem::create_directories(final_dir);
     for (const char* name : kArrayNames) {
-      arrays.push_back(std::make_unique<NpyRows>((tmp_dir / name).string(), name == std::string("hits.npy") ? "<u4" : "<f4", ny, nx));
+      arrays.push_back(std::make_unique<NpyRows>((final_dir / name).string(), name == std::string("hits.npy") ? "<u4" : "<f4", ny, nx));
     }
   }
 
@@ -147,11 +147,9 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
       {"truth_ceiling_z_m", map.truth_ceiling_z_m()},
       {"frame", "world"},
       {"arrays", kArrayNames}};
-  WriteFileAtomically((tmp_dir / "meta.json").string(), meta.dump(2) + "\n");
-  WriteFileAtomically((tmp_dir / "hazards.csv").string(), HazardsCsvText(map.hazards()));
-  if (octomap != nullptr) octomap->WriteBinary((tmp_dir / "map.bt").string());
-  std::filesystem::remove_all(final_dir);
-  std::filesystem::rename(tmp_dir, final_dir);
+  WriteFileAtomically((final_dir / "meta.json").string(), meta.dump(2) + "\n");
+  WriteFileAtomically((final_dir / "hazards.csv").string(), HazardsCsvText(map.hazards()));
+  if (octomap != nullptr) octomap->WriteBinary((final_dir / "map.bt").string());
   return score;
 }
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import proxsim
-from conftest import SCENARIOS, read_tree, run_cli, scenario
+from conftest import SCENARIOS, SOURCE_DIR, read_tree, run_cli, scenario
 
 READING_KEYS = {"d_m", "detected", "fresh", "signal", "output", "t_reported_s", "origin_W", "dir_W"}
 ROBOT_KEYS = {"pelvis_W", "yaw_deg", "joints_rad", "gait_phase", "support_leg", "soles_W", "toes_W", "heading_W",
@@ -160,6 +160,17 @@ def test_bad_scenario_raises_input_error_with_the_cli_messages(tmp_path):
         proxsim.Simulation(str(tmp_path / "missing.yaml"))
     with pytest.raises(proxsim.InputError):
         proxsim.Simulation.builtin("no_such_builtin")
+
+
+def test_a_start_on_an_object_is_an_input_error_naming_it_unless_on_says_so():
+    # a box under the robot's feet: refused as the CLI refuses it (exit 2), naming the box and a foot
+    bad = os.path.join(SOURCE_DIR, "tests", "data", "bad_input", "start_on_crate.yaml")
+    with pytest.raises(proxsim.InputError, match="would start standing on object 'crate' \\(its foot 'left_foot'"):
+        proxsim.Simulation(bad)
+    assert run_cli("validate", bad).returncode == 2
+    # the same box started on on purpose
+    with proxsim.Simulation(os.path.join(SOURCE_DIR, "tests", "data", "cli", "start_on_crate_on_purpose.yaml")) as sim:
+        sim.step()
 
 
 def test_a_scenario_with_no_sensors_measures_nothing_and_is_refused(tmp_path):

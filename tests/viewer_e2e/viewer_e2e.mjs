@@ -133,6 +133,24 @@ try {
     `every strategy event is marked and listed by the end (${events.atEnd}/${events.rows}/${events.total})`);
   check(events.total === 0 || events.atStart < events.total, `events appear with time (${events.atStart} at the start)`);
 
+  // collisions (docs/outcomes.md): a red ball at each contact point and the
+  // struck link drawn red, from the collision's time on
+  const collisions = await page.evaluate(([a, b]) => {
+    const v = window.proxsimViewer;
+    const list = window.PROXSIM_DATA.collisions || [];
+    v.setTime(a);
+    const before = { balls: v.collisionsShown(), struck: v.struckLinks() };
+    v.setTime(b);
+    return { total: list.length, links: list.map((c) => c.link), before, after: { balls: v.collisionsShown(), struck: v.struckLinks() } };
+  }, [tStart, tEnd]);
+  if (collisions.total > 0) {
+    check(collisions.before.balls === 0 && collisions.before.struck.length === 0 || collisions.before.balls < collisions.total,
+      `collisions appear with time (${collisions.before.balls} at the start)`);
+    check(collisions.after.balls === collisions.total, `every collision point is marked by the end (${collisions.after.balls}/${collisions.total})`);
+    check(collisions.links.every((l) => collisions.after.struck.includes(l)),
+      `the struck links are drawn red (${collisions.after.struck.join(', ')})`);
+  }
+
   // the terrain map: every run with a robot has one; its cells appear when the
   // files say they were first measured, all of them by the end; its hazards
   // are marked (3D and side panel) once found; its toggle hides the layer

@@ -73,7 +73,8 @@ function start() {
   const profile = new ProfileView(stage.scene, data.profile, data.sensors, data.objectColors);
   const terrain = new TerrainView(stage.scene, data.terrain);
   const rootLink = robot.rootLink();
-  const walk = new WalkView(stage.scene, data.poses, rootLink ? rootLink.name : null, data.events);
+  const walk = new WalkView(stage.scene, data.poses, rootLink ? rootLink.name : null, data.events, data.collisions);
+  robot.markCollisions(data.collisions);
   rays.resize(stage.size);
 
   const state = { t: span[0], playing: false, speed: 1, follow: Boolean(data.poses),
@@ -149,6 +150,8 @@ function start() {
     rayEndpoints: () => rays.endpoints(),
     profilePointsShown: () => profile.shownCount(),
     eventsShown: () => walk.eventsShown(),
+    struckLinks: () => robot.struckLinks(),
+    collisionsShown: () => walk.collisionsShown(),
     mapCellsShown: () => terrain.cellsShown(),
     hazardsShown: () => terrain.hazardsShown(),
     play: () => setPlaying(true),

@@ -12,6 +12,9 @@ export class RobotView {
     if (!robot || !poses) return;
     const material = new THREE.MeshLambertMaterial({ color: 0x4f6d8f });
     const joint = new THREE.MeshLambertMaterial({ color: 0x2f3f52 });
+    // a link that has collided, from its collision on (sim/contacts.h, docs/outcomes.md)
+    this.struck = new THREE.MeshLambertMaterial({ color: 0xd62728, emissive: 0x5a0000 });
+    this.struckSince = new Map();
     for (const link of robot.links) {
       const group = new THREE.Group();
       group.name = link.name;
@@ -20,9 +23,22 @@ export class RobotView {
         if (mesh) group.add(mesh);
       }
       group.visible = Boolean(poses.links[link.name]);
+      for (const mesh of group.children) mesh.userData.material = mesh.material;
       scene.add(group);
       this.links.set(link.name, group);
     }
+  }
+
+  /** collisions: data.collisions ([{t, link, p}]): each link is drawn red from its first one on. */
+  markCollisions(collisions) {
+    for (const c of collisions || []) {
+      if (!this.struckSince.has(c.link) || c.t < this.struckSince.get(c.link)) this.struckSince.set(c.link, c.t);
+    }
+  }
+
+  /** Names of the links drawn as collided at the time last shown. */
+  struckLinks() {
+    return [...this.links].filter(([, g]) => g.children.some((m) => m.material === this.struck)).map(([n]) => n);
   }
 
   /** Poses every link at time t (the last sample at or before t). */
@@ -30,6 +46,9 @@ export class RobotView {
     if (!this.poses) return;
     const i = sampleAt(this.poses.t, t);
     for (const [name, group] of this.links) {
+      const since = this.struckSince.get(name);
+      const struck = since !== undefined && since <= t;
+      for (const mesh of group.children) mesh.material = struck ? this.struck : mesh.userData.material;
       const p = this.poses.links[name];
       if (!p) continue;
       const k = 7 * i;

@@ -6,14 +6,17 @@ import { sampleAt } from './timeline.js';
 
 const EVENT_COLORS = { obstacle_seen: 0xe67e22, obstacle_ahead: 0xe67e22, detour_planned: 0x2e86c1,
   detour_replanned: 0x85c1e9, obstacle_passed: 0x27ae60, rejoined: 0x27ae60, goal_reached: 0x1e8449,
-  stopped: 0xc0392b, blocked: 0xc0392b, no_way_around: 0xc0392b };
+  stopped: 0xc0392b, blocked: 0xc0392b, no_way_around: 0xc0392b, collision: 0xd62728, fall: 0x8e44ad,
+  cannot_step: 0x8e44ad };
 
 export class WalkView {
-  /** poses: data.poses (or null); root: the root link's name; events: data.events. */
-  constructor(scene, poses, root, events) {
+  /** poses: data.poses (or null); root: the root link's name; events: data.events;
+   *  collisions: data.collisions (a red ball at each contact point, from its time). */
+  constructor(scene, poses, root, events, collisions) {
     this.times = poses ? poses.t : [];
     this.line = null;
     this.markers = [];
+    this.contacts = [];
     const p = poses && root ? poses.links[root] : null;
     if (!p) return;
     // the root's track, just above the floor
@@ -41,14 +44,26 @@ export class WalkView {
       scene.add(marker);
       this.markers.push(marker);
     }
+    for (const c of collisions || []) {
+      const ball = new THREE.Mesh(new THREE.SphereGeometry(0.025, 16, 12),
+        new THREE.MeshLambertMaterial({ color: EVENT_COLORS.collision, emissive: 0x5a0000 }));
+      ball.position.set(c.p[0], c.p[1], c.p[2]);
+      ball.name = `collision-${c.link}`;
+      ball.userData.t = c.t;
+      scene.add(ball);
+      this.contacts.push(ball);
+    }
   }
 
   /** Shows the path and the events up to time t. */
   update(t) {
     if (!this.line) return;
     this.line.geometry.setDrawRange(0, sampleAt(this.times, t) + 1);
-    for (const m of this.markers) m.visible = m.userData.t <= t;
+    for (const m of [...this.markers, ...this.contacts]) m.visible = m.userData.t <= t;
   }
+
+  /** Number of collision points shown at the current time. */
+  collisionsShown() { return this.contacts.filter((m) => m.visible).length; }
 
   /** Number of events shown at the current time. */
   eventsShown() { return this.markers.filter((m) => m.visible).length; }

@@ -1,0 +1,27 @@
+// Names in output files, whatever the user called things (issue 23: a comma
+// in a sensor's name shifted every column of readings.csv).
+//
+// The choice: names may hold any printable UTF-8 (commas and quotes
+// included); the scenario parser refuses control characters and invalid
+// UTF-8 (NamingProblem), so the JSON files, written by nlohmann::json, are
+// always valid; and CSV fields are quoted per RFC 4180 where needed
+// (AppendCsvField), which Python's csv module, NumPy and spreadsheets read.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace proxsim {
+
+/// Appends `field` to a CSV line: as it is, or in double quotes with inner
+/// quotes doubled when it holds a comma, a quote, CR or LF (RFC 4180).
+void AppendCsvField(std::string& line, std::string_view field);
+
+/// `field` as one CSV field (see AppendCsvField).
+std::string CsvField(std::string_view field);
+
+/// Why `name` cannot name a sensor, an object or a scene: empty when it can
+/// (printable UTF-8 of at least one byte); else e.g. "a control character (byte 0x0a at 4)".
+std::string NamingProblem(std::string_view name);
+
+}  // namespace proxsim
