@@ -148,7 +148,7 @@ TEST(InspectTest, TextOutputAndScenarioTarget) {
   }
   const CommandResult missing = RunProxsim("inspect /nonexistent/robot.urdf");
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
-  EXPECT_NE(missing.output.find("/nonexistent/robot.urdf: cannot open the URDF file"), std::string::npos)
+  EXPECT_NE(missing.output.find("/nonexistent/robot.urdf: not found"), std::string::npos)
       << missing.output;
 }
 
