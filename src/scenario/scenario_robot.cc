@@ -7,6 +7,7 @@
 // (robot/); here we only check that a named file exists, so that a typo in a
 // path is reported with the scenario's other problems.
 #include <algorithm>
+#include <initializer_list>
 #include <system_error>
 #include <tuple>
 
@@ -138,6 +139,20 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
   return std::nullopt;
 }
 
+// One of a few named values (absent: nullopt); anything else fails naming them.
+template <typename Value>
+std::optional<Value> ReadChoice(YamlReader& reader, const Field& field,
+                                std::initializer_list<std::pair<const char*, Value>> choices,
+                                const std::string& expected) {
+  if (!field) return std::nullopt;
+  const auto text = reader.String(field);
+  if (!text) return std::nullopt;
+  for (const auto& [name, value] : choices)
+    if (*text == name) return value;
+  reader.Fail(field, expected + ", got '" + *text + "'");
+  return std::nullopt;
+}
+
 }  // namespace
 
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
@@ -187,13 +202,12 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   robot.joints_rad = ReadJointAngles(reader, (*map)["joints_deg"]);
 
   // on_collision: stop | continue
-  if (const Field on_collision = (*map)["on_collision"]) {
-    const auto mode = reader.String(on_collision);
-    if (mode == "stop") robot.on_collision = OnCollision::kStop;
-    else if (mode == "continue") robot.on_collision = OnCollision::kContinue;
-    else if (mode) reader.Fail(on_collision, "expected stop (the episode ends at the first collision) or continue "
-                                             "(every collision is logged and the walk goes on), got '" + *mode + "'");
-  }
+  robot.on_collision =
+      ReadChoice<OnCollision>(reader, (*map)["on_collision"],
+                              {{"stop", OnCollision::kStop}, {"continue", OnCollision::kContinue}},
+                              "expected stop (the episode ends at the first collision) or continue (every "
+                              "collision is logged and the walk goes on)")
+          .value_or(robot.on_collision);
 
   // start: {xyz_m, yaw_deg, on}; `on` names the object the robot starts on
   // on purpose (sim/start_check.h refuses any other start on or in an object)
@@ -220,13 +234,12 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   // the legs, max_step_m absent comes from them
   robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
   if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m", "unsafe_steps"})) {
-    if (const Field unsafe = (*gait)["unsafe_steps"]) {
-      const auto mode = reader.String(unsafe);
-      if (mode == "fall") robot.unsafe_steps = UnsafeSteps::kFall;
-      else if (mode == "refuse") robot.unsafe_steps = UnsafeSteps::kRefuse;
-      else if (mode) reader.Fail(unsafe, "expected fall (a step the legs cannot take is taken, and the robot falls) or "
-                                         "refuse (the legs stand before it), got '" + *mode + "'");
-    }
+    robot.unsafe_steps =
+        ReadChoice<UnsafeSteps>(reader, (*gait)["unsafe_steps"],
+                                {{"fall", UnsafeSteps::kFall}, {"refuse", UnsafeSteps::kRefuse}},
+                                "expected fall (a step the legs cannot take is taken, and the robot falls) or "
+                                "refuse (the legs stand before it)")
+            .value_or(robot.unsafe_steps);
     robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
     robot.gait.derive_period_from_legs = !gait->Has("period_s");
     // a walking gait, not a degenerate one: a period of 1e-9 s walked the
