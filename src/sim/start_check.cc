@@ -1,4 +1,5 @@
 #include "sim/start_check.h"
+#include "core/message_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,11 +25,6 @@ constexpr double kStandsOn_m = 0.01;
 // The downward probe under a foot starts this far above its lowest point.
 constexpr double kProbeAbove_m = 0.05;
 
-std::string Format(const char* format, double a, double b = 0, double c = 0, double d = 0) {
-  char text[160];
-  std::snprintf(text, sizeof text, format, a, b, c, d);
-  return text;
-}
 
 std::string QuotedList(const std::vector<std::string>& names) {
   std::string all;
@@ -165,7 +161,7 @@ std::vector<std::string> StartProblems(const Scenario& scenario, World& world, L
       if (!first || object.ground || object.name == start_on) continue;  // one line per object
       const double z_m = std::abs(support.z_m) < 5e-4 ? 0.0 : support.z_m;  // no "-0.000"
       problems.push_back(where + "the robot would start standing on object '" + object.name + "' (its foot '" +
-                         model.link_name(support.foot_link) + "' on it" + Format(" at z = %.3f m", z_m) +
+                         model.link_name(support.foot_link) + "' on it" + FormatNumbers(" at z = %.3f m", z_m) +
                          "), not on the ground: the gait stands the robot on the surface below its start; start "
                          "it elsewhere, or give `on: " + object.name + "` in robot.start to start on it on purpose");
     }
@@ -177,7 +173,8 @@ std::vector<std::string> StartProblems(const Scenario& scenario, World& world, L
         std::vector<std::string> under;
         for (const std::int32_t id : supports) under.push_back(scenario.scene.objects[id].name);
         problems.push_back(where + "on: '" + start_on + "', but the robot's feet at its start " +
-                           Format("(%.3f, %.3f) m ", scenario.robot->start_xyz_m.x(), scenario.robot->start_xyz_m.y()) +
+                           FormatNumbers("(%.3f, %.3f) m ", scenario.robot->start_xyz_m.x(),
+                                         scenario.robot->start_xyz_m.y()) +
                            (under.empty() ? std::string("stand on no object") : "stand on " + QuotedList(under)) +
                            "; place the start above '" + start_on + "' or leave `on` out");
       }
@@ -192,9 +189,9 @@ std::vector<std::string> StartProblems(const Scenario& scenario, World& world, L
     problems.push_back(where + "the robot starts inside object '" + scenario.scene.objects[overlap.object_id].name +
                        "': link" + (links.size() == 1 ? " " : "s ") + QuotedList(links) +
                        (links.size() == 1 ? " reaches" : " reach") +
-                       Format(" into it (up to %.3f m deep, at (%.3f, %.3f, ", overlap.deepest_m,
+                       FormatNumbers(" into it (up to %.3f m deep, at (%.3f, %.3f, ", overlap.deepest_m,
                               overlap.p_W_deepest.x(), overlap.p_W_deepest.y()) +
-                       Format("%.3f) m); start the robot clear of it", overlap.p_W_deepest.z()) +
+                       FormatNumbers("%.3f) m); start the robot clear of it", overlap.p_W_deepest.z()) +
                        " (feet stand only on ground: to start standing on it, give `on: " +
                        scenario.scene.objects[overlap.object_id].name + "` in robot.start)");
   }

@@ -1,4 +1,5 @@
 #include "strategy/circumvent_strategy.h"
+#include "core/message_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,11 +25,6 @@ constexpr double kRejoined_m = 0.1;
 // the safety stop looks this much wider than the robot's own half-width
 constexpr double kSafetyWidthMargin_m = 0.05;
 
-std::string Format(const char* format, double a, double b = 0, double c = 0, double d = 0) {
-  char text[200];
-  std::snprintf(text, sizeof text, format, a, b, c, d);
-  return text;
-}
 
 Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
 
@@ -205,11 +201,11 @@ std::vector<Vec2> CircumventStrategy::Remaining() const {
 
 std::string CircumventStrategy::DescribeDetour() const {
   std::string text = std::string(shift_m_ > 0 ? "to the left" : "to the right") +
-                     Format(" of the path, %.2f m aside; obstacle s in [%.2f, %.2f] m,", std::abs(shift_m_),
+                     FormatNumbers(" of the path, %.2f m aside; obstacle s in [%.2f, %.2f] m,", std::abs(shift_m_),
                             extent_->s_min, extent_->s_max) +
-                     Format(" l in [%.2f, %.2f] m; via", extent_->l_min, extent_->l_max);
+                     FormatNumbers(" l in [%.2f, %.2f] m; via", extent_->l_min, extent_->l_max);
   for (std::size_t i = 0; i < detour_.size(); ++i) {
-    text += Format(i == 0 ? " (%.2f, %.2f)" : ", (%.2f, %.2f)", detour_[i].x(), detour_[i].y());
+    text += FormatNumbers(i == 0 ? " (%.2f, %.2f)" : ", (%.2f, %.2f)", detour_[i].x(), detour_[i].y());
   }
   return text;
 }
@@ -232,7 +228,7 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   if (const auto p_W = PointInTheWay(observation, config_.stop_distance_m, own_width_m)) {
     robot.Stop();
     mode_ = Mode::kStopped;
-    events.Log("blocked", Format("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
+    events.Log("blocked", FormatNumbers("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
                                  (*p_W - self.p_W_front).dot(self.heading_W)));
     return;
   }
@@ -245,12 +241,14 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
     seed_ = CellOf(*p_W);
     segment_ = SegmentNear(p_W->head<2>());
     extent_ = MeasureCluster(seed_, segment_);
-    events.Log("obstacle_seen", Format("a point at (%.2f, %.2f, %.2f) m, %.2f m ahead of the leading toe", p_W->x(),
+    events.Log("obstacle_seen",
+               FormatNumbers("a point at (%.2f, %.2f, %.2f) m, %.2f m ahead of the leading toe", p_W->x(),
                                        p_W->y(), p_W->z(), (*p_W - self.p_W_front).dot(self.heading_W)));
     if (!PlanDetour(*extent_, &detour_, &shift_m_)) {
       mode_ = Mode::kBlocked;
       detour_.clear();
-      events.Log("no_way_around", Format("a detour would shift %.2f m, more than max_detour_m = %.2f m", shift_m_,
+      events.Log("no_way_around",
+                 FormatNumbers("a detour would shift %.2f m, more than max_detour_m = %.2f m", shift_m_,
                                          config_.max_detour_m));
       return;
     }
@@ -271,7 +269,8 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
     double shift_m = 0;
     if (!PlanDetour(extent, &detour, &shift_m)) {
       mode_ = Mode::kBlocked;
-      events.Log("no_way_around", Format("the obstacle grew: a detour would shift %.2f m, more than %.2f m", shift_m,
+      events.Log("no_way_around",
+                 FormatNumbers("the obstacle grew: a detour would shift %.2f m, more than %.2f m", shift_m,
                                          config_.max_detour_m));
       return;
     }
@@ -298,11 +297,11 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   const double s_far = std::max(extent_->s_max, extent_->s_min + config_.assumed_depth_m);
   if (!passed_ && s_WP > s_far + half_width_m_ + config_.margin_m) {
     passed_ = true;
-    events.Log("obstacle_passed", Format("pelvis %.2f m past the obstacle's far end", s_WP - s_far));
+    events.Log("obstacle_passed", FormatNumbers("pelvis %.2f m past the obstacle's far end", s_WP - s_far));
   }
   if (passed_ && next_waypoint_ >= detour_waypoints_ && std::abs(d.dot(Left(segment_.u))) < kRejoined_m) {
     mode_ = Mode::kFollowing;
-    events.Log("rejoined", Format("back on the path at (%.2f, %.2f) m", p_WP.x(), p_WP.y()));
+    events.Log("rejoined", FormatNumbers("back on the path at (%.2f, %.2f) m", p_WP.x(), p_WP.y()));
   }
 }
 

@@ -1,4 +1,5 @@
 #include "study/study_config.h"
+#include "core/message_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,11 +83,6 @@ std::vector<std::string> TextAxis(YamlReader& reader, const Field& field, const 
   return values;
 }
 
-std::string Format(const char* format, double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
 
 // a candidate of the base's presets for a type name (a sensor type or a real part)
 std::optional<SensorSpec> SpecOf(const std::string& type) {
@@ -98,8 +94,8 @@ Candidate MakeCandidate(const SensorSpec& spec, const std::string& type, const s
                         double forward_m, double pitch_deg, double yaw_deg) {
   Candidate c;
   c.type = type;
-  c.id = type + "@" + link + ":z" + Format("%+.3g", along_m) + ":x" + Format("%.3g", forward_m) + ":p" +
-         Format("%.3g", pitch_deg) + ":y" + Format("%.3g", yaw_deg);
+  c.id = type + "@" + link + ":z" + FormatNumbers("%+.3g", along_m) + ":x" + FormatNumbers("%.3g", forward_m) + ":p" +
+         FormatNumbers("%.3g", pitch_deg) + ":y" + FormatNumbers("%.3g", yaw_deg);
   c.sensor.name = c.id;
   c.sensor.spec = spec;
   c.sensor.link = link;
