@@ -221,6 +221,19 @@ TEST(BadInputTest, LegMapThatDoesNotFitTheRobot) {
                         "link to the foot 'right_foot'"});
 }
 
+// A gait beyond the legs' URDF limits on level ground: the joint, the speed
+// or angle needed and the limit, from `validate` as from `run`.
+TEST(BadInputTest, GaitBeyondTheJointLimits) {
+  ExpectRefusedFile("gait_too_fast.yaml",
+                    {"builtin:biped: gait: stride_m 0.60 m at period_s 0.300 s cannot be walked on level ground within "
+                     "the URDF's joint limits", "joint 'right_knee_pitch' needs ", "beyond its velocity limit 12.00 rad/s"});
+  ExpectRefusedFile("gait_beyond_limits.yaml",
+                    {"builtin:biped: gait: stride_m 3.00 m", "joint '", " needs ", "beyond its"});
+  const CommandResult validate = RunProxsim("validate " + kBadDir + "/gait_too_fast.yaml");
+  EXPECT_EQ(validate.exit_code, 2) << validate.output;
+  EXPECT_NE(validate.output.find("joint 'right_knee_pitch' needs "), std::string::npos) << validate.output;
+}
+
 TEST(BadInputTest, TrajectoryWithMissingColumns) {
   const auto result = ExpectRefusedFile("trajectory_missing_columns.yaml",
                                         {"missing_columns.csv:1:", "missing column 'z_m'", "'roll_deg'", "'pitch_deg'"});

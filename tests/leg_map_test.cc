@@ -47,12 +47,12 @@ constexpr const char* kLegTemplate = R"(
   <link name="{S}_shin"><visual><origin xyz="0 0 -0.19"/><geometry><cylinder radius="0.04" length="0.38"/></geometry></visual></link>
   <link name="{S}_ankle_link"/>
   <link name="{S}_foot"><visual><origin xyz="0.05 0 -0.06"/><geometry><mesh filename="../meshes/foot.stl" scale="1.2 0.5 0.3"/></geometry></visual></link>
-  <joint name="{S}_hip_yaw" type="revolute"><parent link="base"/><child link="{S}_hip_yaw_link"/><origin xyz="0 {Y}0.12 -0.05"/><axis xyz="0 0 1"/><limit lower="-0.5" upper="0.5" effort="1" velocity="1"/></joint>
-  <joint name="{S}_hip_pitch" type="revolute"><parent link="{S}_hip_yaw_link"/><child link="{S}_hip_pitch_link"/><origin xyz="0.01 0 -0.03"/><axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
-  <joint name="{S}_hip_roll" type="revolute"><parent link="{S}_hip_pitch_link"/><child link="{S}_thigh"/><axis xyz="1 0 0"/><limit lower="-0.3" upper="0.3" effort="1" velocity="1"/></joint>
-  <joint name="{S}_knee" type="revolute"><parent link="{S}_thigh"/><child link="{S}_shin"/><origin xyz="0.02 0 {KNEE}"/><axis xyz="0 -1 0"/><limit lower="-0.1" upper="2.5" effort="1" velocity="1"/></joint>
-  <joint name="{S}_ankle_pitch" type="revolute"><parent link="{S}_shin"/><child link="{S}_ankle_link"/><origin xyz="0 0 -0.38"/><axis xyz="0 1 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
-  <joint name="{S}_ankle_roll" type="revolute"><parent link="{S}_ankle_link"/><child link="{S}_foot"/><axis xyz="1 0 0"/><limit lower="-0.3" upper="0.3" effort="1" velocity="1"/></joint>
+  <joint name="{S}_hip_yaw" type="revolute"><parent link="base"/><child link="{S}_hip_yaw_link"/><origin xyz="0 {Y}0.12 -0.05"/><axis xyz="0 0 1"/><limit lower="-0.5" upper="0.5" effort="1" velocity="20"/></joint>
+  <joint name="{S}_hip_pitch" type="revolute"><parent link="{S}_hip_yaw_link"/><child link="{S}_hip_pitch_link"/><origin xyz="0.01 0 -0.03"/><axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="20"/></joint>
+  <joint name="{S}_hip_roll" type="revolute"><parent link="{S}_hip_pitch_link"/><child link="{S}_thigh"/><axis xyz="1 0 0"/><limit lower="-0.3" upper="0.3" effort="1" velocity="20"/></joint>
+  <joint name="{S}_knee" type="revolute"><parent link="{S}_thigh"/><child link="{S}_shin"/><origin xyz="0.02 0 {KNEE}"/><axis xyz="0 -1 0"/><limit lower="-2.5" upper="0.1" effort="1" velocity="20"/></joint>
+  <joint name="{S}_ankle_pitch" type="revolute"><parent link="{S}_shin"/><child link="{S}_ankle_link"/><origin xyz="0 0 -0.38"/><axis xyz="0 1 0"/><limit lower="-1" upper="1" effort="1" velocity="20"/></joint>
+  <joint name="{S}_ankle_roll" type="revolute"><parent link="{S}_ankle_link"/><child link="{S}_foot"/><axis xyz="1 0 0"/><limit lower="-0.3" upper="0.3" effort="1" velocity="20"/></joint>
 )";
 
 std::string Replace(std::string text, const std::string& from, const std::string& to) {

@@ -55,7 +55,10 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
     return PelvisPose(plan.p_W_heel - R * p_P_heel, yaw);
   }
   // flat foot, then toe rocker: pivot on a point of the latched foot frame F
-  const FootPoint which = p <= HeelOffPhase() ? FootPoint::kMid : FootPoint::kToe;
+  // (a flat foot is exactly level, pitch 0; one whose heel rose early to keep
+  // its ankle within its limits, pitch < 0, already pivots on its toe:
+  // TerrainStanceAngles)
+  const FootPoint which = p <= HeelOffPhase() && stance.pitch >= 0 ? FootPoint::kMid : FootPoint::kToe;
   const Vec3 p_W_pivot = plan.X_WF * legs_.FootPoint_L(plan.stance, which);
   const Rotation R = Eigen::AngleAxisd(plan.yaw_to, Vec3::UnitZ()).toRotationMatrix();
   const Vec3 p_P_pivot = legs_.Point3(plan.stance, stance, which);
@@ -66,7 +69,14 @@ double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
   const double s = Smoothstep(std::clamp(p / 0.5, 0.0, 1.0));
   const double pitch = CurveLegAngles(p + 0.5, Amplitude(plan, p)).pitch + plan.swing_start_pitch * (1 - s);
   // over uneven ground the foot is carried level (the toe up, off the edges), as the arc lifts it
-  return plan.terrain ? pitch * (1 - SwingArc::LiftShape(SwingProgress(p))) : pitch;
+  if (!plan.terrain) return pitch;
+  const double u = SwingProgress(p);
+  const double level = pitch * (1 - SwingArc::LiftShape(u));
+  if (!plan.swing_arc.hold_pitch || p < kDoubleSupportEnd) return level;
+  // or, once off the ground, it keeps its toe-off pitch until the carry starts,
+  // then levels as it travels
+  const double c = plan.swing_arc.CarryShape(u);
+  return plan.swing_arc.start_pitch_rad * (1 - c) + level * c;
 }
 
 Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {
@@ -108,6 +118,10 @@ StepPose StepPlanner::Evaluate(const StepPlan& plan, double p) const {
     if (deficit > 0) p_PA.y() += deficit;
   }
   pose.swing = legs_.SolveAnkle(plan.swing, p_PA, pitch);
+  // over uneven ground the foot carried level may ask the ankle for more than
+  // it bends: in the air the foot tilts instead (continuous: at toe-off the
+  // planted foot's pitch is within the limits, or the step is not taken)
+  if (plan.terrain && p >= kDoubleSupportEnd) pose.swing = legs_.PitchWithinAnkleLimits(plan.swing, pose.swing);
   return pose;
 }
 
@@ -179,7 +193,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   plan.k_from = plan.k_to = k;
   plan.g_from = plan.g_to = PushOffGain(legs_, plan.stance, k);
   plan.yaw_from = plan.yaw_to = yaw_rad;
-  plan.floor_z_m = plan.landing_z_m = p_W_start.z();
+  plan.floor_z_m = plan.landing_z_m = plan.highest_ground_z_m = p_W_start.z();
   const LegAnglesRad stance = CurveLegAngles(0.0, k);
   const Rotation R = Eigen::AngleAxisd(yaw_rad, Vec3::UnitZ()).toRotationMatrix();
   const Vec3 p_P_heel = legs_.Point3(Side::kLeft, stance, FootPoint::kHeel);
@@ -207,7 +221,7 @@ StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to)
   plan.g_to = PushOffGain(legs_, plan.stance, k_to);
   plan.yaw_from = prev.yaw_to;
   plan.yaw_to = yaw_to;
-  plan.floor_z_m = plan.landing_z_m = prev.landing_z_m;
+  plan.floor_z_m = plan.landing_z_m = plan.highest_ground_z_m = prev.landing_z_m;
   // latch the new stance heel where it struck, on the floor
   plan.p_W_heel = strike.X_WP * legs_.Point3(plan.stance, strike.swing, FootPoint::kHeel);
   plan.p_W_heel.z() = plan.floor_z_m;

@@ -114,6 +114,10 @@ struct StepPlan {
   Vec3 p_W_H = Vec3::Zero();      ///< terrain: origin of the heading frame H (the stance heel, at z = 0)
   SwingArc swing_arc;             ///< terrain: the swing ankle's arc in H (H's x along yaw_to)
   double foothold_s_m = 0;        ///< terrain: the landing heel along H's x
+  /// The highest ground the swing foot passes over, from the tread it leaves
+  /// to the one it lands on, both included (floor_z_m on a flat floor), m:
+  /// the swing sole never rises more than kMaxLiftAboveGround_m above it (gait/step_safety.h)
+  double highest_ground_z_m = 0;
 };
 
 /// The robot at one stance phase of a step.

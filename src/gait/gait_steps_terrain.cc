@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "gait/gait_steps.h"
+#include "gait/step_safety.h"
 
 namespace proxsim {
 
@@ -22,6 +23,11 @@ constexpr double kPelvisRampEnds = 0.15;
 constexpr int kSwingChecks = 64;
 // Rounds of lifting the arc higher when the legs' IK lands the sole lower than the arc.
 constexpr int kLiftRounds = 4;
+// A deficit where the lift has barely risen (near lift-off and landing) sizes
+// the lift as if the plateau's shape there were this: dividing by the shape
+// itself flung the foot metres up for a millimetre's deficit next to the tread
+// it leaves (the swing leg then folded back over the pelvis, pointing at it).
+constexpr double kLiftShapeFloor = 0.2;
 // A sole this close to its clearance counts as clearing it, m.
 constexpr double kClearanceSlack_m = 2e-4;
 // Heights within this of the stance tread are the stance tread's level, m (the
@@ -31,6 +37,39 @@ constexpr double kSameLevel_m = 1e-6;
 constexpr double kRateStep = 1e-5;
 // The profile starts this far behind the trailing sole and reaches this far beyond the next step's toe, m.
 constexpr double kProfileMargin_m = 0.05;
+// Rounds of rolling a stance foot onto its toe to keep its ankle within its limits.
+constexpr int kStanceRollRounds = 4;
+// How far inside the ankle's limits a rolled stance foot keeps it, rad (each
+// round's IK moves the ankle a little after its pitch is set).
+constexpr double kStanceRollMargin_rad = 2e-3;
+// The planner keeps the swing sole this far under UnsafeStepReason's cap on its
+// lift (kMaxLiftAboveGround_m), m: the check samples the step more densely.
+constexpr double kLiftCapMargin_m = 0.005;
+// Arcs tried in turn when the default arc's lift would carry the sole above
+// the cap: a climbing foot gains its height sooner (a descending one keeps it
+// longer) than over kArcHeightChangeSpan, and the last ones carry the foot
+// forward only once it has risen (the trailing toe of a climb starts against
+// the riser in front of it: a 0.26 m sole on a 0.30 m tread). The last ones also hold the foot's toe-off pitch until the carry starts: a
+// foot that levels as it lifts swings its toe forward into that riser.
+// The very last ones change height over longer spans: a foot leaving a higher
+// tread for a lower one (the trailing foot after a step down, toe-off steep
+// behind a lowered pelvis) then sinks as it levels, instead of levelling
+// while still high above the edge it left.
+// {height span, carry start, hold pitch}.
+struct ArcShape {
+  double height_span, carry_start;
+  bool hold_pitch;
+};
+constexpr std::array<ArcShape, 10> kSoonerArcs = {{{0.55, kArcCarryStart, false},
+                                                  {0.45, kArcCarryStart, false},
+                                                  {0.35, kArcCarryStart, false},
+                                                  {0.3, 0.2, false},
+                                                  {0.3, 0.3, false},
+                                                  {0.3, 0.3, true},
+                                                  {0.25, 0.35, true},
+                                                  {0.25, 0.45, true},
+                                                  {0.85, 0.3, true},
+                                                  {1.0, 0.3, true}}};
 
 double Smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);
@@ -84,9 +123,35 @@ LegAnglesRad StepPlanner::TerrainStanceAngles(const StepPlan& plan, double p) co
     which = p <= HeelOffPhase() ? FootPoint::kMid : FootPoint::kToe;
     p_W_pivot = plan.X_WF * legs_.FootPoint_L(plan.stance, which);
   }
+  const auto pivot_in_P = [&](FootPoint point) {
+    const Vec3 p_P = X_c.linear().transpose() * (plan.X_WF * legs_.FootPoint_L(plan.stance, point) - target);
+    return Vec2xz(p_P.x(), p_P.z());
+  };
   const Vec3 p_P_pivot = X_c.linear().transpose() * (p_W_pivot - target);
-  const Vec2xz p_PA = Vec2xz(p_P_pivot.x(), p_P_pivot.z()) - RotateSagittal(curve.pitch, legs_.FootOffset(plan.stance, which));
-  return legs_.SolveAnkle(plan.stance, p_PA, curve.pitch);
+  Vec2xz pivot_P(p_P_pivot.x(), p_P_pivot.z());
+  LegAnglesRad a = legs_.SolveAnkle(plan.stance, pivot_P - RotateSagittal(curve.pitch, legs_.FootOffset(plan.stance, which)), curve.pitch);
+  // a flat foot whose ankle would bend past its limit (a pelvis lowered down a
+  // step leans the shank forward) lifts its heel early: it pivots on its toe
+  // from then on, as it does after heel-off (the pitch that puts the ankle at
+  // its limit is toe-down, pitch < 0 is heel up; continuous, since the roll
+  // starts where the ankle reaches its limit)
+  if (which == FootPoint::kMid &&
+      legs_.PitchWithinAnkleLimits(plan.stance, a, kStanceRollMargin_rad).pitch < a.pitch) {
+    which = FootPoint::kToe;
+    pivot_P = pivot_in_P(which);
+    a = legs_.SolveAnkle(plan.stance, pivot_P - RotateSagittal(curve.pitch, legs_.FootOffset(plan.stance, which)), curve.pitch);
+  }
+  // on its toe, a foot whose ankle would bend past its limit rolls further onto
+  // its toe instead: the heel rises, the toe stays; the pitch that puts the
+  // ankle at its limit (a few rounds: the ankle moves with the pitch)
+  if (which == FootPoint::kToe) {
+    for (int round = 0; round < kStanceRollRounds; ++round) {
+      const double pitch = legs_.PitchWithinAnkleLimits(plan.stance, a, kStanceRollMargin_rad).pitch;
+      if (pitch == a.pitch) break;
+      a = legs_.SolveAnkle(plan.stance, pivot_P - RotateSagittal(pitch, legs_.FootOffset(plan.stance, which)), pitch);
+    }
+  }
+  return a;
 }
 
 Vec2xz StepPlanner::ArcAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {
@@ -199,17 +264,28 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
     return Vec2(ToH(*plan, X_WP.translation()) + Vec2(a_P.x(), a_P.y()));
   };
   SwingArc& arc = plan->swing_arc;
+  arc = SwingArc{};  // (a plan is made from the last one: none of its arc's shape carries over)
   arc.start = planted_H(kDoubleSupportEnd);
   arc.start_rate = (arc.start - planted_H(kDoubleSupportEnd - kRateStep)) / kRateStep * (0.5 - kDoubleSupportEnd);
   arc.end = ankle_land;
   arc.lift_m = 0;
+  arc.start_pitch_rad = SwingPitch(*plan, kDoubleSupportEnd);
 
   // its lift: the least that keeps the sole clear of the ground and its edges,
   // first on the arc itself, then on what the legs' IK makes of it
   const SoleShape sole{.heel_from_ankle = legs_.FootOffset(plan->swing, FootPoint::kHeel),
-                       .toe_from_ankle = legs_.FootOffset(plan->swing, FootPoint::kToe)};
+                       .toe_from_ankle = legs_.FootOffset(plan->swing, FootPoint::kToe),
+                       .toe_top_m = sg.toe_top_m,
+                       .heel_top_m = sg.heel_top_m};
   const std::size_t own_from = profile.SegmentAt(ToH(*plan, plan->p_W_trailing_toe).x());
   const std::size_t own_to = foothold.segment;
+  // the highest ground under the swing's sweep: from under the sole as it
+  // leaves (its heel a sole's length behind the latched toe) to the foothold
+  const std::size_t sweep_from =
+      profile.SegmentAt(ToH(*plan, plan->p_W_trailing_toe).x() - (sg.toe_x_m - sg.heel_x_m));
+  plan->highest_ground_z_m = std::max(plan->floor_z_m, foothold.z_m);
+  for (std::size_t i = std::min(sweep_from, own_to); i <= std::max({sweep_from, own_from, own_to}); ++i)
+    plan->highest_ground_z_m = std::max(plan->highest_ground_z_m, profile.segments()[i].z_m);
   const auto phase = [](int j) { return kDoubleSupportEnd + (0.5 - kDoubleSupportEnd) * j / kSwingChecks; };
   // (an edge counts within the distance the sole moved since the last check)
   const auto moved = [&](const Vec2& ankle, double pitch, const Vec2& last_ankle, double last_pitch) {
@@ -217,47 +293,85 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
     const auto [last_heel, last_toe] = SoleEnds(last_ankle, last_pitch, sole);
     return std::max(std::abs(heel.x() - last_heel.x()), std::abs(toe.x() - last_toe.x()));
   };
-  double lift = kSwingClearance_m;
-  Vec2 last_ankle = arc.At(0);
-  double last_pitch = SwingPitch(*plan, phase(0));
-  for (int j = 1; j < kSwingChecks; ++j) {
-    const double u = static_cast<double>(j) / kSwingChecks;
-    const Vec2 ankle = arc.At(u);
-    const double pitch = SwingPitch(*plan, phase(j));
-    const double deficit = SoleDeficit(profile, ankle, pitch, sole, kSwingClearance_m, own_from, own_to,
-                                       moved(ankle, pitch, last_ankle, last_pitch));
-    if (deficit > 0) lift = std::max(lift, deficit / std::max(SwingArc::LiftShape(u), 1e-3));
-    last_ankle = ankle;
-    last_pitch = pitch;
-  }
-  arc.lift_m = lift;
   std::array<Pose, kSwingChecks> X_WP_at;
   for (int j = 1; j < kSwingChecks; ++j) X_WP_at[j] = StancePelvis(*plan, phase(j), TerrainStanceAngles(*plan, phase(j)));
-  double worst = 0;
-  for (int round = 0;; ++round) {
-    worst = 0;
-    double more = 0;
-    last_ankle = arc.start;
-    last_pitch = SwingPitch(*plan, phase(0));
+  // sizes the lift of an arc: on the arc itself, then on what the legs' IK
+  // makes of it; returns the sole's worst deficit below its clearance and its
+  // highest lowest point above the highest ground of the sweep (what
+  // UnsafeStepReason caps at kMaxLiftAboveGround_m)
+  struct Sized {
+    double worst = 0, peak_above_m = 0;
+  };
+  const auto size_lift = [&](SwingArc* arc) {
+    plan->swing_arc = *arc;  // SwingPitch reads the plan's arc
+    double lift = kSwingClearance_m;
+    Vec2 last_ankle = arc->At(0);
+    double last_pitch = SwingPitch(*plan, phase(0));
+    arc->lift_m = 0;
     for (int j = 1; j < kSwingChecks; ++j) {
       const double u = static_cast<double>(j) / kSwingChecks;
+      const Vec2 ankle = arc->At(u);
       const double pitch = SwingPitch(*plan, phase(j));
-      const LegAnglesRad a = legs_.SolveAnkle(plan->swing, ArcAnkle(*plan, phase(j), X_WP_at[j]), pitch);
-      const Vec2xz a_P = legs_.Ankle(plan->swing, a);
-      const Vec2 ankle_H = ToH(*plan, X_WP_at[j].translation()) + Vec2(a_P.x(), a_P.y());
-      const double deficit = SoleDeficit(profile, ankle_H, pitch, sole, kSwingClearance_m, own_from, own_to,
-                                         moved(ankle_H, pitch, last_ankle, last_pitch));
-      worst = std::max(worst, deficit);
-      if (deficit > kClearanceSlack_m) more = std::max(more, deficit / std::max(SwingArc::LiftShape(u), 1e-3));
-      last_ankle = ankle_H;
+      const double deficit = SoleDeficit(profile, ankle, pitch, sole, kSwingClearance_m, own_from, own_to,
+                                         moved(ankle, pitch, last_ankle, last_pitch));
+      if (deficit > 0) lift = std::max(lift, deficit / std::max(SwingArc::LiftShape(u), kLiftShapeFloor));
+      last_ankle = ankle;
       last_pitch = pitch;
     }
-    if (more == 0 || round == kLiftRounds) break;
-    arc.lift_m += more;
+    arc->lift_m = lift;
+    Sized sized;
+    for (int round = 0;; ++round) {
+      sized = Sized{};
+      double more = 0;
+      last_ankle = arc->start;
+      last_pitch = SwingPitch(*plan, phase(0));
+      plan->swing_arc = *arc;  // ArcAnkle reads the plan's arc
+      for (int j = 1; j < kSwingChecks; ++j) {
+        const double u = static_cast<double>(j) / kSwingChecks;
+        const LegAnglesRad a = legs_.PitchWithinAnkleLimits(
+            plan->swing, legs_.SolveAnkle(plan->swing, ArcAnkle(*plan, phase(j), X_WP_at[j]), SwingPitch(*plan, phase(j))));
+        const double pitch = a.pitch;  // the foot's pitch as Evaluate tilts it
+        const Vec2xz a_P = legs_.Ankle(plan->swing, a);
+        const Vec2 ankle_H = ToH(*plan, X_WP_at[j].translation()) + Vec2(a_P.x(), a_P.y());
+        const double deficit = SoleDeficit(profile, ankle_H, pitch, sole, kSwingClearance_m, own_from, own_to,
+                                           moved(ankle_H, pitch, last_ankle, last_pitch));
+        sized.worst = std::max(sized.worst, deficit);
+        const auto [heel, toe] = SoleEnds(ankle_H, pitch, sole);
+        sized.peak_above_m = std::max(sized.peak_above_m, std::min(heel.y(), toe.y()) - plan->highest_ground_z_m);
+        if (deficit > kClearanceSlack_m) more = std::max(more, deficit / std::max(SwingArc::LiftShape(u), kLiftShapeFloor));
+        last_ankle = ankle_H;
+        last_pitch = pitch;
+      }
+      if (more == 0 || round == kLiftRounds) break;
+      arc->lift_m += more;
+    }
+    return sized;
+  };
+  // the default arc first; when its lift would carry the sole above the cap,
+  // an arc that climbs sooner or descends later (the sole then clears the edge
+  // next to its lift-off without a plateau sized for it): the first that fits,
+  // else the lowest that clears
+  const SwingArc base = arc;
+  SwingArc best = arc;
+  Sized best_sized = size_lift(&best);
+  const auto clears = [](const Sized& z) { return z.worst <= kClearanceSlack_m + 1e-3; };
+  const auto fits = [&](const Sized& z) { return clears(z) && z.peak_above_m <= kMaxLiftAboveGround_m - kLiftCapMargin_m; };
+  for (const ArcShape& shape : kSoonerArcs) {
+    if (fits(best_sized)) break;
+    SwingArc sooner = base;
+    sooner.height_span = shape.height_span;
+    sooner.carry_start = shape.carry_start;
+    sooner.hold_pitch = shape.hold_pitch;
+    const Sized z = size_lift(&sooner);
+    if ((clears(z) && !clears(best_sized)) || (clears(z) && z.peak_above_m < best_sized.peak_above_m)) {
+      best = sooner;
+      best_sized = z;
+    }
   }
-  if (worst > kClearanceSlack_m + 1e-3) {
+  plan->swing_arc = best;
+  if (!clears(best_sized)) {
     std::snprintf(text, sizeof text, "the swing foot cannot clear the ground on its way to the foothold %.2f m ahead "
-                  "(%.0f mm short)", foothold.s_heel_m, 1e3 * worst);
+                  "(%.0f mm short)", foothold.s_heel_m, 1e3 * best_sized.worst);
     plan->cannot_step = text;
   }
 }

@@ -1,12 +1,15 @@
 #include "gait/gait_walker.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 #include <string>
 
 #include "core/input_error.h"
 #include "gait/held_joints.h"
+#include "gait/level_gait_check.h"
+#include "gait/step_safety.h"
 
 namespace proxsim {
 
@@ -37,6 +40,7 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
     problems.insert(problems.end(), error.problems().begin(), error.problems().end());
   }
   if (!problems.empty()) throw InputError(problems);
+  limits_ = std::make_unique<LegLimits>(*legs_);
   planner_ = std::make_unique<StepPlanner>(*legs_);
   // stride and period not given: the built-in biped's, scaled to these legs
   // (the ratio is exactly 1 for the built-in biped, whose defaults stay exact)
@@ -49,6 +53,7 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   // the exact amplitude search runs once; Reset() and SetStride() reuse its answer
   const AmplitudeStride loaded = BisectAmplitude(*planner_, initial_.gait.stride_m);
   stride_table_.AddExact(initial_.gait.stride_m, loaded);
+  CheckLevelGait(*planner_, *limits_, model_->source(), initial_.gait.stride_m, initial_.gait.period_s, loaded);
   initial_k_ = loaded.k;
   initial_achieved_stride_m_ = loaded.stride_m;
   max_step_m_ = config.gait.max_step_m > 0 ? config.gait.max_step_m : DefaultMaxStep_m(*legs_, initial_k_);
@@ -74,6 +79,23 @@ std::vector<LocomotionEvent> GaitWalker::TakeEvents() {
   std::vector<LocomotionEvent> events;
   events.swap(events_);
   return events;
+}
+
+namespace {
+// Steps tried in turn at a heel strike: {share of the turn asked for, share of
+// the stride}; the first is the step asked for.
+constexpr std::array<std::pair<double, double>, 4> kGentlerSteps = {{{1.0, 1.0}, {0.5, 1.0}, {1.0, 0.7}, {0.5, 0.7}}};
+}  // namespace
+
+double GaitWalker::Duration_s(const StepPlan& plan) const {
+  // a step whose joints would move too fast (a sharp turn, a change of
+  // stride, a step up) is slowed; steady walking is not (the load checked it)
+  return SpeedLimitedDuration_s(*planner_, *limits_, plan, StepDuration_s(plan, gait_.period_s));
+}
+
+std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s) const {
+  if (!plan.cannot_step.empty()) return plan.cannot_step;
+  return UnsafeStepReason(*planner_, *limits_, plan, duration_s);
 }
 
 void GaitWalker::NoteCannotStep(const std::string& reason) {
@@ -107,7 +129,7 @@ void GaitWalker::Start() {
   }
   planner_->set_terrain(terrain, Limits());
   plan_ = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
-  step_duration_s_ = StepDuration_s(plan_, gait_.period_s);
+  step_duration_s_ = Duration_s(plan_);
   step_start_clock_s_ = 0;
   clock_s_ = 0;
   step_phase_ = 0;
@@ -119,10 +141,10 @@ void GaitWalker::Start() {
   distance_m_ = 0;
   last_p_WP_ = Vec3::Zero();
   has_last_p_WP_ = false;
-  // no foothold for the first step: stand where it starts
-  if (!plan_.cannot_step.empty()) {
+  // no foothold for the first step, or an unsafe one: stand where it starts
+  if (const std::string refusal = Refusal(plan_, step_duration_s_); !refusal.empty()) {
     stopped_ = true;
-    NoteCannotStep(plan_.cannot_step);
+    NoteCannotStep(refusal);
   }
 }
 
@@ -205,11 +227,23 @@ RobotState GaitWalker::Advance(double t_s) {
       double yaw_to = 0;
       bool stop = DecideAtHeelStrike(strike.X_WP, &yaw_to);
       StepPlan next;
+      double next_duration_s = 0;
       if (!stop) {
-        next = planner_->NextStep(plan_, k_target_, yaw_to);
-        // no foothold within reach: stop before the step
-        if (!next.cannot_step.empty()) {
-          NoteCannotStep(next.cannot_step);
+        // the step asked for; beyond the legs' limits (a sharp turn at a long
+        // stride), a gentler one: half the turn, then a shorter step (the turn
+        // is finished over the following steps, the stride regained after)
+        std::string refusal;
+        for (const auto& [turn_share, k_share] : kGentlerSteps) {
+          const double yaw = plan_.yaw_to + turn_share * WrapAngle(yaw_to - plan_.yaw_to);
+          next = planner_->NextStep(plan_, k_target_ * k_share, yaw);
+          next_duration_s = Duration_s(next);
+          refusal = Refusal(next, next_duration_s);
+          // (no foothold within reach: a gentler step finds none either)
+          if (refusal.empty() || !next.cannot_step.empty()) break;
+        }
+        // no foothold within reach, or a step beyond the legs' limits: stop before it
+        if (!refusal.empty()) {
+          NoteCannotStep(refusal);
           stop = true;
         }
       }
@@ -222,7 +256,7 @@ RobotState GaitWalker::Advance(double t_s) {
       last_cannot_step_.clear();
       plan_ = std::move(next);
       step_start_clock_s_ += step_duration_s_;
-      step_duration_s_ = StepDuration_s(plan_, gait_.period_s);
+      step_duration_s_ = next_duration_s;
     }
   }
   const double p = std::clamp((clock_s_ - step_start_clock_s_) / (2 * step_duration_s_), 0.0, 0.5);

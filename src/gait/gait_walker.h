@@ -43,11 +43,21 @@
 // the next step has no foothold, the robot stops before it, at the heel
 // strike (both feet down), and reports `cannot_step` with the reason; it
 // tries again when resumed or given a new path.
+//
+// Joint limits (docs/robots.md): every step is checked before it is taken by
+// UnsafeStepReason (gait/step_safety.h): a step that would take a joint
+// outside its URDF range or beyond its top speed, fold a leg, or lift a foot
+// far above what it clears is refused the same way (`cannot_step`, the joint,
+// the angle or speed needed and the limit), so that no sample ever holds an
+// impossible pose; a step is slowed rather than refused for its joints'
+// speeds. A gait the legs cannot walk on level ground is an input
+// error at load (gait/level_gait_check.h).
 #pragma once
 
 #include <memory>
 
 #include "gait/gait_steps.h"
+#include "gait/joint_limits.h"
 #include "gait/locomotion.h"
 #include "gait/gait_config.h"
 #include "gait/stride_table.h"
@@ -102,6 +112,13 @@ class GaitWalker : public Locomotion {
   bool DecideAtHeelStrike(const Pose& X_WP, double* yaw_to);
   // What one step may do on uneven ground, from the legs and the stride.
   FootholdLimits Limits() const;
+  // How long `plan` lasts: half the period, longer for a terrain step that
+  // must rise or fall slowly, or for any step whose joints would move too fast (step_safety.h).
+  double Duration_s(const StepPlan& plan) const;
+  // Why `plan` is not to be taken ("" if it is): no foothold (the planner's
+  // reason) or a step beyond the legs' limits (UnsafeStepReason, the one place
+  // that decides; today it is refused like the other, see gait.unsafe_steps).
+  std::string Refusal(const StepPlan& plan, double duration_s) const;
   // Logs `cannot_step` once per reason in a row.
   void NoteCannotStep(const std::string& reason);
   // Whether waypoint i counts as passed with the pelvis at p.
@@ -116,6 +133,7 @@ class GaitWalker : public Locomotion {
 
   std::unique_ptr<RobotModel> model_;  // stable address: legs_ and planner_ refer into it
   std::unique_ptr<BipedLegs> legs_;
+  std::unique_ptr<LegLimits> limits_;  // the legs' URDF limits
   std::unique_ptr<StepPlanner> planner_;
   GaitConfig gait_;
   std::vector<double> q_held_;  // every joint's angle when the gait does not drive it

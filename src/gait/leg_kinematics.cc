@@ -23,6 +23,8 @@ constexpr double kMinSegment_m = 0.01;
 // Largest difference between the legs' lengths, and the most any other link
 // may hang below the soles at the reference pose.
 constexpr double kReachTolerance_m = 0.01;
+// A knee bent this far either way from the reference pose tells which way its limits let it bend, rad.
+constexpr double kKneeBendProbe_rad = 0.3;
 
 const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
 
@@ -175,6 +177,18 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
     g.p_PH = p_P[0];
     std::tie(g.thigh0_rad, g.thigh_m) = SagittalSegment(p_P[0], p_P[1]);
     std::tie(g.shank0_rad, g.shank_m) = SagittalSegment(p_P[1], p_P[2]);
+    // the knee's bend: the way its limits allow (a continuous or unlimited
+    // joint, or limits that allow neither, keep the human one: flexion)
+    {
+      const RobotJoint& knee = m.joint(g.knee_joint);
+      const auto allows = [&](double flexion) {
+        const double q = g.knee_sign * (flexion - (g.thigh0_rad - g.shank0_rad));
+        return q >= knee.lower && q <= knee.upper;
+      };
+      if (knee.type == JointType::kRevolute && knee.lower < knee.upper && !allows(kKneeBendProbe_rad) &&
+          allows(-kKneeBendProbe_rad))
+        g.knee_bend = -1;
+    }
     if (g.thigh_m < kMinSegment_m || g.shank_m < kMinSegment_m) {
       char text[200];
       std::snprintf(text, sizeof text, ": the legs cannot reach the ground: thigh %.3f m and shank %.3f m in the "
@@ -202,6 +216,11 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
       toe = std::max(toe, p.x());
       y_min = std::min(y_min, p.y());
       y_max = std::max(y_max, p.y());
+    }
+    // the faces at either end of the sole (a pitched foot's front face leads it into a riser)
+    for (const Vec3& p : points_P) {
+      if (p.x() >= toe - kSoleBand_m) g.toe_top_m = std::max(g.toe_top_m, p.z() - lowest);
+      if (p.x() <= heel + kSoleBand_m) g.heel_top_m = std::max(g.heel_top_m, p.z() - lowest);
     }
     const Vec3& p_PA = p_P[2];
     g.sole_z_m = lowest - p_PA.z();
@@ -294,11 +313,24 @@ LegAnglesRad BipedLegs::SolveAnkle(Side s, const Vec2xz& p_PA, double pitch) con
   // law of cosines: r² = lt² + ls² + 2·lt·ls·cos(knee)
   const double cos_knee = std::clamp((r * r - lt * lt - ls * ls) / (2 * lt * ls), -1.0, 1.0);
   LegAnglesRad a;
-  a.knee = std::acos(cos_knee);
+  a.knee = g.knee_bend * std::acos(cos_knee);
   const double toward = std::atan2(d.x(), -d.y());  // hip→ankle line from the downward vertical
   a.hip = toward + std::atan2(ls * std::sin(a.knee), lt + ls * std::cos(a.knee));
   a.pitch = pitch;
   return a;
+}
+
+LegAnglesRad BipedLegs::PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, double margin_rad) const {
+  const LegGeometry& g = leg(s);
+  const RobotJoint& ankle = model_.joint(g.ankle_joint);
+  if (ankle.type != JointType::kRevolute || !(ankle.lower + 2 * margin_rad < ankle.upper)) return a;
+  // q_ankle = s_a·(θS − θS0 − ψ): the pitches at the two limits
+  const double shank = (a.hip - a.knee) - g.shank0_rad;
+  const double at_lower = shank - (ankle.lower + margin_rad) / g.ankle_sign,
+               at_upper = shank - (ankle.upper - margin_rad) / g.ankle_sign;
+  LegAnglesRad out = a;
+  out.pitch = std::clamp(a.pitch, std::min(at_lower, at_upper), std::max(at_lower, at_upper));
+  return out;
 }
 
 Pose BipedLegs::FootPose_P(Side s, const LegAnglesRad& a) const {
@@ -328,11 +360,18 @@ Vec3 BipedLegs::Point3(Side s, const LegAnglesRad& a, FootPoint which) const {
   return FootPose_P(s, a) * FootPoint_L(s, which);
 }
 
+std::array<double, 3> BipedLegs::JointValues(Side s, const LegAnglesRad& a) const {
+  const LegGeometry& g = leg(s);
+  return {g.hip_sign * (g.thigh0_rad - a.hip), g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad)),
+          g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch)};
+}
+
 void BipedLegs::WriteJoints(Side s, const LegAnglesRad& a, std::span<double> q) const {
   const LegGeometry& g = leg(s);
-  q[g.hip_joint] = g.hip_sign * (g.thigh0_rad - a.hip);
-  q[g.knee_joint] = g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad));
-  q[g.ankle_joint] = g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch);
+  const std::array<double, 3> v = JointValues(s, a);
+  q[g.hip_joint] = v[0];
+  q[g.knee_joint] = v[1];
+  q[g.ankle_joint] = v[2];
 }
 
 LegAnglesRad BipedLegs::ReadJoints(Side s, std::span<const double> q) const {

@@ -61,8 +61,13 @@ struct LegGeometry {
   double sole_z_m = 0;       ///< sole below the ankle joint (< 0)
   double sole_y_m = 0;       ///< y of the sole's centre line in P
   double half_width_m = 0;   ///< half the sole's width
+  double toe_top_m = 0;      ///< the foot's front face: its highest point at the toe's x, above the sole
+  double heel_top_m = 0;     ///< its back face's, at the heel's x
   Vec3 p_L_heel = Vec3::Zero(), p_L_sole = Vec3::Zero(), p_L_toe = Vec3::Zero();  ///< in the foot link frame
   double leg_length_m = 0;   ///< hip joint above the sole, standing straight
+  /// +1: the knee's URDF limits let it flex (knee > 0, the lower end moving
+  /// back, as a human knee); −1: they let it bend the other way only
+  double knee_bend = 1;
 };
 
 /// Where a foot touches: heel edge, sole point under the ankle, toe edge.
@@ -85,6 +90,7 @@ class BipedLegs {
   /// The built-in map, every joint at 0.
   explicit BipedLegs(const RobotModel& model);
 
+  const RobotModel& model() const { return model_; }
   const LegGeometry& leg(Side s) const { return legs_[static_cast<int>(s)]; }
   /// Mean of the legs' lengths (hip joint above the sole), m.
   double leg_length_m() const { return 0.5 * (legs_[0].leg_length_m + legs_[1].leg_length_m); }
@@ -97,9 +103,19 @@ class BipedLegs {
   Vec2xz Point(Side s, const LegAnglesRad& a, FootPoint which) const;
   /// Lowest z of the sole's heel and toe, in P.
   double LowestSoleZ(Side s, const LegAnglesRad& a) const;
-  /// Hip and knee (knee ≥ 0) putting the ankle at p_PA with the given foot
-  /// pitch; out of reach, the leg points at the target as far as it goes.
+  /// Hip and knee putting the ankle at p_PA with the given foot pitch, on the
+  /// branch the knee's URDF limits allow (knee·knee_bend ≥ 0: a human knee
+  /// flexes, never bends backward); out of reach, the leg points at the target
+  /// as far as it goes. Whether the angles are within every limit is for
+  /// gait/joint_limits.h to say: a target the branch cannot reach within them
+  /// is reported there, never hidden by taking the other branch.
   LegAnglesRad SolveAnkle(Side s, const Vec2xz& p_PA, double pitch) const;
+  /// `a` with its foot pitch moved, if it must be, to the nearest pitch at
+  /// which the ankle joint is within its URDF limits (hip and knee unchanged:
+  /// a swing foot in the air may tilt, the ankle's position does not depend on it).
+  /// `margin_rad` > 0 keeps it that far inside them (never outside: narrower
+  /// limits than the URDF's).
+  LegAnglesRad PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, double margin_rad = 0) const;
   /// Offset (x, z) of a foot point from the ankle at foot pitch 0.
   Vec2xz FootOffset(Side s, FootPoint which) const;
 
@@ -110,6 +126,8 @@ class BipedLegs {
   /// A foot point in the foot link frame.
   const Vec3& FootPoint_L(Side s, FootPoint which) const;
 
+  /// The leg's hip, knee and ankle joint values (rad) for gait angles `a`.
+  std::array<double, 3> JointValues(Side s, const LegAnglesRad& a) const;
   /// Writes the three pitch joints of a leg into q (by joint index).
   void WriteJoints(Side s, const LegAnglesRad& a, std::span<double> q) const;
   /// Reads them back.

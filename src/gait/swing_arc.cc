@@ -10,8 +10,6 @@ namespace {
 
 // The start rate's term lasts this long: g(u) = u·(1 − u/τ)², slope 1 at 0, gone by τ.
 constexpr double kStartRateSpan = 0.2;
-// A climbing foot rises over [0, this]; a descending one lowers over [1 − this, 1].
-constexpr double kHeightChangeSpan = 0.7;
 // Points sampled along the sole, heel to toe.
 constexpr int kSolePoints = 7;
 
@@ -32,12 +30,16 @@ double SwingArc::LiftShape(double u) {
   return Smoothstep(u / kArcLiftRise) * Smoothstep((1 - u) / (1 - kArcLowerStart));
 }
 
+double SwingArc::CarryShape(double u) const {
+  return Smoothstep((u - carry_start) / (kArcCarryEnd - carry_start));
+}
+
 Vec2 SwingArc::At(double u) const {
   u = std::clamp(u, 0.0, 1.0);
-  const double carry = Smoothstep((u - kArcCarryStart) / (kArcCarryEnd - kArcCarryStart));
+  const double carry = CarryShape(u);
   // climbing, the height is gained early; descending, it is lost late
-  const double height = end.y() >= start.y() ? Smoothstep(u / kHeightChangeSpan)
-                                             : Smoothstep((u - (1 - kHeightChangeSpan)) / kHeightChangeSpan);
+  const double height = end.y() >= start.y() ? Smoothstep(u / height_span)
+                                             : Smoothstep((u - (1 - height_span)) / height_span);
   const double g = StartRateTerm(u);
   return {start.x() + (end.x() - start.x()) * carry + start_rate.x() * g,
           start.y() + (end.y() - start.y()) * height + start_rate.y() * g + lift_m * LiftShape(u)};
@@ -63,6 +65,18 @@ double SoleDeficit(const TerrainProfile& profile, const Vec2& ankle_H, double pi
     if (z == kNoGround) continue;
     const double needed = z + (i == own_a || i == own_b ? 0.0 : clearance_m);
     deficit = std::max(deficit, needed - q.y());
+  }
+  // the points of the front and back faces, above the ground the same way
+  const double c = std::cos(pitch_rad), sn = std::sin(pitch_rad);
+  const Vec2 up(-sn, c);  // the foot's up in H
+  for (const auto& [end, top] : {std::pair{toe, sole.toe_top_m}, std::pair{heel, sole.heel_top_m}}) {
+    for (int k = 1; k < kSolePoints && top > 0; ++k) {
+      const Vec2 q = end + up * (top * k / (kSolePoints - 1));
+      const std::size_t i = profile.SegmentAt(q.x());
+      const double z = segments[i].z_m;
+      if (z == kNoGround) continue;
+      deficit = std::max(deficit, z + (i == own_a || i == own_b ? 0.0 : clearance_m) - q.y());
+    }
   }
   // every edge under the sole (or within reach of its ends), by the clearance
   const double s_lo = std::min(heel.x(), toe.x()), s_hi = std::max(heel.x(), toe.x());

@@ -3,6 +3,7 @@
 // console_bridge; we capture those lines and put them in the InputError.
 #include "robot/robot_model.h"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>

@@ -1,0 +1,99 @@
+#include "gait/step_safety.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+
+namespace proxsim {
+
+namespace {
+
+// Rounds of slowing a step whose joints would move too fast.
+constexpr int kSlowingRounds = 12;
+
+const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
+
+// Highest sole point (heel or toe) minus the knee, in the pelvis's upright
+// sagittal plane (its z is the world's): ≥ 0 is a folded leg.
+double SoleAboveKnee_m(const BipedLegs& legs, Side s, const LegAnglesRad& a) {
+  const LegGeometry& g = legs.leg(s);
+  const double knee_z = g.p_PH.z() - g.thigh_m * std::cos(a.hip);
+  return std::max(legs.Point(s, a, FootPoint::kHeel).y(), legs.Point(s, a, FootPoint::kToe).y()) - knee_z;
+}
+
+}  // namespace
+
+std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
+                             double duration_s) {
+  const BipedLegs& legs = planner.legs();
+  // the speed window in stance phase (p runs over [0, 0.5] in duration_s)
+  const double window = std::min(0.5, 0.5 * kSpeedWindow_s / duration_s);
+  char text[320];
+  for (int i = -1; i <= kStepSafetySamples; ++i) {
+    // p = 0, then the ends of the speed windows [p − window, p] from p = window to 0.5
+    const double p = i < 0 ? 0.0 : window + (0.5 - window) * i / kStepSafetySamples;
+    const StepPose pose = planner.Evaluate(plan, p);
+    const StepPose before = i < 0 ? pose : planner.Evaluate(plan, p - window);
+    for (const Side side : {plan.stance, plan.swing}) {
+      const LegAnglesRad& a = side == plan.stance ? pose.stance : pose.swing;
+      const char* role = side == plan.stance ? "stance" : "swing";
+      if (const auto excess = limits.AngleExcess(side, a)) {
+        std::snprintf(text, sizeof text, "the %s %s leg at %.0f%% of the step: ", role, SideName(side), 200 * p);
+        return text + excess->Describe();
+      }
+      if (i >= 0) {
+        const LegAnglesRad& b = side == plan.stance ? before.stance : before.swing;
+        if (const auto excess = limits.SpeedExcess(side, b, a, 2 * window * duration_s)) {
+          std::snprintf(text, sizeof text, "the %s %s leg at %.0f%% of a %.2f s step: ", role, SideName(side),
+                        200 * p, duration_s);
+          return text + excess->Describe();
+        }
+      }
+      const double fold_m = SoleAboveKnee_m(legs, side, a);
+      if (fold_m >= 0) {
+        std::snprintf(text, sizeof text, "the %s %s leg would fold at %.0f%% of the step: its sole %.2f m above "
+                      "its own knee", role, SideName(side), 200 * p, fold_m);
+        return text;
+      }
+    }
+    if (p >= kDoubleSupportEnd) {
+      const double sole_z = pose.X_WP.translation().z() + legs.LowestSoleZ(plan.swing, pose.swing);
+      const double above_m = sole_z - plan.highest_ground_z_m;
+      if (above_m > kMaxLiftAboveGround_m) {
+        std::snprintf(text, sizeof text, "the %s swing foot would rise %.2f m above the highest ground it passes "
+                      "over (at most %.2f m) at %.0f%% of the step", SideName(plan.swing), above_m,
+                      kMaxLiftAboveGround_m, 200 * p);
+        return text;
+      }
+    }
+  }
+  return "";
+}
+
+double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
+                              double at_least_s) {
+  // the same windows as UnsafeStepReason's: the fastest joint's mean speed
+  // over kSpeedWindow_s, relative to its top speed, at duration d
+  const auto ratio_at = [&](double d) {
+    const double window = std::min(0.5, 0.5 * kSpeedWindow_s / d);
+    double ratio = 0;
+    for (int i = 0; i <= kStepSafetySamples; ++i) {
+      const double p = window + (0.5 - window) * i / kStepSafetySamples;
+      const StepPose pose = planner.Evaluate(plan, p), before = planner.Evaluate(plan, p - window);
+      ratio = std::max(ratio, limits.SpeedRatio(plan.stance, before.stance, pose.stance, 2 * window * d));
+      ratio = std::max(ratio, limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
+    }
+    return ratio;
+  };
+  // speeds scale about as 1/d, but the window moves in phase as d grows: a
+  // few rounds of scaling by the ratio found
+  double d = at_least_s;
+  for (int round = 0; round < kSlowingRounds; ++round) {
+    const double ratio = ratio_at(d);
+    if (ratio <= kSpeedMargin) break;
+    d *= ratio / kSpeedMargin;
+  }
+  return d;
+}
+
+}  // namespace proxsim
