@@ -196,7 +196,7 @@ void ExpectTheQualityBar(const Walk& w) {
   EXPECT_LT(w.worst_sole_below_m, 1e-3);
   EXPECT_LT(w.max_pivot_slip_m, 1e-3);
   EXPECT_LT(w.max_trailing_toe_slip_m, 1e-3);
-  EXPECT_GE(w.min_edge_clearance_m, 0.02);
+  EXPECT_GE(w.min_edge_clearance_m, 0.02 - 2e-4);  // the planner's slack (kClearanceSlack_m)
   EXPECT_LE(w.max_pelvis_dz_m, 2e-3);
 }
 

@@ -85,12 +85,29 @@ namespace {
 // Steps tried in turn at a heel strike: {share of the turn asked for, share of
 // the stride}; the first is the step asked for.
 constexpr std::array<std::pair<double, double>, 4> kGentlerSteps = {{{1.0, 1.0}, {0.5, 1.0}, {1.0, 0.7}, {0.5, 0.7}}};
+// Rounds of slowing a step for its joints' speeds across its heel strike, and
+// the least each slows it by.
+constexpr int kStrikeSlowingRounds = 8;
+constexpr double kStrikeSlowingMin = 1.05;
 }  // namespace
 
 double GaitWalker::Duration_s(const StepPlan& plan) const {
   // a step whose joints would move too fast (a sharp turn, a change of
   // stride, a step up) is slowed; steady walking is not (the load checked it)
   return SpeedLimitedDuration_s(*planner_, *limits_, plan, StepDuration_s(plan, gait_.period_s));
+}
+
+double GaitWalker::StrikeLimitedDuration_s(const StepPlan& next, double duration_s) const {
+  // the joints across the heel strike that starts `next`: the step in force
+  // is fixed, so only the new one can be slowed (speeds there scale less than
+  // 1/duration: a few rounds); steady walking is within the limits there too
+  // (the load's check), and keeps its duration
+  for (int round = 0; round < kStrikeSlowingRounds; ++round) {
+    const double ratio = StrikeSpeedRatio(*planner_, *limits_, plan_, step_duration_s_, next, duration_s);
+    if (ratio <= 1.0) break;
+    duration_s *= std::max(ratio / kSpeedMargin, kStrikeSlowingMin);
+  }
+  return duration_s;
 }
 
 std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s) const {
@@ -236,7 +253,7 @@ RobotState GaitWalker::Advance(double t_s) {
         for (const auto& [turn_share, k_share] : kGentlerSteps) {
           const double yaw = plan_.yaw_to + turn_share * WrapAngle(yaw_to - plan_.yaw_to);
           next = planner_->NextStep(plan_, k_target_ * k_share, yaw);
-          next_duration_s = Duration_s(next);
+          next_duration_s = StrikeLimitedDuration_s(next, Duration_s(next));
           refusal = Refusal(next, next_duration_s);
           // (no foothold within reach: a gentler step finds none either)
           if (refusal.empty() || !next.cannot_step.empty()) break;

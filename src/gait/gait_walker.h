@@ -119,6 +119,9 @@ class GaitWalker : public Locomotion {
   // reason) or a step beyond the legs' limits (UnsafeStepReason, the one place
   // that decides; today it is refused like the other, see gait.unsafe_steps).
   std::string Refusal(const StepPlan& plan, double duration_s) const;
+  /// duration_s, or longer when the joints would move too fast across the
+  /// heel strike from the step in force to `next` (StrikeSpeedRatio).
+  double StrikeLimitedDuration_s(const StepPlan& next, double duration_s) const;
   // Logs `cannot_step` once per reason in a row.
   void NoteCannotStep(const std::string& reason);
   // Whether waypoint i counts as passed with the pelvis at p.

@@ -96,4 +96,22 @@ double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limit
   return d;
 }
 
+double StrikeSpeedRatio(const StepPlanner& planner, const LegLimits& limits, const StepPlan& before, double before_s,
+                        const StepPlan& after, double after_s) {
+  constexpr int kOffsets = 10;
+  double ratio = 0;
+  for (int k = 0; k <= kOffsets; ++k) {
+    // a window of kSpeedWindow_s, t_back of it before the strike
+    const double t_back = kSpeedWindow_s * k / kOffsets, t_on = kSpeedWindow_s - t_back;
+    const StepPose from = planner.Evaluate(before, std::max(0.0, 0.5 - 0.5 * t_back / before_s));
+    const StepPose to = planner.Evaluate(after, std::min(0.5, 0.5 * t_on / after_s));
+    for (const Side side : {Side::kLeft, Side::kRight}) {
+      const LegAnglesRad& a = side == before.stance ? from.stance : from.swing;
+      const LegAnglesRad& b = side == after.stance ? to.stance : to.swing;
+      ratio = std::max(ratio, limits.SpeedRatio(side, a, b, kSpeedWindow_s));
+    }
+  }
+  return ratio;
+}
+
 }  // namespace proxsim

@@ -40,7 +40,7 @@ constexpr int kStepSafetySamples = 200;
 /// 7.3 rad/s over 10 ms, for the built-in biped at stride 0.6 m, period 1.2 s).
 constexpr double kSpeedWindow_s = 0.01;
 /// A terrain step slowed for its joints' speeds aims at this fraction of each top speed.
-constexpr double kSpeedMargin = 0.95;
+constexpr double kSpeedMargin = 0.9;
 
 /// Why the step `plan` lasting duration_s cannot be taken ("" when it can).
 std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
@@ -50,5 +50,12 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
 /// `plan` stay within kSpeedMargin of their top speeds, s.
 double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
                               double at_least_s);
+
+/// The fastest joint's mean speed over kSpeedWindow_s across the heel strike
+/// that ends `before` (lasting before_s) and starts `after` (lasting
+/// after_s), relative to its top speed: the windows UnsafeStepReason, which
+/// sees one step, cannot see.
+double StrikeSpeedRatio(const StepPlanner& planner, const LegLimits& limits, const StepPlan& before, double before_s,
+                        const StepPlan& after, double after_s);
 
 }  // namespace proxsim
