@@ -358,6 +358,11 @@ TEST_F(MjcfModelTest, WhatProxsimCannotFollowIsNamed) {
   const auto result = RunProxsim("validate " + (dir_ / "ball_run.yaml").string());
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("ball joint 'shoulder'"), std::string::npos) << result.output;
+  Write(dir_ / "group.yaml", "proxsim: 1\nduration_s: 1\nrate_hz: 10\nrobot: {model: twin.xml, geom_group: 9}\nsensors: []\n");
+  const auto group = RunProxsim("validate " + (dir_ / "group.yaml").string());
+  EXPECT_EQ(group.exit_code, 2) << group.output;
+  EXPECT_NE(group.output.find("robot.geom_group"), std::string::npos) << group.output;
+  EXPECT_NE(group.output.find("expected a MuJoCo geom group, 0 to 5, got 9"), std::string::npos) << group.output;
 }
 
 }  // namespace
