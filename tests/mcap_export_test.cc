@@ -103,6 +103,12 @@ TEST(McapExport, BadInputIsRefusedNamingItAndWritesNothing) {
   EXPECT_NE(result.output.find("missing does not exist"), std::string::npos) << result.output;
   EXPECT_FALSE(fs::exists(run));
 
+  // the file in the run's own folder, which the run creates
+  const fs::path inside = dir / "inside";
+  result = RunProxsim("run --no-report --out " + inside.string() + " --mcap " + (inside / "run.mcap").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(fs::is_regular_file(inside / "run.mcap"));
+
   // a folder given as the file
   ASSERT_EQ(RunProxsim("run --no-report --out " + run.string()).exit_code, 0);
   result = RunProxsim("export " + run.string() + " --mcap " + dir.string());

@@ -102,7 +102,7 @@ void CheckOutArgument(const std::string& out_dir) {
 int Run(const std::string& scenario_path, const std::string& out_dir, const std::string& seed_text, int threads,
         bool report, const std::string& format, bool force, const std::string& mcap_path) {
   CheckOutArgument(out_dir);
-  if (!mcap_path.empty()) proxsim::CheckMcapPath(mcap_path);
+  if (!mcap_path.empty()) proxsim::CheckMcapPath(mcap_path, out_dir);
   const std::optional<std::uint64_t> seed = ParseSeed(seed_text);
   InstallLoadingHandlers();  // a stop signal while loading ends the process at once
   proxsim::Scenario scenario = LoadScenarioArgument(scenario_path);

@@ -24,14 +24,17 @@ namespace fs = std::filesystem;
 
 }  // namespace
 
-void CheckMcapPath(const std::string& mcap_path) {
+void CheckMcapPath(const std::string& mcap_path, const std::string& folder_to_come) {
   if (mcap_path.empty()) throw InputError("--mcap: an empty path; give the MCAP file to write");
   std::error_code ec;
   if (fs::is_directory(mcap_path, ec)) {
     throw InputError("--mcap " + mcap_path + ": a folder; give the MCAP file to write (e.g. run.mcap)");
   }
   const fs::path parent = fs::path(mcap_path).parent_path();
-  if (!parent.empty() && !fs::is_directory(parent, ec)) {
+  // compared as folders ("out" and "out/" alike)
+  const bool comes = !folder_to_come.empty() && !parent.empty() &&
+                     (parent / "").lexically_normal() == (fs::path(folder_to_come) / "").lexically_normal();
+  if (!parent.empty() && !comes && !fs::is_directory(parent, ec)) {
     throw InputError("--mcap " + mcap_path + ": its folder " + parent.string() + " does not exist");
   }
 }

@@ -12,8 +12,9 @@ namespace proxsim {
 constexpr int kMcapExportBadInput = 2;
 
 /// Checks, before anything is run, that `mcap_path` can be the MCAP file: not
-/// empty, not a folder, in a folder that exists. Throws InputError naming it.
-void CheckMcapPath(const std::string& mcap_path);
+/// empty, not a folder, in a folder that exists or is `folder_to_come` (the
+/// run's output folder, which the run creates). Throws InputError naming it.
+void CheckMcapPath(const std::string& mcap_path, const std::string& folder_to_come = {});
 
 /// Writes the finished run in run_dir to mcap_path (whole, or not at all);
 /// returns 0, kMcapExportBadInput when a run file is unreadable, else 1,
