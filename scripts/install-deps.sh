@@ -13,7 +13,7 @@ packages=(
   python3-matplotlib python3-numpy
   python3-dev pybind11-dev python3-pytest
   libopenmpi-dev openmpi-bin
-  nodejs npm
+  nodejs npm   # the viewer's bundle and the MCAP exporter; the build runs `npm ci` in viewer/ and foxglove/
 )
 # Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test,
 # "fuzz" for scripts/fuzz.sh.

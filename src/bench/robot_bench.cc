@@ -140,7 +140,7 @@ nlohmann::json RobotsSection(bool quick) {
   std::unique_ptr<RobotModel> model;
   for (int i = 0; i < repeats; ++i) {
     const auto start = Clock::now();
-    model = std::make_unique<RobotModel>(RobotModel::FromUrdfFile(config.model, options));
+    model = std::make_unique<RobotModel>(RobotModel::FromFile(config.model, options));
     const double s = Since(start);
     if (i == 0) first_load_s = s;
     load_s = std::min(load_s, s);

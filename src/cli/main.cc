@@ -3,6 +3,7 @@
 //   proxsim validate SCENARIO.yaml
 //   proxsim inspect ROBOT [--json]   (a robot's links, joints and leg map, docs/robots.md)
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
+//   proxsim export OUT_DIR --mcap FILE (the run as an MCAP file for Foxglove, docs/foxglove.md)
 //   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
@@ -28,6 +29,7 @@
 #include "output/readings_columns.h"
 #include "output/run_manifest.h"
 #include "scenario/scenario.h"
+#include "report/mcap_export.h"
 #include "report/report_runner.h"
 #include "run/run.h"
 #include "sim/simulation.h"
@@ -98,8 +100,9 @@ void CheckOutArgument(const std::string& out_dir) {
 }
 
 int Run(const std::string& scenario_path, const std::string& out_dir, const std::string& seed_text, int threads,
-        bool report, const std::string& format, bool force) {
+        bool report, const std::string& format, bool force, const std::string& mcap_path) {
   CheckOutArgument(out_dir);
+  if (!mcap_path.empty()) proxsim::CheckMcapPath(mcap_path, out_dir);
   const std::optional<std::uint64_t> seed = ParseSeed(seed_text);
   InstallLoadingHandlers();  // a stop signal while loading ends the process at once
   proxsim::Scenario scenario = LoadScenarioArgument(scenario_path);
@@ -168,6 +171,11 @@ int Run(const std::string& scenario_path, const std::string& out_dir, const std:
   }
   std::printf("outputs in %s/\n", out_dir.c_str());
   std::fflush(stdout);
+  // the run in Foxglove: an MCAP file of the files just written
+  if (!mcap_path.empty() && proxsim::ExportMcap(out_dir, mcap_path) != 0) {
+    std::fprintf(stderr, "proxsim: the run's files are complete, but its MCAP file could not be written\n");
+    return kExitFailure;
+  }
   if (!report) return 0;
   // the pictures: figures and the replay viewer, drawn from the files just written
   if (proxsim::MakeReport(out_dir) != 0) {
@@ -176,6 +184,17 @@ int Run(const std::string& scenario_path, const std::string& out_dir, const std:
   }
   std::printf("report: %s/report/index.html and %s/report/*.png\n", out_dir.c_str(), out_dir.c_str());
   return 0;
+}
+
+// The files in dir must be one run's (its manifest): a figure or an export of two runs' files would mislead.
+void CheckOneRun(const std::string& dir) {
+  const std::vector<std::string> problems = proxsim::RunFolderProblems(dir);
+  if (problems.empty()) return;
+  std::vector<std::string> lines;
+  for (const std::string& problem : problems) lines.push_back(dir + "/" + problem);
+  lines.push_back(dir + ": its files are not one run's; run the scenario again into this folder "
+                        "(or another) to get a consistent set");
+  throw proxsim::InputError(lines);
 }
 
 int Validate(const std::string& scenario_path) {
@@ -245,6 +264,8 @@ int main(int argc, char** argv) {
   bool no_report = false;
   run->add_flag("--no-report", no_report, "skip the figures and the viewer (the data files are still written)");
   std::string format = "csv";
+  std::string run_mcap;
+  run->add_option("--mcap", run_mcap, "also write the run as an MCAP file for Foxglove (docs/foxglove.md)");
   run->add_option("--format", format, "readings as readings.csv, or as one .npy per column in readings/ (large runs)")
       ->check(CLI::IsMember({"csv", "npy"}))
       ->capture_default_str();
@@ -267,6 +288,11 @@ int main(int argc, char** argv) {
   std::string plot_dir;
   CLI::App* plot = app.add_subcommand("plot", "redraw the figures and the viewer of a finished run");
   plot->add_option("out", plot_dir, "the run's output folder")->required()->check(CLI::ExistingDirectory);
+
+  std::string export_dir, export_mcap;
+  CLI::App* export_command = app.add_subcommand("export", "write a finished run as an MCAP file for Foxglove");
+  export_command->add_option("out", export_dir, "the run's output folder")->required()->check(CLI::ExistingDirectory);
+  export_command->add_option("--mcap", export_mcap, "the MCAP file to write (docs/foxglove.md)")->required();
 
   std::string study_path, study_out = "study-out";
   int study_threads = 0;
@@ -305,7 +331,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format, run_force);
+    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format, run_force, run_mcap);
     if (*bench && !bench_from.empty()) {
       std::string report;
       // a regular file only: a FIFO would block the read for ever
@@ -336,18 +362,18 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*plot) {
-      // the files must be one run's: a figure of two runs' files would mislead
-      const std::vector<std::string> problems = proxsim::RunFolderProblems(plot_dir);
-      if (!problems.empty()) {
-        std::vector<std::string> lines;
-        for (const std::string& problem : problems) lines.push_back(plot_dir + "/" + problem);
-        lines.push_back(plot_dir + ": its files are not one run's; run the scenario again into this folder "
-                                   "(or another) to get a consistent set");
-        throw proxsim::InputError(lines);
-      }
+      CheckOneRun(plot_dir);
       // redrawing replaces report/: hold the folder against a run into it meanwhile
       const proxsim::OutputFolder folder(plot_dir, {.command = "plot", .create = false, .check_contents = false});
       return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
+    }
+    if (*export_command) {
+      CheckOneRun(export_dir);
+      proxsim::CheckMcapPath(export_mcap);
+      // hold the folder against a run into it while its files are read
+      const proxsim::OutputFolder folder(export_dir, {.command = "export", .create = false, .check_contents = false});
+      const int code = proxsim::ExportMcap(export_dir, export_mcap);
+      return code == 0 ? 0 : code == proxsim::kMcapExportBadInput ? kExitBadInput : kExitFailure;
     }
     if (*validate) return Validate(validate_path);
     if (*inspect) return proxsim::InspectCommand(inspect_target, inspect_json);

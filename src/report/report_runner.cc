@@ -1,14 +1,10 @@
-// MakeReport: spawns `/usr/bin/python3 PROXSIM_REPORT_SCRIPT OUT --viewer-bundle
-// PROXSIM_VIEWER_BUNDLE` (posix_spawn, no shell), waits for it and returns its
+// MakeReport: runs `/usr/bin/python3 PROXSIM_REPORT_SCRIPT OUT --viewer-bundle
+// PROXSIM_VIEWER_BUNDLE` (report/child_process.h), waits for it and returns its
 // exit status. The paths are compile definitions set by cmake/viewer.cmake.
 #include "report/report_runner.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <map>
 #include <iostream>
@@ -16,8 +12,7 @@
 #include <vector>
 
 #include "output/run_manifest.h"
-
-extern char** environ;
+#include "report/child_process.h"
 
 namespace proxsim {
 namespace {
@@ -34,41 +29,17 @@ constexpr const char* kPython = "/usr/bin/python3";
 // make_report.py's exit code when it cannot import matplotlib or numpy.
 constexpr int kMissingPlotting = 3;
 
-// Spawns `args` (args[0] the interpreter; no shell: arguments pass as they
-// are), waits for it through interruptions, and returns its exit status,
+// Runs the script with Debian's interpreter and returns its exit status,
 // saying why on stderr when it is not 0.
 int RunPythonScript(std::vector<std::string> args) {
-  // spawn the script, no shell: arguments pass as they are
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawn_error = posix_spawn(&pid, kPython, nullptr, nullptr, argv.data(), environ);
-  if (spawn_error != 0) {
-    std::cerr << "proxsim: cannot start " << kPython << ": " << std::strerror(spawn_error) << "\n";
-    return 1;
+  const int code = RunChildProcess(kPython, std::move(args), "the report script");
+  if (code == kMissingPlotting) {
+    std::cerr << "proxsim: the report needs matplotlib for " << kPython
+              << " (apt-get install python3-matplotlib python3-numpy)\n";
+  } else if (code != 0) {
+    std::cerr << "proxsim: the report script failed (exit " << code << ")\n";
   }
-
-  // wait for it, through interruptions
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) {
-      std::cerr << "proxsim: lost the report process: " << std::strerror(errno) << "\n";
-      return 1;
-    }
-  }
-  if (WIFEXITED(status)) {
-    const int code = WEXITSTATUS(status);
-    if (code == kMissingPlotting) {
-      std::cerr << "proxsim: the report needs matplotlib for " << kPython
-                << " (apt-get install python3-matplotlib python3-numpy)\n";
-    } else if (code != 0) {
-      std::cerr << "proxsim: the report script failed (exit " << code << ")\n";
-    }
-    return code;
-  }
-  std::cerr << "proxsim: the report script was killed by signal " << WTERMSIG(status) << "\n";
-  return 1;
+  return code;
 }
 
 }  // namespace

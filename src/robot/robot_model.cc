@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -243,6 +244,30 @@ RobotModel RobotModel::FromUrdfFile(const std::string& path, const UrdfOptions& 
   std::stringstream text;
   text << in.rdbuf();
   return FromUrdfText(text.str(), path, options);
+}
+
+RobotModel RobotModel::FromFile(const std::string& path, const UrdfOptions& options) {
+  // the first element, past the XML declaration, comments and doctype
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::size_t at = 0;
+  for (;;) {
+    at = head.find('<', at);
+    if (at == std::string::npos) break;
+    if (head.compare(at, 4, "<!--") == 0) {
+      at = head.find("-->", at);
+    } else if (head.compare(at, 2, "<?") == 0 || head.compare(at, 2, "<!") == 0) {
+      at = head.find('>', at);
+    } else {
+      break;
+    }
+    if (at == std::string::npos) break;
+  }
+  const bool mjcf = at != std::string::npos && head.compare(at, 7, "<mujoco") == 0 &&
+                    (at + 7 == head.size() || !std::isalnum(static_cast<unsigned char>(head[at + 7])));
+  return mjcf ? FromMjcfFile(path, options) : FromUrdfFile(path, options);
 }
 
 RobotModel RobotModel::Builtin(const std::string& name, const UrdfOptions& options) {

@@ -1,5 +1,5 @@
 // A robot as a tree of rigid links joined by 1-DoF joints, read from URDF
-// (urdfdom), with the links' geometry so that the robot is geometry in the
+// (urdfdom) or from a MuJoCo model (MJCF, robot/mjcf_model.h), with the links' geometry so that the robot is geometry in the
 // scene, and forward kinematics over the tree.
 //
 // Frames: W world, L a link frame (URDF: a link's frame is its parent joint's
@@ -79,6 +79,15 @@ class RobotModel {
   /// relative mesh paths and starts the search for packages.
   static RobotModel FromUrdfText(const std::string& urdf_text, const std::string& source,
                                  const UrdfOptions& options = {});
+
+  /// Reads a MuJoCo model (MJCF) through libmujoco: its bodies, hinge and slide
+  /// joints, geoms and sites, as robot/mjcf_model.h maps them. Throws
+  /// InputError naming the file and what MuJoCo refused, or each element
+  /// proxsim cannot follow (a ball joint, an equality constraint, a plane geom…).
+  static RobotModel FromMjcfFile(const std::string& path, const UrdfOptions& options = {});
+
+  /// A URDF or an MJCF file, told apart by its first element (<robot> or <mujoco>).
+  static RobotModel FromFile(const std::string& path, const UrdfOptions& options = {});
 
   /// A robot shipped inside the binary: "biped" (data/robots/biped.urdf).
   static RobotModel Builtin(const std::string& name, const UrdfOptions& options = {});

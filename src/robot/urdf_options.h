@@ -16,7 +16,7 @@ enum class LinkGeometryKind {
 /// "visual" or "collision".
 const char* LinkGeometryKindName(LinkGeometryKind kind);
 
-/// Options of RobotModel::FromUrdfFile / FromUrdfText.
+/// Options of RobotModel::FromUrdfFile / FromUrdfText / FromMjcfFile / FromFile.
 struct UrdfOptions {
   /// The geometry used; a link without any of that kind uses the other.
   LinkGeometryKind geometry = LinkGeometryKind::kVisual;
@@ -24,6 +24,10 @@ struct UrdfOptions {
   /// NAME itself or holds it as a direct subfolder), before ROS_PACKAGE_PATH
   /// and the URDF's own ancestor folders.
   std::vector<std::string> package_paths;
+  /// MJCF only (`robot.geom_group`): the geom group (0–5) whose geoms are the
+  /// links' surfaces; −1, every geom. MuJoCo Menagerie's models put their
+  /// visual meshes in group 2 and their collision shapes in group 3.
+  int geom_group = -1;
 };
 
 }  // namespace proxsim

@@ -160,8 +160,9 @@ std::vector<std::string> RobotProblems(const Scenario& scenario) {
   std::error_code error;
   if (!builtin && !std::filesystem::is_regular_file(robot.model, error)) return {};
   try {
-    const UrdfOptions options{.geometry = robot.geometry, .package_paths = robot.package_paths};
-    GaitWalker(builtin ? RobotModel::Builtin(robot.model.substr(8), options) : RobotModel::FromUrdfFile(robot.model, options),
+    const UrdfOptions options{
+        .geometry = robot.geometry, .package_paths = robot.package_paths, .geom_group = robot.geom_group};
+    GaitWalker(builtin ? RobotModel::Builtin(robot.model.substr(8), options) : RobotModel::FromFile(robot.model, options),
                robot);
   } catch (const InputError& robot_error) {
     return robot_error.problems();

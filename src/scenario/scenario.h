@@ -53,6 +53,7 @@ struct RobotConfig : WalkConfig {
   std::string trajectory_file;              ///< recorded trajectory CSV to replay instead of the gait
   LinkGeometryKind geometry = LinkGeometryKind::kVisual;  ///< `robot.geometry`: what the links' surfaces are made of
   std::vector<std::string> package_paths;   ///< `robot.package_paths`: folders for package:// URIs (resolved paths)
+  int geom_group = -1;                      ///< `robot.geom_group` (MJCF): the geom group of the links' surfaces; −1 every geom
   /// `robot.start.on`: the scene object the robot starts standing on, on purpose
   /// (empty: it starts on the ground); checked to exist when the scenario loads
   std::string start_on;

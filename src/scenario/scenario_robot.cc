@@ -159,14 +159,15 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
                       const Scene& scene) {
   RobotConfig robot;
   const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
-                                      "geometry", "package_paths", "legs", "joints_deg", "on_collision"});
+                                      "geometry", "geom_group", "package_paths", "legs", "joints_deg",
+                                      "on_collision"});
   if (!map) return robot;
 
-  // model: builtin:NAME, or a URDF file
+  // model: builtin:NAME, or a URDF or MJCF file
   const Field model = (*map)["model"];
   if (model && model.node.IsScalar() && model.node.Scalar().starts_with(kBuiltinPrefix)) {
     robot.model = model.node.Scalar();
-  } else if (const auto urdf = ReadExistingFile(reader, model, base_dir, "builtin:biped or the path of a URDF file")) {
+  } else if (const auto urdf = ReadExistingFile(reader, model, base_dir, "builtin:biped or the path of a URDF or MJCF file")) {
     robot.model = *urdf;
   }
 
@@ -179,6 +180,15 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
       robot.geometry = LinkGeometryKind::kCollision;
     } else if (kind) {
       reader.Fail(geometry, "expected visual or collision, got " + DescribeNode(geometry.node));
+    }
+  }
+
+  // geom_group: 0 to 5, the MJCF geoms that are the links' surfaces (none: every geom)
+  if (const Field group = (*map)["geom_group"]) {
+    if (const auto value = reader.Count(group); value && *value > 5) {
+      reader.Fail(group, "expected a MuJoCo geom group, 0 to 5, got " + std::to_string(*value));
+    } else if (value) {
+      robot.geom_group = static_cast<int>(*value);
     }
   }
 

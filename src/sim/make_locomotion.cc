@@ -12,10 +12,11 @@ constexpr const char* kBuiltinPrefix = "builtin:";
 }  // namespace
 
 RobotModel LoadRobotModel(const RobotConfig& config) {
-  const UrdfOptions options{.geometry = config.geometry, .package_paths = config.package_paths};
+  const UrdfOptions options{
+      .geometry = config.geometry, .package_paths = config.package_paths, .geom_group = config.geom_group};
   if (config.model.starts_with(kBuiltinPrefix))
     return RobotModel::Builtin(config.model.substr(std::string(kBuiltinPrefix).size()), options);
-  return RobotModel::FromUrdfFile(config.model, options);
+  return RobotModel::FromFile(config.model, options);
 }
 
 std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config) {

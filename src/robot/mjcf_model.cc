@@ -1,0 +1,309 @@
+// RobotModel::FromMjcfFile: an MJCF file compiled by MuJoCo (mj_loadXML), its
+// bodies, joints, geoms and sites mapped into the link and joint tables (the
+// mapping: robot/mjcf_model.h).
+#include "robot/mjcf_model.h"
+
+#include <mujoco/mujoco.h>
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/input_error.h"
+#include "core/input_limits.h"
+#include "scene/mesh_prescan.h"
+#include "robot/robot_model.h"
+
+namespace proxsim {
+
+std::shared_ptr<const TriangleMesh> EllipsoidMesh(const Vec3& radii) {
+  constexpr double kPi = 3.14159265358979323846;
+  const int rings = kEllipsoidRings, segments = 2 * kEllipsoidRings;
+  auto mesh = std::make_shared<TriangleMesh>();
+  // the poles, and (rings − 1) circles of latitude between them
+  mesh->vertices_O.emplace_back(0.0f, 0.0f, static_cast<float>(radii.z()));
+  for (int i = 1; i < rings; ++i) {
+    const double polar = kPi * i / rings;
+    for (int j = 0; j < segments; ++j) {
+      const double azimuth = 2 * kPi * j / segments;
+      mesh->vertices_O.emplace_back(static_cast<float>(radii.x() * std::sin(polar) * std::cos(azimuth)),
+                                    static_cast<float>(radii.y() * std::sin(polar) * std::sin(azimuth)),
+                                    static_cast<float>(radii.z() * std::cos(polar)));
+    }
+  }
+  mesh->vertices_O.emplace_back(0.0f, 0.0f, static_cast<float>(-radii.z()));
+  const auto at = [&](int ring, int j) { return static_cast<std::uint32_t>(1 + (ring - 1) * segments + j % segments); };
+  const auto south = static_cast<std::uint32_t>(mesh->vertices_O.size() - 1);
+  // caps, then the bands between circles, counter-clockwise seen from outside
+  for (int j = 0; j < segments; ++j) {
+    mesh->triangles.push_back({0, at(1, j), at(1, j + 1)});
+    mesh->triangles.push_back({south, at(rings - 1, j + 1), at(rings - 1, j)});
+  }
+  for (int i = 1; i + 1 < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      mesh->triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh->triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return mesh;
+}
+
+namespace {
+
+// MuJoCo's warnings go to a file in the working folder by default: collected instead, while one load runs
+std::vector<std::string>* g_warnings = nullptr;
+extern "C" void CollectWarning(const char* text) {
+  if (g_warnings != nullptr) g_warnings->push_back(text);
+}
+
+struct ModelDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+using ModelPtr = std::unique_ptr<mjModel, ModelDeleter>;
+
+ModelPtr LoadCompiled(const std::string& path) {
+  // mj_loadXML and the warning hook are process-global: one load at a time
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
+  std::vector<std::string> warnings;
+  g_warnings = &warnings;
+  void (*previous)(const char*) = mju_user_warning;
+  mju_user_warning = CollectWarning;
+  char error[1024] = "";
+  ModelPtr model(mj_loadXML(path.c_str(), nullptr, error, sizeof error));
+  mju_user_warning = previous;
+  g_warnings = nullptr;
+  if (!model) {
+    throw InputError(path + ": MuJoCo could not load the MJCF (libmujoco " + std::to_string(mj_version()) +
+                     "): " + (error[0] != '\0' ? std::string(error) : "no reason given"));
+  }
+  return model;
+}
+
+Pose PoseOf(const mjtNum* pos, const mjtNum* quat_wxyz) {
+  Pose X = Pose::Identity();
+  X.linear() = Eigen::Quaterniond(quat_wxyz[0], quat_wxyz[1], quat_wxyz[2], quat_wxyz[3]).normalized().toRotationMatrix();
+  X.translation() = Vec3(pos[0], pos[1], pos[2]);
+  return X;
+}
+
+Pose Translation(const Vec3& p) {
+  Pose X = Pose::Identity();
+  X.translation() = p;
+  return X;
+}
+
+// an object's name, or a stand-in for an unnamed one ("body 3")
+std::string NameOf(const mjModel* m, int type, int id, const char* kind) {
+  const char* name = mj_id2name(m, type, id);
+  return name != nullptr && name[0] != '\0' ? std::string(name) : std::string(kind) + " " + std::to_string(id);
+}
+
+const char* GeomTypeName(int type) {
+  switch (type) {
+    case mjGEOM_PLANE: return "plane";
+    case mjGEOM_HFIELD: return "hfield";
+    case mjGEOM_SPHERE: return "sphere";
+    case mjGEOM_CAPSULE: return "capsule";
+    case mjGEOM_ELLIPSOID: return "ellipsoid";
+    case mjGEOM_CYLINDER: return "cylinder";
+    case mjGEOM_BOX: return "box";
+    case mjGEOM_MESH: return "mesh";
+    default: return "unknown";
+  }
+}
+
+}  // namespace
+
+// The tables are filled here, in body order (MuJoCo numbers a body after its
+// parent), so that joints come parents first as forward kinematics needs.
+RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& options) {
+  if (const std::string problem = RegularFileProblem(path, kMaxUrdfBytes); !problem.empty()) throw InputError(problem);
+  const ModelPtr owner = LoadCompiled(path);
+  const mjModel* m = owner.get();
+  std::vector<std::string> problems;
+  const std::string where = path + ": ";
+
+  // what proxsim's kinematic tree cannot follow, named
+  for (int e = 0; e < m->neq; ++e) {
+    problems.push_back(where + "equality constraint '" + NameOf(m, mjOBJ_EQUALITY, e, "equality") +
+                       "' is not supported: proxsim's robot is a kinematic tree (no coupled joints or closed chains)");
+  }
+  if (m->nskin > 0) problems.push_back(where + "skins are not supported (" + std::to_string(m->nskin) + " skin(s))");
+  std::vector<int> roots;
+  for (int b = 1; b < m->nbody; ++b) {
+    if (m->body_parentid[b] == 0) roots.push_back(b);
+    if (m->body_mocapid[b] >= 0) {
+      problems.push_back(where + "body '" + NameOf(m, mjOBJ_BODY, b, "body") + "' is a mocap body: not supported");
+    }
+  }
+  for (int g = m->body_geomadr[0]; m->body_geomnum[0] > 0 && g < m->body_geomadr[0] + m->body_geomnum[0]; ++g) {
+    problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' (" + GeomTypeName(m->geom_type[g]) +
+                       ") belongs to the world body: the scene goes in the scenario's scene (load the robot's own "
+                       "file, not a scene that includes it)");
+  }
+  if (roots.size() != 1) {
+    std::string names;
+    for (const int b : roots) names += (names.empty() ? "'" : ", '") + NameOf(m, mjOBJ_BODY, b, "body") + "'";
+    problems.push_back(where + "expected one body under the world (the robot's root), found " +
+                       std::to_string(roots.size()) + (names.empty() ? "" : ": " + names));
+    throw InputError(problems);
+  }
+  if (options.geom_group < -1 || options.geom_group > 5) {
+    problems.push_back(where + "geom group " + std::to_string(options.geom_group) + ": expected 0 to 5, or none for every geom");
+  }
+
+  RobotModel model;
+  model.name_ = m->names != nullptr ? std::string(m->names) : std::string();
+  model.source_ = path;
+  const auto add_link = [&](const std::string& name, double mass_kg) {
+    const int index = static_cast<int>(model.links_.size());
+    if (!model.link_of_.try_emplace(name, index).second) {
+      problems.push_back(where + "the name '" + name + "' is used by two links (bodies, sites or a body's joint links)");
+    }
+    model.links_.push_back(RobotLink{.name = name, .mass_kg = mass_kg});
+    return index;
+  };
+  const auto add_joint = [&](const std::string& name, JointType type, int parent, int child, const Pose& X_PJ,
+                             const Vec3& axis_J) {
+    const int index = static_cast<int>(model.joints_.size());
+    if (!model.joint_of_.try_emplace(name, index).second) problems.push_back(where + "two joints are named '" + name + "'");
+    model.joints_.push_back(RobotJoint{.name = name, .type = type, .parent_link = parent, .child_link = child,
+                                       .X_PJ = X_PJ, .axis_J = axis_J});
+    model.links_[parent].child_joints.push_back(index);
+    model.links_[child].parent_joint = index;
+    return index;
+  };
+
+  // bodies: each a link; its joints between it and its parent's link
+  std::vector<int> link_of_body(m->nbody, -1);
+  std::map<int, std::shared_ptr<const TriangleMesh>> meshes;  // by MuJoCo mesh id, shared by the geoms using it
+  for (int b = roots[0]; b < m->nbody; ++b) {
+    const std::string body = NameOf(m, mjOBJ_BODY, b, "body");
+    const bool root = b == roots[0];
+    if (!root && link_of_body[m->body_parentid[b]] < 0) continue;  // under a body already refused
+    int parent = root ? -1 : link_of_body[m->body_parentid[b]];
+    Pose X_PB = root ? Pose::Identity() : PoseOf(m->body_pos + 3 * b, m->body_quat + 4 * b);
+
+    // the moving joints of this body, in MuJoCo's order
+    std::vector<int> moving;
+    for (int j = m->body_jntadr[b]; m->body_jntnum[b] > 0 && j < m->body_jntadr[b] + m->body_jntnum[b]; ++j) {
+      const std::string joint = NameOf(m, mjOBJ_JOINT, j, "joint");
+      switch (m->jnt_type[j]) {
+        case mjJNT_FREE:
+          if (!root) problems.push_back(where + "free joint '" + joint + "' of body '" + body + "' below the root: not supported");
+          break;
+        case mjJNT_BALL:
+          problems.push_back(where + "ball joint '" + joint + "' of body '" + body +
+                             "': not supported (proxsim's joints have one degree of freedom: use hinges)");
+          break;
+        default:
+          if (root) {
+            problems.push_back(where + "joint '" + joint + "' attaches the root body '" + body +
+                               "' to the world: not supported (proxsim places the root itself: give it a <freejoint/> or none)");
+          } else {
+            moving.push_back(j);
+          }
+      }
+    }
+
+    // a link per joint between the parent and the body, each on its joint's anchor
+    int link = -1;  // the body's own link
+    for (std::size_t k = 0; k < moving.size(); ++k) {
+      const int j = moving[k];
+      const std::string joint = NameOf(m, mjOBJ_JOINT, j, "joint");
+      const Vec3 anchor(m->jnt_pos[3 * j], m->jnt_pos[3 * j + 1], m->jnt_pos[3 * j + 2]);
+      Vec3 axis(m->jnt_axis[3 * j], m->jnt_axis[3 * j + 1], m->jnt_axis[3 * j + 2]);
+      if (axis.norm() < 1e-12) {
+        problems.push_back(where + "joint '" + joint + "' has a zero axis");
+        axis = Vec3::UnitX();
+      }
+      const bool last = k + 1 == moving.size();
+      const bool on_origin = anchor.norm() == 0.0;
+      const int child = add_link(last && on_origin ? body : body + "." + joint, last && on_origin ? m->body_mass[b] : 0.0);
+      const bool hinge = m->jnt_type[j] == mjJNT_HINGE;
+      const bool limited = m->jnt_limited[j] != 0;
+      const int index = add_joint(joint, hinge ? (limited ? JointType::kRevolute : JointType::kContinuous) : JointType::kPrismatic,
+                                  parent, child, X_PB * Translation(anchor), axis.normalized());
+      if (limited) {
+        model.joints_[index].has_limits = true;
+        model.joints_[index].lower = m->jnt_range[2 * j];
+        model.joints_[index].upper = m->jnt_range[2 * j + 1];
+      }
+      if (last && on_origin) link = child;
+      parent = child;
+      X_PB = Translation(-anchor);
+    }
+    // the body itself, unless it is the last joint's child: the root, or fixed to what came before
+    if (link < 0) {
+      link = add_link(body, m->body_mass[b]);
+      if (!root) add_joint("fixed:" + body, JointType::kFixed, parent, link, X_PB, Vec3::UnitX());
+    }
+    link_of_body[b] = link;
+
+    // its geoms of the group chosen
+    for (int g = m->body_geomadr[b]; m->body_geomnum[b] > 0 && g < m->body_geomadr[b] + m->body_geomnum[b]; ++g) {
+      if (options.geom_group >= 0 && m->geom_group[g] != options.geom_group) continue;
+      const Pose X_LO = PoseOf(m->geom_pos + 3 * g, m->geom_quat + 4 * g);
+      const mjtNum* size = m->geom_size + 3 * g;
+      auto& shapes = model.links_[link].shapes;
+      switch (m->geom_type[g]) {
+        case mjGEOM_BOX: shapes.push_back({Box{2.0 * Vec3(size[0], size[1], size[2])}, X_LO}); break;
+        case mjGEOM_SPHERE: shapes.push_back({Sphere{size[0]}, X_LO}); break;
+        case mjGEOM_CYLINDER: shapes.push_back({Cylinder{size[0], 2.0 * size[1]}, X_LO}); break;
+        case mjGEOM_CAPSULE:
+          // a capsule's surface is a cylinder's side and a sphere at each end
+          shapes.push_back({Cylinder{size[0], 2.0 * size[1]}, X_LO});
+          shapes.push_back({Sphere{size[0]}, X_LO * Translation(Vec3(0, 0, size[1]))});
+          shapes.push_back({Sphere{size[0]}, X_LO * Translation(Vec3(0, 0, -size[1]))});
+          break;
+        case mjGEOM_ELLIPSOID:
+          shapes.push_back({Mesh{.file = "ellipsoid", .data = EllipsoidMesh(Vec3(size[0], size[1], size[2]))}, X_LO});
+          break;
+        case mjGEOM_MESH: {
+          const int id = m->geom_dataid[g];
+          auto& data = meshes[id];
+          if (!data) {
+            auto mesh = std::make_shared<TriangleMesh>();
+            for (int v = m->mesh_vertadr[id]; v < m->mesh_vertadr[id] + m->mesh_vertnum[id]; ++v)
+              mesh->vertices_O.emplace_back(m->mesh_vert[3 * v], m->mesh_vert[3 * v + 1], m->mesh_vert[3 * v + 2]);
+            for (int f = m->mesh_faceadr[id]; f < m->mesh_faceadr[id] + m->mesh_facenum[id]; ++f) {
+              mesh->triangles.push_back({static_cast<std::uint32_t>(m->mesh_face[3 * f]),
+                                         static_cast<std::uint32_t>(m->mesh_face[3 * f + 1]),
+                                         static_cast<std::uint32_t>(m->mesh_face[3 * f + 2])});
+            }
+            data = std::move(mesh);
+          }
+          shapes.push_back({Mesh{.file = NameOf(m, mjOBJ_MESH, id, "mesh"), .data = data}, X_LO});
+          break;
+        }
+        default:
+          problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' of body '" + body + "' is a " +
+                             GeomTypeName(m->geom_type[g]) +
+                             ": not supported on a robot (box, sphere, capsule, cylinder, ellipsoid and mesh are)");
+      }
+    }
+  }
+
+  // sites: frames fixed to their bodies, where sensors may mount
+  for (int s = 0; s < m->nsite; ++s) {
+    const int body_link = link_of_body[m->site_bodyid[s]];
+    if (body_link < 0) continue;  // the world's, or under a body refused
+    const std::string site = NameOf(m, mjOBJ_SITE, s, "site");
+    const int link = add_link(site, 0.0);
+    add_joint("site:" + site, JointType::kFixed, body_link, link, PoseOf(m->site_pos + 3 * s, m->site_quat + 4 * s),
+              Vec3::UnitX());
+  }
+  if (!problems.empty()) throw InputError(problems);
+
+  // forward kinematics in joint order: each joint was added after its parent link was reached
+  model.root_link_ = 0;
+  model.mesh_file_count_ = meshes.size();
+  model.joint_order_.resize(model.joints_.size());
+  for (int j = 0; j < model.joint_count(); ++j) model.joint_order_[j] = j;
+  return model;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,56 @@
+// MuJoCo models (MJCF) as proxsim robots, read through Debian's libmujoco
+// (mj_loadXML, which also compiles the model: defaults, fromto, meshes,
+// angles in degrees all resolved). RobotModel::FromMjcfFile maps the compiled
+// model into proxsim's tree of links and 1-DoF joints (docs/robots.md,
+// "MuJoCo models"):
+//
+//  - the world body's single child body is the root link (a <freejoint/> on it
+//    is the floating base proxsim places itself); every other body is a link
+//    of its name, with its mass;
+//  - a body's hinge joints become revolute joints (continuous when not
+//    limited), its slide joints prismatic ones, with their ranges; a body
+//    without joints hangs from its parent by a fixed joint `fixed:BODY`. A
+//    joint whose anchor is off the body's origin, or a body with several
+//    joints, gets a link per joint between them (`BODY.JOINT`, no geometry)
+//    and a fixed joint back to the body's frame: MuJoCo turns a body about
+//    each joint's anchor in turn, proxsim's child frames sit on their joint;
+//  - geoms (of the group chosen, or every geom) become the link's shapes:
+//    box, sphere and cylinder exactly, a capsule as a cylinder and two
+//    spheres (exactly its surface), an ellipsoid as a triangle mesh
+//    (kEllipsoidRings rings, within kEllipsoidMeshDepth of it), a mesh with its compiled vertices and faces;
+//  - each site becomes a link of its name, fixed to its body (`site:SITE`),
+//    so that a sensor may mount on it (`link: SITE`).
+//
+// Anything that would change what the robot's surface or motion is, and
+// proxsim cannot follow, is an InputError naming it: ball joints, free joints
+// below the root, joints attaching the root to the world, equality
+// constraints, mocap bodies, skins, plane and height-field geoms, geoms of
+// the world body, several trees under the world. What does not change it
+// (actuators, MuJoCo sensors, tendons, contacts, keyframes, visuals) is not
+// read: proxsim is kinematic.
+#pragma once
+
+#include <cmath>
+#include <memory>
+
+#include "core/geometry.h"
+#include "scene/shape.h"
+
+namespace proxsim {
+
+/// Rings (latitude bands) of an ellipsoid's mesh; each ring has twice as many
+/// segments, so that a cell spans θ = π / kEllipsoidRings both ways.
+constexpr int kEllipsoidRings = 48;
+/// How far inside the ellipsoid the mesh's faces may lie, as a share of it:
+/// the mesh lies between the ellipsoid and the ellipsoid scaled by
+/// (1 − kEllipsoidMeshDepth) (its vertices on the surface). A face's plane is
+/// 1 − √(1 − ρ²) from a unit sphere's surface for a circumradius ρ ≤ θ/√2:
+/// 1 − √(1 − θ²/2) ≈ 1.07e-3 (1 mm on a 1 m ellipsoid).
+inline const double kEllipsoidMeshDepth =
+    1.0 - std::sqrt(1.0 - 0.5 * (3.14159265358979323846 / kEllipsoidRings) * (3.14159265358979323846 / kEllipsoidRings));
+
+/// The ellipsoid of semi-axes `radii` (x, y, z) centred on its frame, as a
+/// closed triangle mesh with outward faces.
+std::shared_ptr<const TriangleMesh> EllipsoidMesh(const Vec3& radii);
+
+}  // namespace proxsim
