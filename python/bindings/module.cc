@@ -31,6 +31,7 @@
 
 #include "core/input_error.h"
 #include "robot_state.h"
+#include "vec_walk_env.h"
 #include "scenario/scenario.h"
 #include "run/run.h"
 #include "run/run_recorder.h"
@@ -506,6 +507,8 @@ PYBIND11_MODULE(_core, m) {
       PyErr_SetObject(proxsim::g_input_error, exception.ptr());
     }
   });
+
+  proxsim::BindVecWalkEnv(m);
 
   py::class_<PyRobot>(m, "Robot", "Commands to the simulated robot; they take effect from the next step on.")
       .def("stop", &PyRobot::Stop, "Stop at the next double support and stand there.")
