@@ -232,7 +232,10 @@ class PySimulation {
   py::object RobotStateNow() const {
     ObjectLock lock(mutex_);
     if (sim_->robot_state() == nullptr) return py::none();
-    return RobotStateDict(sim_->robot()->model(), *sim_->robot_state());
+    py::dict state = RobotStateDict(sim_->robot()->model(), *sim_->robot_state());
+    // a co-simulated robot cannot obey a stop: its caller reads it here
+    if (sim_->external() != nullptr) state["stop_requested"] = sim_->external()->stop_requested();
+    return state;
   }
 
   std::vector<std::string> joint_names() const {
@@ -373,6 +376,7 @@ class PySimulation {
     ObjectLock lock(mutex_);
     return sim_->sample_count();
   }
+  double rate_hz() const { return sim_->scenario().rate_hz; }
   std::uint64_t seed() const {
     ObjectLock lock(mutex_);
     return sim_->scenario().seed;
@@ -536,7 +540,7 @@ PYBIND11_MODULE(_core, m) {
            "and optionally gait_phase and support_leg ('left', 'right', 'double').")
       .def("robot_state", &PySimulation::RobotStateNow,
            "The robot's true state at the last sample: xyz, quat_wxyz, R, q (joint_names order), gait_phase, "
-           "support_leg, stopped, distance_walked_m; None without a robot.")
+           "support_leg, stopped, distance_walked_m (and stop_requested when driven from outside); None without a robot.")
       .def("truth", &PySimulation::Truth, "The last sample's truth, for analysis and scoring only.")
       .def("reset", &PySimulation::Reset, py::arg("seed") = py::none(),
            "Start a new episode on the same world (seed: the noise's; default the first one).")
@@ -550,6 +554,7 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("done", &PySimulation::done)
       .def_property_readonly("t_s", &PySimulation::t_s)
       .def_property_readonly("sample_count", &PySimulation::sample_count)
+      .def_property_readonly("rate_hz", &PySimulation::rate_hz, "Samples per second: sample k is at t = k / rate_hz.")
       .def_property_readonly("seed", &PySimulation::seed)
       .def_property_readonly("sensor_names", &PySimulation::sensor_names)
       .def_property_readonly("joint_names", &PySimulation::joint_names,
