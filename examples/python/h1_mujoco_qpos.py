@@ -26,8 +26,9 @@ import proxsim
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENARIO = os.path.join(HERE, "..", "..", "data", "scenarios", "h1_dining_room.yaml")
 
-# qpos[7:] of Menagerie's unitree_h1/h1.xml: depth-first through the tree (left leg, right leg,
-# torso, left arm, right arm), which is also the order of the joints in Unitree's h1.urdf.
+# qpos[7:] of the H1 in MuJoCo: depth-first through the tree (left leg, right leg, torso, left
+# arm, right arm), the order of the joints in Unitree's h1.urdf and of Menagerie's h1.xml (MuJoCo
+# 2.2.2's mj_loadXML on h1.urdf compiles these hinges in this order: docs/cosimulation.md).
 # proxsim's own joint order (sim.joint_names) is breadth-first: the names map one to the other.
 MUJOCO_H1_HINGES = [
     "left_hip_yaw_joint", "left_hip_roll_joint", "left_hip_pitch_joint", "left_knee_joint", "left_ankle_joint",

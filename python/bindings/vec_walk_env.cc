@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -101,11 +102,13 @@ class VecWalkCore {
         for (std::size_t i = begin; i < end; ++i) ResetEnv(i, seeds ? (*seeds)[i] : envs_[i].next_seed, out);
       });
     });
+    started_ = true;
     return py::make_tuple(arrays.obs, Infos(arrays));
   }
 
   // step(actions): one step of every environment; (obs, rewards, terminations, truncations, infos)
   py::tuple Step(const py::object& actions_argument) {
+    if (!started_) throw std::runtime_error("step: call reset() first (Gymnasium's order)");
     const py::array_t<double, py::array::c_style | py::array::forcecast> actions(actions_argument);
     const auto n = static_cast<py::ssize_t>(envs_.size());
     if (actions.ndim() != 2 || actions.shape(0) != n || actions.shape(1) != 2) {
@@ -280,6 +283,7 @@ class VecWalkCore {
   std::optional<Vec2> goal_m_;
   int sensor_count_ = 0;
   double last_cpp_s_ = 0;
+  bool started_ = false;  // reset() was called
   std::map<std::string, py::str> outcome_names_;
   py::object numpy_empty_ = py::module_::import("numpy").attr("empty");
 };

@@ -95,6 +95,8 @@ def test_gymnasium_vector_api(short_walk):
 
 def test_bad_arguments_are_named(short_walk):
     vec = proxsim.VecWalkEnv(short_walk, 2)
+    with pytest.raises(RuntimeError, match="reset"):
+        vec.step(np.zeros((2, 2)))
     vec.reset()
     with pytest.raises(ValueError, match=r"shape \(2, 2\)"):
         vec.step(np.zeros((3, 2)))
