@@ -3,7 +3,10 @@
 // knows (the devices' outputs and its own kinematics) as NumPy arrays; the
 // truth is apart, in truth(); commands go through sim.robot; terrain_map()
 // gives the map the robot has built from its readings. With out=DIR
-// the run's files are written exactly as `proxsim run` writes them.
+// the run's files are written exactly as `proxsim run` writes them. A robot
+// driven from outside (robot.locomotion: external) takes its state in
+// step(q=..., X_WP=...) (robot_state.h); VecWalkCore is VecWalkEnv's core
+// (vec_walk_env.h).
 //
 // Errors: a bad scenario raises proxsim.InputError (a ValueError) whose
 // `problems` lists the CLI's messages; a wrong value (threads < 1, a stride
