@@ -46,6 +46,11 @@ def test_driven_by_the_paper_gait_run_gives_byte_identical_readings(tmp_path):
     summary = drive(make, str(tmp_path / "external"), states, "quat_wxyz")
     for name in ("readings.csv", "poses.csv", "profile.ply"):
         assert read(tmp_path / "gait" / name) == read(tmp_path / "external" / name), name
+    # the terrain map built from those readings is the same map
+    terrain = sorted(os.listdir(tmp_path / "gait" / "terrain"))
+    assert terrain == sorted(os.listdir(tmp_path / "external" / "terrain")) and terrain
+    for name in terrain:
+        assert read(tmp_path / "gait" / "terrain" / name) == read(tmp_path / "external" / "terrain" / name), name
     # the stop rule still decides (its stop is recorded for the caller to obey) and the outcome is the gait's
     assert summary["robot"]["stop_requested_t_s"] is not None
     assert summary["robot"]["outcome"] == "stopped"
@@ -70,6 +75,27 @@ def test_driven_by_a_turning_gait_run_gives_byte_identical_readings(tmp_path):
     assert (gait["status"] == quat["status"]).all()
     np.testing.assert_allclose(quat["d_true_m"], gait["d_true_m"], rtol=0, atol=1e-9)
     np.testing.assert_allclose(quat["origin_x_m"], gait["origin_x_m"], rtol=0, atol=1e-9)
+
+
+def test_a_collision_is_found_and_ends_the_episode_as_for_the_gait(tmp_path):
+    # the paper's walk without its stop rule strikes the obstacle; driven by its states, so does the external run
+    def make(**kw):
+        return proxsim.Simulation(scenario("paper_no_stop_rule.yaml"), **kw)
+
+    states = record_gait_run(make, str(tmp_path / "gait"))
+    with make(locomotion="external") as sim:
+        for s in states:
+            sim.step(q=s["q"], X_WP=(s["xyz"], s["R"]), gait_phase=s["gait_phase"], support_leg=s["support_leg"])
+        assert sim.done  # ended at the collision, with the gait run's last state
+        external = sim.summary()["robot"]
+    with make() as sim:
+        while not sim.done:
+            sim.step()
+        gait = sim.summary()["robot"]
+    assert gait["outcome"] == "collided"
+    assert external["outcome"] == "collided" and external["outcome_t_s"] == gait["outcome_t_s"]
+    assert external["collisions"] == gait["collisions"]
+    assert external["min_clearance_m"] == gait["min_clearance_m"]
 
 
 def test_joints_by_name_equal_joints_by_array():
