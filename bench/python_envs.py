@@ -13,7 +13,7 @@ batched environment, on the paper scenario. Prints one JSON object:
   vec_python_overhead_s      mean wall time of one batched step minus that C++ work (argument
                              conversion, the output arrays, the infos, the Python wrapper)
   load_average_1min_before / _after   os.getloadavg()[0] around the section
-Best of --repeats runs each. Usage: python_envs.py [--repeats N] [--num-envs N] [--threads T] [--steps S]
+Best of --repeats runs each, the batched and the separate environments interleaved. Usage: python_envs.py [--repeats N] [--num-envs N] [--threads T] [--steps S]
 """
 import argparse
 import json
@@ -101,11 +101,16 @@ def main():
               "external_by_name_step_s": min(external_step(states, True) for _ in range(args.repeats)),
               "num_envs": args.num_envs, "threads": args.threads, "steps": args.steps}
     all_actions = actions(args.num_envs, args.steps)
-    vec = [vec_env(args.num_envs, args.threads, all_actions) for _ in range(args.repeats)]
+    # the three interleaved, repeat by repeat: a change of the machine's load falls on all of them
+    vec, vec_1_thread, singles = [], [], []
+    for _ in range(args.repeats):
+        vec.append(vec_env(args.num_envs, args.threads, all_actions))
+        vec_1_thread.append(vec_env(args.num_envs, 1, all_actions)[0])
+        singles.append(walk_envs(args.num_envs, all_actions))
     best = max(vec, key=lambda v: v[0])
     result["vec_steps_per_s"], result["vec_cpp_step_s"], result["vec_python_overhead_s"] = best
-    result["vec_1_thread_steps_per_s"] = max(vec_env(args.num_envs, 1, all_actions)[0] for _ in range(args.repeats))
-    result["walk_env_steps_per_s"] = max(walk_envs(args.num_envs, all_actions) for _ in range(args.repeats))
+    result["vec_1_thread_steps_per_s"] = max(vec_1_thread)
+    result["walk_env_steps_per_s"] = max(singles)
     result["load_average_1min_before"] = load_before
     result["load_average_1min_after"] = os.getloadavg()[0]
     print(json.dumps(result))
