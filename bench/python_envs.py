@@ -94,11 +94,13 @@ def main():
     parser.add_argument("--steps", type=int, default=600)
     args = parser.parse_args()
     load_before = os.getloadavg()[0]
-    gait = [own_gait_states() for _ in range(args.repeats)]
-    states = gait[0][1]
-    result = {"own_gait_step_s": min(g[0] for g in gait),
-              "external_step_s": min(external_step(states, False) for _ in range(args.repeats)),
-              "external_by_name_step_s": min(external_step(states, True) for _ in range(args.repeats)),
+    states = own_gait_states()[1]
+    gait, external, by_name = [], [], []
+    for _ in range(args.repeats):  # interleaved, as below
+        gait.append(own_gait_states()[0])
+        external.append(external_step(states, False))
+        by_name.append(external_step(states, True))
+    result = {"own_gait_step_s": min(gait), "external_step_s": min(external), "external_by_name_step_s": min(by_name),
               "num_envs": args.num_envs, "threads": args.threads, "steps": args.steps}
     all_actions = actions(args.num_envs, args.steps)
     # the three interleaved, repeat by repeat: a change of the machine's load falls on all of them
