@@ -40,7 +40,7 @@ Scenario StepScenario(bool beams) {
 void BM_MoveRobotAndCommit(benchmark::State& state) {
   const Scenario scenario = StepScenario(false);
   proxsim::RayCaster caster;
-  const auto locomotion = proxsim::MakeLocomotion(*scenario.robot);
+  const auto locomotion = proxsim::MakeLocomotion(*scenario.robot, scenario.rate_hz);
   proxsim::RobotInScene robot(locomotion->model(), caster, 0);
   double t_s = 0;
   for (auto _ : state) {
@@ -53,7 +53,7 @@ BENCHMARK(BM_MoveRobotAndCommit);
 void BM_MoveRobotOnly(benchmark::State& state) {
   const Scenario scenario = StepScenario(false);
   proxsim::RayCaster caster;
-  const auto locomotion = proxsim::MakeLocomotion(*scenario.robot);
+  const auto locomotion = proxsim::MakeLocomotion(*scenario.robot, scenario.rate_hz);
   proxsim::RobotInScene robot(locomotion->model(), caster, 0);
   double t_s = 0;
   for (auto _ : state) robot.Place(locomotion->Advance(t_s += 0.001));

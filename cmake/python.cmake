@@ -11,7 +11,8 @@ find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)
 find_package(pybind11 CONFIG REQUIRED)
 
 set(python_package_dir ${CMAKE_BINARY_DIR}/python/proxsim)
-pybind11_add_module(proxsim_python MODULE python/bindings/module.cc)
+pybind11_add_module(proxsim_python MODULE python/bindings/module.cc python/bindings/robot_state.cc
+                    python/bindings/vec_walk_env.cc)
 set_target_properties(proxsim_python PROPERTIES OUTPUT_NAME _core LIBRARY_OUTPUT_DIRECTORY ${python_package_dir})
 target_link_libraries(proxsim_python PRIVATE proxsim_lib)
 target_compile_options(proxsim_python PRIVATE -Wall -Wextra)

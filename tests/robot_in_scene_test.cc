@@ -25,7 +25,7 @@ namespace {
 // A robot walked by its scenario's locomotion, its bodies placed at each time
 struct WalkingRobot {
   WalkingRobot(const RobotConfig& config, RayCaster& caster, std::int32_t first_object_id)
-      : locomotion(MakeLocomotion(config)), body(locomotion->model(), caster, first_object_id) {}
+      : locomotion(MakeLocomotion(config, /*rate_hz, unused by a gait:*/ 50.0)), body(locomotion->model(), caster, first_object_id) {}
   void MoveTo(double t_s) { body.Place(locomotion->Advance(t_s)); }
   std::unique_ptr<Locomotion> locomotion;
   RobotInScene body;

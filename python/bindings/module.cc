@@ -3,7 +3,10 @@
 // knows (the devices' outputs and its own kinematics) as NumPy arrays; the
 // truth is apart, in truth(); commands go through sim.robot; terrain_map()
 // gives the map the robot has built from its readings. With out=DIR
-// the run's files are written exactly as `proxsim run` writes them.
+// the run's files are written exactly as `proxsim run` writes them. A robot
+// driven from outside (robot.locomotion: external) takes its state in
+// step(q=..., X_WP=...) (robot_state.h); VecWalkCore is VecWalkEnv's core
+// (vec_walk_env.h).
 //
 // Errors: a bad scenario raises proxsim.InputError (a ValueError) whose
 // `problems` lists the CLI's messages; a wrong value (threads < 1, a stride
@@ -30,6 +33,8 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "robot_state.h"
+#include "vec_walk_env.h"
 #include "scenario/scenario.h"
 #include "run/run.h"
 #include "run/run_recorder.h"
@@ -40,6 +45,20 @@ namespace py = pybind11;
 
 namespace proxsim {
 namespace {
+
+// Simulation(..., locomotion="gait" | "external"): the scenario's robot.locomotion, overridden
+void OverrideLocomotion(Scenario& scenario, const std::string& locomotion) {
+  if (!scenario.robot) throw py::value_error("locomotion: the scenario has no robot section");
+  if (locomotion == "gait") {
+    scenario.robot->locomotion = LocomotionSource::kGait;
+  } else if (locomotion == "external") {
+    if (!scenario.robot->trajectory_file.empty())
+      throw py::value_error("locomotion='external': the scenario's robot replays a trajectory");
+    scenario.robot->locomotion = LocomotionSource::kExternal;
+  } else {
+    throw py::value_error("locomotion: expected 'gait', 'external' or None, got '" + locomotion + "'");
+  }
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -153,9 +172,10 @@ class PyRobot {
 class PySimulation {
  public:
   PySimulation(Scenario scenario, std::optional<std::uint64_t> seed, int threads, std::optional<std::string> out,
-               bool scenario_strategy)
+               bool scenario_strategy, const std::optional<std::string>& locomotion)
       : out_dir_(out.value_or("")), threads_(threads) {
     if (seed) scenario.seed = *seed;
+    if (locomotion) OverrideLocomotion(scenario, *locomotion);
     // a script that drives the robot itself drops the scenario's strategy
     if (!scenario_strategy && scenario.robot) scenario.robot->strategy.reset();
     initial_seed_ = scenario.seed;
@@ -163,45 +183,73 @@ class PySimulation {
     if (sim_->commands() != nullptr) robot_ = std::make_unique<PyRobot>(sim_->commands(), &mutex_);
     if (sim_->robot() != nullptr) {
       const RobotModel& model = sim_->robot()->model();
-      for (int j = 0; j < model.joint_count(); ++j)
-        if (model.joint(j).type != JointType::kFixed) keys_.joints.emplace_back(j, py::str(model.joint_name(j)));
+      for (const int j : model.MovingJoints()) keys_.joints.emplace_back(j, py::str(model.joint_name(j)));
     }
     StartRecording();
   }
 
   static std::unique_ptr<PySimulation> FromFile(const std::string& path, const py::object& seed,
                                                 const py::object& threads, std::optional<std::string> out,
-                                                bool scenario_strategy) {
+                                                bool scenario_strategy, std::optional<std::string> locomotion) {
     // the integers first: a bad one is named before a long load
     const auto seed_value = SeedArgument(seed, "seed");
     const int thread_count = ThreadsArgument(threads);
     return std::make_unique<PySimulation>(LoadScenarioFile(path), seed_value, thread_count, std::move(out),
-                                          scenario_strategy);
+                                          scenario_strategy, locomotion);
   }
 
   static std::unique_ptr<PySimulation> Builtin(const std::string& name, const py::object& seed,
                                                const py::object& threads, std::optional<std::string> out,
-                                               bool scenario_strategy) {
+                                               bool scenario_strategy, std::optional<std::string> locomotion) {
     const auto seed_value = SeedArgument(seed, "seed");
     const int thread_count = ThreadsArgument(threads);
     return std::make_unique<PySimulation>(LoadBuiltinScenario(name), seed_value, thread_count, std::move(out),
-                                          scenario_strategy);
+                                          scenario_strategy, locomotion);
   }
 
-  py::dict Step() {
+  // step(): the robot's own motion; step(q=..., X_WP=...): co-simulation (robot.locomotion: external)
+  py::dict Step(const py::object& q, const py::object& X_WP, const py::object& gait_phase,
+                const py::object& support_leg) {
     ObjectLock lock(mutex_);
     if (closed_) throw std::runtime_error("step: the simulation is closed");
     if (sim_->done()) {
       throw std::runtime_error("step: every sample of the episode has been taken (sim.done); call reset() for another");
     }
+    const bool state_given = !q.is_none() || !X_WP.is_none() || !gait_phase.is_none() || !support_leg.is_none();
+    if (state_given && sim_->external() == nullptr) {
+      throw py::value_error("step: a robot state was given but the robot moves by itself; drive it from outside with "
+                            "robot.locomotion: external (or Simulation(..., locomotion='external'))");
+    }
+    std::optional<ExternalState> state;
+    if (sim_->external() != nullptr) state = ExternalStateFromPython(*sim_->external(), q, X_WP, gait_phase, support_leg);
     if (samples_ == 0) loop_start_ = Clock::now();
     {
       py::gil_scoped_release release;
-      recorder_->Add(sim_->Step());
+      recorder_->Add(state ? sim_->Step(*state) : sim_->Step());
     }
     ++samples_;
     return ObservationDict();
   }
+
+  // the robot's true state at the last sample (what a co-simulation sends, the other way)
+  py::object RobotStateNow() const {
+    ObjectLock lock(mutex_);
+    if (sim_->robot_state() == nullptr) return py::none();
+    py::dict state = RobotStateDict(sim_->robot()->model(), *sim_->robot_state());
+    // a co-simulated robot cannot obey a stop: its caller reads it here
+    if (sim_->external() != nullptr) state["stop_requested"] = sim_->external()->stop_requested();
+    return state;
+  }
+
+  std::vector<std::string> joint_names() const {
+    std::vector<std::string> names;
+    if (sim_->robot() == nullptr) return names;
+    const RobotModel& model = sim_->robot()->model();
+    for (const int j : model.MovingJoints()) names.push_back(model.joint_name(j));
+    return names;
+  }
+
+  bool external() const { return sim_->external() != nullptr; }
 
   py::dict Truth() const {
     ObjectLock lock(mutex_);
@@ -331,6 +379,7 @@ class PySimulation {
     ObjectLock lock(mutex_);
     return sim_->sample_count();
   }
+  double rate_hz() const { return sim_->scenario().rate_hz; }
   std::uint64_t seed() const {
     ObjectLock lock(mutex_);
     return sim_->scenario().seed;
@@ -466,6 +515,8 @@ PYBIND11_MODULE(_core, m) {
     }
   });
 
+  proxsim::BindVecWalkEnv(m);
+
   py::class_<PyRobot>(m, "Robot", "Commands to the simulated robot; they take effect from the next step on.")
       .def("stop", &PyRobot::Stop, "Stop at the next double support and stand there.")
       .def("resume", &PyRobot::Resume, "Walk again after a stop.")
@@ -477,13 +528,22 @@ PYBIND11_MODULE(_core, m) {
                            "A scenario's simulation, stepped sample by sample (see the package documentation).")
       .def(py::init(&PySimulation::FromFile), py::arg("scenario"), py::arg("seed") = py::none(),
            py::arg("threads") = 1, py::arg("out") = py::none(), py::kw_only(), py::arg("scenario_strategy") = true,
+           py::arg("locomotion") = py::none(),
            "scenario: a YAML file; seed: the noise's (default: the scenario's); out: a folder for the run's files; "
-           "scenario_strategy=False: drop the scenario's built-in strategy (the script drives the robot).")
+           "scenario_strategy=False: drop the scenario's built-in strategy (the script drives the robot); "
+           "locomotion='external' or 'gait': overrides robot.locomotion (docs/cosimulation.md).")
       .def_static("builtin", &PySimulation::Builtin, py::arg("name") = "paper", py::arg("seed") = py::none(),
                   py::arg("threads") = 1, py::arg("out") = py::none(), py::kw_only(),
-                  py::arg("scenario_strategy") = true,
+                  py::arg("scenario_strategy") = true, py::arg("locomotion") = py::none(),
                   "A built-in scenario: 'paper' (the default `proxsim run`) or 'world_demo'.")
-      .def("step", &PySimulation::Step, "Take the next sample; returns what the robot knows (obs).")
+      .def("step", &PySimulation::Step, py::kw_only(), py::arg("q") = py::none(), py::arg("X_WP") = py::none(),
+           py::arg("gait_phase") = py::none(), py::arg("support_leg") = py::none(),
+           "Take the next sample; returns what the robot knows (obs). With robot.locomotion: external, the robot's "
+           "state at it: q ({joint: rad or m} or an array in joint_names order), X_WP ((xyz, quat_wxyz) or (xyz, R)), "
+           "and optionally gait_phase and support_leg ('left', 'right', 'double').")
+      .def("robot_state", &PySimulation::RobotStateNow,
+           "The robot's true state at the last sample: xyz, quat_wxyz, R, q (joint_names order), gait_phase, "
+           "support_leg, stopped, distance_walked_m (and stop_requested when driven from outside); None without a robot.")
       .def("truth", &PySimulation::Truth, "The last sample's truth, for analysis and scoring only.")
       .def("reset", &PySimulation::Reset, py::arg("seed") = py::none(),
            "Start a new episode on the same world (seed: the noise's; default the first one).")
@@ -497,8 +557,13 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("done", &PySimulation::done)
       .def_property_readonly("t_s", &PySimulation::t_s)
       .def_property_readonly("sample_count", &PySimulation::sample_count)
+      .def_property_readonly("rate_hz", &PySimulation::rate_hz, "Samples per second: sample k is at t = k / rate_hz.")
       .def_property_readonly("seed", &PySimulation::seed)
       .def_property_readonly("sensor_names", &PySimulation::sensor_names)
+      .def_property_readonly("joint_names", &PySimulation::joint_names,
+                             "The robot's moving joints in its joint order: the order of q as an array.")
+      .def_property_readonly("external", &PySimulation::external,
+                             "True when the robot is driven from outside (robot.locomotion: external).")
       .def_property_readonly("robot", [](py::object self) { return self.cast<const PySimulation&>().robot(self); },
                              "The robot's commands (None without a robot).");
 }

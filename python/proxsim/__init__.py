@@ -12,20 +12,32 @@ object's lock, and a second call made while another thread is inside step()
 waits for it (docs/trust.md). With out=DIR the folder is locked until close().
 Out-of-range seed or threads raise ValueError naming the argument.
 
-See docs/strategies.md for the whole contract, and proxsim.WalkEnv for a
-Gymnasium-style environment.
+Co-simulation (docs/cosimulation.md): with robot.locomotion: external (or
+Simulation(..., locomotion="external")) the caller sets the robot's state at
+every sample: sim.step(q={joint: rad}, X_WP=(xyz, quat_wxyz)).
+
+See docs/strategies.md for the whole contract, proxsim.WalkEnv for a
+Gymnasium-style environment and proxsim.VecWalkEnv for N of them stepped
+together in C++ threads (Gymnasium's vector API).
 """
 from ._core import InputError, Robot, Simulation
+from .vec_walk_env import VecWalkEnv
 from .walk_env import WalkEnv
 
-__all__ = ["InputError", "Robot", "Simulation", "WalkEnv"]
+__all__ = ["InputError", "Robot", "Simulation", "VecWalkEnv", "WalkEnv"]
 
-# Gymnasium is not a dependency; when it is importable, the environment is
-# registered with it so that gymnasium.make("proxsim/Walk-v0", scenario=...) works.
+# Gymnasium is not a dependency; when it is importable, the environments are
+# registered with it so that gymnasium.make("proxsim/Walk-v0", scenario=...) and
+# gymnasium.make_vec("proxsim/Walk-v0", num_envs=N, vectorization_mode="vector_entry_point",
+# scenario=..., threads=2) work.
 try:
     import gymnasium as _gymnasium
 
     if "proxsim/Walk-v0" not in _gymnasium.registry:
-        _gymnasium.register(id="proxsim/Walk-v0", entry_point="proxsim.walk_env:WalkEnv")
+        try:
+            _gymnasium.register(id="proxsim/Walk-v0", entry_point="proxsim.walk_env:WalkEnv",
+                                vector_entry_point="proxsim.vec_walk_env:VecWalkEnv")
+        except TypeError:  # a Gymnasium without vector entry points
+            _gymnasium.register(id="proxsim/Walk-v0", entry_point="proxsim.walk_env:WalkEnv")
 except ImportError:
     pass

@@ -31,31 +31,48 @@ from ._core import Simulation
 from .spaces import Box
 
 
+# the task's defaults, shared with VecWalkEnv
+MIN_STRIDE_M = 0.3
+MAX_STRIDE_M = 1.0
+COLLISION_PENALTY = 10.0
+FALL_PENALTY = 10.0
+
+
+def check_strides(min_stride_m, max_stride_m):
+    if not 0 < min_stride_m <= max_stride_m:
+        raise ValueError(f"expected 0 < min_stride_m <= max_stride_m, got {min_stride_m}, {max_stride_m}")
+
+
+def walk_spaces(n_sensors, min_stride_m, max_stride_m):
+    """The observation and action spaces of one walking episode with n_sensors sensors."""
+    inf = np.inf
+    low = np.array([0.0, 0.0, 0.0] * n_sensors + [-inf, -inf, -np.pi, 0.0, 0.0, 0.0], dtype=np.float32)
+    high = np.array([inf, 1.0, 1.0] * n_sensors + [inf, inf, np.pi, 1.0, 1.0, inf], dtype=np.float32)
+    observation_space = Box(low, high, dtype=np.float32)
+    action_space = Box(np.array([0.0, min_stride_m], dtype=np.float32),
+                       np.array([1.0, max_stride_m], dtype=np.float32), dtype=np.float32)
+    return observation_space, action_space
+
+
 class WalkEnv:
     metadata = {"render_modes": []}
     render_mode = None
 
-    def __init__(self, scenario, *, threads=1, min_stride_m=0.3, max_stride_m=1.0, collision_penalty=10.0,
-                 fall_penalty=10.0):
+    def __init__(self, scenario, *, threads=1, min_stride_m=MIN_STRIDE_M, max_stride_m=MAX_STRIDE_M,
+                 collision_penalty=COLLISION_PENALTY, fall_penalty=FALL_PENALTY):
         if isinstance(scenario, str) and scenario.startswith("builtin:"):
             self._sim = Simulation.builtin(scenario[len("builtin:"):], threads=threads, scenario_strategy=False)
         else:
             self._sim = Simulation(scenario, threads=threads, scenario_strategy=False)
         if self._sim.robot is None:
             raise ValueError("WalkEnv needs a scenario with a robot section (its sensors ride the robot)")
-        if not 0 < min_stride_m <= max_stride_m:
-            raise ValueError(f"expected 0 < min_stride_m <= max_stride_m, got {min_stride_m}, {max_stride_m}")
+        check_strides(min_stride_m, max_stride_m)
         self._min_stride_m = float(min_stride_m)
         self._max_stride_m = float(max_stride_m)
         self._collision_penalty = float(collision_penalty)
         self._fall_penalty = float(fall_penalty)
-        n = len(self._sim.sensor_names)
-        inf = np.inf
-        low = np.array([0.0, 0.0, 0.0] * n + [-inf, -inf, -np.pi, 0.0, 0.0, 0.0], dtype=np.float32)
-        high = np.array([inf, 1.0, 1.0] * n + [inf, inf, np.pi, 1.0, 1.0, inf], dtype=np.float32)
-        self.observation_space = Box(low, high, dtype=np.float32)
-        self.action_space = Box(np.array([0.0, min_stride_m], dtype=np.float32),
-                                np.array([1.0, max_stride_m], dtype=np.float32), dtype=np.float32)
+        self.observation_space, self.action_space = walk_spaces(len(self._sim.sensor_names), min_stride_m,
+                                                                max_stride_m)
         self._goal = None
         self._last_distance = None
         self._walking = True

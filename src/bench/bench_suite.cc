@@ -2,7 +2,8 @@
 // options select, in a fixed order — the engines on the ray sets
 // (rays_bench.h), a real robot (robot_bench.h), footstep planning
 // (terrain_bench.h), placement studies (study_bench.h), the terrain map
-// (map_bench.h), and last the end-to-end runs (end_to_end_bench.h), which
+// (map_bench.h), co-simulation and batched environments from Python
+// (python_envs_bench.h), and last the end-to-end runs (end_to_end_bench.h), which
 // walk in the 1M-triangle room the ray sets were cast in. Rays/s is always
 // rays cast / wall time of the cast (plus, for proxsim, the sensor model and
 // noise of every ray).
@@ -20,6 +21,7 @@
 #include "bench/end_to_end_bench.h"
 #include "bench/map_bench.h"
 #include "bench/peers.h"
+#include "bench/python_envs_bench.h"
 #include "bench/rays_bench.h"
 #include "bench/robot_bench.h"
 #include "bench/study_bench.h"
@@ -71,6 +73,7 @@ json RunBench(const BenchOptions& options) {
   if (options.terrain) result["terrain"] = TerrainSection(options.quick);
   if (options.study) result["study"] = StudyInScratch(options.quick);
   if (options.map) result["terrain_map"] = MapSection(options.quick);
+  if (options.python) result["python_envs"] = PythonEnvsSection(options.quick);
   if (options.end_to_end) {
     result.update(EndToEndSection(options.quick, repeats, scene_1m));
     result["machine"]["load_average_1min_at_end"] = LoadAverage();
@@ -90,6 +93,7 @@ std::string BenchReport(const json& r) {
   if (r.contains("terrain")) out << TerrainReport(r.at("terrain"));
   if (r.contains("terrain_map")) out << MapReport(r.at("terrain_map"));
   if (r.contains("study")) out << StudyReport(r.at("study"));
+  if (r.contains("python_envs")) out << PythonEnvsReport(r.at("python_envs"));
   return out.str();
 }
 

@@ -2,7 +2,7 @@
 // in one process, on one generated dining room at ~10k, 100k and 1M
 // triangles and the same rays; then the default paper run and the heavy
 // scenario end to end; then a real robot of meshes against the built-in biped; then placement studies;
-// then the terrain map's cost per sample. Every figure is measured in this run;
+// then the terrain map's cost per sample; then co-simulation and batched environments from Python. Every figure is measured in this run;
 // docs/performance.md documents every key of the result.
 #pragma once
 
@@ -19,6 +19,7 @@ struct BenchOptions {
   bool study = true;      ///< placement studies: runs per second per core, a 1000-run study, 2 MPI ranks against 1
   bool terrain = true;    ///< planning footsteps on the stairs course against a paper-like sample
   bool map = true;        ///< the terrain map's cost per sample (bench/map_bench.h)
+  bool python = true;     ///< co-simulation and the batched environment from Python (bench/python_envs_bench.h)
 };
 
 /// Runs the whole suite and returns its figures.

@@ -102,7 +102,7 @@ void HeavyStepsOnly(const Scenario& heavy, std::size_t rays_per_sample, double d
 std::vector<Ray> HeavyOwnRays(const Scenario& heavy, int samples) {
   std::vector<Ray> own_rays;
   RayCaster caster;
-  const auto locomotion = MakeLocomotion(*heavy.robot);
+  const auto locomotion = MakeLocomotion(*heavy.robot, heavy.rate_hz);
   RobotInScene robot(locomotion->model(), caster, 0);
   for (int k = 0; k < samples && k < heavy.SampleCount(); ++k) {
     robot.Place(locomotion->Advance(static_cast<double>(k) / heavy.rate_hz));

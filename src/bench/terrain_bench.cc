@@ -30,7 +30,7 @@ struct Planning {
 
 // One walk of `scenario`'s robot over its world's terrain, every Advance() timed.
 Planning TimePlanning(const Scenario& scenario, const TerrainQuery& terrain) {
-  auto locomotion = MakeLocomotion(*scenario.robot);
+  auto locomotion = MakeLocomotion(*scenario.robot, scenario.rate_hz);
   auto* walker = dynamic_cast<GaitWalker*>(locomotion.get());
   if (walker == nullptr) return {};
   walker->SetTerrain(&terrain);

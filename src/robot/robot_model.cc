@@ -448,6 +448,13 @@ std::size_t RobotModel::MeshTriangleCount() const {
   return triangles;
 }
 
+std::vector<int> RobotModel::MovingJoints() const {
+  std::vector<int> moving;
+  for (int j = 0; j < joint_count(); ++j)
+    if (joints_[j].type != JointType::kFixed) moving.push_back(j);
+  return moving;
+}
+
 double RobotModel::TotalMass_kg() const {
   double m = 0;
   for (const auto& l : links_) m += l.mass_kg;

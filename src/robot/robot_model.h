@@ -107,6 +107,10 @@ class RobotModel {
   /// Index of the joint called `name`, or −1.
   int JointIndex(const std::string& name) const;
 
+  /// The joints that move (every one but the fixed ones), in joint order: the
+  /// order of a joint vector exchanged with a caller (co-simulation, sim.joint_names).
+  std::vector<int> MovingJoints() const;
+
   /// Total mass of the links, kg.
   double TotalMass_kg() const;
 

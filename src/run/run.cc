@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/atomic_file.h"
+#include "core/input_error.h"
 #include "output/run_manifest.h"
 #include "run/run_recorder.h"
 #include "sim/simulation.h"
@@ -42,6 +43,11 @@ class ProgressLine {
 RunResult RunScenario(const Scenario& scenario, const RunOptions& options) {
   const auto start = Clock::now();
   // everything that can fail on bad input happens before the folder is made
+  if (scenario.robot && scenario.robot->locomotion == LocomotionSource::kExternal) {
+    throw InputError(scenario.source + ": robot.locomotion: external: the robot's state comes from a caller every "
+                     "sample (Python sim.step(q=..., X_WP=...), C++ Simulation::Step(state)); a run on its own has "
+                     "none: see docs/cosimulation.md");
+  }
   Simulation sim(scenario, options.threads);
   if (options.on_loaded) options.on_loaded();
   RunRecorder recorder(sim, options.out_dir, options.format, options.warn, options.force);

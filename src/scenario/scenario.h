@@ -45,12 +45,19 @@ enum class OnCollision {
   kContinue,  ///< every one is logged and the walk goes on
 };
 
+/// `robot.locomotion`: what moves the robot.
+enum class LocomotionSource {
+  kGait,      ///< its own kinematic gait, or the recorded `trajectory` when given (default)
+  kExternal,  ///< the caller sets its state every sample (co-simulation, gait/external_drive.h)
+};
+
 struct RobotConfig : WalkConfig {
   UnsafeSteps unsafe_steps = UnsafeSteps::kFall;
   OnCollision on_collision = OnCollision::kStop;
   std::string model = "builtin:biped";  ///< "builtin:biped" or a URDF path (relative to the scenario file)
   std::optional<StrategyConfig> strategy;  ///< the built-in strategy (`robot.strategy`, or `stop_distance_m` for stop); none when absent
   std::string trajectory_file;              ///< recorded trajectory CSV to replay instead of the gait
+  LocomotionSource locomotion = LocomotionSource::kGait;
   LinkGeometryKind geometry = LinkGeometryKind::kVisual;  ///< `robot.geometry`: what the links' surfaces are made of
   std::vector<std::string> package_paths;   ///< `robot.package_paths`: folders for package:// URIs (resolved paths)
   int geom_group = -1;                      ///< `robot.geom_group` (MJCF): the geom group of the links' surfaces; −1 every geom

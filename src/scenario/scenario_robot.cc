@@ -159,8 +159,8 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
                       const Scene& scene) {
   RobotConfig robot;
   const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
-                                      "geometry", "geom_group", "package_paths", "legs", "joints_deg",
-                                      "on_collision"});
+                                       "geometry", "geom_group", "package_paths", "legs", "joints_deg",
+                                       "on_collision", "locomotion"});
   if (!map) return robot;
 
   // model: builtin:NAME, or a URDF or MJCF file
@@ -288,6 +288,18 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   if (const Field trajectory = (*map)["trajectory"]) {
     robot.trajectory_file = ReadExistingFile(reader, trajectory, base_dir, "the path of a joint trajectory CSV file")
                                 .value_or("");
+  }
+
+  // locomotion: gait | external (co-simulation: the caller sets the state every sample)
+  const Field locomotion = (*map)["locomotion"];
+  robot.locomotion = ReadChoice<LocomotionSource>(
+                         reader, locomotion,
+                         {{"gait", LocomotionSource::kGait}, {"external", LocomotionSource::kExternal}},
+                         "expected gait (its own gait, or the trajectory when given) or external (the caller sets "
+                         "the robot's state every sample: docs/cosimulation.md)")
+                         .value_or(robot.locomotion);
+  if (robot.locomotion == LocomotionSource::kExternal && (*map)["trajectory"]) {
+    reader.Fail(locomotion, "give either locomotion: external or a trajectory to replay, not both");
   }
   return robot;
 }

@@ -1,5 +1,6 @@
 #include "sim/make_locomotion.h"
 
+#include "gait/external_drive.h"
 #include "gait/gait_walker.h"
 #include "gait/trajectory_player.h"
 
@@ -19,8 +20,11 @@ RobotModel LoadRobotModel(const RobotConfig& config) {
   return RobotModel::FromFile(config.model, options);
 }
 
-std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config) {
+std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config, double rate_hz) {
   RobotModel model = LoadRobotModel(config);
+  if (config.locomotion == LocomotionSource::kExternal) {
+    return std::make_unique<ExternalDrive>(std::move(model), config, rate_hz);
+  }
   if (!config.trajectory_file.empty()) {
     return std::make_unique<TrajectoryPlayer>(std::move(model), config.trajectory_file);
   }

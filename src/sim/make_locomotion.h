@@ -1,5 +1,6 @@
 // The motion a scenario's robot section asks for: its model loaded (built-in
-// or URDF), walked by the kinematic gait or replaying a recorded trajectory.
+// or URDF), walked by the kinematic gait, replaying a recorded trajectory, or
+// driven from outside (robot.locomotion: external, sampled at `rate_hz`).
 // A free function, so that a caller can build its own Locomotion instead and
 // hand it to the simulation.
 #pragma once
@@ -16,6 +17,6 @@ namespace proxsim {
 RobotModel LoadRobotModel(const RobotConfig& config);
 
 /// Throws InputError on a bad robot, gait or trajectory.
-std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config);
+std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config, double rate_hz);
 
 }  // namespace proxsim

@@ -64,7 +64,8 @@ nlohmann::json InputsJson(const Scenario& scenario) {
              {"gait", {{"stride_m", NullUnless(!r.gait.derive_stride_from_legs, r.gait.stride_m)}, {"period_s", NullUnless(!r.gait.derive_period_from_legs, r.gait.period_s)}}},
              {"path", {{"waypoints_m", waypoints}}},
              {"strategy", r.strategy ? StrategyJson(*r.strategy) : nlohmann::json(nullptr)},
-             {"trajectory", NullUnless(!r.trajectory_file.empty(), r.trajectory_file)}};
+             {"trajectory", NullUnless(!r.trajectory_file.empty(), r.trajectory_file)},
+             {"locomotion", r.locomotion == LocomotionSource::kExternal ? "external" : "gait"}};
   }
   nlohmann::json map = nullptr;
   if (scenario.robot) {

@@ -81,7 +81,8 @@ RobotCommands* Simulation::commands() { return commands_.get(); }
 void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy) {
   locomotion_ = std::move(locomotion);
   const bool own_locomotion = !locomotion_ && scenario_.robot;
-  if (own_locomotion) locomotion_ = MakeLocomotion(*scenario_.robot);
+  if (own_locomotion) locomotion_ = MakeLocomotion(*scenario_.robot, scenario_.rate_hz);
+  external_ = dynamic_cast<ExternalDrive*>(locomotion_.get());
   world_ = std::make_unique<World>(scenario_, locomotion_ ? &locomotion_->model() : nullptr, threads);
   // (after the robot and the world, whose problems come first) a run without
   // sensors would write an empty report and claim success
@@ -104,8 +105,9 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     // the gait plans its footsteps on the scene's true surface
     locomotion_->SetTerrain(&world_->terrain());
     // the scenario's own robot must start clear of the scene's objects, on its
-    // ground (an injected motion is the caller's: it is not stepped here)
-    if (own_locomotion) {
+    // ground (an injected motion is the caller's, and a co-simulated robot has
+    // no state before its first sample: neither is stepped here)
+    if (own_locomotion && !external_) {
       const std::vector<std::string> problems = StartProblems(scenario_, *world_, *locomotion_);
       if (!problems.empty()) throw InputError(problems);
     }
@@ -177,6 +179,23 @@ void Simulation::Reset(std::uint64_t seed) {
 
 const SampleFrame& Simulation::Step() {
   if (done()) throw std::logic_error("Simulation::Step: every sample of the episode has been taken");
+  if (external_) {
+    throw std::logic_error("Simulation::Step: robot.locomotion is external: every sample needs the robot's state "
+                           "(Step(state))");
+  }
+  return TakeSample();
+}
+
+const SampleFrame& Simulation::Step(const ExternalState& state) {
+  if (done()) throw std::logic_error("Simulation::Step: every sample of the episode has been taken");
+  if (!external_) {
+    throw std::logic_error("Simulation::Step(state): the robot is not driven from outside (set robot.locomotion: external)");
+  }
+  external_->Set(state, static_cast<double>(next_sample_) / scenario_.rate_hz);
+  return TakeSample();
+}
+
+const SampleFrame& Simulation::TakeSample() {
   frame_.sample = next_sample_++;
   frame_.t_s = static_cast<double>(frame_.sample) / scenario_.rate_hz;
   RobotInScene* robot = world_->robot();

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/parallel.h"
+#include "gait/external_drive.h"
 #include "gait/locomotion.h"
 #include "scenario/scenario.h"
 #include "sim/contacts.h"
@@ -54,8 +55,19 @@ class Simulation {
   /// ended early: the robot collided (robot.on_collision: stop) or fell.
   bool done() const { return next_sample_ >= sample_count_ || outcome_.ended; }
 
-  /// Takes the next sample and returns it (valid until the next Step). Requires !done().
+  /// Takes the next sample and returns it (valid until the next Step). Requires !done()
+  /// and a robot that moves by itself (not robot.locomotion: external).
   const SampleFrame& Step();
+
+  /// Co-simulation (robot.locomotion: external): places the robot in `state`
+  /// and takes the next sample there, measured as for the robot's own gait.
+  /// Throws InputError naming every fault of the state (nothing changes then),
+  /// std::logic_error when done() or when the robot is not driven from outside.
+  const SampleFrame& Step(const ExternalState& state);
+
+  /// The external drive when robot.locomotion is external (its joint_names()
+  /// give ExternalState::q's order, JointVector() builds it by name); null otherwise.
+  const ExternalDrive* external() const { return external_; }
 
   /// The last sample taken, with the truth beside every reading.
   const SampleFrame& frame() const { return frame_; }
@@ -140,6 +152,8 @@ class Simulation {
   class Commands;
   class Events;
   void Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy);
+  // the sample itself, the robot's motion ready
+  const SampleFrame& TakeSample();
   // the robot's part of a sample after the readings: knowledge, strategy, outcome
   void UpdateRobot(double clearance_m);
   // standing still: since when and why (RobotOutcome::stopped)
@@ -157,6 +171,7 @@ class Simulation {
   std::int64_t next_sample_ = 0;
   ParallelRunner runner_;  // shares the sensors of a sample out over the threads
   std::unique_ptr<Locomotion> locomotion_;
+  ExternalDrive* external_ = nullptr;  // locomotion_ when it is driven from outside
   std::unique_ptr<World> world_;
   std::unique_ptr<SensorReader> reader_;
   std::unique_ptr<DeliveryQueue> delivery_;

@@ -308,6 +308,13 @@ StudyConfig LoadStudyFile(const std::string& path, bool allow_large) {
     study.variants.back().scenario.sensors.clear();
     if (study.variants.back().scenario.robot) study.variants.back().scenario.robot->strategy.reset();
   }
+  // a study walks its robots itself: no caller sets a co-simulated robot's state
+  for (const SceneVariant& variant : study.variants) {
+    if (variant.scenario.robot && variant.scenario.robot->locomotion == LocomotionSource::kExternal) {
+      reader.Fail((*top)["scenes"] ? (*top)["scenes"] : (*top)["base"],
+                  "scene '" + variant.name + "': robot.locomotion: external has no caller in a study; expected gait");
+    }
+  }
 
   for (double seed : NumberAxis(reader, (*top)["seeds"], {1.0})) {
     if (seed < 0 || seed != std::floor(seed)) {

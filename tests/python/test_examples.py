@@ -3,6 +3,7 @@ import os
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 import proxsim
@@ -37,3 +38,16 @@ def test_example_scripts_run(script, tmp_path):
         assert "reached the goal: True" in done.stdout
     if script == "map_hazard_stop.py":  # the map's obstacle stops the robot
         assert "the map holds an obstacle" in done.stdout and "stopped: True" in done.stdout
+
+
+def test_h1_driven_from_a_mujoco_qpos_log(tmp_path):
+    # the example makes its qpos log from proxsim's gait, then drives an external run from it
+    script = os.path.join(EXAMPLES, "h1_mujoco_qpos.py")
+    done = subprocess.run([sys.executable, script, "--out", str(tmp_path / "out")], capture_output=True, text=True,
+                          timeout=300, env=os.environ.copy())
+    assert done.returncode == 0, done.stderr
+    assert "the obstacle first detected by" in done.stdout and "stop rule asks the robot to stop" in done.stdout
+    assert (tmp_path / "out" / "readings.csv").exists()
+    log = tmp_path / "out-log" / "h1_qpos.csv"
+    qpos = np.loadtxt(log, delimiter=",", ndmin=2)
+    assert qpos.shape[1] == 1 + 7 + 19  # t_s, the free joint, the 19 hinges
