@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "cli_helpers.h"
+#include "sim/simulation.h"
 
 namespace proxsim {
 namespace {
@@ -119,6 +121,19 @@ TEST_F(StudyMetricsTest, ASensorLookingDownBetweenTheLegsCoversTheFloorWithoutSe
   }
   EXPECT_EQ(RowOf(results_, "ideal@pelvis", "far_hazard").at("obstacle_detected"), "0");
   EXPECT_EQ(std::stod(RowOf(results_, "ideal@left_tibia", "far_hazard").at("floor_coverage")), 0.0);
+}
+
+TEST_F(StudyMetricsTest, EveryRowSaysHowItsEpisodeEnded) {
+  // the candidates of a run ride together: one outcome per run, within its duration
+  for (const std::string scene : {"far_hazard", "near_wall"}) {
+    const auto& a = RowOf(results_, "ideal@pelvis", scene);
+    const auto& b = RowOf(results_, "ideal@left_tibia", scene);
+    EXPECT_NE(std::ranges::find(Simulation::kOutcomeNames, a.at("outcome")), Simulation::kOutcomeNames.end())
+        << a.at("outcome");
+    EXPECT_EQ(a.at("outcome"), b.at("outcome"));
+    EXPECT_EQ(a.at("outcome_t_s"), b.at("outcome_t_s"));
+    EXPECT_GE(std::stod(a.at("outcome_t_s")), 0.0);
+  }
 }
 
 }  // namespace

@@ -16,6 +16,8 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <array>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -137,6 +139,9 @@ class Simulation {
   /// The episode's outcome as summary.json states it: reached_goal, stopped
   /// (by its strategy, standing), collided, fell, refused (standing before an
   /// unsafe step its legs refused) or time_up; with its time and a line for a person.
+  /// Every outcome's name (Outcome::name is one of them; docs/outcomes.md).
+  static constexpr std::array<std::string_view, 6> kOutcomeNames = {"reached_goal", "stopped", "collided",
+                                                                    "fell",         "refused", "time_up"};
   struct Outcome {
     std::string name;
     double t_s = 0;

@@ -82,6 +82,7 @@ int RunMetricsRecorder::HazardOf(std::int32_t object_id) const {
 
 std::vector<RunMetrics> RunMetricsRecorder::Finish() const {
   std::vector<RunMetrics> out = metrics_;
+  const Simulation::Outcome outcome = sim_.outcome();
   for (std::size_t i = 0; i < out.size(); ++i) {
     const double samples = static_cast<double>(std::max<std::int64_t>(out[i].samples, 1));
     out[i].self_share = self_[i] / samples;
@@ -89,6 +90,8 @@ std::vector<RunMetrics> RunMetricsRecorder::Finish() const {
     std::int64_t covered = 0;
     for (bool b : floor_bins_[i]) covered += b;
     out[i].floor_coverage = bins_walked_ > 0 ? static_cast<double>(covered) / bins_walked_ : 0.0;
+    out[i].outcome = outcome.name;
+    out[i].outcome_t_s = outcome.t_s;
   }
   return out;
 }

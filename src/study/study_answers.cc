@@ -77,7 +77,7 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
 
   // results.csv: one row per run, every parameter and metric
   std::string csv = "candidate,type,part,link,along_m,forward_m,pitch_deg,yaw_deg,scene,seed,samples,false_alarms,"
-                    "self_share,grazing_share,floor_coverage";
+                    "self_share,grazing_share,floor_coverage,outcome,outcome_t_s";
   for (const std::string& h : study.hazards)
     csv += "," + CsvField(h + "_detected") + "," + CsvField(h + "_first_t_s") + "," + CsvField(h + "_lead_m");
   csv += "\n";
@@ -91,7 +91,8 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
                Number(cand.along_m) + "," + Number(cand.forward_m) + "," + Number(cand.pitch_deg) + "," +
                Number(cand.yaw_deg) + "," + CsvField(study.variants[v].name) + "," + std::to_string(study.seeds[s]) + "," +
                std::to_string(m.samples) + "," + std::to_string(m.false_alarms) + "," + Number(m.self_share) + "," +
-               Number(m.grazing_share) + "," + Number(m.floor_coverage);
+               Number(m.grazing_share) + "," + Number(m.floor_coverage) + "," + m.outcome + "," +
+               Number(m.outcome_t_s);
         for (const HazardResult& h : m.hazards) {
           csv += h.applies ? "," + std::string(h.detected ? "1" : "0") : std::string(",");
           csv += "," + (h.detected ? Number(h.first_t_s) : "") + "," + (h.detected ? Number(h.lead_m) : "");

@@ -1,5 +1,7 @@
 #include "study/study_journal.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 
@@ -44,7 +46,9 @@ json JournalMetricsJson(const std::vector<RunMetrics>& runs) {
                    {"fa", m.false_alarms},
                    {"self", m.self_share},
                    {"graze", m.grazing_share},
-                   {"floor", m.floor_coverage}});
+                   {"floor", m.floor_coverage},
+                   {"out", m.outcome},
+                   {"out_t", m.outcome_t_s}});
   }
   return out;
 }
@@ -84,6 +88,13 @@ JournalEntry ParseJournalLine(const json& line, const JournalShape& shape) {
     m.self_share = NumberOrNaN(Field(r, "self", where), where + ": self");
     m.grazing_share = NumberOrNaN(Field(r, "graze", where), where + ": graze");
     m.floor_coverage = NumberOrNaN(Field(r, "floor", where), where + ": floor");
+    const json& outcome = Field(r, "out", where);
+    if (!outcome.is_string() || std::ranges::find(Simulation::kOutcomeNames, outcome.get<std::string>()) ==
+                                    Simulation::kOutcomeNames.end())
+      Bad(where + ": out: expected an outcome name (reached_goal, stopped, collided, fell, refused, time_up), got " +
+          outcome.dump());
+    m.outcome = outcome.get<std::string>();
+    m.outcome_t_s = NumberOrNaN(Field(r, "out_t", where), where + ": out_t");
     entry.metrics.push_back(std::move(m));
   }
   return entry;
