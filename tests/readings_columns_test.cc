@@ -62,7 +62,7 @@ TEST(ReadingsColumnsTest, ARunsFieldsAreWhatColumnsJsonSays) {
   EXPECT_EQ(document["statuses"].front(), "ok");
   EXPECT_EQ(document["statuses"].size(), 7u);
   EXPECT_EQ(document["support_legs"], nlohmann::json({"left", "right", "double"}));
-  EXPECT_EQ(document["types"], nlohmann::json({"ideal", "laser", "ultrasonic", "reflectance", "lookup"}));
+  EXPECT_EQ(document["types"], nlohmann::json({"ideal", "laser", "ultrasonic", "reflectance", "lookup", "multizone"}));
 
   ASSERT_GT(csv.rows.size(), 1000u);
   std::size_t empty_codes = 0, empty_floats = 0;

@@ -1,4 +1,4 @@
-// The `sensors` section: each sensor starts from the preset of its `type`
+// The `sensors` section (its keys: sensors/sensor_keys.cc): each sensor starts from the preset of its `type`
 // (the paper's values, or a named part's, sensors/sensor_spec.h), any of
 // range_m, max_incidence_deg, noise and the beyond-the-paper keys (beam,
 // echo_model, echo_threshold, specular_exponent, use_material, lookup_table)
@@ -12,6 +12,8 @@
 
 #include "core/nearest_key.h"
 #include "core/text_fields.h"
+#include "sensors/multizone.h"
+#include "sensors/sensor_keys.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
@@ -78,7 +80,7 @@ bool ReadRange(YamlReader& reader, const Field& field, SensorSpec& spec) {
 // beam: {aperture_deg, rays, pattern: uniform | {gaussian: {width_deg}} | {table: [[angle_deg, gain], ...]}}
 void ReadBeam(YamlReader& reader, const Field& field, SensorSpec& spec) {
   if (!field) return;
-  const auto map = reader.Map(field, {"aperture_deg", "rays", "pattern"});
+  const auto map = reader.Map(field, SensorKeyNames("beam"));
   if (!map) return;
   BeamSpec beam = spec.beam.value_or(BeamSpec{});
   if (reader.Require((*map)["aperture_deg"], "aperture_deg, the full cone angle in degrees")) {
@@ -133,6 +135,29 @@ void ReadLookupTable(YamlReader& reader, const Field& field, SensorSpec& spec) {
   }
 }
 
+// zones: [nx, ny], fov_deg: [h, v], zone_rays, targets, target_separation_m (multizone.h)
+void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
+  const bool given = map.Has("zones") || map.Has("fov_deg") || map.Has("zone_rays") || map.Has("targets") ||
+                     map.Has("target_separation_m");
+  if (!given) return;
+  ZoneSpec zones = spec.zones.value_or(ZoneSpec{});
+  if (const auto grid = reader.Numbers(map["zones"], 2, PositiveNumber(""), "[nx, ny], whole numbers of zones")) {
+    zones.nx = static_cast<int>(std::min((*grid)[0], 1e6));
+    zones.ny = static_cast<int>(std::min((*grid)[1], 1e6));
+    if (zones.nx != (*grid)[0] || zones.ny != (*grid)[1]) {
+      reader.Fail(map["zones"], "expected whole numbers of zones [nx, ny], got " + DescribeNode(map["zones"].node));
+    }
+  }
+  if (const auto fov = reader.Numbers(map["fov_deg"], 2, AnyNumber(), "[h, v] in degrees")) {
+    zones.fov_h_deg = (*fov)[0];
+    zones.fov_v_deg = (*fov)[1];
+  }
+  if (const auto rays = reader.Count(map["zone_rays"])) zones.rays_per_zone = static_cast<int>(std::min<std::uint64_t>(*rays, 1000));
+  if (const auto targets = reader.Count(map["targets"])) zones.targets = static_cast<int>(std::min<std::uint64_t>(*targets, 1000));
+  zones.target_separation_m = reader.Number(map["target_separation_m"]).value_or(zones.target_separation_m);
+  spec.zones = zones;
+}
+
 // the sensor's own sampling and the echo's flight
 void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
   sensor.rate_hz = reader.Number(map["rate_hz"], PositiveNumber("Hz")).value_or(sensor.rate_hz);
@@ -142,7 +167,14 @@ void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
   sensor.flight_time = reader.Bool(flight).value_or(sensor.flight_time);
   if (sensor.flight_time && !IsTimeOfFlight(sensor.spec.type)) {
     reader.Fail(flight, std::string("expected false for a ") + SensorTypeName(sensor.spec.type) +
-                            " sensor (flight_time applies to ideal, laser and ultrasonic), got true");
+                            " sensor (flight_time applies to the time-of-flight types), got true");
+  }
+  // a multi-zone part ranges no faster than its resolution allows, by default at that limit
+  if (sensor.spec.zones && sensor.spec.zones->nx == sensor.spec.zones->ny) {
+    if (!map.Has("rate_hz")) sensor.rate_hz = MultizoneMaxRate_hz(sensor.spec);
+    if (const std::string problem = MultizoneRateProblem(sensor.spec, sensor.rate_hz); !problem.empty()) {
+      reader.Fail(map["rate_hz"], problem);
+    }
   }
 }
 
@@ -171,7 +203,7 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
   // overrides of the preset
   const bool range_valid = ReadRange(reader, map["range_m"], sensor.spec);
   sensor.spec.max_incidence_deg = reader.Number(map["max_incidence_deg"]).value_or(sensor.spec.max_incidence_deg);
-  if (const auto noise = reader.Map(map["noise"], {"model", "sigma", "mean", "resolution_m", "dropout"})) {
+  if (const auto noise = reader.Map(map["noise"], SensorKeyNames("noise"))) {
     sensor.spec.noise.sigma = reader.Number((*noise)["sigma"]).value_or(sensor.spec.noise.sigma);
     sensor.spec.noise.mean = reader.Number((*noise)["mean"]).value_or(sensor.spec.noise.mean);
     sensor.spec.noise.resolution_m = reader.Number((*noise)["resolution_m"]).value_or(sensor.spec.noise.resolution_m);
@@ -198,6 +230,7 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
     }
   }
   ReadLookupTable(reader, map["lookup_table"], sensor.spec);
+  ReadZones(reader, map, sensor.spec);
   // a lookup sensor's range is its table's unless range_m says otherwise
   if (sensor.spec.type == SensorType::kLookup && map.Has("lookup_table") && !map.Has("range_m") &&
       sensor.spec.lookup_table.size() >= 2) {
@@ -235,13 +268,7 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
   if (!items) return sensors;
   std::map<std::string, std::string> name_origin;  // name -> key path of its first use
   for (const Field& item : *items) {
-    const auto map = reader.Map(
-        item, {"name", "type", "link", "pose", "range_m", "max_incidence_deg", "noise", "see_robot", "beam",
-               "echo_model", "echo_threshold", "specular_exponent", "use_material", "lookup_table", "rate_hz",
-               "latency_s", "flight_time", "wave_speed_m_s"},
-        "a map with keys name, type, link, pose, range_m, max_incidence_deg, noise, see_robot, beam, echo_model, "
-        "echo_threshold, specular_exponent, use_material, lookup_table, rate_hz, latency_s, flight_time, "
-        "wave_speed_m_s");
+    const auto map = reader.Map(item, SensorKeyNames());
     if (!map) continue;
     SensorConfig sensor = ReadSensor(reader, *map, has_robot);
     const Field name = (*map)["name"];

@@ -132,6 +132,21 @@ double Quantise(const NoiseSpec& noise, double d_m) {
   return noise.resolution_m > 0 ? std::round(d_m / noise.resolution_m) * noise.resolution_m : d_m;
 }
 
+}  // namespace
+
+double TimeOfFlightReading_m(const NoiseSpec& noise_spec, double d, double gaussian_g) {
+  const double noise = noise_spec.sigma * gaussian_g + noise_spec.mean;
+  double d_m = d;
+  switch (noise_spec.model) {
+    case NoiseModel::kMultiplicative: d_m = d * (1.0 + noise); break;
+    case NoiseModel::kAdditive: d_m = d + noise; break;
+    case NoiseModel::kDistanceScaled: d_m = d + noise * d * d; break;
+  }
+  return Quantise(noise_spec, d_m);
+}
+
+namespace {
+
 // Eq. (1)'s noise-free signal, scaled by the IR albedo when the sensor uses materials
 double ReflectanceSignal(const SensorSpec& spec, const Echo& echo) {
   const double d = echo.distance_m;
@@ -182,13 +197,7 @@ Reading MeasureCounted(const SensorSpec& spec, const Echo& echo, ReadingStatus s
   }
 
   // time of flight (laser, ultrasonic) and the ideal sensor: d_r = d·(1 + N), or a variant
-  const double d = echo.distance_m + echo.flight_shift_m;
-  switch (spec.noise.model) {
-    case NoiseModel::kMultiplicative: reading.d_m = d * (1.0 + noise); break;
-    case NoiseModel::kAdditive: reading.d_m = d + noise; break;
-    case NoiseModel::kDistanceScaled: reading.d_m = d + noise * d * d; break;
-  }
-  reading.d_m = Quantise(spec.noise, reading.d_m);
+  reading.d_m = TimeOfFlightReading_m(spec.noise, echo.distance_m + echo.flight_shift_m, draw.gaussian_g);
   return reading;
 }
 
