@@ -242,6 +242,13 @@ void Simulation::FillObservation() {
       // each zone's nearest target (the zones are zone-major, `targets` per zone)
       const auto& zones = scenario_.sensors[i].spec.zones;
       out.zones.resize(zones ? static_cast<std::size_t>(ZoneCount(*zones)) : 0);
+      out.zone_d_m.resize(sample.zones.targets.size());
+      out.zone_status.resize(sample.zones.targets.size());
+      for (std::size_t k = 0; k < sample.zones.targets.size(); ++k) {
+        out.zone_d_m[k] = sample.zones.targets[k].d_m;
+        out.zone_status[k] = sample.zones.targets[k].status;
+      }
+      out.zone_target_count = sample.zones.target_count;
       for (std::size_t zone = 0; zone < out.zones.size(); ++zone) {
         const ZoneTarget& first = sample.zones.targets[zone * static_cast<std::size_t>(zones->targets)];
         out.zones[zone].detected = first.status == kZoneRangeValid;

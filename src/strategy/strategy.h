@@ -51,6 +51,12 @@ struct SensorOutput {
 
   /// A multi-zone sensor's zones (empty for the others), each zone's nearest target.
   std::vector<ZoneOutput> zones;
+  /// Every target of every zone as the device reports it (zone-major,
+  /// `targets` per zone, sensors/multizone.h): distance (0 without a
+  /// target), ST's target status code, and each zone's count of targets.
+  std::vector<double> zone_d_m;
+  std::vector<std::uint8_t> zone_status;
+  std::vector<std::uint8_t> zone_target_count;
 
   /// The point the reading puts in the world: origin + d_m along the axis.
   Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
