@@ -101,6 +101,7 @@ sensors:
     latency_s: 0.02
     flight_time: true
     wave_speed_m_s: 300
+    range_table: [[0.5, 0, 1.0], [0.9, 0, 1.4], [0.5, 3, 0.6]]
   - name: tabled
     type: lookup
     lookup_table: [[0.1, 2.0, 0.01], [0.5, 1.0, 0.02], [0.9, 0.5, 0.03]]

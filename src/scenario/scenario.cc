@@ -109,6 +109,8 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   ReadScene(reader, (*top)["scene"], base_dir, scenario);
   if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir, scenario.scene);
   scenario.sensors = ReadSensors(reader, (*top)["sensors"], scenario.robot.has_value());
+  // the light the optical parts' range tables read
+  for (SensorConfig& sensor : scenario.sensors) sensor.spec.ambient_klux = scenario.scene.ambient_klux;
   scenario.map = ReadTerrainMap(reader, (*top)["map"], scenario.sensors, scenario.robot.has_value());
 
   // the run as a whole (only with a valid clock, else the estimate means nothing)

@@ -231,6 +231,15 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
   }
   ReadLookupTable(reader, map["lookup_table"], sensor.spec);
   ReadZones(reader, map, sensor.spec);
+  // range_table: [[reflectance, ambient_klux, max_range_m], ...] ([] turns a part's off)
+  if (const auto rows = reader.List(map["range_table"], "a list of [reflectance, ambient_klux, max_range_m] rows")) {
+    if (map.Has("range_table")) sensor.spec.range_table.clear();
+    for (const Field& row : *rows) {
+      if (const auto values = reader.Numbers(row, 3, AnyNumber(), "[reflectance, ambient_klux, max_range_m]")) {
+        sensor.spec.range_table.push_back({(*values)[0], (*values)[1], (*values)[2]});
+      }
+    }
+  }
   // a lookup sensor's range is its table's unless range_m says otherwise
   if (sensor.spec.type == SensorType::kLookup && map.Has("lookup_table") && !map.Has("range_m") &&
       sensor.spec.lookup_table.size() >= 2) {

@@ -35,6 +35,7 @@ nlohmann::json SensorSpecJson(const SensorSpec& spec) {
           {"specular_exponent", spec.specular_exponent},
           {"use_material", spec.use_material},
           {"lookup_table", lookup},
+          {"range_table", spec.range_table.empty() ? nlohmann::json(nullptr) : nlohmann::json(spec.range_table)},
           {"zones", spec.zones ? nlohmann::json{spec.zones->nx, spec.zones->ny} : nlohmann::json(nullptr)},
           {"fov_deg", spec.zones ? nlohmann::json{spec.zones->fov_h_deg, spec.zones->fov_v_deg} : nlohmann::json(nullptr)},
           {"zone_rays", spec.zones ? nlohmann::json(spec.zones->rays_per_zone) : nlohmann::json(nullptr)},

@@ -56,6 +56,8 @@ const std::vector<SensorKey>& SensorKeys() {
      "targets reported per zone, nearest first (ST's NB_TARGET_PER_ZONE)"},
     {"target_separation_m", "> 0, m", "0.6",
      "surfaces closer in range than this merge into one target (ST: 600 mm)"},
+    {"range_table", "`[[reflectance, ambient_klux, max_range_m], ...]`", "`vl53l0x`: its datasheet's; otherwise none",
+     "laser and multizone only: the longest range by the target's IR albedo and `scene.ambient_klux`, interpolated as docs/sensors.md says; `[]` turns a part's off"},
     {"rate_hz", "> 0, Hz", "every sample; an ST multi-zone part: its limit",
      "the sensor reads at the first run sample of each of its own periods; an ST multi-zone part refuses a rate above its limit (60 Hz at 4x4, 15 Hz at 8x8)"},
     {"latency_s", "≥ 0, s", "0",

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/enum_names.h"
+#include "sensors/range_table.h"
 
 namespace proxsim {
 
@@ -104,6 +105,10 @@ double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo) {
 ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain) {
   // the range windows of §4.1
   if (!(echo.distance_m <= spec.max_range_m)) return ReadingStatus::kNoEcho;
+  // an optical part's range shrinks with a darker target and brighter light (range_table.h)
+  if (!spec.range_table.empty() && !(echo.distance_m <= ReflectanceMaxRange_m(spec, echo.ir_albedo))) {
+    return ReadingStatus::kNoEcho;
+  }
   if (echo.distance_m < spec.min_range_m) return ReadingStatus::kTooClose;
   // the returned energy, or the paper's incidence window of §4.2 and the beam's threshold
   if (spec.echo_model == EchoModel::kPhysical && IsTimeOfFlight(spec.type)) {

@@ -111,6 +111,13 @@ struct SensorSpec {
   std::vector<LookupRow> lookup_table;
   /// type multizone: its grid of zones (required for that type, refused for the others).
   std::optional<ZoneSpec> zones;
+  /// An optical time-of-flight part's longest range by the target's
+  /// reflectance and the ambient light, as its datasheet tabulates it:
+  /// rows [reflectance in (0, 1], ambient_klux >= 0, max_range_m > 0]
+  /// (range_table.h); empty: the range does not depend on them.
+  std::vector<std::array<double, 3>> range_table;
+  /// The scene's ambient light, klux (scene.ambient_klux, set when the scenario loads).
+  double ambient_klux = 0.0;
 
   /// The paper's values for a type (§5; the ideal sensor: [0, 2] m, 90°, no
   /// noise; lookup: an empty table, to be given).

@@ -85,7 +85,7 @@ nlohmann::json InputsJson(const Scenario& scenario) {
           {"robot", robot},
           {"duration_s", scenario.duration_s},
           {"rate_hz", scenario.rate_hz},
-          {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}}},
+          {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}, {"ambient_klux", scenario.scene.ambient_klux}}},
           {"sensors", sensors},
           {"map", map}};
 }

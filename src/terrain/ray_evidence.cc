@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sensors/range_inverse.h"
+#include "sensors/range_table.h"
 
 namespace proxsim {
 
@@ -36,7 +37,8 @@ RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output)
   // no echo over [d_min, d_m]; meaningful for the height only where a flat floor would have answered
   evidence.d_m = output.d_m;
   evidence.free_begin_m = spec.min_range_m;
-  evidence.free_end_m = output.d_m;
+  // a part whose range depends on the target vouches only for its darkest target's range
+  evidence.free_end_m = std::min(output.d_m, SilenceRange_m(spec));
   const double max_incidence_deg = EchoIncidenceLimitDeg(spec);
   const bool floor_would_echo = std::abs(dir_z) >= std::cos(DegToRad(max_incidence_deg)) - 1e-12;
   evidence.bounds_height = floor_would_echo && spec.noise.dropout == 0 && evidence.free_end_m > evidence.free_begin_m;
