@@ -87,7 +87,8 @@ nlohmann::json InputsJson(const Scenario& scenario) {
           {"rate_hz", scenario.rate_hz},
           {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}, {"ambient_klux", scenario.scene.ambient_klux}}},
           {"sensors", sensors},
-          {"map", map}};
+          {"map", map},
+          {"outputs", {{"range_convention", scenario.range_convention == RangeConvention::kRep117 ? "rep117" : "proxsim"}}}};
 }
 
 nlohmann::json RobotOutcomeJson(const Simulation& sim) {
