@@ -54,6 +54,17 @@ inline std::string ReadFile(const std::filesystem::path& path) {
   return text.str();
 }
 
+/// The text of a docs page between two marker lines (`begin` includes its
+/// newline); "<missing markers>" when either is absent. Tables that a command
+/// prints are kept in the docs between such markers and compared by tests.
+inline std::string DocsBetweenMarkers(const std::filesystem::path& page, const std::string& begin,
+                                      const std::string& end) {
+  const std::string docs = ReadFile(page);
+  const auto from = docs.find(begin), to = docs.find(end);
+  if (from == std::string::npos || to == std::string::npos || to < from) return "<missing markers>";
+  return docs.substr(from + begin.size(), to - from - begin.size());
+}
+
 /// A CSV file as rows of named fields.
 struct Csv {
   std::vector<std::string> header;

@@ -26,13 +26,10 @@ TEST(ReadingsColumnsTest, DocsHoldTheTableTheCliPrints) {
   ASSERT_EQ(printed.exit_code, 0) << printed.output;
   EXPECT_EQ(printed.output, ReadingsColumnsMarkdown());
 
-  const std::string docs = ReadFile(fs::path(PROXSIM_SOURCE_DIR) / "docs" / "outputs.md");
-  const std::string begin = "<!-- readings columns: the output of `proxsim columns` -->\n";
-  const std::string end = "<!-- end of readings columns -->";
-  const auto from = docs.find(begin), to = docs.find(end);
-  ASSERT_NE(from, std::string::npos);
-  ASSERT_NE(to, std::string::npos);
-  EXPECT_EQ(docs.substr(from + begin.size(), to - from - begin.size()), ReadingsColumnsMarkdown())
+  EXPECT_EQ(testing::DocsBetweenMarkers(fs::path(PROXSIM_SOURCE_DIR) / "docs" / "outputs.md",
+                                        "<!-- readings columns: the output of `proxsim columns` -->\n",
+                                        "<!-- end of readings columns -->"),
+            ReadingsColumnsMarkdown())
       << "docs/outputs.md: replace the table between the markers with `proxsim columns`'s output";
 }
 

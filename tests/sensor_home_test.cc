@@ -29,13 +29,10 @@ TEST(SensorHomeTest, DocsHoldTheSensorKeysTheCliPrints) {
   const auto printed = RunProxsim("columns --sensor-keys");
   ASSERT_EQ(printed.exit_code, 0) << printed.output;
   EXPECT_EQ(printed.output, SensorKeysMarkdown());
-  const std::string docs = ReadFile(fs::path(PROXSIM_SOURCE_DIR) / "docs" / "scenario.md");
-  const std::string begin = "<!-- sensor keys: the output of `proxsim columns --sensor-keys` -->\n";
-  const std::string end = "<!-- end of sensor keys -->";
-  const auto from = docs.find(begin), to = docs.find(end);
-  ASSERT_NE(from, std::string::npos);
-  ASSERT_NE(to, std::string::npos);
-  EXPECT_EQ(docs.substr(from + begin.size(), to - from - begin.size()), SensorKeysMarkdown())
+  EXPECT_EQ(testing::DocsBetweenMarkers(fs::path(PROXSIM_SOURCE_DIR) / "docs" / "scenario.md",
+                                        "<!-- sensor keys: the output of `proxsim columns --sensor-keys` -->\n",
+                                        "<!-- end of sensor keys -->"),
+            SensorKeysMarkdown())
       << "docs/scenario.md: replace the table between the markers with `proxsim columns --sensor-keys`'s output";
 }
 
@@ -177,6 +174,23 @@ TEST(SensorHomeTest, TheParserTakesExactlyTheDeclaredKeys) {
     EXPECT_NE(message.find("unknown key 'sigm' (did you mean 'sigma'?)"), std::string::npos) << message;
     EXPECT_NE(message.find("unknown key 'beam_width'"), std::string::npos) << message;
   }
+}
+
+// The HC-SR04's 60 ms measurement cycle: its default rate, and a faster one refused with the datasheet's words.
+TEST(SensorHomeTest, APartsMeasurementCycleLimitsItsRate) {
+  const fs::path dir = FreshDir("sensor_home_cycle");
+  fs::create_directories(dir);
+  std::ofstream(dir / "fast.yaml") << "proxsim: 1\nsensors:\n  - {name: a, type: hc_sr04, rate_hz: 20}\n";
+  const auto fast = RunProxsim("validate " + (dir / "fast.yaml").string());
+  EXPECT_EQ(fast.exit_code, 2) << fast.output;
+  EXPECT_NE(fast.output.find("rate_hz: expected at most 16.67 Hz for a hc_sr04 (HC-SR04 datasheet: \"we suggest to use "
+                             "over 60ms measurement cycle\"), got 20"),
+            std::string::npos)
+      << fast.output;
+  std::ofstream(dir / "default.yaml") << "proxsim: 1\nduration_s: 1\nrate_hz: 100\nsensors:\n  - {name: a, type: hc_sr04}\n";
+  const Scenario scenario = LoadScenarioFile((dir / "default.yaml").string());
+  EXPECT_NEAR(scenario.sensors[0].rate_hz, 1 / 0.060, 1e-12);
+  EXPECT_NEAR(InputsJson(scenario)["sensors"][0]["rate_hz"].get<double>(), 1 / 0.060, 1e-12);
 }
 
 TEST(SensorHomeTest, TraitsAreInCodeOrderAndNameTheMapDefault) {

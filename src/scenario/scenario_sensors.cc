@@ -7,6 +7,7 @@
 // timing keys (rate_hz, latency_s, flight_time, wave_speed_m_s) belong to the
 // SensorConfig.
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -158,6 +159,21 @@ void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
   spec.zones = zones;
 }
 
+// what a rate above the part's limit breaks, naming the limit and its source
+std::string RateLimitProblem(const SensorSpec& spec, const RateLimit& limit, double rate_hz) {
+  if (rate_hz <= limit.max_hz) return "";
+  char message[400];
+  if (spec.zones) {
+    std::snprintf(message, sizeof message,
+                  "expected a ranging frequency of at most %g Hz for a %s at %dx%d zones (%s), got %g", limit.max_hz,
+                  spec.part.c_str(), spec.zones->nx, spec.zones->ny, limit.source.c_str(), rate_hz);
+  } else {
+    std::snprintf(message, sizeof message, "expected at most %.4g Hz for a %s (%s), got %g", limit.max_hz,
+                  spec.part.c_str(), limit.source.c_str(), rate_hz);
+  }
+  return message;
+}
+
 // the sensor's own sampling and the echo's flight
 void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
   sensor.rate_hz = reader.Number(map["rate_hz"], PositiveNumber("Hz")).value_or(sensor.rate_hz);
@@ -169,10 +185,10 @@ void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
     reader.Fail(flight, std::string("expected false for a ") + SensorTypeName(sensor.spec.type) +
                             " sensor (flight_time applies to the time-of-flight types), got true");
   }
-  // a multi-zone part ranges no faster than its resolution allows, by default at that limit
-  if (sensor.spec.zones && sensor.spec.zones->nx == sensor.spec.zones->ny) {
-    if (!map.Has("rate_hz")) sensor.rate_hz = MultizoneMaxRate_hz(sensor.spec);
-    if (const std::string problem = MultizoneRateProblem(sensor.spec, sensor.rate_hz); !problem.empty()) {
+  // a part samples no faster than its datasheet allows, by default at that limit
+  if (const RateLimit limit = PartRateLimit(sensor.spec); limit.max_hz > 0) {
+    if (!map.Has("rate_hz")) sensor.rate_hz = limit.max_hz;
+    if (const std::string problem = RateLimitProblem(sensor.spec, limit, sensor.rate_hz); !problem.empty()) {
       reader.Fail(map["rate_hz"], problem);
     }
   }

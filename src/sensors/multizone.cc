@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace proxsim {
 
@@ -148,16 +147,6 @@ double MultizoneMaxRate_hz(const SensorSpec& spec) {
   const MultizonePart* part = FindMultizonePart(spec.part);
   if (part == nullptr || !spec.zones) return 0.0;
   return spec.zones->nx == 4 ? part->max_rate_4x4_hz : part->max_rate_8x8_hz;
-}
-
-std::string MultizoneRateProblem(const SensorSpec& spec, double rate_hz) {
-  const double max_hz = MultizoneMaxRate_hz(spec);
-  if (max_hz <= 0 || rate_hz <= max_hz) return "";
-  char message[320];
-  std::snprintf(message, sizeof message,
-                "expected a ranging frequency of at most %g Hz for a %s at %dx%d zones (%s), got %g", max_hz,
-                spec.part.c_str(), spec.zones->nx, spec.zones->ny, FindMultizonePart(spec.part)->source, rate_hz);
-  return message;
 }
 
 }  // namespace proxsim

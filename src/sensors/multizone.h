@@ -98,11 +98,6 @@ std::vector<BeamRay> MakeSensorRays(const SensorSpec& spec);
 /// sensor's ray i); `draw` gives ray i's noise draws. Writes `out`, sized here.
 void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out);
 
-/// What the scenario's ranging rate breaks for this sensor's part and
-/// resolution (a message naming the limit and its source), or "" when it is
-/// within it. A generic `multizone` sensor has no limit.
-std::string MultizoneRateProblem(const SensorSpec& spec, double rate_hz);
-
 /// The fastest ranging rate of the sensor's part at its resolution, Hz (0: no limit).
 double MultizoneMaxRate_hz(const SensorSpec& spec);
 

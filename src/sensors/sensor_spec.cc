@@ -55,6 +55,13 @@ void ValidateZones(const SensorSpec& spec, std::vector<std::string>& problems) {
 
 }  // namespace
 
+RateLimit PartRateLimit(const SensorSpec& spec) {
+  if (const MultizonePart* part = FindMultizonePart(spec.part); part != nullptr && spec.zones) {
+    return {MultizoneMaxRate_hz(spec), part->source};
+  }
+  return {spec.max_rate_hz, spec.max_rate_source};
+}
+
 // a type's name and family are its row in sensor_types.cc
 const char* SensorTypeName(SensorType type) { return TraitsOf(type).name; }
 
@@ -156,6 +163,10 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.max_range_m = 4.0;
     spec.noise = {.sigma = 0.003, .mean = 0.0, .model = NoiseModel::kAdditive, .resolution_m = 0.003};
     spec.beam = BeamSpec{.aperture_deg = 30.0, .rays = 37, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    // "we suggest to use over 60ms measurement cycle, in order to prevent
+    // trigger signal to the echo signal": at most 1/60 ms ≈ 16.7 Hz
+    spec.max_rate_hz = 1.0 / 0.060;
+    spec.max_rate_source = "HC-SR04 datasheet: \"we suggest to use over 60ms measurement cycle\"";
     return spec;
   }
   if (name == "sharp_gp2y0a21") {

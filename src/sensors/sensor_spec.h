@@ -118,6 +118,10 @@ struct SensorSpec {
   std::vector<std::array<double, 3>> range_table;
   /// The scene's ambient light, klux (scene.ambient_klux, set when the scenario loads).
   double ambient_klux = 0.0;
+  /// A part's shortest measurement cycle as a rate, Hz (0: none), and where it
+  /// comes from; a multi-zone part's depends on its zones (PartRateLimit).
+  double max_rate_hz = 0.0;
+  std::string max_rate_source;
 
   /// The paper's values for a type (§5; the ideal sensor: [0, 2] m, 90°, no
   /// noise; lookup: an empty table, to be given).
@@ -131,5 +135,14 @@ struct SensorSpec {
   /// Every violated condition, one message each, worded after the scenario key; empty if valid.
   std::vector<std::string> Validate() const;
 };
+
+/// The fastest rate a part may sample at, and the source of the figure
+/// (max_hz 0: no limit): the part's measurement cycle, or a multi-zone part's
+/// ranging frequency at its resolution.
+struct RateLimit {
+  double max_hz = 0.0;
+  std::string source;
+};
+RateLimit PartRateLimit(const SensorSpec& spec);
 
 }  // namespace proxsim
