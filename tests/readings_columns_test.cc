@@ -22,15 +22,9 @@ using testing::ReadFile;
 using testing::RunProxsim;
 
 TEST(ReadingsColumnsTest, DocsHoldTheTableTheCliPrints) {
-  const auto printed = RunProxsim("columns");
-  ASSERT_EQ(printed.exit_code, 0) << printed.output;
-  EXPECT_EQ(printed.output, ReadingsColumnsMarkdown());
-
-  EXPECT_EQ(testing::DocsBetweenMarkers(fs::path(PROXSIM_SOURCE_DIR) / "docs" / "outputs.md",
-                                        "<!-- readings columns: the output of `proxsim columns` -->\n",
-                                        "<!-- end of readings columns -->"),
-            ReadingsColumnsMarkdown())
-      << "docs/outputs.md: replace the table between the markers with `proxsim columns`'s output";
+  testing::ExpectCliTableInDocs("columns", ReadingsColumnsMarkdown(), "outputs.md",
+                                 "<!-- readings columns: the output of `proxsim columns` -->\n",
+                                 "<!-- end of readings columns -->");
 }
 
 TEST(ReadingsColumnsTest, EveryColumnHasANameATypeAndAMeaning) {

@@ -26,14 +26,9 @@ using testing::ReadFile;
 using testing::RunProxsim;
 
 TEST(SensorHomeTest, DocsHoldTheSensorKeysTheCliPrints) {
-  const auto printed = RunProxsim("columns --sensor-keys");
-  ASSERT_EQ(printed.exit_code, 0) << printed.output;
-  EXPECT_EQ(printed.output, SensorKeysMarkdown());
-  EXPECT_EQ(testing::DocsBetweenMarkers(fs::path(PROXSIM_SOURCE_DIR) / "docs" / "scenario.md",
-                                        "<!-- sensor keys: the output of `proxsim columns --sensor-keys` -->\n",
-                                        "<!-- end of sensor keys -->"),
-            SensorKeysMarkdown())
-      << "docs/scenario.md: replace the table between the markers with `proxsim columns --sensor-keys`'s output";
+  testing::ExpectCliTableInDocs("columns --sensor-keys", SensorKeysMarkdown(), "scenario.md",
+                                 "<!-- sensor keys: the output of `proxsim columns --sensor-keys` -->\n",
+                                 "<!-- end of sensor keys -->");
 }
 
 // Every leaf key path of a YAML map ("noise.sigma", "beam.pattern.gaussian.width_deg"), lists as leaves.
