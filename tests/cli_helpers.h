@@ -2,6 +2,7 @@
 // output): run a command line, read a CSV back by column name.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -52,6 +53,28 @@ inline std::string ReadFile(const std::filesystem::path& path) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// The text of a docs page between two marker lines (`begin` includes its
+/// newline); "<missing markers>" when either is absent. Tables that a command
+/// prints are kept in the docs between such markers and compared by tests.
+inline std::string DocsBetweenMarkers(const std::filesystem::path& page, const std::string& begin,
+                                      const std::string& end) {
+  const std::string docs = ReadFile(page);
+  const auto from = docs.find(begin), to = docs.find(end);
+  if (from == std::string::npos || to == std::string::npos || to < from) return "<missing markers>";
+  return docs.substr(from + begin.size(), to - from - begin.size());
+}
+
+/// `proxsim ARGS` prints `table`, and docs page `page` holds it between the
+/// markers `begin` (with its newline) and `end`.
+inline void ExpectCliTableInDocs(const std::string& args, const std::string& table, const std::string& page,
+                                 const std::string& begin, const std::string& end) {
+  const auto printed = RunProxsim(args);
+  ASSERT_EQ(printed.exit_code, 0) << printed.output;
+  EXPECT_EQ(printed.output, table);
+  EXPECT_EQ(DocsBetweenMarkers(std::filesystem::path(PROXSIM_SOURCE_DIR) / "docs" / page, begin, end), table)
+      << "docs/" << page << ": replace the table between the markers with `proxsim " << args << "`'s output";
 }
 
 /// A CSV file as rows of named fields.

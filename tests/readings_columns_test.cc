@@ -22,18 +22,9 @@ using testing::ReadFile;
 using testing::RunProxsim;
 
 TEST(ReadingsColumnsTest, DocsHoldTheTableTheCliPrints) {
-  const auto printed = RunProxsim("columns");
-  ASSERT_EQ(printed.exit_code, 0) << printed.output;
-  EXPECT_EQ(printed.output, ReadingsColumnsMarkdown());
-
-  const std::string docs = ReadFile(fs::path(PROXSIM_SOURCE_DIR) / "docs" / "outputs.md");
-  const std::string begin = "<!-- readings columns: the output of `proxsim columns` -->\n";
-  const std::string end = "<!-- end of readings columns -->";
-  const auto from = docs.find(begin), to = docs.find(end);
-  ASSERT_NE(from, std::string::npos);
-  ASSERT_NE(to, std::string::npos);
-  EXPECT_EQ(docs.substr(from + begin.size(), to - from - begin.size()), ReadingsColumnsMarkdown())
-      << "docs/outputs.md: replace the table between the markers with `proxsim columns`'s output";
+  testing::ExpectCliTableInDocs("columns", ReadingsColumnsMarkdown(), "outputs.md",
+                                 "<!-- readings columns: the output of `proxsim columns` -->\n",
+                                 "<!-- end of readings columns -->");
 }
 
 TEST(ReadingsColumnsTest, EveryColumnHasANameATypeAndAMeaning) {
@@ -62,7 +53,7 @@ TEST(ReadingsColumnsTest, ARunsFieldsAreWhatColumnsJsonSays) {
   EXPECT_EQ(document["statuses"].front(), "ok");
   EXPECT_EQ(document["statuses"].size(), 7u);
   EXPECT_EQ(document["support_legs"], nlohmann::json({"left", "right", "double"}));
-  EXPECT_EQ(document["types"], nlohmann::json({"ideal", "laser", "ultrasonic", "reflectance", "lookup"}));
+  EXPECT_EQ(document["types"], nlohmann::json({"ideal", "laser", "ultrasonic", "reflectance", "lookup", "multizone"}));
 
   ASSERT_GT(csv.rows.size(), 1000u);
   std::size_t empty_codes = 0, empty_floats = 0;

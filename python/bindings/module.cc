@@ -123,7 +123,8 @@ py::array_t<double> Vector(const Vec3& v) {
 struct ObservationKeys {
   py::str t_s{"t_s"}, readings{"readings"}, robot{"robot"};
   py::str d_m{"d_m"}, detected{"detected"}, fresh{"fresh"}, signal{"signal"}, output{"output"},
-      t_reported_s{"t_reported_s"}, origin_W{"origin_W"}, dir_W{"dir_W"};
+      t_reported_s{"t_reported_s"}, origin_W{"origin_W"}, dir_W{"dir_W"}, zones{"zones"}, status{"status"},
+      target_count{"target_count"};
   py::str left{"left"}, right{"right"}, pelvis_W{"pelvis_W"}, yaw_deg{"yaw_deg"}, joints_rad{"joints_rad"},
       gait_phase{"gait_phase"}, support_leg{"support_leg"}, has_feet{"has_feet"}, soles_W{"soles_W"},
       toes_W{"toes_W"}, heading_W{"heading_W"}, stopped{"stopped"}, distance_walked_m{"distance_walked_m"},
@@ -439,6 +440,33 @@ class PySimulation {
     readings[k.t_reported_s] = t_reported;
     readings[k.origin_W] = origin;
     readings[k.dir_W] = dir;
+
+    // a multi-zone sensor's zones by its name: (zones, targets) distances and
+    // ST's status codes, (zones,) target counts and (zones, 3) zone axes
+    py::dict zones;
+    for (std::size_t i = 0; i < n; ++i) {
+      const SensorOutput& s = obs.sensors[i];
+      if (s.zones.empty()) continue;
+      const auto zone_count = static_cast<py::ssize_t>(s.zones.size());
+      const auto targets = static_cast<py::ssize_t>(s.zone_d_m.size()) / zone_count;
+      py::array_t<double> zone_d({zone_count, targets});
+      py::array_t<std::uint8_t> zone_status({zone_count, targets});
+      py::array_t<std::uint8_t> zone_count_array(zone_count);
+      py::array_t<double> zone_dir({zone_count, py::ssize_t{3}});
+      std::copy(s.zone_d_m.begin(), s.zone_d_m.end(), zone_d.mutable_data());
+      std::copy(s.zone_status.begin(), s.zone_status.end(), zone_status.mutable_data());
+      std::copy(s.zone_target_count.begin(), s.zone_target_count.end(), zone_count_array.mutable_data());
+      for (py::ssize_t z = 0; z < zone_count; ++z) {
+        for (int c = 0; c < 3; ++c) zone_dir.mutable_at(z, c) = s.zones[static_cast<std::size_t>(z)].dir_W[c];
+      }
+      py::dict sensor;
+      sensor[k.d_m] = zone_d;
+      sensor[k.status] = zone_status;
+      sensor[k.target_count] = zone_count_array;
+      sensor[k.dir_W] = zone_dir;
+      zones[py::str(sim_->scenario().sensors[i].name)] = sensor;
+    }
+    readings[k.zones] = zones;
 
     py::dict result;
     result[k.t_s] = obs.t_s;

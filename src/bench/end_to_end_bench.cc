@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <vector>
 
 #include "bench/bench_measures.h"
@@ -14,6 +15,7 @@
 #include "bench/peers.h"
 #include "run/run.h"
 #include "sensors/beam.h"
+#include "sensors/multizone.h"
 #include "sim/make_locomotion.h"
 #include "sim/robot_in_scene.h"
 #include "sim/simulation.h"
@@ -108,7 +110,7 @@ std::vector<Ray> HeavyOwnRays(const Scenario& heavy, int samples) {
     robot.Place(locomotion->Advance(static_cast<double>(k) / heavy.rate_hz));
     for (const SensorConfig& sensor : heavy.sensors) {
       const Pose X_WS = robot.X_WL(robot.model().LinkIndex(sensor.link)) * sensor.X_LS;
-      for (const BeamRay& beam_ray : MakeBeamRays(sensor.spec.beam)) {
+      for (const BeamRay& beam_ray : MakeSensorRays(sensor.spec)) {
         Ray ray;
         ray.origin_W = X_WS.translation().cast<float>();
         ray.direction_W = BeamRayDir_W(X_WS, beam_ray).cast<float>();
@@ -139,6 +141,49 @@ void EmbreeOnOwnRays(const BenchScene& scene_1m, const std::vector<Ray>& rays, i
   h["embree_own_rays"] = rays.size();
 }
 
+/// Simulation steps (no outputs) of the paper scenario, and of the same walk
+/// with a VL53L5CX (8x8 zones of 4 rays, at its 15 Hz limit) on each shin
+/// instead of the paper's four single-ray sensors; best of `repeats` runs,
+/// one thread. The same with the zones read at every sample (100 Hz, beyond
+/// the part's limit) shows the zones' own cost per read.
+json MultizoneSteps(int repeats) {
+  const Scenario paper = LoadBuiltinScenario("paper");
+  Scenario zoned = paper;
+  zoned.sensors.clear();
+  for (const char* leg : {"left_tibia", "right_tibia"}) {
+    SensorConfig sensor = paper.sensors.front();
+    sensor.name = std::string("tof_") + leg;
+    sensor.link = leg;
+    sensor.spec = *SensorSpec::PartPreset("vl53l5cx");
+    sensor.rate_hz = 15.0;
+    zoned.sensors.push_back(sensor);
+  }
+  Scenario every_sample = zoned;
+  for (SensorConfig& sensor : every_sample.sensors) sensor.rate_hz = 0.0;
+  const auto per_sample_s = [&](const Scenario& scenario) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int r = 0; r < repeats; ++r) {
+      Simulation simulation(scenario, 1);
+      const auto start = Clock::now();
+      while (!simulation.done()) simulation.Step();
+      best = std::min(best, Since(start) / static_cast<double>(scenario.SampleCount()));
+    }
+    return best;
+  };
+  const double paper_s = per_sample_s(paper), zoned_s = per_sample_s(zoned), every_s = per_sample_s(every_sample);
+  Progress("multizone: %.1f us per sample with a VL53L5CX (8x8, 4 rays/zone, 15 Hz) on each shin against %.1f us "
+           "for the paper's sensors (%.2fx); read at every sample: %.1f us (%.2fx)",
+           zoned_s * 1e6, paper_s * 1e6, zoned_s / paper_s, every_s * 1e6, every_s / paper_s);
+  return {{"what", "the paper walk (100 Hz, 5 s) with a VL53L5CX (8x8 zones, 4 rays each, 15 Hz) on each shin instead "
+                   "of the paper's four single-ray sensors; simulation steps only, 1 thread, best of " +
+                       std::to_string(repeats)},
+          {"paper_s_per_sample", paper_s},
+          {"multizone_15hz_s_per_sample", zoned_s},
+          {"multizone_15hz_cost_vs_paper", zoned_s / paper_s},
+          {"multizone_every_sample_s_per_sample", every_s},
+          {"multizone_every_sample_cost_vs_paper", every_s / paper_s}};
+}
+
 }  // namespace
 
 json EndToEndSection(bool quick, int repeats, const BenchScene& scene_1m) {
@@ -149,6 +194,7 @@ json EndToEndSection(bool quick, int repeats, const BenchScene& scene_1m) {
 
   section["paper_run"] = PaperRun(tmp);
   section["paper_run_wall_s"] = section["paper_run"]["wall_s_1t"];
+  section["multizone"] = MultizoneSteps(quick ? 1 : 3);
 
   // the heavy scenario: 64 mountings × 32 rays at 1 kHz in the 1M-triangle room, outputs written
   constexpr int kMounts = 64, kRaysPerMount = 32;
@@ -178,7 +224,7 @@ json EndToEndSection(bool quick, int repeats, const BenchScene& scene_1m) {
 }
 
 std::string EndToEndReport(const json& r) {
-  char line[512];
+  char line[1024];
   const auto M = [](const json& v) { return v.is_number() ? v.get<double>() / 1e6 : std::nan(""); };
   const json& h = r.at("heavy");
   std::snprintf(line, sizeof line,
@@ -186,6 +232,8 @@ std::string EndToEndReport(const json& r) {
                 "heavy: %zu rays/sample (64 beams of 32) at 1 kHz, %.2f simulated s: %.2fx real time at 1 thread, %.2fx at 2 "
                 "(%.2f / %.2f M rays/s; bare Embree on its rays %.2f / %.2f M rays/s; peak RSS +%.0f MB)\n"
                 "heavy, simulation steps only (no outputs): %.2fx real time at 1 thread, %.2fx at 2 (%.2f / %.2f M rays/s)\n"
+                "multizone: a VL53L5CX (8x8 zones of 4 rays, 15 Hz) on each shin costs %.2fx a paper sample "
+                "(%.2fx when read at every sample)\n"
                 "bench wall time: %.0f s\n",
                 r.at("paper_run").at("wall_s_1t").get<double>(), r.at("paper_run").at("wall_s_2t").get<double>(),
                 h.at("rays_per_sample").get<std::size_t>(), h.at("duration_s").get<double>(), h.at("realtime_factor_1t").get<double>(),
@@ -193,7 +241,9 @@ std::string EndToEndReport(const json& r) {
                 M(h.at("embree_best_rays_per_s_own_rays_1t")), M(h.at("embree_best_rays_per_s_own_rays_2t")),
                 h.at("peak_rss_above_start_bytes_2t").get<double>() / 1e6,
                 h.at("steps_only_realtime_factor_1t").get<double>(), h.at("steps_only_realtime_factor_2t").get<double>(),
-                M(h.at("steps_only_rays_per_s_1t")), M(h.at("steps_only_rays_per_s_2t")), r.at("bench_wall_s").get<double>());
+                M(h.at("steps_only_rays_per_s_1t")), M(h.at("steps_only_rays_per_s_2t")),
+                r.at("multizone").at("multizone_15hz_cost_vs_paper").get<double>(),
+                r.at("multizone").at("multizone_every_sample_cost_vs_paper").get<double>(), r.at("bench_wall_s").get<double>());
   return line;
 }
 

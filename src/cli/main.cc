@@ -27,6 +27,7 @@
 #include "inspect_command.h"
 #include "core/output_folder.h"
 #include "output/readings_columns.h"
+#include "sensors/sensor_keys.h"
 #include "output/run_manifest.h"
 #include "scenario/scenario.h"
 #include "report/mcap_export.h"
@@ -322,6 +323,9 @@ int main(int argc, char** argv) {
   inspect->add_flag("--json", inspect_json, "print one JSON object (keys: docs/robots.md)");
 
   CLI::App* columns = app.add_subcommand("columns", "print the readings' columns (name, type, unit, meaning) as a Markdown table");
+  bool columns_sensor_keys = false;
+  columns->add_flag("--sensor-keys", columns_sensor_keys,
+                    "print every key a sensor takes in a scenario (type and unit, default, meaning) instead");
 
   try {
     app.parse(argc, argv);
@@ -379,7 +383,8 @@ int main(int argc, char** argv) {
     if (*validate) return Validate(validate_path);
     if (*inspect) return proxsim::InspectCommand(inspect_target, inspect_json);
     if (*columns) {
-      std::fputs(proxsim::ReadingsColumnsMarkdown().c_str(), stdout);
+      std::fputs(columns_sensor_keys ? proxsim::SensorKeysMarkdown().c_str() : proxsim::ReadingsColumnsMarkdown().c_str(),
+                 stdout);
       return 0;
     }
     if (*study)

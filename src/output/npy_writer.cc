@@ -61,7 +61,7 @@ NpyReadingsWriter::NpyReadingsWriter(const std::string& out_dir, const Scenario&
   // is refused by AtomicFile); nothing else in the folder is touched: a
   // user's files there stay, the previous run's went by its manifest
   std::filesystem::create_directories(dir_);
-  for (const ReadingsColumn& column : ReadingsColumns()) {
+  for (const ReadingsColumn& column : ReadingsColumns(scenario.range_convention)) {
     columns_.push_back(std::make_unique<Column>(dir_ + "/" + column.name + ".npy", NpyDtype(column.type)));
   }
 }
@@ -69,7 +69,7 @@ NpyReadingsWriter::NpyReadingsWriter(const std::string& out_dir, const Scenario&
 NpyReadingsWriter::~NpyReadingsWriter() = default;  // each uncommitted AtomicFile removes its temporary file
 
 void NpyReadingsWriter::Add(const SampleFrame& frame) {
-  const std::span<const ReadingsColumn> spec = ReadingsColumns();
+  const std::span<const ReadingsColumn> spec = ReadingsColumns(scenario_.range_convention);
   for (std::size_t i = 0; i < frame.sensors.size(); ++i) {
     const SensorSample& s = frame.sensors[i];
     if (s.reading.status == ReadingStatus::kNotSampled) continue;  // no row between a sensor's own samples

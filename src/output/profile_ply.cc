@@ -16,21 +16,39 @@ void ProfilePlyWriter::Append(const SampleFrame& frame) {
     const SensorSample& s = frame.sensors[i];
     if (!s.reading.detected()) continue;
     // the profile is built from what the sensor measured, not from the truth
-    const Vec3 p_W = MeasuredPoint_W(s.p_WS, s.dir_W, s.reading.d_m);
-    line_.clear();
-    for (int k = 0; k < 3; ++k) {
-      AppendNumber(line_, static_cast<float>(p_W[k]));
-      line_ += ' ';
+    if (!s.zone_dir_W.empty()) {
+      AppendZones(frame, i);
+      continue;
     }
-    AppendInteger(line_, static_cast<long long>(i));
-    line_ += ' ';
-    AppendNumber(line_, frame.t_s);
-    line_ += ' ';
-    AppendInteger(line_, s.object_id);
-    line_ += '\n';
-    body_.Write(line_);
-    ++point_count_;
+    AppendPoint(MeasuredPoint_W(s.p_WS, s.dir_W, s.reading.d_m), i, frame.t_s, s.object_id);
   }
+}
+
+void ProfilePlyWriter::AppendZones(const SampleFrame& frame, std::size_t i) {
+  // every valid target of every zone, along its zone's axis (no object: the truth is per ray)
+  const SensorSample& s = frame.sensors[i];
+  const std::size_t per_zone = s.zones.targets.size() / s.zone_dir_W.size();
+  for (std::size_t k = 0; k < s.zones.targets.size(); ++k) {
+    const ZoneTarget& target = s.zones.targets[k];
+    if (target.status != kZoneRangeValid) continue;
+    AppendPoint(MeasuredPoint_W(s.p_WS, s.zone_dir_W[k / per_zone], target.d_m), i, frame.t_s, -1);
+  }
+}
+
+void ProfilePlyWriter::AppendPoint(const Vec3& p_W, std::size_t i, double t_s, std::int32_t object_id) {
+  line_.clear();
+  for (int k = 0; k < 3; ++k) {
+    AppendNumber(line_, static_cast<float>(p_W[k]));
+    line_ += ' ';
+  }
+  AppendInteger(line_, static_cast<long long>(i));
+  line_ += ' ';
+  AppendNumber(line_, t_s);
+  line_ += ' ';
+  AppendInteger(line_, object_id);
+  line_ += '\n';
+  body_.Write(line_);
+  ++point_count_;
 }
 
 void ProfilePlyWriter::Commit() {

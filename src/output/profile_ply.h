@@ -17,7 +17,9 @@ class ProfilePlyWriter : public RunSink {
   explicit ProfilePlyWriter(const std::string& path);
 
   /// Adds every detection of the frame (status ok) at its measured distance
-  /// along the ray: p = origin + d_m·dir, the point a real sensor would report.
+  /// along the ray: p = origin + d_m·dir, the point a real sensor would report;
+  /// for a multizone sensor every valid target of every zone along its zone's
+  /// axis (object -1: a zone's target stands for several rays).
   void Append(const SampleFrame& frame);
   void Add(const SampleFrame& frame) override { Append(frame); }
   void Commit() override;
@@ -27,6 +29,8 @@ class ProfilePlyWriter : public RunSink {
 
  private:
   void WriteWithHeader(const std::string& body_path);
+  void AppendZones(const SampleFrame& frame, std::size_t sensor);
+  void AppendPoint(const Vec3& p_W, std::size_t sensor, double t_s, std::int32_t object_id);
 
   std::string path_;
   AtomicFile body_;  // the vertex lines, before the header exists

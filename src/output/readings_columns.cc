@@ -2,6 +2,9 @@
 
 #include <array>
 #include <limits>
+#include <string>
+
+#include "sensors/range_inverse.h"
 
 namespace proxsim {
 
@@ -19,7 +22,7 @@ const std::array<ReadingsColumn, 24> kColumns = {{
     {"sensor", ColumnType::kCode32, ColumnCodes::kSensors, "", "the sensor's name",
      [](const ReadingRow& r) { return static_cast<double>(r.sensor); }},
     {"type", ColumnType::kCode8, ColumnCodes::kTypes, "",
-     "its physics: `ideal`, `laser`, `ultrasonic`, `reflectance` or `lookup` (a named part reports its physics)",
+     "its physics: `ideal`, `laser`, `ultrasonic`, `reflectance`, `lookup` or `multizone` (a named part reports its physics)",
      [](const ReadingRow& r) { return static_cast<double>(r.config.spec.type); }},
     {"status", ColumnType::kCode8, ColumnCodes::kStatuses, "",
      "`ok`, `no_echo`, `too_close`, `grazing`, `self`, `dropout` ([sensors.md](sensors.md))",
@@ -51,7 +54,7 @@ const std::array<ReadingsColumn, 24> kColumns = {{
     {"origin_z_m", ColumnType::kFloat64, ColumnCodes::kNone, "m, world", "its z",
      [](const ReadingRow& r) { return r.sample.p_WS.z(); }},
     {"dir_x", ColumnType::kFloat64, ColumnCodes::kNone, "unit vector, world",
-     "the sensor's axis, x (for a beam too: what the device knows)",
+     "the sensor's axis, x (for a beam too: what the device knows; a multi-zone sensor: its nearest target's zone axis)",
      [](const ReadingRow& r) { return r.sample.dir_W.x(); }},
     {"dir_y", ColumnType::kFloat64, ColumnCodes::kNone, "unit vector, world", "its y",
      [](const ReadingRow& r) { return r.sample.dir_W.y(); }},
@@ -78,6 +81,47 @@ const std::array<ReadingsColumn, 24> kColumns = {{
      [](const ReadingRow& r) { return r.sample.t_reported_s; }},
 }};
 
+// REP 117 (sensor_msgs/Range): what the device says, without a status beside it
+double Rep117Range_m(const ReadingRow& r) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  switch (r.sample.reading.status) {
+    case ReadingStatus::kOk: return r.sample.reading.d_m;
+    case ReadingStatus::kTooClose: return -kInf;                 // "an object too close to measure"
+    case ReadingStatus::kNoEcho:
+    case ReadingStatus::kGrazing: return kInf;                   // no echo came back: nothing in range for the device
+    case ReadingStatus::kSelf:
+    case ReadingStatus::kDropout:
+    case ReadingStatus::kNotSampled: return kNone;               // not a valid reading of the world
+  }
+  return kNone;
+}
+
+// the reading's variance from the sensor's noise model (sensors/range_inverse.h); none without a detection
+double Rep117Variance_m2(const ReadingRow& r) {
+  if (!r.sample.reading.detected()) return kNone;
+  const double sigma_m = RangeSigma_m(r.config.spec, UnbiasedDistance_m(r.config.spec, r.sample.reading.d_m));
+  return sigma_m * sigma_m;
+}
+
+// the columns with outputs.range_convention: rep117: d_m as REP 117 states it, variance_m2 after it
+std::vector<ReadingsColumn> Rep117Columns() {
+  std::vector<ReadingsColumn> columns(kColumns.begin(), kColumns.end());
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (std::string(columns[i].name) != "d_m") continue;
+    columns[i].meaning =
+        "REP 117: the measured distance for `ok`; −inf for `too_close`; +inf for `no_echo` and `grazing` (no echo "
+        "came back); NaN (empty) for `self` and `dropout`";
+    columns[i].value = Rep117Range_m;
+    columns.insert(columns.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                   ReadingsColumn{"variance_m2", ColumnType::kFloat64, ColumnCodes::kNone, "m²",
+                                  "REP 117's variance of d_m from the sensor's noise model (σ² of the reported "
+                                  "distance, with resolution²/12); none without a detection",
+                                  Rep117Variance_m2});
+    break;
+  }
+  return columns;
+}
+
 const char* TypeName(ColumnType type) {
   switch (type) {
     case ColumnType::kFloat64: return "float64, NaN for none";
@@ -91,7 +135,11 @@ const char* TypeName(ColumnType type) {
 
 }  // namespace
 
-std::span<const ReadingsColumn> ReadingsColumns() { return kColumns; }
+std::span<const ReadingsColumn> ReadingsColumns(RangeConvention convention) {
+  if (convention == RangeConvention::kProxsim) return kColumns;
+  static const std::vector<ReadingsColumn> rep117 = Rep117Columns();
+  return rep117;
+}
 
 const char* NpyDtype(ColumnType type) {
   switch (type) {
@@ -117,7 +165,8 @@ const char* ColumnCodesKey(ColumnCodes codes) {
 }
 
 ColumnNames::ColumnNames(const Scenario& scenario, std::vector<std::string> object_names)
-    : types_(SensorTypeNames()),
+    : convention_(scenario.range_convention),
+      types_(SensorTypeNames()),
       statuses_(ReadingStatusNames()),
       objects_(std::move(object_names)),
       support_legs_(SupportLegNames()) {
@@ -137,9 +186,9 @@ const std::vector<std::string>& ColumnNames::operator[](ColumnCodes codes) const
   return none;
 }
 
-std::string ReadingsCsvHeader() {
+std::string ReadingsCsvHeader(RangeConvention convention) {
   std::string header;
-  for (const ReadingsColumn& column : kColumns) {
+  for (const ReadingsColumn& column : ReadingsColumns(convention)) {
     if (!header.empty()) header += ',';
     header += column.name;
   }
@@ -148,7 +197,7 @@ std::string ReadingsCsvHeader() {
 
 nlohmann::json ColumnsJson(const ColumnNames& names) {
   nlohmann::json columns = nlohmann::json::array();
-  for (const ReadingsColumn& column : kColumns) {
+  for (const ReadingsColumn& column : ReadingsColumns(names.convention())) {
     nlohmann::json entry = {{"name", column.name},
                             {"dtype", NpyDtype(column.type)},
                             {"unit", column.unit},
@@ -157,6 +206,8 @@ nlohmann::json ColumnsJson(const ColumnNames& names) {
     columns.push_back(std::move(entry));
   }
   nlohmann::json document = {{"columns", std::move(columns)}};
+  // only with REP 117, so that the paper's columns.json stays as it was
+  if (names.convention() == RangeConvention::kRep117) document["range_convention"] = "rep117";
   for (ColumnCodes codes : {ColumnCodes::kSensors, ColumnCodes::kTypes, ColumnCodes::kStatuses,
                             ColumnCodes::kObjects, ColumnCodes::kSupportLegs}) {
     document[ColumnCodesKey(codes)] = names[codes];

@@ -46,8 +46,9 @@ struct ReadingsColumn {
   double (*value)(const ReadingRow& row);
 };
 
-/// Every column, in the files' order.
-std::span<const ReadingsColumn> ReadingsColumns();
+/// Every column, in the files' order: the paper's convention (the default),
+/// or REP 117's (d_m ±inf/NaN without a detection, and variance_m2 after it).
+std::span<const ReadingsColumn> ReadingsColumns(RangeConvention convention = RangeConvention::kProxsim);
 
 /// The numpy dtype of a column type: "<f8", "<i4", "|u1" or "|b1".
 const char* NpyDtype(ColumnType type);
@@ -60,13 +61,15 @@ class ColumnNames {
  public:
   ColumnNames(const Scenario& scenario, std::vector<std::string> object_names);
   const std::vector<std::string>& operator[](ColumnCodes codes) const;
+  RangeConvention convention() const { return convention_; }
 
  private:
+  RangeConvention convention_;
   std::vector<std::string> sensors_, types_, statuses_, objects_, support_legs_;
 };
 
 /// readings.csv's header line, without its newline.
-std::string ReadingsCsvHeader();
+std::string ReadingsCsvHeader(RangeConvention convention = RangeConvention::kProxsim);
 
 /// columns.json: each column (name, dtype, unit, meaning, codes) and every list of names.
 nlohmann::json ColumnsJson(const ColumnNames& names);

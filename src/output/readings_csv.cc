@@ -13,7 +13,7 @@ ReadingsCsvWriter::ReadingsCsvWriter(const std::string& out_dir, const Scenario&
       file_((std::filesystem::path(out_dir) / "readings.csv").string()),
       scenario_(scenario),
       names_(scenario, std::move(object_names)) {
-  file_.Write(ReadingsCsvHeader());
+  file_.Write(ReadingsCsvHeader(scenario.range_convention));
   file_.Write('\n');
   line_.reserve(512);
 }
@@ -25,7 +25,7 @@ void ReadingsCsvWriter::Add(const SampleFrame& frame) {
     const ReadingRow row{frame, i, scenario_.sensors[i], s};
     line_.clear();
     bool first = true;
-    for (const ReadingsColumn& column : ReadingsColumns()) {
+    for (const ReadingsColumn& column : ReadingsColumns(scenario_.range_convention)) {
       if (!first) line_ += ',';
       first = false;
       const double value = column.value(row);

@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.h"
 #include "output/poses_csv.h"
+#include "output/zones_npy.h"
 #include "output/profile_ply.h"
 #include "output/run_manifest.h"
 #include "output/scene_json.h"
@@ -83,6 +84,7 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
     sinks_.push_back(MakeReadingsSink(format, out_dir_, scenario, object_names));
     sinks_.push_back(std::make_unique<ProfilePlyWriter>((out / "profile.ply").string()));
     if (sim.robot()) sinks_.push_back(std::make_unique<PosesCsvWriter>((out / "poses.csv").string(), *sim.robot()));
+    if (ZonesNpyWriter::Needed(scenario)) sinks_.push_back(std::make_unique<ZonesNpyWriter>(out_dir_, scenario));
   }
   if (sim.terrain_map()) {
     sinks_.push_back(std::make_unique<TerrainSink>(*sim.terrain_map(), sim.world().caster(),

@@ -83,8 +83,9 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   Scenario scenario;
   scenario.source = source;
   const auto top = reader.Map(reader.Root(document),
-                              {"proxsim", "seed", "duration_s", "rate_hz", "scene", "robot", "sensors", "map"},
-                              "a map of scenario keys (proxsim, seed, duration_s, rate_hz, scene, robot, sensors, map)");
+                              {"proxsim", "seed", "duration_s", "rate_hz", "scene", "robot", "sensors", "map", "outputs"},
+                              "a map of scenario keys (proxsim, seed, duration_s, rate_hz, scene, robot, sensors, map, "
+                              "outputs)");
   if (!top) return scenario;
 
   // proxsim: the schema version, required
@@ -109,7 +110,19 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   ReadScene(reader, (*top)["scene"], base_dir, scenario);
   if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir, scenario.scene);
   scenario.sensors = ReadSensors(reader, (*top)["sensors"], scenario.robot.has_value());
+  // the light the optical parts' range tables read
+  for (SensorConfig& sensor : scenario.sensors) sensor.spec.ambient_klux = scenario.scene.ambient_klux;
   scenario.map = ReadTerrainMap(reader, (*top)["map"], scenario.sensors, scenario.robot.has_value());
+  // outputs: {range_convention: proxsim | rep117}
+  if (const auto outputs = reader.Map((*top)["outputs"], {"range_convention"})) {
+    if (const auto name = reader.String((*outputs)["range_convention"])) {
+      if (*name == "rep117" || *name == "proxsim") {
+        scenario.range_convention = *name == "rep117" ? RangeConvention::kRep117 : RangeConvention::kProxsim;
+      } else {
+        reader.Fail((*outputs)["range_convention"], "expected proxsim or rep117, got '" + *name + "'");
+      }
+    }
+  }
 
   // the run as a whole (only with a valid clock, else the estimate means nothing)
   if (duration_s.has_value() == top->Has("duration_s") && rate_hz.has_value() == top->Has("rate_hz")) {

@@ -66,6 +66,12 @@ struct RobotConfig : WalkConfig {
   std::string start_on;
 };
 
+/// `outputs.range_convention`: how readings.csv's d_m states a reading that is not a detection.
+enum class RangeConvention {
+  kProxsim,  ///< the paper's: d_m = the maximum range, the status says why (default)
+  kRep117,   ///< ROS REP 117 / sensor_msgs/Range: −Inf too close, +Inf nothing in range, NaN invalid; plus variance_m2
+};
+
 struct Scenario {
   std::string source;  ///< the file it came from ("builtin:NAME" for embedded ones)
   int schema = 1;
@@ -77,6 +83,7 @@ struct Scenario {
   std::optional<RobotConfig> robot;
   std::vector<SensorConfig> sensors;
   TerrainMapConfig map;  ///< `map`: the terrain map a robot builds (defaults without the section)
+  RangeConvention range_convention = RangeConvention::kProxsim;  ///< `outputs.range_convention`
 
   /// Number of samples in the run: t_k = k / rate_hz for k in [0, count).
   std::int64_t SampleCount() const;

@@ -141,8 +141,19 @@ std::optional<Shape> ReadShape(YamlReader& reader, const MapView& object, const 
 }  // namespace
 
 void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scenario& scenario) {
-  const auto scene = reader.Map(field, {"builtin", "objects"});
+  const auto scene = reader.Map(field, {"builtin", "objects", "ambient_klux"});
   if (!scene) return;
+  // the light the time-of-flight parts' range tables read (ST's conditions: 0 indoor, 5 outdoor overcast)
+  const Field ambient = (*scene)["ambient_klux"];
+  double ambient_klux = 0.0;
+  if (const auto klux = reader.Number(ambient)) {
+    if (*klux >= 0) {
+      ambient_klux = *klux;
+    } else {
+      reader.Fail(ambient, "expected an ambient light >= 0 klux (0: ST's indoor, no infrared; 5: ST's outdoor "
+                           "overcast, VL53L0X datasheet DocID029104 Table 11), got " + DescribeNode(ambient.node));
+    }
+  }
 
   // the built-in scene, by name
   const Field builtin = (*scene)["builtin"];
@@ -197,6 +208,7 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
     scene_object.shape = *shape;
     scenario.scene.objects.push_back(std::move(scene_object));
   }
+  scenario.scene.ambient_klux = ambient_klux;  // after the built-in scene, which starts from its defaults
 }
 
 }  // namespace proxsim

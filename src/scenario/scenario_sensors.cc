@@ -1,4 +1,4 @@
-// The `sensors` section: each sensor starts from the preset of its `type`
+// The `sensors` section (its keys: sensors/sensor_keys.cc): each sensor starts from the preset of its `type`
 // (the paper's values, or a named part's, sensors/sensor_spec.h), any of
 // range_m, max_incidence_deg, noise and the beyond-the-paper keys (beam,
 // echo_model, echo_threshold, specular_exponent, use_material, lookup_table)
@@ -7,11 +7,14 @@
 // timing keys (rate_hz, latency_s, flight_time, wave_speed_m_s) belong to the
 // SensorConfig.
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <set>
 
 #include "core/nearest_key.h"
 #include "core/text_fields.h"
+#include "sensors/multizone.h"
+#include "sensors/sensor_keys.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
@@ -78,7 +81,7 @@ bool ReadRange(YamlReader& reader, const Field& field, SensorSpec& spec) {
 // beam: {aperture_deg, rays, pattern: uniform | {gaussian: {width_deg}} | {table: [[angle_deg, gain], ...]}}
 void ReadBeam(YamlReader& reader, const Field& field, SensorSpec& spec) {
   if (!field) return;
-  const auto map = reader.Map(field, {"aperture_deg", "rays", "pattern"});
+  const auto map = reader.Map(field, SensorKeyNames("beam"));
   if (!map) return;
   BeamSpec beam = spec.beam.value_or(BeamSpec{});
   if (reader.Require((*map)["aperture_deg"], "aperture_deg, the full cone angle in degrees")) {
@@ -133,6 +136,44 @@ void ReadLookupTable(YamlReader& reader, const Field& field, SensorSpec& spec) {
   }
 }
 
+// zones: [nx, ny], fov_deg: [h, v], zone_rays, targets, target_separation_m (multizone.h)
+void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
+  const bool given = map.Has("zones") || map.Has("fov_deg") || map.Has("zone_rays") || map.Has("targets") ||
+                     map.Has("target_separation_m");
+  if (!given) return;
+  ZoneSpec zones = spec.zones.value_or(ZoneSpec{});
+  if (const auto grid = reader.Numbers(map["zones"], 2, PositiveNumber(""), "[nx, ny], whole numbers of zones")) {
+    zones.nx = static_cast<int>(std::min((*grid)[0], 1e6));
+    zones.ny = static_cast<int>(std::min((*grid)[1], 1e6));
+    if (zones.nx != (*grid)[0] || zones.ny != (*grid)[1]) {
+      reader.Fail(map["zones"], "expected whole numbers of zones [nx, ny], got " + DescribeNode(map["zones"].node));
+    }
+  }
+  if (const auto fov = reader.Numbers(map["fov_deg"], 2, AnyNumber(), "[h, v] in degrees")) {
+    zones.fov_h_deg = (*fov)[0];
+    zones.fov_v_deg = (*fov)[1];
+  }
+  if (const auto rays = reader.Count(map["zone_rays"])) zones.rays_per_zone = static_cast<int>(std::min<std::uint64_t>(*rays, 1000));
+  if (const auto targets = reader.Count(map["targets"])) zones.targets = static_cast<int>(std::min<std::uint64_t>(*targets, 1000));
+  zones.target_separation_m = reader.Number(map["target_separation_m"]).value_or(zones.target_separation_m);
+  spec.zones = zones;
+}
+
+// what a rate above the part's limit breaks, naming the limit and its source
+std::string RateLimitProblem(const SensorSpec& spec, const RateLimit& limit, double rate_hz) {
+  if (rate_hz <= limit.max_hz) return "";
+  char message[400];
+  if (spec.zones) {
+    std::snprintf(message, sizeof message,
+                  "expected a ranging frequency of at most %g Hz for a %s at %dx%d zones (%s), got %g", limit.max_hz,
+                  spec.part.c_str(), spec.zones->nx, spec.zones->ny, limit.source.c_str(), rate_hz);
+  } else {
+    std::snprintf(message, sizeof message, "expected at most %.4g Hz for a %s (%s), got %g", limit.max_hz,
+                  spec.part.c_str(), limit.source.c_str(), rate_hz);
+  }
+  return message;
+}
+
 // the sensor's own sampling and the echo's flight
 void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
   sensor.rate_hz = reader.Number(map["rate_hz"], PositiveNumber("Hz")).value_or(sensor.rate_hz);
@@ -142,7 +183,14 @@ void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
   sensor.flight_time = reader.Bool(flight).value_or(sensor.flight_time);
   if (sensor.flight_time && !IsTimeOfFlight(sensor.spec.type)) {
     reader.Fail(flight, std::string("expected false for a ") + SensorTypeName(sensor.spec.type) +
-                            " sensor (flight_time applies to ideal, laser and ultrasonic), got true");
+                            " sensor (flight_time applies to the time-of-flight types), got true");
+  }
+  // a part samples no faster than its datasheet allows, by default at that limit
+  if (const RateLimit limit = PartRateLimit(sensor.spec); limit.max_hz > 0) {
+    if (!map.Has("rate_hz")) sensor.rate_hz = limit.max_hz;
+    if (const std::string problem = RateLimitProblem(sensor.spec, limit, sensor.rate_hz); !problem.empty()) {
+      reader.Fail(map["rate_hz"], problem);
+    }
   }
 }
 
@@ -171,7 +219,7 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
   // overrides of the preset
   const bool range_valid = ReadRange(reader, map["range_m"], sensor.spec);
   sensor.spec.max_incidence_deg = reader.Number(map["max_incidence_deg"]).value_or(sensor.spec.max_incidence_deg);
-  if (const auto noise = reader.Map(map["noise"], {"model", "sigma", "mean", "resolution_m", "dropout"})) {
+  if (const auto noise = reader.Map(map["noise"], SensorKeyNames("noise"))) {
     sensor.spec.noise.sigma = reader.Number((*noise)["sigma"]).value_or(sensor.spec.noise.sigma);
     sensor.spec.noise.mean = reader.Number((*noise)["mean"]).value_or(sensor.spec.noise.mean);
     sensor.spec.noise.resolution_m = reader.Number((*noise)["resolution_m"]).value_or(sensor.spec.noise.resolution_m);
@@ -198,6 +246,16 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
     }
   }
   ReadLookupTable(reader, map["lookup_table"], sensor.spec);
+  ReadZones(reader, map, sensor.spec);
+  // range_table: [[reflectance, ambient_klux, max_range_m], ...] ([] turns a part's off)
+  if (const auto rows = reader.List(map["range_table"], "a list of [reflectance, ambient_klux, max_range_m] rows")) {
+    if (map.Has("range_table")) sensor.spec.range_table.clear();
+    for (const Field& row : *rows) {
+      if (const auto values = reader.Numbers(row, 3, AnyNumber(), "[reflectance, ambient_klux, max_range_m]")) {
+        sensor.spec.range_table.push_back({(*values)[0], (*values)[1], (*values)[2]});
+      }
+    }
+  }
   // a lookup sensor's range is its table's unless range_m says otherwise
   if (sensor.spec.type == SensorType::kLookup && map.Has("lookup_table") && !map.Has("range_m") &&
       sensor.spec.lookup_table.size() >= 2) {
@@ -235,13 +293,7 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
   if (!items) return sensors;
   std::map<std::string, std::string> name_origin;  // name -> key path of its first use
   for (const Field& item : *items) {
-    const auto map = reader.Map(
-        item, {"name", "type", "link", "pose", "range_m", "max_incidence_deg", "noise", "see_robot", "beam",
-               "echo_model", "echo_threshold", "specular_exponent", "use_material", "lookup_table", "rate_hz",
-               "latency_s", "flight_time", "wave_speed_m_s"},
-        "a map with keys name, type, link, pose, range_m, max_incidence_deg, noise, see_robot, beam, echo_model, "
-        "echo_threshold, specular_exponent, use_material, lookup_table, rate_hz, latency_s, flight_time, "
-        "wave_speed_m_s");
+    const auto map = reader.Map(item, SensorKeyNames());
     if (!map) continue;
     SensorConfig sensor = ReadSensor(reader, *map, has_robot);
     const Field name = (*map)["name"];

@@ -139,9 +139,9 @@ std::vector<std::string> YamlReader::Problems() const {
   return messages;
 }
 
-std::optional<MapView> YamlReader::Map(const Field& field, std::initializer_list<const char*> schema_keys,
+std::optional<MapView> YamlReader::Map(const Field& field, std::vector<std::string> schema_keys,
                                        const std::string& expected) {
-  MapView view(field, std::vector<std::string>(schema_keys.begin(), schema_keys.end()));
+  MapView view(field, std::move(schema_keys));
   if (!field || field.node.IsNull()) return view;
   if (!field.node.IsMap()) {
     const std::string what = expected.empty() ? "a map with keys " + JoinWords(view.schema_keys_) : expected;

@@ -106,8 +106,12 @@ class YamlReader {
   /// duplicate keys; `expected` describes it in messages (default: "a map
   /// with keys …"). nullopt, after reporting, when the value is not a map.
   /// An absent field gives an empty view.
-  std::optional<MapView> Map(const Field& field, std::initializer_list<const char*> schema_keys,
+  std::optional<MapView> Map(const Field& field, std::vector<std::string> schema_keys,
                              const std::string& expected = "");
+  std::optional<MapView> Map(const Field& field, std::initializer_list<const char*> schema_keys,
+                             const std::string& expected = "") {
+    return Map(field, std::vector<std::string>(schema_keys.begin(), schema_keys.end()), expected);
+  }
   /// The items of a list as fields `path[i]` (a null value counts as an empty
   /// list); nullopt, after reporting, when the value is not a list.
   std::optional<std::vector<Field>> List(const Field& field, const std::string& expected);

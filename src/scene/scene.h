@@ -35,6 +35,10 @@ struct SceneObject {
 
 struct Scene {
   std::vector<SceneObject> objects;
+  /// The ambient light at 940 nm as an illuminance equivalent, klux, >= 0: 0 is
+  /// indoor without infrared (ST's "indoor" condition), 5 ST's "outdoor
+  /// overcast" (docs/sensors.md). Time-of-flight parts with a range table read it.
+  double ambient_klux = 0.0;
 };
 
 /// Names of the built-in scenes, for validation and messages.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/enum_names.h"
+#include "sensors/range_table.h"
 
 namespace proxsim {
 
@@ -104,6 +105,10 @@ double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo) {
 ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain) {
   // the range windows of §4.1
   if (!(echo.distance_m <= spec.max_range_m)) return ReadingStatus::kNoEcho;
+  // an optical part's range shrinks with a darker target and brighter light (range_table.h)
+  if (!spec.range_table.empty() && !(echo.distance_m <= ReflectanceMaxRange_m(spec, echo.ir_albedo))) {
+    return ReadingStatus::kNoEcho;
+  }
   if (echo.distance_m < spec.min_range_m) return ReadingStatus::kTooClose;
   // the returned energy, or the paper's incidence window of §4.2 and the beam's threshold
   if (spec.echo_model == EchoModel::kPhysical && IsTimeOfFlight(spec.type)) {
@@ -131,6 +136,21 @@ Reading NoDetection(const SensorSpec& spec, ReadingStatus status, double distanc
 double Quantise(const NoiseSpec& noise, double d_m) {
   return noise.resolution_m > 0 ? std::round(d_m / noise.resolution_m) * noise.resolution_m : d_m;
 }
+
+}  // namespace
+
+double TimeOfFlightReading_m(const NoiseSpec& noise_spec, double d, double gaussian_g) {
+  const double noise = noise_spec.sigma * gaussian_g + noise_spec.mean;
+  double d_m = d;
+  switch (noise_spec.model) {
+    case NoiseModel::kMultiplicative: d_m = d * (1.0 + noise); break;
+    case NoiseModel::kAdditive: d_m = d + noise; break;
+    case NoiseModel::kDistanceScaled: d_m = d + noise * d * d; break;
+  }
+  return Quantise(noise_spec, d_m);
+}
+
+namespace {
 
 // Eq. (1)'s noise-free signal, scaled by the IR albedo when the sensor uses materials
 double ReflectanceSignal(const SensorSpec& spec, const Echo& echo) {
@@ -182,13 +202,7 @@ Reading MeasureCounted(const SensorSpec& spec, const Echo& echo, ReadingStatus s
   }
 
   // time of flight (laser, ultrasonic) and the ideal sensor: d_r = d·(1 + N), or a variant
-  const double d = echo.distance_m + echo.flight_shift_m;
-  switch (spec.noise.model) {
-    case NoiseModel::kMultiplicative: reading.d_m = d * (1.0 + noise); break;
-    case NoiseModel::kAdditive: reading.d_m = d + noise; break;
-    case NoiseModel::kDistanceScaled: reading.d_m = d + noise * d * d; break;
-  }
-  reading.d_m = Quantise(spec.noise, reading.d_m);
+  reading.d_m = TimeOfFlightReading_m(spec.noise, echo.distance_m + echo.flight_shift_m, draw.gaussian_g);
   return reading;
 }
 

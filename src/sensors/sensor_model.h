@@ -111,6 +111,10 @@ Reading Measure(const SensorSpec& spec, const Echo& echo, double gaussian_g, dou
 /// The same reading, with the draws of ray 0 made only if the echo counts.
 Reading Measure(const SensorSpec& spec, const Echo& echo, const DrawOfRay& draw);
 
+/// A time-of-flight reading of a noise-free distance d: d·(1 + N), d + N or
+/// d + N·d² with N = σ·G + m, rounded to the resolution (the draw of §4.3).
+double TimeOfFlightReading_m(const NoiseSpec& noise, double d, double gaussian_g);
+
 /// Whether the echo of one ray of pattern gain `gain` counts: kOk or kSelf
 /// when it does, otherwise why not (range, dead zone, incidence window or,
 /// in the physical model or below echo_threshold, kGrazing / kNoEcho).

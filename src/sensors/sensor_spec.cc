@@ -4,38 +4,84 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/enum_names.h"
+#include "sensors/multizone.h"
+#include "sensors/range_table.h"
+#include "sensors/sensor_types.h"
 
 namespace proxsim {
 
 namespace {
-constexpr EnumNameTable<SensorType, 5> kTypeNames = {{
-    {SensorType::kIdeal, "ideal"},
-    {SensorType::kLaser, "laser"},
-    {SensorType::kUltrasonic, "ultrasonic"},
-    {SensorType::kReflectance, "reflectance"},
-    {SensorType::kLookup, "lookup"},
-}};
-static_assert(InCodeOrder(kTypeNames));
+
+// a multizone sensor's grid, and the grids its part has
+void ValidateZones(const SensorSpec& spec, std::vector<std::string>& problems) {
+  const auto fail = [&](const std::string& key, const std::string& expected, double got) {
+    std::ostringstream message;
+    message << key << ": expected " << expected << ", got " << got;
+    problems.push_back(message.str());
+  };
+  if (spec.type != SensorType::kMultizone) {
+    if (spec.zones) problems.push_back("zones: expected only with type multizone or a multi-zone part, got zones for a " +
+                                       std::string(SensorTypeName(spec.type)) + " sensor");
+    return;
+  }
+  if (!spec.zones) {
+    problems.push_back("zones: expected [nx, ny] for a multizone sensor, got none");
+    return;
+  }
+  const ZoneSpec& z = *spec.zones;
+  if (spec.beam) problems.push_back("beam: expected no beam for a multizone sensor (its zones are its rays), got a beam");
+  if (spec.noise.dropout != 0) fail("noise.dropout", "0 for a multizone sensor (its zones report their own status)", spec.noise.dropout);
+  if (z.nx < 1 || z.nx > 64) fail("zones[0]", "a number of zones across in [1, 64]", z.nx);
+  if (z.ny < 1 || z.ny > 64) fail("zones[1]", "a number of zones down in [1, 64]", z.ny);
+  if (const MultizonePart* part = FindMultizonePart(spec.part);
+      part != nullptr && !((z.nx == 4 && z.ny == 4) || (z.nx == 8 && z.ny == 8))) {
+    problems.push_back("zones: expected [4, 4] or [8, 8] for a " + spec.part + " (" + part->source + "), got [" +
+                       std::to_string(z.nx) + ", " + std::to_string(z.ny) + "]");
+  }
+  const auto fov = [&](const char* key, double deg) {
+    if (!std::isfinite(deg) || deg <= 0 || deg >= 170) fail(key, "a full field of view in (0, 170) degrees", deg);
+  };
+  fov("fov_deg[0]", z.fov_h_deg);
+  fov("fov_deg[1]", z.fov_v_deg);
+  const int k = static_cast<int>(std::lround(std::sqrt(std::max(z.rays_per_zone, 0))));
+  if (z.rays_per_zone < 1 || z.rays_per_zone > 16 || k * k != z.rays_per_zone) {
+    fail("zone_rays", "rays per zone k*k with k in [1, 4] (1, 4, 9 or 16)", z.rays_per_zone);
+  }
+  if (z.targets < 1 || z.targets > 4) fail("targets", "targets per zone in [1, 4] (ST's NB_TARGET_PER_ZONE)", z.targets);
+  if (!std::isfinite(z.target_separation_m) || z.target_separation_m <= 0) {
+    fail("target_separation_m", "a finite separation > 0 m", z.target_separation_m);
+  }
+}
+
 }  // namespace
 
-const char* SensorTypeName(SensorType type) { return NameIn(kTypeNames, type); }
+RateLimit PartRateLimit(const SensorSpec& spec) {
+  if (const MultizonePart* part = FindMultizonePart(spec.part); part != nullptr && spec.zones) {
+    return {MultizoneMaxRate_hz(spec), part->source};
+  }
+  return {spec.max_rate_hz, spec.max_rate_source};
+}
+
+// a type's name and family are its row in sensor_types.cc
+const char* SensorTypeName(SensorType type) { return TraitsOf(type).name; }
 
 std::optional<SensorType> SensorTypeFromName(std::string_view name) {
-  for (const auto& [type, type_name] : kTypeNames) {
-    if (name == type_name) return type;
+  for (const SensorTypeTraits& traits : AllSensorTypeTraits()) {
+    if (name == traits.name) return traits.type;
   }
   return std::nullopt;
 }
 
 const std::vector<std::string>& SensorTypeNames() {
-  static const std::vector<std::string> names = NamesIn(kTypeNames);
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const SensorTypeTraits& traits : AllSensorTypeTraits()) all.emplace_back(traits.name);
+    return all;
+  }();
   return names;
 }
 
-bool IsTimeOfFlight(SensorType type) {
-  return type == SensorType::kIdeal || type == SensorType::kLaser || type == SensorType::kUltrasonic;
-}
+bool IsTimeOfFlight(SensorType type) { return TraitsOf(type).time_of_flight; }
 
 const char* NoiseModelName(NoiseModel model) {
   switch (model) {
@@ -87,12 +133,19 @@ SensorSpec SensorSpec::Preset(SensorType type) {
       spec.max_incidence_deg = 90.0;
       spec.noise = {0.0, 0.0};
       break;
+    case SensorType::kMultizone:  // a generic grid of zones: 8x8 over 45° x 45°, no noise until given
+      spec.min_range_m = 0.0;
+      spec.max_range_m = 4.0;
+      spec.max_incidence_deg = 90.0;
+      spec.noise = {0.0, 0.0};
+      spec.zones = ZoneSpec{};
+      break;
   }
   return spec;
 }
 
 const std::vector<std::string>& SensorSpec::PartNames() {
-  static const std::vector<std::string> names = {"hc_sr04", "sharp_gp2y0a21", "vl53l0x"};
+  static const std::vector<std::string> names = {"hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l5cx", "vl53l7cx", "vl53l8cx"};
   return names;
 }
 
@@ -110,6 +163,10 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.max_range_m = 4.0;
     spec.noise = {.sigma = 0.003, .mean = 0.0, .model = NoiseModel::kAdditive, .resolution_m = 0.003};
     spec.beam = BeamSpec{.aperture_deg = 30.0, .rays = 37, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    // "we suggest to use over 60ms measurement cycle, in order to prevent
+    // trigger signal to the echo signal": at most 1/60 ms ≈ 16.7 Hz
+    spec.max_rate_hz = 1.0 / 0.060;
+    spec.max_rate_source = "HC-SR04 datasheet: \"we suggest to use over 60ms measurement cycle\"";
     return spec;
   }
   if (name == "sharp_gp2y0a21") {
@@ -138,13 +195,33 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     // ST VL53L0X time-of-flight laser ranging sensor (ST datasheet DocID029104):
     // 940 nm VCSEL, "up to 2 m" (long-range mode), field of view 25°, ranging
     // output in millimetres, ranging accuracy about ±3 % indoors on a white
-    // target (taken here as σ = 3 % of the distance, the paper's law).
+    // target (taken here as σ = 3 % of the distance, the paper's law). The
+    // range by target and light is Table 11's "typical" column (33 ms timing
+    // budget, full field of view): white 88 % 200 cm indoor (long range
+    // profile), 80 cm outdoor overcast; grey 17 % 80 cm indoor, 50 cm outdoor;
+    // "outdoor overcast" is ST's 10 kcps/SPAD, "equivalent to 5 kLux daylight".
     SensorSpec spec = Preset(SensorType::kLaser);
     spec.part = "vl53l0x";
     spec.min_range_m = 0.03;
     spec.max_range_m = 2.0;
+    spec.range_table = {{0.88, 0.0, 2.0}, {0.17, 0.0, 0.8}, {0.88, 5.0, 0.8}, {0.17, 5.0, 0.5}};
     spec.noise = {.sigma = 0.03, .mean = 0.0, .model = NoiseModel::kMultiplicative, .resolution_m = 0.001};
     spec.beam = BeamSpec{.aperture_deg = 25.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    return spec;
+  }
+  if (const MultizonePart* part = FindMultizonePart(std::string(name))) {
+    // ST's multi-zone parts (multizone.cc cites the figures): 8x8 zones over
+    // the part's square field of view, ranging from 2 cm to its longest range.
+    // ST's documents give no ranging noise that we could verify: σ = 3 % of
+    // the distance, as the vl53l0x preset, and 1 mm steps (the ULD reports
+    // millimetres) are assumptions.
+    SensorSpec spec = Preset(SensorType::kMultizone);
+    spec.part = part->name;
+    spec.min_range_m = 0.02;
+    spec.max_range_m = part->max_range_m;
+    spec.noise = {.sigma = 0.03, .mean = 0.0, .model = NoiseModel::kMultiplicative, .resolution_m = 0.001};
+    spec.zones = ZoneSpec{.nx = 8, .ny = 8, .fov_h_deg = part->fov_deg, .fov_v_deg = part->fov_deg,
+                          .rays_per_zone = 4, .targets = 1, .target_separation_m = 0.6};
     return spec;
   }
   return std::nullopt;
@@ -231,6 +308,8 @@ std::vector<std::string> SensorSpec::Validate() const {
     problems.push_back("lookup_table: expected only with type lookup, got a table for a " +
                        std::string(SensorTypeName(type)) + " sensor");
   }
+  ValidateZones(*this, problems);
+  ValidateRangeTable(*this, problems);
   return problems;
 }
 

@@ -18,15 +18,16 @@ namespace proxsim {
 /// The physics a sensor follows. ideal, laser and ultrasonic are time of
 /// flight; reflectance follows Eq. (1); lookup maps distance to an output
 /// through a datasheet table.
-enum class SensorType { kIdeal, kLaser, kUltrasonic, kReflectance, kLookup };
+/// multizone is time of flight over a grid of zones (multizone.h).
+enum class SensorType { kIdeal, kLaser, kUltrasonic, kReflectance, kLookup, kMultizone };
 
-/// "ideal", "laser", "ultrasonic", "reflectance" or "lookup".
+/// "ideal", "laser", "ultrasonic", "reflectance", "lookup" or "multizone".
 const char* SensorTypeName(SensorType type);
 /// The type named `name`, or nullopt.
 std::optional<SensorType> SensorTypeFromName(std::string_view name);
 /// Every type name, for messages.
 const std::vector<std::string>& SensorTypeNames();
-/// True for ideal, laser and ultrasonic: the reading is a time of flight.
+/// True for ideal, laser, ultrasonic and multizone: the reading is a time of flight.
 bool IsTimeOfFlight(SensorType type);
 
 /// How N is applied (N = σ·G + m, G a standard normal draw).
@@ -77,6 +78,17 @@ struct LookupRow {
   double noise_fraction = 0.0;
 };
 
+/// A multi-zone time-of-flight sensor's grid of zones (multizone.h).
+struct ZoneSpec {
+  int nx = 8;                  ///< zones across (the sensor's y), [1, 64]
+  int ny = 8;                  ///< zones down (its z), [1, 64]
+  double fov_h_deg = 45.0;     ///< full field of view across, (0, 170) degrees
+  double fov_v_deg = 45.0;     ///< full field of view down, (0, 170) degrees
+  int rays_per_zone = 4;       ///< rays sampling each zone: k² for k in [1, 4]
+  int targets = 1;             ///< targets reported per zone, [1, 4]
+  double target_separation_m = 0.6;  ///< surfaces closer in range than this merge into one target, > 0
+};
+
 struct SensorSpec {
   SensorType type = SensorType::kIdeal;
   std::string part;                  ///< the named part this came from ("" for the paper's presets)
@@ -97,12 +109,25 @@ struct SensorSpec {
   bool use_material = false;
   /// type lookup: rows by ascending distance; at least 2.
   std::vector<LookupRow> lookup_table;
+  /// type multizone: its grid of zones (required for that type, refused for the others).
+  std::optional<ZoneSpec> zones;
+  /// An optical time-of-flight part's longest range by the target's
+  /// reflectance and the ambient light, as its datasheet tabulates it:
+  /// rows [reflectance in (0, 1], ambient_klux >= 0, max_range_m > 0]
+  /// (range_table.h); empty: the range does not depend on them.
+  std::vector<std::array<double, 3>> range_table;
+  /// The scene's ambient light, klux (scene.ambient_klux, set when the scenario loads).
+  double ambient_klux = 0.0;
+  /// A part's shortest measurement cycle as a rate, Hz (0: none), and where it
+  /// comes from; a multi-zone part's depends on its zones (PartRateLimit).
+  double max_rate_hz = 0.0;
+  std::string max_rate_source;
 
   /// The paper's values for a type (§5; the ideal sensor: [0, 2] m, 90°, no
   /// noise; lookup: an empty table, to be given).
   static SensorSpec Preset(SensorType type);
 
-  /// A named real part ("hc_sr04", "sharp_gp2y0a21", "vl53l0x"), or nullopt.
+  /// A named real part ("hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l5cx", "vl53l7cx", "vl53l8cx"), or nullopt.
   static std::optional<SensorSpec> PartPreset(std::string_view name);
   /// Every part name, for messages.
   static const std::vector<std::string>& PartNames();
@@ -110,5 +135,14 @@ struct SensorSpec {
   /// Every violated condition, one message each, worded after the scenario key; empty if valid.
   std::vector<std::string> Validate() const;
 };
+
+/// The fastest rate a part may sample at, and the source of the figure
+/// (max_hz 0: no limit): the part's measurement cycle, or a multi-zone part's
+/// ranging frequency at its resolution.
+struct RateLimit {
+  double max_hz = 0.0;
+  std::string source;
+};
+RateLimit PartRateLimit(const SensorSpec& spec);
 
 }  // namespace proxsim

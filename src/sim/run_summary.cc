@@ -3,6 +3,9 @@
 #include <cmath>
 
 #include "raycast/embree_version.h"
+#include "sensors/sensor_echo.h"
+#include "sensors/sensor_types.h"
+#include "sensors/wave_speed.h"
 #include "scene/mesh_loader.h"
 
 namespace proxsim {
@@ -42,14 +45,17 @@ nlohmann::json InputsJson(const Scenario& scenario) {
   for (const SensorConfig& sensor : scenario.sensors) {
     const Vec3 rpy_deg = RpyFromRotation(sensor.X_LS.linear()) * (180.0 / kPi);
     const Vec3& xyz = sensor.X_LS.translation();
-    sensors.push_back({{"name", sensor.name},
-                       {"type", SensorTypeName(sensor.spec.type)},
-                       {"link", sensor.link},
-                       {"pose", {{"xyz_m", {xyz.x(), xyz.y(), xyz.z()}}, {"rpy_deg", {rpy_deg.x(), rpy_deg.y(), rpy_deg.z()}}}},
-                       {"range_m", {sensor.spec.min_range_m, sensor.spec.max_range_m}},
-                       {"max_incidence_deg", sensor.spec.max_incidence_deg},
-                       {"noise", {{"sigma", sensor.spec.noise.sigma}, {"mean", sensor.spec.noise.mean}}},
-                       {"see_robot", sensor.see_robot}});
+    // the spec's keys from the sensor's home (sensors/sensor_echo.cc), the mounting and timing beside them
+    nlohmann::json echo = SensorSpecJson(sensor.spec);
+    echo["name"] = sensor.name;
+    echo["link"] = sensor.link;
+    echo["pose"] = {{"xyz_m", {xyz.x(), xyz.y(), xyz.z()}}, {"rpy_deg", {rpy_deg.x(), rpy_deg.y(), rpy_deg.z()}}};
+    echo["see_robot"] = sensor.see_robot;
+    echo["rate_hz"] = NullUnless(sensor.rate_hz > 0, sensor.rate_hz);  // null: every sample
+    echo["latency_s"] = sensor.latency_s;
+    echo["flight_time"] = sensor.flight_time;
+    echo["wave_speed_m_s"] = WaveSpeed_m_s(sensor.spec.type, sensor.wave_speed_m_s);
+    sensors.push_back(std::move(echo));
   }
   nlohmann::json objects = nlohmann::json::array();
   for (const SceneObject& object : scenario.scene.objects) objects.push_back(object.name);
@@ -73,16 +79,17 @@ nlohmann::json InputsJson(const Scenario& scenario) {
     map = {{"enabled", m.enabled},           {"resolution_m", m.resolution_m},   {"max_height_m", m.max_height_m},
            {"obstacle_min_m", m.obstacle_min_m}, {"drop_min_m", m.drop_min_m},     {"step_max_m", m.step_max_m},
            {"step_min_size_m", m.step_min_size_m},
-           {"sensors", m.sensors_given ? nlohmann::json(m.sensors) : nlohmann::json("all but reflectance")}};
+           {"sensors", m.sensors_given ? nlohmann::json(m.sensors) : nlohmann::json("types: " + DefaultMapSensorTypes())}};
   }
   return {{"source", scenario.source},
           {"seed", scenario.seed},
           {"robot", robot},
           {"duration_s", scenario.duration_s},
           {"rate_hz", scenario.rate_hz},
-          {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}}},
+          {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}, {"ambient_klux", scenario.scene.ambient_klux}}},
           {"sensors", sensors},
-          {"map", map}};
+          {"map", map},
+          {"outputs", {{"range_convention", scenario.range_convention == RangeConvention::kRep117 ? "rep117" : "proxsim"}}}};
 }
 
 nlohmann::json RobotOutcomeJson(const Simulation& sim) {

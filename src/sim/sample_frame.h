@@ -9,6 +9,7 @@
 
 #include "core/geometry.h"
 #include "gait/locomotion.h"
+#include "sensors/multizone.h"
 #include "sensors/sensor_model.h"
 
 namespace proxsim {
@@ -23,6 +24,10 @@ struct SensorSample {
   Vec3 p_WH = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());  ///< hit point, NaN when none
   Vec3 p_WS = Vec3::Zero();       ///< ray origin: the sensor frame's origin in world
   Vec3 dir_W = Vec3::UnitX();     ///< the sensor's axis: its frame's +x in world (a beam's rays spread around it)
+  /// A multizone sensor's zones (empty for the others): targets and counts
+  /// (all kZoneNotUpdated between its own samples), and each zone's axis in W.
+  ZoneReadings zones;
+  std::vector<Vec3> zone_dir_W;
 };
 
 struct RobotSample {

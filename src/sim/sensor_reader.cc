@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "sensors/echo.h"
+#include "sensors/multizone.h"
 #include "sensors/measured_point.h"
 #include "sensors/noise.h"
 #include "sensors/wave_speed.h"
@@ -62,6 +63,32 @@ bool SensorReader::IsSensorSample(std::size_t sensor, std::int64_t sample) const
   return period(sample) > period(sample - 1);
 }
 
+void SensorReader::MeasureZonesInto(std::size_t i, SensorSample& out, const DrawOfRay& draw) {
+  const SensorSpec& spec = scenario_.sensors[i].spec;
+  const std::size_t begin = world_.ray_begin(i), count = world_.ray_begin(i + 1) - begin;
+  MeasureZones(spec, std::span(echoes_).subspan(begin, count), draw, out.zones);
+  // the sensor's own reading (readings.csv): the nearest target of any zone, or why there is none
+  const ZoneTarget* nearest = nullptr;
+  for (const ZoneTarget& target : out.zones.targets) {
+    if (target.status == kZoneRangeValid && (nearest == nullptr || target.d_m < nearest->d_m)) nearest = &target;
+  }
+  if (nearest != nullptr) {
+    out.reading = Reading{};
+    out.reading.status = ReadingStatus::kOk;
+    out.reading.d_m = nearest->d_m;
+    out.ray = out.truth_ray = nearest->ray;
+    // the row's axis is that zone's, so that its point is the zone's point
+    const auto zone = static_cast<std::size_t>(nearest - out.zones.targets.data()) / static_cast<std::size_t>(spec.zones->targets);
+    out.dir_W = out.zone_dir_W[zone];
+    return;
+  }
+  const BeamReading beam = MeasureBeam(spec, std::span(echoes_).subspan(begin, count),
+                                       std::span(world_.beam_rays()).subspan(begin, count), draw);
+  out.reading = beam.reading;
+  out.truth_ray = beam.truth_ray;
+  out.ray = -1;
+}
+
 void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame) {
   const Pose& X_LS = scenario_.sensors[i].X_LS;
   const int link = world_.sensor_link(i);
@@ -69,6 +96,10 @@ void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame) {
   SensorSample& out = frame.sensors[i];
   out.p_WS = X_WS.translation();
   out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
+  if (const auto& zones = scenario_.sensors[i].spec.zones) {
+    out.zone_dir_W.resize(static_cast<std::size_t>(ZoneCount(*zones)));
+    for (int zone = 0; zone < ZoneCount(*zones); ++zone) out.zone_dir_W[zone] = X_WS.linear() * ZoneAxis_S(*zones, zone);
+  }
   for (std::size_t r = world_.ray_begin(i); r < world_.ray_begin(i + 1); ++r) {
     rays_[r].origin_W = out.p_WS.cast<float>();
     ray_dir_W_[r] = BeamRayDir_W(X_WS, world_.beam_rays()[r]);
@@ -94,6 +125,9 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
     out.ray = -1;
     out.truth_ray = 0;
     out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
+    // a multizone sensor's zones say "not updated"
+    for (ZoneTarget& target : out.zones.targets) target = ZoneTarget{.d_m = 0.0, .status = kZoneNotUpdated, .ray = -1};
+    std::fill(out.zones.target_count.begin(), out.zones.target_count.end(), 0);
     return;
   }
 
@@ -136,8 +170,10 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
                                        static_cast<std::uint64_t>(frame.sample), static_cast<std::uint32_t>(ray)});
   };
 
-  // the reading: the paper's single ray, or the beam's combination
-  if (end - begin == 1) {
+  // the reading: a grid of zones, the paper's single ray, or the beam's combination
+  if (spec.zones) {
+    MeasureZonesInto(i, out, draw);
+  } else if (end - begin == 1) {
     out.reading = Measure(spec, echoes_[begin], draw);
     out.truth_ray = 0;
     out.ray = (out.reading.status == ReadingStatus::kOk || out.reading.status == ReadingStatus::kSelf) ? 0 : -1;

@@ -37,6 +37,8 @@ class SensorReader {
   void PlaceSensor(std::size_t sensor, SampleFrame& frame);
   // one sensor's hits into its reading
   void MeasureSensor(std::size_t sensor, SampleFrame& frame);
+  // a multizone sensor's zones, and its own reading from them
+  void MeasureZonesInto(std::size_t sensor, SensorSample& out, const DrawOfRay& draw);
   // whether sample k is one of the sensor's own samples
   bool IsSensorSample(std::size_t sensor, std::int64_t sample) const;
   // below this many rays a sample is read on one thread (a fork costs more)

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "sensors/sensor_types.h"
 #include "sim/make_locomotion.h"
 #include "sim/robot_knowledge.h"
 #include "sim/start_check.h"
@@ -131,7 +132,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
 }
 
 std::unique_ptr<TerrainMap> Simulation::MakeTerrainMap() const {
-  // the sensors listed, or every one whose distance means one (not the reflectance sensors')
+  // the sensors listed, or every one whose type's distance is a point on a surface (sensors/sensor_types.cc)
   const TerrainMapConfig& config = scenario_.map;
   std::vector<SensorSpec> specs;
   std::vector<bool> feeds_map;
@@ -139,7 +140,7 @@ std::unique_ptr<TerrainMap> Simulation::MakeTerrainMap() const {
     specs.push_back(sensor.spec);
     feeds_map.push_back(config.sensors_given
                             ? std::find(config.sensors.begin(), config.sensors.end(), sensor.name) != config.sensors.end()
-                            : sensor.spec.type != SensorType::kReflectance);
+                            : TraitsOf(sensor.spec.type).feeds_map_by_default);
   }
   return std::make_unique<TerrainMap>(config, std::move(specs), std::move(feeds_map));
 }
@@ -257,6 +258,22 @@ void Simulation::FillObservation() {
       out.t_reported_s = sample.t_reported_s;
       out.p_WS = sample.p_WS;
       out.dir_W = sample.dir_W;
+      // each zone's nearest target (the zones are zone-major, `targets` per zone)
+      const auto& zones = scenario_.sensors[i].spec.zones;
+      out.zones.resize(zones ? static_cast<std::size_t>(ZoneCount(*zones)) : 0);
+      out.zone_d_m.resize(sample.zones.targets.size());
+      out.zone_status.resize(sample.zones.targets.size());
+      for (std::size_t k = 0; k < sample.zones.targets.size(); ++k) {
+        out.zone_d_m[k] = sample.zones.targets[k].d_m;
+        out.zone_status[k] = sample.zones.targets[k].status;
+      }
+      out.zone_target_count = sample.zones.target_count;
+      for (std::size_t zone = 0; zone < out.zones.size(); ++zone) {
+        const ZoneTarget& first = sample.zones.targets[zone * static_cast<std::size_t>(zones->targets)];
+        out.zones[zone].detected = first.status == kZoneRangeValid;
+        out.zones[zone].d_m = out.zones[zone].detected ? first.d_m : scenario_.sensors[i].spec.max_range_m;
+        out.zones[zone].dir_W = sample.zone_dir_W[zone];
+      }
     } else {
       // no news: the device shows its maximum range, at the pose the kinematics give now
       out.d_m = scenario_.sensors[i].spec.max_range_m;

@@ -2,6 +2,7 @@
 
 #include "core/input_error.h"
 #include "core/nearest_key.h"
+#include "sensors/multizone.h"
 
 namespace proxsim {
 
@@ -73,10 +74,10 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   // ground is built here with the other structures, not at the first sample
   if (robot_) caster_.DistanceToWorld(Vec3::Zero(), ground_ids_);
 
-  // the beams, sensor after sensor: one ray for the paper's sensors
+  // the beams or zones, sensor after sensor: one ray for the paper's sensors
   ray_begin_.push_back(0);
   for (const SensorConfig& sensor : scenario.sensors) {
-    const std::vector<BeamRay> beam = MakeBeamRays(sensor.spec.beam);
+    const std::vector<BeamRay> beam = MakeSensorRays(sensor.spec);
     beam_rays_.insert(beam_rays_.end(), beam.begin(), beam.end());
     ray_begin_.push_back(beam_rays_.size());
   }

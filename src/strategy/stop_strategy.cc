@@ -7,15 +7,31 @@
 
 namespace proxsim {
 
-bool IsObstacleAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule) {
-  if (!sensor.fresh || !sensor.detected) return false;
-  // the point the sensor reports, not the truth
-  const Vec3 p_W = sensor.p_W_measured();
+namespace {
+
+// whether a reported point is an obstacle in the robot's way
+bool PointIsObstacle(const Vec3& p_W, const RobotKnowledge& self, const StopConfig& rule) {
   if (p_W.z() - self.ground_z_m < rule.min_height_m) return false;  // the floor
   const Vec3 lateral_W = Vec3::UnitZ().cross(self.heading_W);
   const Vec3 from_front = p_W - self.p_W_front;
   return from_front.dot(self.heading_W) <= rule.stop_distance_m &&
          std::abs(from_front.dot(lateral_W)) <= rule.corridor_half_width_m;
+}
+
+}  // namespace
+
+std::optional<Vec3> ObstaclePointAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule) {
+  if (!sensor.fresh) return std::nullopt;
+  // the points the sensor reports, not the truth: its reading's, and each zone's of a multi-zone sensor
+  if (sensor.detected && PointIsObstacle(sensor.p_W_measured(), self, rule)) return sensor.p_W_measured();
+  for (std::size_t zone = 0; zone < sensor.zones.size(); ++zone) {
+    if (sensor.zones[zone].detected && PointIsObstacle(sensor.p_W_zone(zone), self, rule)) return sensor.p_W_zone(zone);
+  }
+  return std::nullopt;
+}
+
+bool IsObstacleAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule) {
+  return ObstaclePointAhead(sensor, self, rule).has_value();
 }
 
 int FindObstacleAhead(const Observation& observation, const StopConfig& rule) {
@@ -45,11 +61,10 @@ void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, 
   const RobotKnowledge& self = *observation.robot;
   char detail[240];
   if (const int trigger = FindObstacleAhead(observation, config_); trigger >= 0) {
-    const SensorOutput& sensor = observation.sensors[trigger];
-    const Vec3 from_front = sensor.p_W_measured() - self.p_W_front;
+    const Vec3 p_W = *ObstaclePointAhead(observation.sensors[trigger], self, config_);
+    const Vec3 from_front = p_W - self.p_W_front;
     std::snprintf(detail, sizeof detail, "%s reports a point %.3f m ahead of the leading toe, %.3f m above the ground",
-                  sensors_.at(trigger).name.c_str(), from_front.dot(self.heading_W),
-                  sensor.p_W_measured().z() - self.ground_z_m);
+                  sensors_.at(trigger).name.c_str(), from_front.dot(self.heading_W), p_W.z() - self.ground_z_m);
     robot.Stop();
     stopping_ = true;
     events.Log("obstacle_ahead", detail);

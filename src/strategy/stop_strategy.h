@@ -10,6 +10,8 @@
 // Events: `obstacle_ahead`, `drop_ahead`. It stops once and stays stopped.
 #pragma once
 
+#include <optional>
+
 #include <vector>
 
 #include "strategy/strategy.h"
@@ -20,6 +22,8 @@ namespace proxsim {
 /// Whether one sensor's output is a fresh detection in the corridor within the
 /// look-ahead, at least min_height_m above the ground.
 bool IsObstacleAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule);
+/// The reported point that makes it one (the reading's, else the first zone's), or nullopt.
+std::optional<Vec3> ObstaclePointAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule);
 
 /// The first sensor whose fresh detection stands in the corridor within the
 /// look-ahead, at least min_height_m above the ground; -1 when none does.

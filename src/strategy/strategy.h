@@ -28,6 +28,15 @@ namespace proxsim {
 
 class TerrainMap;  // terrain/terrain_map.h: built from the readings only
 
+/// One zone of a multi-zone sensor as the device reports it: its nearest
+/// target (ST's status "range valid") and, from the datasheet's geometry and
+/// the robot's kinematics, the zone's axis.
+struct ZoneOutput {
+  bool detected = false;       ///< the zone reports a valid target
+  double d_m = 0.0;            ///< its distance; the sensor's maximum range when none
+  Vec3 dir_W = Vec3::UnitX();  ///< the zone's axis (unit) when the sensor measured
+};
+
 /// What one sensor device delivered at a sample: its outputs, and where the
 /// robot's kinematics put the sensor when it measured.
 struct SensorOutput {
@@ -40,8 +49,19 @@ struct SensorOutput {
   Vec3 p_WS = Vec3::Zero();    ///< the sensor's origin when it measured
   Vec3 dir_W = Vec3::UnitX();  ///< its axis (unit) when it measured
 
+  /// A multi-zone sensor's zones (empty for the others), each zone's nearest target.
+  std::vector<ZoneOutput> zones;
+  /// Every target of every zone as the device reports it (zone-major,
+  /// `targets` per zone, sensors/multizone.h): distance (0 without a
+  /// target), ST's target status code, and each zone's count of targets.
+  std::vector<double> zone_d_m;
+  std::vector<std::uint8_t> zone_status;
+  std::vector<std::uint8_t> zone_target_count;
+
   /// The point the reading puts in the world: origin + d_m along the axis.
   Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
+  /// The point zone `zone`'s target puts in the world, along the zone's axis.
+  Vec3 p_W_zone(std::size_t zone) const { return MeasuredPoint_W(p_WS, zones[zone].dir_W, zones[zone].d_m); }
 };
 
 /// What the robot's datasheets and mounting tell it about one sensor.

@@ -98,6 +98,8 @@ Candidate MakeCandidate(const SensorSpec& spec, const std::string& type, const s
          FormatNumbers("%.3g", pitch_deg) + ":y" + FormatNumbers("%.3g", yaw_deg);
   c.sensor.name = c.id;
   c.sensor.spec = spec;
+  // a part samples at its datasheet's limit, as in a scenario (sensors/sensor_spec.h PartRateLimit)
+  c.sensor.rate_hz = PartRateLimit(spec).max_hz;
   c.sensor.link = link;
   c.sensor.X_LS = PoseFromXyzRpy(Vec3(forward_m, 0, along_m), Vec3(0, DegToRad(pitch_deg), DegToRad(yaw_deg)));
   c.along_m = along_m;

@@ -79,7 +79,10 @@ class Worker {
   static Scenario ScenarioOf(const StudyConfig& study, std::size_t variant) {
     Scenario scenario = study.variants[variant].scenario;
     scenario.source = study.source + " (scene " + study.variants[variant].name + ")";
-    for (const Candidate& c : study.candidates) scenario.sensors.push_back(c.sensor);
+    for (const Candidate& c : study.candidates) {
+      scenario.sensors.push_back(c.sensor);
+      scenario.sensors.back().spec.ambient_klux = scenario.scene.ambient_klux;  // the variant's light
+    }
     return scenario;
   }
 

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sensors/sensor_model.h"
+#include "sensors/range_inverse.h"
+#include "sensors/range_table.h"
 
 namespace proxsim {
 
@@ -13,64 +14,7 @@ namespace {
 // empty part stops (beyond the noise's 3σ): float rounding in the caster.
 constexpr double kFreeMargin_m = 0.001;
 
-// The standard deviation of the distance a lookup sensor implies: the
-// output's σ over the table's slope at d (a flat part of the table says
-// nothing about d: its whole range).
-double LookupSigma_m(const SensorSpec& spec, double d_m) {
-  constexpr double kStep_m = 0.001;
-  double fraction = 0;
-  const double output = LookupOutput(spec.lookup_table, d_m, &fraction);
-  const double slope = (LookupOutput(spec.lookup_table, d_m + kStep_m) - LookupOutput(spec.lookup_table, d_m - kStep_m)) /
-                       (2 * kStep_m);
-  const double sigma_output = std::abs(fraction * output);
-  if (std::abs(slope) < 1e-12) return sigma_output > 0 ? spec.max_range_m : 0.0;
-  return std::min(sigma_output / std::abs(slope), spec.max_range_m);
-}
-
-// The reflectance inversion d(s) of s·d² + d − d_max = 0 spreads the signal's
-// noise over d by |dd/ds| = d³/(2·d_max − d) (from s = (d_max − d)/d²).
-double ReflectanceSigma_m(const SensorSpec& spec, double d_m) {
-  const double d_max = spec.max_range_m;
-  if (d_m <= 0 || d_m >= d_max) return 0.0;
-  const double s = (d_max - d_m) / (d_m * d_m);
-  const double sigma_s = spec.noise.model == NoiseModel::kAdditive ? spec.noise.sigma : spec.noise.sigma * s;
-  return sigma_s * d_m * d_m * d_m / (2 * d_max - d_m);
-}
-
 }  // namespace
-
-double UnbiasedDistance_m(const SensorSpec& spec, double d_m) {
-  const double mean = spec.noise.mean;
-  if (mean == 0 || !IsTimeOfFlight(spec.type)) return d_m;
-  switch (spec.noise.model) {
-    case NoiseModel::kMultiplicative: return 1.0 + mean > 0 ? d_m / (1.0 + mean) : d_m;
-    case NoiseModel::kAdditive: return d_m - mean;
-    case NoiseModel::kDistanceScaled: {
-      // d + m·d² = d_r: the positive root
-      const double disc = 1.0 + 4.0 * mean * d_m;
-      return disc > 0 && mean != 0 ? (-1.0 + std::sqrt(disc)) / (2.0 * mean) : d_m;
-    }
-  }
-  return d_m;
-}
-
-double RangeSigma_m(const SensorSpec& spec, double d_m) {
-  double sigma_m = 0;
-  if (spec.type == SensorType::kLookup) {
-    sigma_m = LookupSigma_m(spec, d_m);
-  } else if (spec.type == SensorType::kReflectance) {
-    sigma_m = ReflectanceSigma_m(spec, d_m);
-  } else {
-    switch (spec.noise.model) {
-      case NoiseModel::kMultiplicative: sigma_m = spec.noise.sigma * d_m; break;
-      case NoiseModel::kAdditive: sigma_m = spec.noise.sigma; break;
-      case NoiseModel::kDistanceScaled: sigma_m = spec.noise.sigma * d_m * d_m; break;
-    }
-  }
-  // rounding to a resolution adds a uniform error of variance r²/12
-  const double r = spec.noise.resolution_m;
-  return std::sqrt(sigma_m * sigma_m + r * r / 12.0);
-}
 
 RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output) {
   RayEvidence evidence;
@@ -81,7 +25,7 @@ RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output)
   if (output.detected) {
     const double d_m = UnbiasedDistance_m(spec, output.d_m);
     const double sigma_d = RangeSigma_m(spec, d_m);
-    const double half_aperture_rad = spec.beam ? DegToRad(spec.beam->aperture_deg) / 2 : 0.0;
+    const double half_aperture_rad = SpreadHalfAngleRad(spec);
     const double sigma_lat = d_m * std::tan(half_aperture_rad) / 2;
     evidence.d_m = d_m;
     evidence.variance_z_m2 = sigma_d * sigma_d * dir_z * dir_z + sigma_lat * sigma_lat * (1 - dir_z * dir_z);
@@ -93,10 +37,9 @@ RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output)
   // no echo over [d_min, d_m]; meaningful for the height only where a flat floor would have answered
   evidence.d_m = output.d_m;
   evidence.free_begin_m = spec.min_range_m;
-  evidence.free_end_m = output.d_m;
-  const double max_incidence_deg = (spec.echo_model == EchoModel::kPhysical && IsTimeOfFlight(spec.type))
-                                       ? RadToDeg(std::acos(std::clamp(spec.echo_threshold, 0.0, 1.0)))
-                                       : spec.max_incidence_deg;
+  // a part whose range depends on the target vouches only for its darkest target's range
+  evidence.free_end_m = std::min(output.d_m, SilenceRange_m(spec));
+  const double max_incidence_deg = EchoIncidenceLimitDeg(spec);
   const bool floor_would_echo = std::abs(dir_z) >= std::cos(DegToRad(max_incidence_deg)) - 1e-12;
   evidence.bounds_height = floor_would_echo && spec.noise.dropout == 0 && evidence.free_end_m > evidence.free_begin_m;
   evidence.proves_empty = false;

@@ -8,7 +8,7 @@
 //    the ray: σ_z² = σ_d²·dir_z² + σ_lat²·(1 − dir_z²), σ_d the range's
 //    standard deviation at d (paper §4.3: σ·d for the multiplicative law; σ,
 //    σ·d², the reflectance inversion's and the lookup table's slope for the
-//    others; plus resolution²/12), σ_lat = d·tan(aperture/2)/2 for a beam
+//    others; plus resolution²/12: sensors/range_inverse.h), σ_lat = d·tan(aperture/2)/2 for a beam
 //    whose echo may come from anywhere in its cone (0 for one ray). The ray
 //    before the point is empty: the echo is the first surface met (too close
 //    a surface would have given no detection); the last 3σ before the point
@@ -26,6 +26,7 @@
 
 #include "core/geometry.h"
 #include "sensors/measured_point.h"
+#include "sensors/range_inverse.h"
 #include "sensors/sensor_spec.h"
 #include "strategy/strategy.h"
 
@@ -46,14 +47,6 @@ struct RayEvidence {
   Vec3 free_begin_W() const { return MeasuredPoint_W(p_WS, dir_W, free_begin_m); }
   Vec3 free_end_W() const { return MeasuredPoint_W(p_WS, dir_W, free_end_m); }
 };
-
-/// The standard deviation of a reported distance d_m from the sensor's noise
-/// model (time of flight, reflectance or lookup), m.
-double RangeSigma_m(const SensorSpec& spec, double d_m);
-
-/// The distance a detection's reported d_m stands for once the noise's mean
-/// (a bias the datasheet states) is taken out.
-double UnbiasedDistance_m(const SensorSpec& spec, double d_m);
 
 /// What a fresh reading says (the output must be fresh).
 RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output);

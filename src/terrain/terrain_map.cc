@@ -97,16 +97,20 @@ void TerrainMap::Update(const Observation& observation) {
   evidence_.clear();
   for (std::size_t i = 0; i < observation.sensors.size() && i < specs_.size(); ++i) {
     if (!feeds_map_[i] || !observation.sensors[i].fresh) continue;
-    RayEvidence evidence = InterpretReading(specs_[i], observation.sensors[i]);
-    // a silent ray stops at the robot's own feet: they may have swallowed its echo
-    if (!evidence.detected && evidence.bounds_height && observation.robot != nullptr) {
-      evidence.free_end_m = ClearOfFeet_m(evidence, *observation.robot, 0.5 * grid_.resolution_m());
-      evidence.bounds_height = evidence.free_end_m > evidence.free_begin_m;
+    const SensorOutput& output = observation.sensors[i];
+    if (output.zones.empty()) {
+      AddEvidence(InterpretReading(specs_[i], output), observation);
+      continue;
     }
-    evidence_.push_back(evidence);
-    // the ceiling rides with the robot: on a landing 0.6 m up, the landing is terrain
-    const double ground_z_m = observation.robot != nullptr ? observation.robot->ground_z_m : 0.0;
-    Insert(evidence_.back(), observation.t_s, ground_z_m + config_.max_height_m);
+    // a multi-zone sensor: every zone's nearest target (or its silence) along the zone's axis
+    SensorOutput zone_output = output;
+    zone_output.zones.clear();
+    for (const ZoneOutput& zone : output.zones) {
+      zone_output.detected = zone.detected;
+      zone_output.d_m = zone.d_m;
+      zone_output.dir_W = zone.dir_W;
+      AddEvidence(InterpretReading(specs_[i], zone_output), observation);
+    }
   }
   if (observation.robot == nullptr) return;
   UpdateTrack(observation.t_s, *observation.robot);
@@ -114,6 +118,18 @@ void TerrainMap::Update(const Observation& observation) {
     next_pass_t_s_ = observation.t_s + kHazardPeriod_s;
     if (Relabel(observation.robot->ground_z_m)) FindHazardsAgain(observation.t_s, *observation.robot);
   }
+}
+
+void TerrainMap::AddEvidence(RayEvidence evidence, const Observation& observation) {
+  // a silent ray stops at the robot's own feet: they may have swallowed its echo
+  if (!evidence.detected && evidence.bounds_height && observation.robot != nullptr) {
+    evidence.free_end_m = ClearOfFeet_m(evidence, *observation.robot, 0.5 * grid_.resolution_m());
+    evidence.bounds_height = evidence.free_end_m > evidence.free_begin_m;
+  }
+  evidence_.push_back(evidence);
+  // the ceiling rides with the robot: on a landing 0.6 m up, the landing is terrain
+  const double ground_z_m = observation.robot != nullptr ? observation.robot->ground_z_m : 0.0;
+  Insert(evidence_.back(), observation.t_s, ground_z_m + config_.max_height_m);
 }
 
 void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_z_m) {

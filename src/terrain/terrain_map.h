@@ -69,6 +69,8 @@ class TerrainMap {
   double last_t_s() const { return last_.t_s; }
 
  private:
+  // one ray's evidence: clipped at the robot's feet when silent, kept for the viewer, inserted
+  void AddEvidence(RayEvidence evidence, const Observation& observation);
   void Insert(const RayEvidence& evidence, double t_s, double ceiling_z_m);
   void UpdateTrack(double t_s, const RobotKnowledge& robot);
   // relabel changed tiles; true if a label changed

@@ -236,3 +236,23 @@ def test_a_strategy_that_steers_into_the_table_collides_naming_the_table_and_the
     assert first["link"] in {"pelvis", "left_thigh", "right_thigh", "left_tibia", "right_tibia", "left_foot",
                              "right_foot"}, first
     assert robot["outcome_t_s"] < 5.0  # the episode ended there, before its time ran out
+
+
+def test_a_multizone_sensor_gives_its_zones_by_name():
+    sim = proxsim.Simulation(os.path.join(SCENARIOS, "multizone_shins.yaml"))
+    obs = sim.step()
+    assert obs["readings"]["zones"].keys() == {"tof_left_shin", "tof_right_shin"}
+    zones = obs["readings"]["zones"]["tof_left_shin"]
+    assert zones["d_m"].shape == (64, 1) and zones["status"].shape == (64, 1)
+    assert zones["status"].dtype == np.uint8 and zones["target_count"].shape == (64,)
+    np.testing.assert_allclose(np.linalg.norm(zones["dir_W"], axis=1), 1.0, rtol=1e-12)
+    # ST's codes: a zone with a target reads 5 and a distance within the part's range, the others none
+    valid = zones["status"][:, 0] == 5
+    assert valid.any()
+    assert np.all(zones["target_count"][valid] == 1) and np.all(zones["target_count"][~valid] == 0)
+    assert np.all((zones["d_m"][valid, 0] > 0.02) & (zones["d_m"][valid, 0] < 4.0))
+    # the sensor's own reading is its nearest zone's target
+    i = sim.sensor_names.index("tof_left_shin")
+    assert obs["readings"]["d_m"][i] == pytest.approx(zones["d_m"][valid, 0].min(), abs=0)
+    # the paper's sensors have no zones
+    assert proxsim.Simulation.builtin("paper").step()["readings"]["zones"] == {}

@@ -1,0 +1,104 @@
+// A multi-zone time-of-flight sensor (ST's VL53L5CX, VL53L7CX, VL53L8CX, or a
+// generic `multizone` one): its square field of view is split into nx × ny
+// zones, each sampled by k × k rays, and each zone reports up to `targets`
+// targets, nearest first (ST's "closest" target order).
+//
+// Geometry. The zones are the cells of a grid on the image plane x = 1 of the
+// sensor frame S (the SPAD array behind the receiver lens): u = y/x across
+// [−tan(h/2), tan(h/2)], v = z/x across [−tan(v/2), tan(v/2)]. Zone z = row·nx
+// + column, row 0 at the top (+z), column 0 on the left (+y) as seen looking
+// along +x. A zone's rays pass through the centres of a k × k sub-grid of its
+// cell, its axis through the cell's centre.
+//
+// Targets. The rays of a zone whose echo counts (the range and incidence
+// window, or the physical echo model, as for any time-of-flight sensor) are
+// sorted by distance and split where two successive distances differ by the
+// part's minimum target separation or more: ST gives 600 mm for the
+// VL53L5CX/L7CX/L8CX ("the minimum distance between two targets to be
+// detected is 600 mm", UM2884, UM3038, UM3109); closer surfaces merge into one
+// target. A target's distance is the mean of its rays' distances (the rays
+// stand for equal parts of the zone), with the sensor's noise model applied
+// once per target (the draw of the target's nearest ray). Rays that hit the
+// robot's own body never make a target (the `self` convention).
+//
+// Status, per zone and target, as ST's ULD API codes it (UM2884 Table 4):
+// 5 "range valid" for a target; for a zone without one, 8 "signal rate too
+// low for the current target" when a surface lies within range but none of
+// its echoes counts (too grazing, too weak, or in the dead zone), else 255
+// "no target detected"; 0 "ranging data are not updated" between the
+// sensor's own samples. The other codes of the table (sigma, wrap-around,
+// consistency checks) depend on the device's internal algorithms and are not
+// produced.
+//
+// Frames: S the sensor (its +x is the field of view's axis), W world.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sensors/beam.h"
+#include "sensors/sensor_model.h"
+
+namespace proxsim {
+
+/// ST's target status codes that the model produces (UM2884 Table 4).
+inline constexpr std::uint8_t kZoneNotUpdated = 0;       ///< "ranging data are not updated"
+inline constexpr std::uint8_t kZoneRangeValid = 5;       ///< "range valid"
+inline constexpr std::uint8_t kZoneSignalTooLow = 8;     ///< "signal rate too low for the current target"
+inline constexpr std::uint8_t kZoneNoTarget = 255;       ///< "no target detected"
+
+/// The snake_case name of a zone status code the model produces ("?" otherwise).
+const char* ZoneStatusName(std::uint8_t code);
+/// The codes the model produces, in ascending order.
+const std::vector<std::uint8_t>& ZoneStatusCodes();
+
+/// One target of one zone in one sample.
+struct ZoneTarget {
+  double d_m = 0.0;                     ///< the reported distance; 0 where there is no target
+  std::uint8_t status = kZoneNoTarget;  ///< ST's code
+  std::int32_t ray = -1;                ///< the sensor's ray nearest in the target (truth), -1: none
+};
+
+/// A sensor's zones in one sample: zones × targets, zone-major.
+struct ZoneReadings {
+  std::vector<ZoneTarget> targets;          ///< [zone · targets + target]
+  std::vector<std::uint8_t> target_count;   ///< [zone]: valid targets found
+};
+
+/// The part's limits that a scenario is checked against.
+struct MultizonePart {
+  const char* name;
+  double fov_deg;             ///< square field of view, degrees (each side)
+  double max_range_m;         ///< the datasheet's longest range
+  double max_rate_4x4_hz;     ///< ranging frequency limit at 4×4
+  double max_rate_8x8_hz;     ///< ranging frequency limit at 8×8
+  const char* source;         ///< where the figures come from
+};
+
+/// The named multi-zone parts ("vl53l5cx", "vl53l7cx", "vl53l8cx").
+std::span<const MultizonePart> MultizoneParts();
+/// The part called `name`, or null.
+const MultizonePart* FindMultizonePart(const std::string& name);
+
+/// The number of zones.
+inline int ZoneCount(const ZoneSpec& zones) { return zones.nx * zones.ny; }
+
+/// The rays of a zone grid, zone-major (zone z owns rays [z·k², (z+1)·k²)), gain 1, weight 1/N.
+std::vector<BeamRay> MakeZoneRays(const ZoneSpec& zones);
+
+/// The axis of zone `zone` in S (unit): through the centre of its cell.
+Vec3 ZoneAxis_S(const ZoneSpec& zones, int zone);
+
+/// The rays a sensor casts: its zones, its beam, or the paper's single ray.
+std::vector<BeamRay> MakeSensorRays(const SensorSpec& spec);
+
+/// The zones' targets from every ray's echo (echoes[i] belongs to the
+/// sensor's ray i); `draw` gives ray i's noise draws. Writes `out`, sized here.
+void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out);
+
+/// The fastest ranging rate of the sensor's part at its resolution, Hz (0: no limit).
+double MultizoneMaxRate_hz(const SensorSpec& spec);
+
+}  // namespace proxsim

@@ -1,0 +1,94 @@
+#include "sensors/sensor_keys.h"
+
+#include <algorithm>
+
+namespace proxsim {
+
+const std::vector<SensorKey>& SensorKeys() {
+  static const std::vector<SensorKey> keys = {
+    {"name", "text", "required",
+     "unique among the sensors; names its rows in the outputs"},
+    {"type", "see above", "required",
+     "the preset"},
+    {"link", "a link name or `world`", "`world`",
+     "what the sensor is fixed to; a link requires a `robot` (an unknown link is refused, with the robot's links listed)"},
+    {"pose", "`{xyz_m, rpy_deg}`", "the link's frame",
+     "the sensor frame in its link's frame; the beam is its +x axis"},
+    {"see_robot", "bool", "true",
+     "false: the robot's own links are transparent to this sensor"},
+    {"range_m", "`[min, max]`, m", "preset",
+     "0 ≤ min < max: nearer hits are `too_close`, nothing within max is `no_echo`"},
+    {"max_incidence_deg", "[0, 90], degrees", "preset",
+     "hits at a larger incidence are `grazing`"},
+    {"noise.model", R"(`multiplicative` \| `additive` \| `distance_scaled`)", "`multiplicative`",
+     "how N = σG + m is applied: d(1 + N), d + N, d + N·d² (the last for time of flight only)"},
+    {"noise.sigma", "≥ 0", "preset",
+     "σ (unit: see the model; dimensionless for the paper's multiplicative noise)"},
+    {"noise.mean", "number", "preset",
+     "m, same unit as σ"},
+    {"noise.resolution_m", "≥ 0, m", "0",
+     "the reported distance is rounded to a multiple of this; 0: no rounding"},
+    {"noise.dropout", "[0, 1]", "0",
+     "probability that a detection is lost (status `dropout`)"},
+    {"beam.aperture_deg", "(0, 180), degrees", "required in `beam`",
+     "the full cone angle"},
+    {"beam.rays", "[1, 1000]", "1",
+     "rays in the cone (1: the axis alone)"},
+    {"beam.pattern", R"(`uniform` \| `{gaussian: {width_deg}}` \| `{table: [[angle_deg, gain], ...]}`)", "`uniform`",
+     "the gain g(θ) of a ray θ off the axis"},
+    {"echo_model", R"(`window` \| `physical`)", "`window`",
+     "time of flight only: the paper's incidence window, or a returned energy against `echo_threshold`"},
+    {"echo_threshold", "[0, 1]", "0.1",
+     "a ray counts only if g(θ)·(echo strength) reaches it"},
+    {"specular_exponent", "> 0", "20",
+     "n of the physical echo's specular lobe"},
+    {"use_material", "bool", "false",
+     "reflectance only: scale the signal by the surface's IR albedo"},
+    {"lookup_table", "`[[distance_m, output, noise_fraction], ...]`", "—",
+     "`type: lookup` only: at least 2 rows, distances strictly ascending; the range defaults to the table's"},
+    {"zones", "`[nx, ny]`, each in [1, 64]", "8x8 (`multizone`, the ST parts)",
+     "`multizone` and the ST parts only: the field of view's grid of zones; a VL53L5CX/L7CX/L8CX has `[4, 4]` or `[8, 8]`"},
+    {"fov_deg", "`[h, v]`, each in (0, 170), degrees", "45 x 45 (L5CX, L8CX), 60 x 60 (L7CX)",
+     "`multizone` only: the full square field of view across (the sensor's y) and down (its z)"},
+    {"zone_rays", "1, 4, 9 or 16", "4",
+     "rays sampling each zone (a k x k grid in its cell)"},
+    {"targets", "[1, 4]", "1",
+     "targets reported per zone, nearest first (ST's NB_TARGET_PER_ZONE)"},
+    {"target_separation_m", "> 0, m", "0.6",
+     "surfaces closer in range than this merge into one target (ST: 600 mm)"},
+    {"range_table", "`[[reflectance, ambient_klux, max_range_m], ...]`", "`vl53l0x`: its datasheet's; otherwise none",
+     "laser and multizone only: the longest range by the target's IR albedo and `scene.ambient_klux`, interpolated as docs/sensors.md says; `[]` turns a part's off"},
+    {"rate_hz", "> 0, Hz", "every sample; a part with a measurement cycle: its limit",
+     "the sensor reads at the first run sample of each of its own periods; a part refuses a rate above its datasheet's limit (`hc_sr04`: 16.7 Hz, its 60 ms cycle; ST multi-zone parts: 60 Hz at 4x4, 15 Hz at 8x8)"},
+    {"latency_s", "≥ 0, s", "0",
+     "a reading is reported, and seen by a strategy, this much later"},
+    {"flight_time", "bool", "false",
+     "time of flight only: the echo is received where the moving sensor is when it returns"},
+    {"wave_speed_m_s", "> 0, m/s", "343 (ultrasonic), 299 792 458 (others)",
+     "the wave speed for `flight_time`"},
+  };
+  return keys;
+}
+
+std::vector<std::string> SensorKeyNames(const std::string& parent) {
+  std::vector<std::string> names;
+  const std::string prefix = parent.empty() ? "" : parent + ".";
+  for (const SensorKey& key : SensorKeys()) {
+    const std::string path = key.path;
+    if (!path.starts_with(prefix)) continue;
+    const std::string rest = path.substr(prefix.size());
+    const std::string name = rest.substr(0, rest.find('.'));
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
+std::string SensorKeysMarkdown() {
+  std::string table = "| key | type, unit | default | meaning |\n|---|---|---|---|\n";
+  for (const SensorKey& key : SensorKeys()) {
+    table += "| `" + std::string(key.path) + "` | " + key.type_unit + " | " + key.default_text + " | " + key.meaning + " |\n";
+  }
+  return table;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,258 @@
+// Multi-zone time of flight (sensors/multizone.h) through the CLI: each
+// zone's distance against the closed form of its rays' geometry (written
+// here, not taken from the model), targets separated in range as ST's parts
+// separate them, the parts' limits refused with their source, and VL53L5CXs
+// on the biped's shins feeding the map and the stop rule.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_helpers.h"
+
+namespace proxsim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::FreshDir;
+using testing::ReadFile;
+using testing::RunProxsim;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// An .npy array's shape and values (float64 or uint8, C order), read back.
+struct NpyArray {
+  std::vector<long> shape;
+  std::vector<double> values;
+};
+
+NpyArray LoadNpy(const fs::path& path) {
+  const std::string bytes = ReadFile(path);
+  NpyArray array;
+  EXPECT_EQ(bytes.substr(0, 6), "\x93NUMPY");
+  const std::size_t header_length =
+      static_cast<unsigned char>(bytes[8]) | (static_cast<std::size_t>(static_cast<unsigned char>(bytes[9])) << 8);
+  const std::string header = bytes.substr(10, header_length);
+  EXPECT_EQ((10 + header_length) % 64, 0u) << "the header is padded to 64 bytes";
+  const bool f8 = header.find("'<f8'") != std::string::npos;
+  const std::size_t open = header.find("'shape': (") + 10, close = header.find(')', open);
+  std::stringstream dims(header.substr(open, close - open));
+  std::string dim;
+  long count = 1;
+  while (std::getline(dims, dim, ',')) {
+    if (dim.find_first_not_of(' ') == std::string::npos) continue;
+    array.shape.push_back(std::stol(dim));
+    count *= array.shape.back();
+  }
+  const char* data = bytes.data() + 10 + header_length;
+  EXPECT_EQ(bytes.size() - 10 - header_length, static_cast<std::size_t>(count) * (f8 ? 8 : 1)) << path;
+  for (long i = 0; i < count; ++i) {
+    if (f8) {
+      double value;
+      std::memcpy(&value, data + 8 * i, 8);
+      array.values.push_back(value);
+    } else {
+      array.values.push_back(static_cast<unsigned char>(data[i]));
+    }
+  }
+  return array;
+}
+
+// Sub-ray (a, b) of zone (column, row) for an nx × ny grid over h × v degrees,
+// k × k rays per zone: the unit direction through the centre of its sub-cell
+// on the image plane x = 1 (column 0 at +y, row 0 at +z).
+struct Dir {
+  double x, y, z;
+};
+Dir ZoneRay(int nx, int ny, double h_deg, double v_deg, int k, int column, int row, int a, int b) {
+  const double tu = std::tan(h_deg * kPi / 360), tv = std::tan(v_deg * kPi / 360);
+  const double u = tu - (column + (a + 0.5) / k) * 2 * tu / nx;
+  const double v = tv - (row + (b + 0.5) / k) * 2 * tv / ny;
+  const double norm = std::sqrt(1 + u * u + v * v);
+  return {1 / norm, u / norm, v / norm};
+}
+
+fs::path RunScenario(const std::string& name, const std::string& yaml) {
+  const fs::path dir = FreshDir(name);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scenario.yaml") << yaml;
+  const auto run = RunProxsim("run " + (dir / "scenario.yaml").string() + " --no-report --out " + (dir / "out").string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return dir / "out";
+}
+
+// An 8x8 sensor (4 rays per zone, no noise) at the origin, facing a plane
+// through (1, 0, 0) turned 20° about z: ray d meets it at t = cos20/(cos20·dx + sin20·dy);
+// a zone reads the mean of its rays' t. With max_incidence_deg 30, a ray counts
+// when its incidence α, cos α = |n·d|, is at most 30°; a zone with none reads
+// status 8 (signal too low), the others 5.
+TEST(MultizoneTest, EachZoneOfAnEightByEightReadsItsRaysMeanDistanceToATiltedPlane) {
+  const fs::path out = RunScenario("multizone_plane", R"(proxsim: 1
+duration_s: 0.1
+rate_hz: 10
+scene:
+  objects:
+    - {name: wall, plane: {}, pose: {xyz_m: [1, 0, 0], rpy_deg: [0, -90, 20]}}
+sensors:
+  - {name: grid, type: multizone, zones: [8, 8], fov_deg: [45, 45], zone_rays: 4, max_incidence_deg: 30,
+     pose: {xyz_m: [0, 0, 1]}}
+)");
+  const NpyArray d = LoadNpy(out / "zones" / "grid" / "d_m.npy");
+  const NpyArray status = LoadNpy(out / "zones" / "grid" / "status.npy");
+  const NpyArray count = LoadNpy(out / "zones" / "grid" / "target_count.npy");
+  ASSERT_EQ(d.shape, (std::vector<long>{1, 64, 1}));
+  ASSERT_EQ(count.shape, (std::vector<long>{1, 64}));
+  const double c = std::cos(20 * kPi / 180), s = std::sin(20 * kPi / 180);
+  int valid = 0, too_low = 0;
+  for (int zone = 0; zone < 64; ++zone) {
+    double sum_m = 0;
+    int counted = 0;
+    for (int b = 0; b < 2; ++b) {
+      for (int a = 0; a < 2; ++a) {
+        const Dir r = ZoneRay(8, 8, 45, 45, 2, zone % 8, zone / 8, a, b);
+        const double cos_alpha = c * r.x + s * r.y;  // |n·d|, n = −(cos20, sin20, 0)
+        if (std::acos(cos_alpha) * 180 / kPi > 30) continue;
+        sum_m += c / cos_alpha;
+        ++counted;
+      }
+    }
+    if (counted > 0) {
+      ++valid;
+      EXPECT_EQ(status.values[zone], 5) << "zone " << zone;
+      EXPECT_EQ(count.values[zone], 1) << "zone " << zone;
+      EXPECT_NEAR(d.values[zone], sum_m / counted, 1e-5) << "zone " << zone;
+    } else {
+      ++too_low;
+      EXPECT_EQ(status.values[zone], 8) << "zone " << zone;
+      EXPECT_EQ(count.values[zone], 0) << "zone " << zone;
+      EXPECT_EQ(d.values[zone], 0.0) << "zone " << zone;
+    }
+  }
+  // the tilt leaves both kinds of zone (the left edge of the grid is beyond 30°)
+  EXPECT_GT(valid, 0);
+  EXPECT_GT(too_low, 0);
+  // the row of readings.csv is the nearest zone's target
+  const auto csv = testing::ReadCsv(out / "readings.csv");
+  ASSERT_EQ(csv.rows.size(), 1u);
+}
+
+// One zone of 4x4 rays: the left half sees a box's face at x = 0.8 m, the
+// right half a wall at x = 2 m: two targets, nearest first, each the mean of
+// its rays' d = x·|(1, u, v)|. With one target only the nearer is reported; a
+// box 0.4 m before the wall (< ST's 600 mm) merges with it into one target.
+std::string BoxBeforeWall(double box_front_x_m, int targets) {
+  return R"(proxsim: 1
+duration_s: 0.1
+rate_hz: 10
+scene:
+  objects:
+    - {name: wall, plane: {}, pose: {xyz_m: [2, 0, 0], rpy_deg: [0, -90, 0]}}
+    - {name: box, box: {size_m: [0.1, 2, 2]}, pose: {xyz_m: [)" +
+         std::to_string(box_front_x_m + 0.05) + R"(, 1, 1], rpy_deg: [0, 0, 0]}}
+sensors:
+  - {name: zone, type: multizone, zones: [1, 1], fov_deg: [20, 20], zone_rays: 16, pose: {xyz_m: [0, 0, 1]}, targets: )" +
+         std::to_string(targets) + "}\n";
+}
+
+double MeanDistance(double x_m, bool left) {
+  double sum = 0;
+  for (int b = 0; b < 4; ++b) {
+    for (int a = 0; a < 4; ++a) {
+      const Dir r = ZoneRay(1, 1, 20, 20, 4, 0, 0, a, b);
+      if ((r.y > 0) == left) sum += x_m / r.x;
+    }
+  }
+  return sum / 8;
+}
+
+TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
+  const fs::path out = RunScenario("multizone_two_targets", BoxBeforeWall(0.8, 2));
+  const NpyArray d = LoadNpy(out / "zones" / "zone" / "d_m.npy");
+  const NpyArray status = LoadNpy(out / "zones" / "zone" / "status.npy");
+  const NpyArray count = LoadNpy(out / "zones" / "zone" / "target_count.npy");
+  ASSERT_EQ(d.shape, (std::vector<long>{1, 1, 2}));
+  EXPECT_EQ(count.values[0], 2);
+  EXPECT_EQ(status.values[0], 5);
+  EXPECT_EQ(status.values[1], 5);
+  EXPECT_NEAR(d.values[0], MeanDistance(0.8, true), 1e-5);
+  EXPECT_NEAR(d.values[1], MeanDistance(2.0, false), 1e-5);
+
+  const fs::path one = RunScenario("multizone_one_target", BoxBeforeWall(0.8, 1));
+  const NpyArray d1 = LoadNpy(one / "zones" / "zone" / "d_m.npy");
+  ASSERT_EQ(d1.shape, (std::vector<long>{1, 1, 1}));
+  EXPECT_NEAR(d1.values[0], MeanDistance(0.8, true), 1e-5);
+
+  const fs::path merged = RunScenario("multizone_merged", BoxBeforeWall(1.6, 2));
+  const NpyArray dm = LoadNpy(merged / "zones" / "zone" / "d_m.npy");
+  const NpyArray cm = LoadNpy(merged / "zones" / "zone" / "target_count.npy");
+  EXPECT_EQ(cm.values[0], 1);
+  EXPECT_NEAR(dm.values[0], 0.5 * (MeanDistance(1.6, true) + MeanDistance(2.0, false)), 1e-5);
+  EXPECT_EQ(LoadNpy(merged / "zones" / "zone" / "status.npy").values[1], 255);
+
+  // columns.json describes the arrays and names the codes
+  const auto columns = nlohmann::json::parse(ReadFile(out / "zones" / "columns.json"));
+  EXPECT_EQ(columns["sensors"]["zone"]["targets"], 2);
+  EXPECT_EQ(columns["status_codes"]["5"], "range_valid");
+  EXPECT_EQ(columns["status_codes"]["255"], "no_target_detected");
+}
+
+TEST(MultizoneTest, APartsLimitsAreRefusedNamingTheLimitAndItsSource) {
+  const fs::path dir = FreshDir("multizone_limits");
+  fs::create_directories(dir);
+  const auto refused = [&](const std::string& name, const std::string& sensor) {
+    std::ofstream(dir / name) << "proxsim: 1\nsensors:\n  - " << sensor << "\n";
+    return RunProxsim("validate " + (dir / name).string());
+  };
+  const auto zones = refused("zones.yaml", "{name: a, type: vl53l5cx, zones: [6, 6]}");
+  EXPECT_EQ(zones.exit_code, 2) << zones.output;
+  EXPECT_NE(zones.output.find("expected [4, 4] or [8, 8] for a vl53l5cx (ST UM2884"), std::string::npos) << zones.output;
+
+  const auto rate = refused("rate.yaml", "{name: a, type: vl53l7cx, rate_hz: 30}");
+  EXPECT_EQ(rate.exit_code, 2) << rate.output;
+  EXPECT_NE(rate.output.find("at most 15 Hz for a vl53l7cx at 8x8 zones (ST STSW-IMG036"), std::string::npos)
+      << rate.output;
+  const auto fast_4x4 = refused("rate4.yaml", "{name: a, type: vl53l5cx, zones: [4, 4], rate_hz: 60}");
+  EXPECT_EQ(fast_4x4.exit_code, 0) << fast_4x4.output;
+
+  const auto targets = refused("targets.yaml", "{name: a, type: vl53l8cx, targets: 5, zone_rays: 3}");
+  EXPECT_EQ(targets.exit_code, 2) << targets.output;
+  EXPECT_NE(targets.output.find("targets: expected targets per zone in [1, 4]"), std::string::npos) << targets.output;
+  EXPECT_NE(targets.output.find("zone_rays: expected rays per zone k*k"), std::string::npos) << targets.output;
+
+  const auto elsewhere = refused("laser.yaml", "{name: a, type: laser, zones: [4, 4]}");
+  EXPECT_EQ(elsewhere.exit_code, 2) << elsewhere.output;
+  EXPECT_NE(elsewhere.output.find("zones: expected only with type multizone"), std::string::npos) << elsewhere.output;
+}
+
+// The shipped scenario: a VL53L5CX on each shin, at the part's 15 Hz; the
+// zones reach the map (far more cells than the paper's single rays) and the
+// stop rule stops the robot before the obstacle on a zone's point.
+TEST(MultizoneTest, VL53L5CXsOnTheShinsFeedTheMapAndTheStopRule) {
+  const fs::path out = FreshDir("multizone_shins");
+  const auto run = RunProxsim("run " + std::string(PROXSIM_SOURCE_DIR) +
+                              "/data/scenarios/multizone_shins.yaml --no-report --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto summary = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  for (const char* name : {"tof_left_shin", "tof_right_shin"}) {
+    const NpyArray t = LoadNpy(out / "zones" / name / "t_s.npy");
+    const NpyArray d = LoadNpy(out / "zones" / name / "d_m.npy");
+    // 15 Hz within a 100 Hz run of 5 s: the first run sample of each of its periods
+    EXPECT_EQ(t.shape[0], 75);
+    EXPECT_EQ(d.shape, (std::vector<long>{75, 64, 1}));
+    EXPECT_EQ(summary["sensors"][name]["samples"], 75);
+  }
+  EXPECT_EQ(summary["robot"]["stopped"], true);
+  const std::string detail = summary["robot"]["events"][0]["detail"];
+  EXPECT_EQ(summary["robot"]["events"][0]["event"], "obstacle_ahead");
+  EXPECT_EQ(detail.rfind("tof_", 0), 0u) << detail;
+  EXPECT_GT(summary["terrain"]["cells_measured"].get<int>(), 1000);
+  EXPECT_NE(std::find(summary["outputs"].begin(), summary["outputs"].end(), "zones/"), summary["outputs"].end());
+}
+
+}  // namespace
+}  // namespace proxsim
