@@ -23,6 +23,7 @@ struct Ray {
   Vec3f direction_W = Vec3f::UnitX();  ///< unit length
   float max_range_m = 1.0f;            ///< > 0
   bool see_robot = true;               ///< false: the robot's links are transparent
+  bool see_moving = true;              ///< false: the scene's moving objects are transparent
 };
 
 /// The first hit of a ray, or a miss.
@@ -41,7 +42,11 @@ struct BodyShape {
   std::int32_t object_id = 0;    ///< reported in Hit::object_id; >= 0
 };
 
-enum class BodyKind { kWorld, kRobot };
+/// kWorld: the static scene (built once, never moved in practice); kMoving:
+/// a scene object that moves every sample (an instance whose transform
+/// changes); kRobot: a robot link. Rays see all three; DistanceToWorld and
+/// NearestToWorld measure kWorld and kMoving bodies.
+enum class BodyKind { kWorld, kRobot, kMoving };
 
 class RayCaster {
  public:

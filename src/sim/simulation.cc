@@ -180,6 +180,13 @@ const SampleFrame& Simulation::Step() {
   frame_.sample = next_sample_++;
   frame_.t_s = static_cast<double>(frame_.sample) / scenario_.rate_hz;
   RobotInScene* robot = world_->robot();
+  // the scene's moving objects where they are at this sample's time
+  if (world_->has_moving_objects()) {
+    world_->MoveObjects(frame_.t_s);
+    // the clearance's remembered bounds hold only while the world stays put
+    if (robot) robot->ForgetClearanceBounds();
+    if (!locomotion_) world_->caster().Commit();
+  }
   if (locomotion_) {
     // every link at its pose of this very sample time
     state_ = locomotion_->Advance(frame_.t_s);

@@ -26,12 +26,19 @@ std::string UnknownLinkProblem(const Scenario& scenario, const SensorConfig& sen
 }  // namespace
 
 World::World(const Scenario& scenario, const RobotModel* robot_model, int threads) {
-  // the static world: one body, one shape per scene object, ids = scene order
+  // the static world: one body, one shape per scene object, ids = scene order;
+  // each moving object a body of its own, its instance moved every sample
   std::vector<BodyShape> world_shapes;
   world_shapes.reserve(scenario.scene.objects.size());
   for (const SceneObject& object : scenario.scene.objects) {
-    world_shapes.push_back({object.shape, object.X_WO, static_cast<std::int32_t>(object_names_.size())});
+    const auto id = static_cast<std::int32_t>(object_names_.size());
     object_names_.push_back(object.name);
+    if (!object.motion) {
+      world_shapes.push_back({object.shape, object.X_WO, id});
+      continue;
+    }
+    const int body = caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO);
+    moving_.push_back({&*object.motion, body});
   }
   caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
   first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
@@ -83,5 +90,9 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
 }
 
 World::~World() = default;
+
+void World::MoveObjects(double t_s) {
+  for (const MovingBody& moving : moving_) caster_.SetBodyPose(moving.body, MotionPoseAt(*moving.motion, t_s));
+}
 
 }  // namespace proxsim

@@ -2,8 +2,9 @@
 // objects and the robot's links as bodies in the ray caster (with their
 // acceleration structures), the object table that names what a ray hits, the
 // link each sensor is fixed on, and the beams' rays in their sensor frames.
-// An episode (sim/simulation.h) moves the robot's bodies; nothing here is
-// rebuilt between episodes.
+// An episode (sim/simulation.h) moves the robot's bodies and the scene's
+// moving objects (instances whose transforms change: no BVH is rebuilt);
+// nothing here is rebuilt between episodes.
 //
 // Frames: W world, L a link, S a sensor.
 #pragma once
@@ -54,6 +55,11 @@ class World {
   RobotInScene* robot() { return robot_.get(); }
   const RobotInScene* robot() const { return robot_.get(); }
 
+  /// Puts every moving object where it is at t_s; takes effect at the caster's next Commit().
+  void MoveObjects(double t_s);
+  /// Whether the scene has moving objects (they are bodies of their own in caster()).
+  bool has_moving_objects() const { return !moving_.empty(); }
+
   /// The link sensor i is fixed on; -1 for world.
   int sensor_link(std::size_t sensor) const { return sensor_link_[sensor]; }
   /// Sensor i owns rays [ray_begin(i), ray_begin(i + 1)) of every per-ray buffer.
@@ -73,6 +79,11 @@ class World {
   std::vector<int> sensor_link_;
   std::vector<std::size_t> ray_begin_;
   std::vector<BeamRay> beam_rays_;
+  struct MovingBody {
+    const Motion* motion;  // the scenario's (it outlives the world)
+    int body;              // in caster_
+  };
+  std::vector<MovingBody> moving_;
 };
 
 }  // namespace proxsim
