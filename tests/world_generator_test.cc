@@ -70,7 +70,7 @@ bool CorridorExists(const Scenario& scenario, const Vec2& start, const Vec2& goa
   const int nx = static_cast<int>((hi_all.x() - lo_all.x()) / kCell) + 1;
   const int ny = static_cast<int>((hi_all.y() - lo_all.y()) / kCell) + 1;
   std::vector<char> blocked(static_cast<std::size_t>(nx) * ny, 0);
-  const auto centre = [&](int ix, int iy) { return lo_all + kCell * Vec2(ix + 0.5, iy + 0.5); };
+  const auto centre = [&](int ix, int iy) -> Vec2 { return lo_all + kCell * Vec2(ix + 0.5, iy + 0.5); };
   for (const auto& [lo, hi] : rects) {
     const int ix0 = std::max(0, static_cast<int>((lo.x() - half_width - lo_all.x()) / kCell) - 1);
     const int ix1 = std::min(nx - 1, static_cast<int>((hi.x() + half_width - lo_all.x()) / kCell) + 1);

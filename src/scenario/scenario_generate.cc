@@ -71,7 +71,7 @@ GenerateConfig ReadGenerate(YamlReader& reader, const Field& field) {
   CourseConfig& c = config.course;
   c.length_m = reader.Number((*map)["length_m"], NumberIn(2, 1000, "m")).value_or(c.length_m);
   c.width_m = reader.Number((*map)["width_m"], NumberIn(0.5, 100, "m")).value_or(c.width_m);
-  if (const auto items = reader.List((*map)["elements"], "a list of families (" + std::string("stairs_up, stairs_down, hole, pit, gap, step, boxes, ramp") + ")")) {
+  if (const auto items = !map->Has("elements") ? std::nullopt : reader.List((*map)["elements"], "a list of families (" + std::string("stairs_up, stairs_down, hole, pit, gap, step, boxes, ramp") + ")")) {
     const auto& names = CourseFamilyNames();
     for (const Field& item : *items) {
       const auto name = reader.String(item);

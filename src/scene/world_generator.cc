@@ -57,8 +57,9 @@ std::vector<std::string> GenerateProblems(const GenerateConfig& config) {
     if (!(c.length_m >= 2 && c.length_m <= 1000)) problems.push_back("length_m: expected a length in [2, 1000] m");
     if (!(c.width_m >= 0.5 && c.width_m <= 100)) problems.push_back("width_m: expected a width in [0.5, 100] m");
     range_problem("stairs.rise_m", c.stairs_rise_m, 0, true, "rises > 0 m");
-    std::snprintf(text, sizeof text, "treads at least a foot long (%.2f m)", kFootLength_m);
-    range_problem("stairs.tread_m", c.stairs_tread_m, kFootLength_m, false, text);
+    char foot[64];
+    std::snprintf(foot, sizeof foot, "treads at least a foot long (%.2f m)", kFootLength_m);
+    range_problem("stairs.tread_m", c.stairs_tread_m, kFootLength_m, false, foot);
     range_problem("stairs.steps", c.stairs_steps, 1, false, "at least 1 step");
     range_problem("hole.width_m", c.hole_width_m, 0, true, "widths > 0 m");
     range_problem("hole.depth_m", c.hole_depth_m, 0, true, "depths > 0 m (a hole goes down)");
@@ -90,10 +91,11 @@ std::vector<std::string> GenerateProblems(const GenerateConfig& config) {
       range_problem(key, range, 0, false, "counts >= 0");
       if (std::max(range.easy, range.hard) > 200) problems.push_back(std::string(key) + ": at most 200");
     }
-    std::snprintf(text, sizeof text, "heights in [%g, %g] m", kPersonMinHeight_m, kPersonMaxHeight_m);
-    range_problem("people_height_m", r.person_height_m, kPersonMinHeight_m, false, text);
+    char heights[64];
+    std::snprintf(heights, sizeof heights, "heights in [%g, %g] m", kPersonMinHeight_m, kPersonMaxHeight_m);
+    range_problem("people_height_m", r.person_height_m, kPersonMinHeight_m, false, heights);
     const double tallest_m = std::max(r.person_height_m.easy, r.person_height_m.hard);
-    if (tallest_m > kPersonMaxHeight_m) problems.push_back(std::string("people_height_m: expected ") + text);
+    if (tallest_m > kPersonMaxHeight_m) problems.push_back(std::string("people_height_m: expected ") + heights);
     if (tallest_m >= r.height_m) {
       std::snprintf(text, sizeof text, "people_height_m: a person %g m tall does not fit in a room %g m high", tallest_m,
                     r.height_m);

@@ -53,6 +53,11 @@ class ContactFinder {
   ContactFinder(RobotInScene& robot, const RayCaster& ground, std::span<const std::int32_t> ground_ids,
                 std::span<const FootFrame> feet);
 
+  /// The scene's moving objects: `moving` holds them alone (their ids as in
+  /// the robot's caster); they are measured there every sample, and left out
+  /// of the robot's caster's queries, whose remembered bounds then stay valid.
+  void SetMoving(const RayCaster* moving, std::span<const std::int32_t> moving_ids);
+
   /// The contacts at the pose the robot was last placed at, one per (link,
   /// object or other link), the deepest sample of each.
   /// `clearance_to_objects_m`: the robot's clearance to every object but the
@@ -91,6 +96,8 @@ class ContactFinder {
   std::map<int, LegLink> leg_links_;
   const RayCaster& ground_;                   // the ground alone
   std::vector<std::int32_t> ground_ids_;      // objects the soles may touch
+  std::vector<std::int32_t> still_exclude_ids_;  // left out of the robot's caster: the ground and the moving objects
+  const RayCaster* moving_ = nullptr;         // the moving objects alone, or null
   RobotInScene::SampleMask not_sole_;          // the samples that may not touch the ground
   bool has_feet_ = false;                      // without feet (a replayed trajectory) the ground is not checked
   std::vector<std::pair<int, int>> leg_pairs_;  // (left leg link, right leg link)

@@ -3,9 +3,26 @@
 #include "core/input_error.h"
 #include "core/nearest_key.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace proxsim {
 
 namespace {
+
+// The radius of a sphere about a shape's origin that holds it (a plane: unbounded).
+double BoundingRadius_m(const Shape& shape) {
+  if (const auto* box = std::get_if<Box>(&shape)) return 0.5 * box->size_m.norm();
+  if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->radius_m;
+  if (const auto* cylinder = std::get_if<Cylinder>(&shape)) return std::hypot(cylinder->radius_m, 0.5 * cylinder->length_m);
+  if (const auto* mesh = std::get_if<Mesh>(&shape)) {
+    double radius_m = 0;
+    for (const Vec3f& v : mesh->data->vertices_O) radius_m = std::max(radius_m, static_cast<double>(v.norm()));
+    return radius_m;
+  }
+  return std::numeric_limits<double>::infinity();
+}
 
 // "scenario.yaml:12: sensors.NAME.link: unknown link ..." with the nearest name suggested
 std::string UnknownLinkProblem(const Scenario& scenario, const SensorConfig& sensor, const RobotModel* model) {
@@ -38,7 +55,10 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
       continue;
     }
     const int body = caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO);
-    moving_.push_back({&*object.motion, body});
+    moving_.push_back({&*object.motion, body, BoundingRadius_m(object.shape), object.X_WO});
+    moving_caster_body_.push_back(
+        moving_caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO));
+    moving_ids_.push_back(id);
   }
   caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
   first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
@@ -58,6 +78,9 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   }
   ground_caster_.AddBody(std::move(ground_shapes), BodyKind::kWorld);
   ground_caster_.Commit();
+  moving_caster_.Commit();
+  still_exclude_ids_ = ground_ids_;
+  still_exclude_ids_.insert(still_exclude_ids_.end(), moving_ids_.begin(), moving_ids_.end());
 
   // the robot: its links are bodies too, with object ids after the scene's
   if (robot_model != nullptr) {
@@ -78,7 +101,7 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   caster_.Commit();
   // the clearance truth's point-query structure over the scene without the
   // ground is built here with the other structures, not at the first sample
-  if (robot_) caster_.DistanceToWorld(Vec3::Zero(), ground_ids_);
+  if (robot_) caster_.DistanceToWorld(Vec3::Zero(), still_exclude_ids_);
 
   // the beams, sensor after sensor: one ray for the paper's sensors
   ray_begin_.push_back(0);
@@ -91,8 +114,20 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
 
 World::~World() = default;
 
-void World::MoveObjects(double t_s) {
-  for (const MovingBody& moving : moving_) caster_.SetBodyPose(moving.body, MotionPoseAt(*moving.motion, t_s));
+double World::MoveObjects(double t_s) {
+  double moved_m = 0;
+  for (std::size_t i = 0; i < moving_.size(); ++i) {
+    MovingBody& moving = moving_[i];
+    const Pose X_WO = MotionPoseAt(*moving.motion, t_s);
+    // a point at r from the origin moves by the origin's step plus r times the turn
+    const double turn_rad = Eigen::AngleAxisd(moving.X_WO.linear().transpose() * X_WO.linear()).angle();
+    moved_m = std::max(moved_m, (X_WO.translation() - moving.X_WO.translation()).norm() + turn_rad * moving.radius_m);
+    moving.X_WO = X_WO;
+    caster_.SetBodyPose(moving.body, X_WO);
+    moving_caster_.SetBodyPose(moving_caster_body_[i], X_WO);
+  }
+  if (!moving_.empty()) moving_caster_.Commit();
+  return moved_m;
 }
 
 }  // namespace proxsim

@@ -55,10 +55,19 @@ class World {
   RobotInScene* robot() { return robot_.get(); }
   const RobotInScene* robot() const { return robot_.get(); }
 
-  /// Puts every moving object where it is at t_s; takes effect at the caster's next Commit().
-  void MoveObjects(double t_s);
+  /// Puts every moving object where it is at t_s (takes effect at the
+  /// caster's next Commit()); returns how far any of their points moved at
+  /// most since the last call (a bound: translation plus turn × radius).
+  double MoveObjects(double t_s);
   /// Whether the scene has moving objects (they are bodies of their own in caster()).
   bool has_moving_objects() const { return !moving_.empty(); }
+  /// The moving objects alone, in a caster of their own (object ids as in
+  /// caster()), for the robot's clearance and contacts; null without any.
+  const RayCaster* moving_caster() const { return moving_.empty() ? nullptr : &moving_caster_; }
+  const std::vector<std::int32_t>& moving_ids() const { return moving_ids_; }
+  /// What the clearance to the still scene leaves out: the ground, and the
+  /// moving objects (measured in moving_caster()).
+  std::span<const std::int32_t> still_exclude_ids() const { return still_exclude_ids_; }
 
   /// The link sensor i is fixed on; -1 for world.
   int sensor_link(std::size_t sensor) const { return sensor_link_[sensor]; }
@@ -82,8 +91,14 @@ class World {
   struct MovingBody {
     const Motion* motion;  // the scenario's (it outlives the world)
     int body;              // in caster_
+    double radius_m;       // of a sphere about the object's origin holding it
+    Pose X_WO;             // where it was last put
   };
   std::vector<MovingBody> moving_;
+  RayCaster moving_caster_;
+  std::vector<int> moving_caster_body_;  // each moving object's body in moving_caster_
+  std::vector<std::int32_t> moving_ids_;
+  std::vector<std::int32_t> still_exclude_ids_;
 };
 
 }  // namespace proxsim
