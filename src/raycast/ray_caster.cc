@@ -271,4 +271,6 @@ void RayCaster::Commit() {
 
 std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }
 
+bool RayCaster::has_moving() const { return impl_->has_moving; }
+
 }  // namespace proxsim

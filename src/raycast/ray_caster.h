@@ -89,6 +89,9 @@ class RayCaster {
   NearestSurface NearestToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
                                 double below_m = std::numeric_limits<double>::infinity()) const;
 
+  /// Whether any body is a kMoving one.
+  bool has_moving() const;
+
   /// Number of triangles held (meshes and boxes), for reports.
   std::size_t triangle_count() const;
 
