@@ -19,6 +19,7 @@ struct BenchOptions {
   bool study = true;      ///< placement studies: runs per second per core, a 1000-run study, 2 MPI ranks against 1
   bool terrain = true;    ///< planning footsteps on the stairs course against a paper-like sample
   bool map = true;        ///< the terrain map's cost per sample (bench/map_bench.h)
+  bool worlds = true;     ///< moving objects' cost per sample, generating worlds (bench/worlds_bench.h)
 };
 
 /// Runs the whole suite and returns its figures.

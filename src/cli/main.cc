@@ -281,9 +281,9 @@ int main(int argc, char** argv) {
   std::string bench_only = "all";
   bench->add_option("--only", bench_only,
                     "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped), "
-                    "study (placement studies, MPI), terrain (planning footsteps on the stairs course) or map "
-                    "(the terrain map's cost per sample)")
-      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain", "map"}))
+                    "study (placement studies, MPI), terrain (planning footsteps on the stairs course), map "
+                    "(the terrain map's cost per sample) or worlds (moving objects, generating worlds)")
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain", "map", "worlds"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -356,7 +356,8 @@ int main(int argc, char** argv) {
            .robots = bench_only == "all" || bench_only == "robots",
            .study = bench_only == "all" || bench_only == "study",
            .terrain = bench_only == "all" || bench_only == "terrain",
-           .map = bench_only == "all" || bench_only == "map"});
+           .map = bench_only == "all" || bench_only == "map",
+           .worlds = bench_only == "all" || bench_only == "worlds"});
       const bool whole = bench_only == "all";
       std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
                  stdout);

@@ -45,7 +45,9 @@ struct BodyShape {
 /// kWorld: the static scene (built once, never moved in practice); kMoving:
 /// a scene object that moves every sample (an instance whose transform
 /// changes); kRobot: a robot link. Rays see all three; DistanceToWorld and
-/// NearestToWorld measure kWorld and kMoving bodies.
+/// NearestToWorld measure the kWorld bodies only (a caller who wants the
+/// distance to moving things keeps them as kWorld bodies of a caster of
+/// their own, moved with SetBodyPose).
 enum class BodyKind { kWorld, kRobot, kMoving };
 
 class RayCaster {
@@ -58,7 +60,7 @@ class RayCaster {
   /// Adds a rigid body at pose X_WB; returns its index for SetBodyPose.
   int AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose& X_WB = Pose::Identity());
 
-  /// Moves a body; takes effect at the next Commit().
+  /// Moves a body: at once for DistanceToWorld and NearestToWorld, for rays at the next Commit().
   void SetBodyPose(int body, const Pose& X_WB);
 
   /// Builds or refits the acceleration structures; call after adding or moving bodies.

@@ -128,7 +128,7 @@ RayCaster::NearestSurface RayCaster::NearestToWorld(const Vec3& p_W, std::span<c
   double& best_m = nearest.distance_m;
   for (const auto& body_ptr : impl_->bodies) {
     const Body& body = *body_ptr;
-    if (body.kind == BodyKind::kRobot) continue;
+    if (body.kind != BodyKind::kWorld) continue;
     const Vec3 p_B = body.X_WB.inverse() * p_W;
 
     // boxes and analytic shapes: exact closed forms in the shape frame

@@ -84,7 +84,7 @@ void Keep(std::map<std::tuple<int, std::int32_t, int>, Contact>& kept, const Con
 
 ContactFinder::ContactFinder(RobotInScene& robot, const RayCaster& ground, std::span<const std::int32_t> ground_ids,
                              std::span<const FootFrame> feet)
-    : robot_(robot), ground_(ground), ground_ids_(ground_ids.begin(), ground_ids.end()), still_exclude_ids_(ground_ids_) {
+    : robot_(robot), ground_(ground), ground_ids_(ground_ids.begin(), ground_ids.end()) {
   // against the ground every sample counts but a foot's sole band
   const RobotModel& model = robot_.model();
   not_sole_.resize(model.link_count());
@@ -133,12 +133,6 @@ std::vector<int> ContactFinder::LegLinks(int foot_link) const {
   return links;
 }
 
-void ContactFinder::SetMoving(const RayCaster* moving, std::span<const std::int32_t> moving_ids) {
-  moving_ = moving;
-  still_exclude_ids_ = ground_ids_;
-  still_exclude_ids_.insert(still_exclude_ids_.end(), moving_ids.begin(), moving_ids.end());
-}
-
 std::vector<Contact> ContactFinder::Find(double clearance_to_objects_m) {
   std::map<std::tuple<int, std::int32_t, int>, Contact> kept;
   const auto keep_near = [&](std::span<const std::int32_t> exclude, const RobotInScene::SampleMask* mask,
@@ -149,7 +143,7 @@ std::vector<Contact> ContactFinder::Find(double clearance_to_objects_m) {
       Keep(kept, Contact{near.link, near.nearest.object_id, -1, near.nearest.depth_m, near.p_W});
   };
   // obstacles, furniture: any sample, unless the clearance already keeps them apart
-  if (clearance_to_objects_m <= kContactTolerance_m) keep_near(still_exclude_ids_, nullptr, nullptr);
+  if (clearance_to_objects_m <= kContactTolerance_m) keep_near(ground_ids_, nullptr, nullptr);
   // the moving objects, in their own caster
   if (moving_) keep_near({}, nullptr, moving_);
   // the ground (its caster alone): anything but a sole, when the feet are known (not for a replayed trajectory)

@@ -54,9 +54,9 @@ class ContactFinder {
                 std::span<const FootFrame> feet);
 
   /// The scene's moving objects: `moving` holds them alone (their ids as in
-  /// the robot's caster); they are measured there every sample, and left out
-  /// of the robot's caster's queries, whose remembered bounds then stay valid.
-  void SetMoving(const RayCaster* moving, std::span<const std::int32_t> moving_ids);
+  /// the robot's caster, whose distances measure the still scene only); they
+  /// are measured there every sample. Null: none.
+  void SetMoving(const RayCaster* moving) { moving_ = moving; }
 
   /// The contacts at the pose the robot was last placed at, one per (link,
   /// object or other link), the deepest sample of each.
@@ -96,7 +96,6 @@ class ContactFinder {
   std::map<int, LegLink> leg_links_;
   const RayCaster& ground_;                   // the ground alone
   std::vector<std::int32_t> ground_ids_;      // objects the soles may touch
-  std::vector<std::int32_t> still_exclude_ids_;  // left out of the robot's caster: the ground and the moving objects
   const RayCaster* moving_ = nullptr;         // the moving objects alone, or null
   RobotInScene::SampleMask not_sole_;          // the samples that may not touch the ground
   bool has_feet_ = false;                      // without feet (a replayed trajectory) the ground is not checked

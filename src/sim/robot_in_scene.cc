@@ -128,9 +128,10 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
     // no sample has moved farther than the link's travel since its bound was taken: skip it when it cannot win
     const double travel_m = MaxTravel_m(bounds.X_WL_ref, X_WL, samples.center_L, samples.radius_m);
     if (bounds.link_lower_m - travel_m - kBoundSlack_m >= best_m) continue;
-    // nothing remembered (a first query, or bounds forgotten because the
-    // world moved): the link's bounding sphere first, one capped query
-    if (bounds.link_lower_m == -std::numeric_limits<double>::infinity()) {
+    // the link's bounding sphere first, one capped query, before its samples:
+    // nothing may be remembered (a first query), or the bounds may have
+    // dropped because the world moved (an object turning on its path)
+    {
       const double reach_m = samples.radius_m + best_m;
       const double centre_m = world.DistanceToWorld(X_WL * samples.center_L, exclude_object_ids, reach_m);
       if (centre_m >= reach_m) {

@@ -114,7 +114,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     feet_ = locomotion_->Feet();
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
     contacts_ = std::make_unique<ContactFinder>(*world_->robot(), world_->ground_caster(), world_->ground_ids(), feet_);
-    contacts_->SetMoving(world_->moving_caster(), world_->moving_ids());
+    contacts_->SetMoving(world_->moving_caster());
     if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
     if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
       goal_m_ = scenario_.robot->waypoints_m.back();
@@ -221,7 +221,7 @@ const SampleFrame& Simulation::Step() {
                    // contact once the minimum is below it (a touch does not make every later
                    // sample search for contacts)
                    const double cap_m = std::max(outcome_.min_clearance_m, kContactTolerance_m);
-                   const double still_m = robot->ClearanceTo(world_->still_exclude_ids(), cap_m);
+                   const double still_m = robot->ClearanceTo(world_->ground_ids(), cap_m);
                    clearance_m = still_m;
                    if (const RayCaster* moving = world_->moving_caster())
                      clearance_m = std::min(clearance_m, robot->ClearanceTo({}, cap_m, nullptr, moving));

@@ -56,9 +56,9 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
     }
     const int body = caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO);
     moving_.push_back({&*object.motion, body, BoundingRadius_m(object.shape), object.X_WO});
+    // (world bodies there: that caster is for distances, which measure world bodies)
     moving_caster_body_.push_back(
-        moving_caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO));
-    moving_ids_.push_back(id);
+        moving_caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kWorld, object.X_WO));
   }
   caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
   first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
@@ -79,8 +79,6 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   ground_caster_.AddBody(std::move(ground_shapes), BodyKind::kWorld);
   ground_caster_.Commit();
   moving_caster_.Commit();
-  still_exclude_ids_ = ground_ids_;
-  still_exclude_ids_.insert(still_exclude_ids_.end(), moving_ids_.begin(), moving_ids_.end());
 
   // the robot: its links are bodies too, with object ids after the scene's
   if (robot_model != nullptr) {
@@ -101,7 +99,7 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   caster_.Commit();
   // the clearance truth's point-query structure over the scene without the
   // ground is built here with the other structures, not at the first sample
-  if (robot_) caster_.DistanceToWorld(Vec3::Zero(), still_exclude_ids_);
+  if (robot_) caster_.DistanceToWorld(Vec3::Zero(), ground_ids_);
 
   // the beams, sensor after sensor: one ray for the paper's sensors
   ray_begin_.push_back(0);
@@ -126,7 +124,8 @@ double World::MoveObjects(double t_s) {
     caster_.SetBodyPose(moving.body, X_WO);
     moving_caster_.SetBodyPose(moving_caster_body_[i], X_WO);
   }
-  if (!moving_.empty()) moving_caster_.Commit();
+  // (moving_caster_ only answers distances, which read the bodies' poses as
+  // set: its top-level scene, for rays, is not rebuilt every sample)
   return moved_m;
 }
 

@@ -62,12 +62,10 @@ class World {
   /// Whether the scene has moving objects (they are bodies of their own in caster()).
   bool has_moving_objects() const { return !moving_.empty(); }
   /// The moving objects alone, in a caster of their own (object ids as in
-  /// caster()), for the robot's clearance and contacts; null without any.
+  /// caster()), for the robot's clearance and contacts (caster()'s distances
+  /// measure the still scene only); null without any.
   const RayCaster* moving_caster() const { return moving_.empty() ? nullptr : &moving_caster_; }
-  const std::vector<std::int32_t>& moving_ids() const { return moving_ids_; }
-  /// What the clearance to the still scene leaves out: the ground, and the
-  /// moving objects (measured in moving_caster()).
-  std::span<const std::int32_t> still_exclude_ids() const { return still_exclude_ids_; }
+
 
   /// The link sensor i is fixed on; -1 for world.
   int sensor_link(std::size_t sensor) const { return sensor_link_[sensor]; }
@@ -97,8 +95,6 @@ class World {
   std::vector<MovingBody> moving_;
   RayCaster moving_caster_;
   std::vector<int> moving_caster_body_;  // each moving object's body in moving_caster_
-  std::vector<std::int32_t> moving_ids_;
-  std::vector<std::int32_t> still_exclude_ids_;
 };
 
 }  // namespace proxsim
