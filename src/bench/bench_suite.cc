@@ -20,6 +20,7 @@
 #include "bench/closed_loop_bench.h"
 #include "bench/end_to_end_bench.h"
 #include "bench/map_bench.h"
+#include "bench/worlds_bench.h"
 #include "bench/peers.h"
 #include "bench/python_envs_bench.h"
 #include "bench/rays_bench.h"
@@ -74,6 +75,7 @@ json RunBench(const BenchOptions& options) {
   if (options.study) result["study"] = StudyInScratch(options.quick);
   if (options.map) result["terrain_map"] = MapSection(options.quick);
   if (options.python) result["python_envs"] = PythonEnvsSection(options.quick);
+  if (options.worlds) result["worlds"] = WorldsSection(options.quick, scene_1m);
   if (options.end_to_end) {
     result.update(EndToEndSection(options.quick, repeats, scene_1m));
     result["machine"]["load_average_1min_at_end"] = LoadAverage();
@@ -92,6 +94,7 @@ std::string BenchReport(const json& r) {
   if (r.contains("contacts")) out << ContactsReport(r.at("contacts"));
   if (r.contains("terrain")) out << TerrainReport(r.at("terrain"));
   if (r.contains("terrain_map")) out << MapReport(r.at("terrain_map"));
+  if (r.contains("worlds")) out << WorldsReport(r.at("worlds"));
   if (r.contains("study")) out << StudyReport(r.at("study"));
   if (r.contains("python_envs")) out << PythonEnvsReport(r.at("python_envs"));
   return out.str();

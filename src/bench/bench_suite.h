@@ -20,6 +20,7 @@ struct BenchOptions {
   bool terrain = true;    ///< planning footsteps on the stairs course against a paper-like sample
   bool map = true;        ///< the terrain map's cost per sample (bench/map_bench.h)
   bool python = true;     ///< co-simulation and the batched environment from Python (bench/python_envs_bench.h)
+  bool worlds = true;     ///< moving objects' cost per sample, generating worlds (bench/worlds_bench.h)
 };
 
 /// Runs the whole suite and returns its figures.

@@ -1,6 +1,7 @@
 // The proxsim command line (docs/cli.md):
 //   proxsim run [SCENARIO.yaml] [--out DIR] [--seed N] [--threads N]
 //   proxsim validate SCENARIO.yaml
+//   proxsim generate SCENARIO.yaml --out WORLD.yaml  (a generated world as a plain scenario, docs/worlds.md)
 //   proxsim inspect ROBOT [--json]   (a robot's links, joints and leg map, docs/robots.md)
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
 //   proxsim export OUT_DIR --mcap FILE (the run as an MCAP file for Foxglove, docs/foxglove.md)
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -25,12 +27,14 @@
 #include "bench/bench_suite.h"
 #include "core/input_error.h"
 #include "inspect_command.h"
+#include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "output/readings_columns.h"
 #include "sensors/sensor_keys.h"
 #include "output/run_manifest.h"
 #include "scenario/scenario.h"
 #include "report/mcap_export.h"
+#include "scenario/scenario_generate.h"
 #include "report/report_runner.h"
 #include "run/run.h"
 #include "sim/simulation.h"
@@ -208,6 +212,24 @@ int Validate(const std::string& scenario_path) {
   return 0;
 }
 
+// the scenario's generated world written out as a plain scenario, checked
+// as a run would read it from where it is written
+int Generate(const std::string& scenario_path, const std::string& out_path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(scenario_path, error))
+    throw proxsim::InputError(scenario_path + ": cannot read the scenario file: no such file");
+  std::ifstream file(scenario_path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  const std::string world = proxsim::GeneratedScenarioText(text.str(), scenario_path);
+  const proxsim::Scenario scenario = proxsim::LoadScenarioText(world, out_path);
+  const proxsim::Simulation simulation(scenario, 1);
+  proxsim::WriteFileAtomically(out_path, world);
+  std::printf("%s: written from %s (%zu objects)\n", out_path.c_str(), scenario_path.c_str(),
+              scenario.scene.objects.size());
+  return 0;
+}
+
 int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
           bool force, bool allow_large) {
   CheckOutArgument(out_dir);
@@ -282,8 +304,9 @@ int main(int argc, char** argv) {
   bench->add_option("--only", bench_only,
                     "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped), "
                     "study (placement studies, MPI), terrain (planning footsteps on the stairs course), map "
-                    "(the terrain map's cost per sample) or python (co-simulation and VecWalkEnv from Python)")
-      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain", "map", "python"}))
+                    "(the terrain map's cost per sample), python (co-simulation and VecWalkEnv from Python) or worlds "
+                    "(moving objects, generating worlds)")
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain", "map", "python", "worlds"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -314,6 +337,11 @@ int main(int argc, char** argv) {
   std::string validate_path;
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
   validate->add_option("scenario", validate_path, "scenario YAML file")->required();
+
+  std::string generate_path, generate_out;
+  CLI::App* generate = app.add_subcommand("generate", "write a scenario's generated world (scene.generate) as a plain scenario");
+  generate->add_option("scenario", generate_path, "scenario YAML file with scene: {generate: ...}")->required();
+  generate->add_option("--out", generate_out, "the scenario file to write")->required();
 
   std::string inspect_target;
   bool inspect_json = false;
@@ -360,7 +388,8 @@ int main(int argc, char** argv) {
            .study = bench_only == "all" || bench_only == "study",
            .terrain = bench_only == "all" || bench_only == "terrain",
            .map = bench_only == "all" || bench_only == "map",
-           .python = bench_only == "all" || bench_only == "python"});
+           .python = bench_only == "all" || bench_only == "python",
+           .worlds = bench_only == "all" || bench_only == "worlds"});
       const bool whole = bench_only == "all";
       std::fputs(bench_json || !whole ? (result.dump(2) + "\n").c_str() : proxsim::bench::BenchReport(result).c_str(),
                  stdout);
@@ -381,6 +410,7 @@ int main(int argc, char** argv) {
       return code == 0 ? 0 : code == proxsim::kMcapExportBadInput ? kExitBadInput : kExitFailure;
     }
     if (*validate) return Validate(validate_path);
+    if (*generate) return Generate(generate_path, generate_out);
     if (*inspect) return proxsim::InspectCommand(inspect_target, inspect_json);
     if (*columns) {
       std::fputs(columns_sensor_keys ? proxsim::SensorKeysMarkdown().c_str() : proxsim::ReadingsColumnsMarkdown().c_str(),

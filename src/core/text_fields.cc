@@ -1,6 +1,9 @@
 #include "core/text_fields.h"
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace proxsim {
 
@@ -44,6 +47,27 @@ std::string NamingProblem(std::string_view name) {
     i += length;
   }
   return "";
+}
+
+std::vector<std::string> SplitCsvLine(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::stringstream in(line);
+  while (std::getline(in, cell, ',')) {
+    // trim spaces and a Windows line end
+    const auto b = cell.find_first_not_of(" \t\r");
+    const auto e = cell.find_last_not_of(" \t\r");
+    cells.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
+  }
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+bool ParseFiniteNumber(const std::string& text, double* out) {
+  if (text.empty()) return false;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, *out);
+  return ec == std::errc() && ptr == end && std::isfinite(*out);
 }
 
 }  // namespace proxsim

@@ -10,6 +10,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace proxsim {
 
@@ -23,5 +24,12 @@ std::string CsvField(std::string_view field);
 /// Why `name` cannot name a sensor, an object or a scene: empty when it can
 /// (printable UTF-8 of at least one byte); else e.g. "a control character (byte 0x0a at 4)".
 std::string NamingProblem(std::string_view name);
+
+/// The cells of one line of a plain CSV file (no quoting), each trimmed of
+/// spaces, tabs and a Windows line end; a trailing comma gives an empty last cell.
+std::vector<std::string> SplitCsvLine(const std::string& line);
+
+/// Parses the whole of `text` as a finite number (std::from_chars: the same on every machine).
+bool ParseFiniteNumber(const std::string& text, double* out);
 
 }  // namespace proxsim

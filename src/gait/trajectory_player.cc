@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/text_fields.h"
 
 namespace proxsim {
 
@@ -15,27 +16,6 @@ namespace {
 const char* const kBaseColumns[] = {"t_s", "x_m", "y_m", "z_m", "roll_deg", "pitch_deg", "yaw_deg"};
 constexpr int kBaseCount = 7;
 constexpr std::size_t kMaxProblems = 20;
-
-std::vector<std::string> SplitCsvLine(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::stringstream in(line);
-  while (std::getline(in, cell, ',')) {
-    // trim spaces and a Windows line end
-    const auto b = cell.find_first_not_of(" \t\r");
-    const auto e = cell.find_last_not_of(" \t\r");
-    cells.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
-  }
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-bool ParseDouble(const std::string& s, double* out) {
-  if (s.empty()) return false;
-  const char* end = s.data() + s.size();
-  const auto [ptr, ec] = std::from_chars(s.data(), end, *out);
-  return ec == std::errc() && ptr == end && std::isfinite(*out);
-}
 
 }  // namespace
 
@@ -100,7 +80,7 @@ void TrajectoryPlayer::Parse(const std::string& text, const std::string& source)
     std::vector<double> v(cells.size(), 0.0);
     bool ok = true;
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      if (!ParseDouble(cells[c], &v[c])) {
+      if (!ParseFiniteNumber(cells[c], &v[c])) {
         problems.push_back(where + ": column '" + header[c] + "': '" + cells[c] + "' is not a finite number");
         ok = false;
       }

@@ -126,6 +126,7 @@ RayCaster::RayCaster() : impl_(std::make_unique<Impl>()) {
   // per commit, proxsim_microbench BM_MoveRobotAndCommit)
   impl_->scene_world = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
   impl_->scene_robot = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
+  impl_->scene_moving = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
   Commit();  // an empty caster answers every ray with a miss
 }
 
@@ -133,11 +134,13 @@ RayCaster::~RayCaster() {
   for (auto& body : impl_->bodies) {
     if (body->instance_robot) rtcReleaseGeometry(body->instance_robot);
     if (body->instance_world) rtcReleaseGeometry(body->instance_world);
+    if (body->instance_moving) rtcReleaseGeometry(body->instance_moving);
     for (auto& [ids, scene] : body->query_scenes) rtcReleaseScene(scene);
     rtcReleaseScene(body->scene);
   }
   rtcReleaseScene(impl_->scene_world);
   rtcReleaseScene(impl_->scene_robot);
+  rtcReleaseScene(impl_->scene_moving);
   rtcReleaseDevice(impl_->device);
 }
 
@@ -201,6 +204,10 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
   if (kind == BodyKind::kWorld) {
     body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body_index));
     impl.world_dirty = true;
+  } else if (kind == BodyKind::kMoving) {
+    body.instance_moving = impl.NewInstance(impl.scene_moving, body, static_cast<unsigned int>(body_index));
+    impl.moving_dirty = true;
+    impl.has_moving = true;
   } else {
     body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(body_index));
     impl.robot_dirty = true;
@@ -218,13 +225,15 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   body.R_WB = X_WB.linear().cast<float>();
   float xfm[12];
   ToColumnMajor3x4(X_WB, xfm);
-  for (RTCGeometry instance : {body.instance_robot, body.instance_world}) {
+  for (RTCGeometry instance : {body.instance_robot, body.instance_world, body.instance_moving}) {
     if (!instance) continue;
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
     rtcCommitGeometry(instance);
   }
   impl_->committed = false;
-  (body.instance_world ? impl_->world_dirty : impl_->robot_dirty) = true;
+  (body.kind == BodyKind::kWorld ? impl_->world_dirty
+   : body.kind == BodyKind::kMoving ? impl_->moving_dirty
+                                     : impl_->robot_dirty) = true;
   impl_->ThrowIfDeviceError("SetBodyPose");
 }
 
@@ -253,12 +262,15 @@ void RayCaster::Commit() {
   impl.commit_arena.execute([&impl] {
     if (impl.robot_dirty) rtcCommitScene(impl.scene_robot);
     if (impl.world_dirty) rtcCommitScene(impl.scene_world);
+    if (impl.moving_dirty) rtcCommitScene(impl.scene_moving);
   });
-  impl.robot_dirty = impl.world_dirty = false;
+  impl.robot_dirty = impl.world_dirty = impl.moving_dirty = false;
   impl_->committed = true;
   impl_->ThrowIfDeviceError("Commit");
 }
 
 std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }
+
+bool RayCaster::has_moving() const { return impl_->has_moving; }
 
 }  // namespace proxsim

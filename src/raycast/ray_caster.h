@@ -23,6 +23,7 @@ struct Ray {
   Vec3f direction_W = Vec3f::UnitX();  ///< unit length
   float max_range_m = 1.0f;            ///< > 0
   bool see_robot = true;               ///< false: the robot's links are transparent
+  bool see_moving = true;              ///< false: the scene's moving objects are transparent
 };
 
 /// The first hit of a ray, or a miss.
@@ -41,7 +42,13 @@ struct BodyShape {
   std::int32_t object_id = 0;    ///< reported in Hit::object_id; >= 0
 };
 
-enum class BodyKind { kWorld, kRobot };
+/// kWorld: the static scene (built once, never moved in practice); kMoving:
+/// a scene object that moves every sample (an instance whose transform
+/// changes); kRobot: a robot link. Rays see all three; DistanceToWorld and
+/// NearestToWorld measure the kWorld bodies only (a caller who wants the
+/// distance to moving things keeps them as kWorld bodies of a caster of
+/// their own, moved with SetBodyPose).
+enum class BodyKind { kWorld, kRobot, kMoving };
 
 class RayCaster {
  public:
@@ -53,7 +60,7 @@ class RayCaster {
   /// Adds a rigid body at pose X_WB; returns its index for SetBodyPose.
   int AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose& X_WB = Pose::Identity());
 
-  /// Moves a body; takes effect at the next Commit().
+  /// Moves a body: at once for DistanceToWorld and NearestToWorld, for rays at the next Commit().
   void SetBodyPose(int body, const Pose& X_WB);
 
   /// Builds or refits the acceleration structures; call after adding or moving bodies.
@@ -83,6 +90,9 @@ class RayCaster {
   };
   NearestSurface NearestToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
                                 double below_m = std::numeric_limits<double>::infinity()) const;
+
+  /// Whether any body is a kMoving one.
+  bool has_moving() const;
 
   /// Number of triangles held (meshes and boxes), for reports.
   std::size_t triangle_count() const;

@@ -48,6 +48,7 @@ struct CastScenes {
   RTCScene world = nullptr;      ///< the world's top-level scene, or the world body's own (direct)
   int direct_body = -1;          ///< the body of `world` when it is direct, else -1 (hits carry the instance)
   RTCScene robot = nullptr;      ///< the robot's top-level scene; null when there is no robot
+  RTCScene moving = nullptr;     ///< the moving objects' top-level scene; null when there are none
 };
 
 /// Maps the hit of `lane` to the body and its shape; Ng from B to W, unit.
@@ -113,22 +114,26 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
   rtcIntersect8(valid, scenes.world, &context, &packet);
   for (std::size_t lane = 0; lane < n; ++lane) MapHit(packet, lane, scenes.direct_body, bodies, &hits[lane]);
 
-  // the robot's links, nearer than the world hit (tfar now holds it)
-  if (!scenes.robot) return;
-  bool any = false;
-  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-    valid[lane] = lane < n && rays[lane].see_robot && RayEmbreeCanTake(rays[lane]) ? -1 : 0;
-    any = any || valid[lane];
-    packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-    packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-  }
-  if (!any) return;
-  rtcIntersect8(valid, scenes.robot, &context, &packet);
-  for (std::size_t lane = 0; lane < n; ++lane) {
-    if (valid[lane] && packet.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
-      MapHit(packet, lane, /*direct_body=*/-1, bodies, &hits[lane]);
+  // then the moving objects and the robot's links, each nearer than the
+  // nearest hit so far (tfar holds it)
+  const auto cast_instances = [&](RTCScene scene, bool Ray::*sees) {
+    bool any = false;
+    for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+      valid[lane] = lane < n && rays[lane].*sees && RayEmbreeCanTake(rays[lane]) ? -1 : 0;
+      any = any || valid[lane];
+      packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
-  }
+    if (!any) return;
+    rtcIntersect8(valid, scene, &context, &packet);
+    for (std::size_t lane = 0; lane < n; ++lane) {
+      if (valid[lane] && packet.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
+        MapHit(packet, lane, /*direct_body=*/-1, bodies, &hits[lane]);
+      }
+    }
+  };
+  if (scenes.moving) cast_instances(scenes.moving, &Ray::see_moving);
+  if (scenes.robot) cast_instances(scenes.robot, &Ray::see_robot);
 }
 
 }  // namespace
@@ -140,7 +145,8 @@ void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
   const auto packets = static_cast<std::ptrdiff_t>((rays.size() + kPacketRays - 1) / kPacketRays);
   const CastScenes scenes{.world = impl.world_direct ? impl.world_direct : impl.scene_world,
                           .direct_body = impl.world_direct ? impl.world_direct_body : -1,
-                          .robot = impl.has_robot ? impl.scene_robot : nullptr};
+                          .robot = impl.has_robot ? impl.scene_robot : nullptr,
+                          .moving = impl.has_moving ? impl.scene_moving : nullptr};
   const auto cast_packet = [&](std::ptrdiff_t p) {
     const std::size_t first = static_cast<std::size_t>(p) * kPacketRays;
     CastPacket(scenes, impl.bodies, rays.data() + first, hits.data() + first, std::min(kPacketRays, rays.size() - first));

@@ -21,7 +21,7 @@
 //     instance level — then, if it sees the robot, into `robot` up to the
 //     world hit: the nearer hit wins.
 // Moving a body only rewrites its instance transforms; Commit() then rebuilds
-// the top-level scene that changed (the robot's, each sample), whose only
+// the top-level scene that changed (the robot's and the moving objects', each sample), whose only
 // primitives are the instances. The child scenes, and so the static world's
 // BVH, are built once in AddBody.
 //
@@ -83,7 +83,8 @@ struct Body {
   Pose X_WB = Pose::Identity();
   Eigen::Matrix3f R_WB = Eigen::Matrix3f::Identity();
   RTCGeometry instance_robot = nullptr;  ///< null for world bodies
-  RTCGeometry instance_world = nullptr;  ///< null for robot bodies
+  RTCGeometry instance_world = nullptr;  ///< null for robot and moving bodies
+  RTCGeometry instance_moving = nullptr; ///< null for world and robot bodies
   bool has_mesh = false;
   std::vector<const GeomRecord*> closed_form_geoms;  ///< every geom but meshes, for DistanceToWorld
   // point-query scenes of this body's meshes without some objects (the
@@ -103,11 +104,13 @@ struct RayCaster::Impl {
   RTCDevice device = nullptr;
   RTCScene scene_world = nullptr;
   RTCScene scene_robot = nullptr;
+  RTCScene scene_moving = nullptr;  ///< the kMoving bodies' instances
   std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in the top-level scenes
   // the world body cast without its instance (see the top of the file), or null
   RTCScene world_direct = nullptr;
   int world_direct_body = -1;
   bool has_robot = false;
+  bool has_moving = false;
   std::size_t triangle_count = 0;
   std::unique_ptr<ParallelRunner> runner = std::make_unique<ParallelRunner>(1);  ///< for large batches
   bool committed = true;
@@ -115,6 +118,7 @@ struct RayCaster::Impl {
   // the world's as it was, so a step rebuilds only `robot`
   bool robot_dirty = true;
   bool world_dirty = true;
+  bool moving_dirty = true;
   tbb::task_arena commit_arena{1};  ///< one slot: top-level commits run on the caller only
 
   // first error reported by Embree since the last check

@@ -12,6 +12,7 @@
 // resolved; a mesh keeps the path as written (Mesh::file) with its triangles
 // loaded.
 #include "scenario/scenario.h"
+#include "scenario/scenario_generate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -202,6 +203,9 @@ Scenario LoadScenarioText(const std::string& yaml_text, const std::string& sourc
     reader.FailFile("the file is empty; expected a scenario map starting with 'proxsim: 1'");
     throw InputError(reader.Problems());
   }
+
+  // a generated world: read as the plain scenario `proxsim generate` writes
+  if (HasGenerate(document)) document = YAML::Load(GeneratedScenarioText(yaml_text, source));
 
   Scenario scenario = ReadScenario(reader, document, source);
   if (reader.HasProblems()) {

@@ -1,6 +1,7 @@
 // The `scene` section: a built-in scene (scene/scene.h) plus the file's own
 // objects. Each object has a name, exactly one shape key, an optional pose,
-// an optional material and an optional `ground` flag (the feet stand on it).
+// an optional material, an optional `ground` flag (the feet stand on it) and
+// an optional motion (scenario_motion.cc); a `person` is its parts (scene/person.h).
 // Meshes are loaded here, through Assimp, so that a missing or broken mesh
 // file is reported with the other problems before anything runs.
 #include <map>
@@ -10,12 +11,13 @@
 #include "core/text_fields.h"
 #include "scenario/scenario_sections.h"
 #include "scene/mesh_loader.h"
+#include "scene/person.h"
 
 namespace proxsim {
 
 namespace {
 
-constexpr const char* kShapeKeys[] = {"box", "sphere", "cylinder", "plane", "mesh"};
+constexpr const char* kShapeKeys[] = {"box", "sphere", "cylinder", "plane", "mesh", "person"};
 
 std::string JoinNames(const std::vector<std::string>& names) {
   std::string all;
@@ -117,14 +119,15 @@ bool ReadGround(YamlReader& reader, const Field& field, const std::optional<Shap
   return reader.Bool(field).value_or(is_plane);
 }
 
-// The one shape of an object, or nullopt after reporting none or several.
+// The one shape of an object, or nullopt after reporting none or several
+// (and for a person, whose parts the caller makes).
 std::optional<Shape> ReadShape(YamlReader& reader, const MapView& object, const std::filesystem::path& base_dir) {
   std::vector<std::string> given;
   for (const char* key : kShapeKeys) {
     if (object.Has(key)) given.emplace_back(key);
   }
   if (given.size() != 1) {
-    reader.Fail(object.field(), "expected exactly one shape key (box, sphere, cylinder, plane or mesh), got " +
+    reader.Fail(object.field(), "expected exactly one shape key (box, sphere, cylinder, plane, mesh or person), got " +
                                     (given.empty() ? std::string("none") : JoinNames(given)));
     return std::nullopt;
   }
@@ -134,6 +137,7 @@ std::optional<Shape> ReadShape(YamlReader& reader, const MapView& object, const 
   if (kind == "sphere") return ReadSphere(reader, field);
   if (kind == "cylinder") return ReadCylinder(reader, field);
   if (kind == "mesh") return ReadMesh(reader, field, base_dir);
+  if (kind == "person") return std::nullopt;  // not one shape: parts, read by the caller
   reader.Map(field, {});  // a plane takes no parameters
   return Plane{};
 }
@@ -185,8 +189,8 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
   if (!items) return;
   for (const Field& item : *items) {
     const auto object =
-        reader.Map(item, {"name", "box", "sphere", "cylinder", "plane", "mesh", "pose", "material", "ground"},
-                   "a map with a name and one shape (box, sphere, cylinder, plane or mesh)");
+        reader.Map(item, {"name", "box", "sphere", "cylinder", "plane", "mesh", "person", "pose", "material", "ground", "motion"},
+                   "a map with a name and one shape (box, sphere, cylinder, plane, mesh or person)");
     if (!object) continue;
     SceneObject scene_object;
     const Field name = (*object)["name"];
@@ -201,11 +205,36 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
       }
     }
     const auto shape = ReadShape(reader, *object, base_dir);
-    scene_object.X_WO = ReadPose(reader, (*object)["pose"]);
+    // a moving object's pose is in its motion's frame (scene/motion.h)
+    const Pose pose = ReadPose(reader, (*object)["pose"]);
+    scene_object.motion = ReadMotion(reader, (*object)["motion"], base_dir);
     scene_object.material = ReadMaterial(reader, (*object)["material"]);
-    scene_object.ground = ReadGround(reader, (*object)["ground"], shape);
+    const Field ground = (*object)["ground"];
+    if (scene_object.motion || object->Has("person")) {
+      // a moving object (or a person) is never stood on: the feet need ground that stays put
+      if (reader.Bool(ground).value_or(false))
+        reader.Fail(ground, std::string("a ") + (scene_object.motion ? "moving object" : "person") +
+                                " cannot be ground (the feet land only on what stays put); expected false or no key");
+    } else {
+      scene_object.ground = ReadGround(reader, ground, shape);
+    }
+    if (object->Has("person")) {
+      // a person is its parts, each an object of its own (NAME/left_leg, ...)
+      const double height_m = ReadPersonHeight(reader, (*object)["person"]);
+      for (SceneObject& part : PersonParts(scene_object.name, height_m, pose, scene_object.material, scene_object.motion)) {
+        name_origin.emplace(part.name, item.path);
+        scenario.scene.objects.push_back(std::move(part));
+      }
+      continue;
+    }
     if (!shape) continue;
     scene_object.shape = *shape;
+    if (scene_object.motion) {
+      scene_object.motion->X_MO = pose;
+      scene_object.X_WO = MotionPoseAt(*scene_object.motion, 0.0);
+    } else {
+      scene_object.X_WO = pose;
+    }
     scenario.scene.objects.push_back(std::move(scene_object));
   }
   scenario.scene.ambient_klux = ambient_klux;  // after the built-in scene, which starts from its defaults

@@ -22,6 +22,13 @@ std::filesystem::path ResolveScenarioPath(const std::filesystem::path& base_dir,
 /// the file are degrees.
 Pose ReadPose(YamlReader& reader, const Field& field);
 
+/// An object's `motion: {waypoints_m, speed_m_s, mode, start_s | velocity_m_s |
+/// trajectory}`; nullopt when absent or unreadable (after reporting).
+std::optional<Motion> ReadMotion(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir);
+
+/// `person: {height_m}` (default 1.75 m).
+double ReadPersonHeight(YamlReader& reader, const Field& field);
+
 /// `scene: {builtin, objects}`: the built-in scene's objects, then the file's,
 /// meshes loaded; object names unique across both.
 void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scenario& scenario);

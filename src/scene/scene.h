@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/motion.h"
 #include "scene/shape.h"
 
 namespace proxsim {
@@ -25,12 +26,16 @@ struct Material {
 struct SceneObject {
   std::string name;  ///< unique within the scene; the `object` column of readings.csv
   Shape shape;
-  Pose X_WO = Pose::Identity();  ///< pose of the object's frame O in world W
+  /// Pose of the object's frame O in world W; for a moving object, at t = 0
+  /// (where it is at time t: MotionPoseAt(*motion, t)).
+  Pose X_WO = Pose::Identity();
   Material material;
   /// The ground the feet stand on: the robot's clearance leaves it out, and a
   /// study counts it as floor seen. A role declared here (scenario key
   /// `ground`), never read from the name.
   bool ground = false;
+  /// How it moves (scene/motion.h); absent: it stands still. A moving object is never ground.
+  std::optional<Motion> motion;
 };
 
 struct Scene {

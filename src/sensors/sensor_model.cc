@@ -94,6 +94,14 @@ double FlightTimeShift(const Vec3& p_WS, const Vec3& v_W, const Vec3& p_WH, doub
   return 0.5 * c_m_s * tau_s - d_m;
 }
 
+double MovingSurfaceMeeting_m(double d_m, const Vec3& dir_W, const Vec3& n_W, const Vec3& v_W, double c_m_s) {
+  const double n_dir = n_W.dot(dir_W);
+  if (n_dir == 0) return d_m;
+  const double factor = 1.0 - n_W.dot(v_W) / (c_m_s * n_dir);
+  // a surface receding at the wave's own speed is never met: keep the static distance
+  return factor > 0 ? d_m / factor : d_m;
+}
+
 double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo) {
   const double alpha = DegToRad(echo.incidence_deg);
   const double r = spec.type == SensorType::kUltrasonic ? echo.acoustic_reflectivity : echo.ir_albedo;

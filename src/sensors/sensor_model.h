@@ -141,6 +141,15 @@ double LookupDistance(const std::vector<LookupRow>& table, double output);
 /// straight at the surface at v: c·τ/2 = d·c/(c + v), i.e. −v·τ/2).
 double FlightTimeShift(const Vec3& p_WS, const Vec3& v_W, const Vec3& p_WH, double d_m, double c_m_s);
 
+/// How far along a ray the outgoing wave meets a surface that moves: the ray
+/// leaves at t along unit dir_W and meets the surface at d when it stands
+/// still; the surface (unit normal n_W, either side) moves at v_W, taken as
+/// a plane moving at constant velocity over the flight (first order in the
+/// flight time): the wave meets it at r = d / (1 − (n·v)/(c·(n·dir))), and
+/// r = d·c/(c + v) for a surface coming straight at the sensor at v. d when
+/// the ray grazes the surface (n·dir = 0).
+double MovingSurfaceMeeting_m(double d_m, const Vec3& dir_W, const Vec3& n_W, const Vec3& v_W, double c_m_s);
+
 /// The reading of a whole beam: echoes[i] and draws[i] belong to rays[i].
 /// `ray` is the ray whose echo gave the reading (time of flight: the nearest
 /// echo that counts; reflectance: the largest weighted signal), -1 without a

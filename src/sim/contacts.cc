@@ -144,6 +144,8 @@ std::vector<Contact> ContactFinder::Find(double clearance_to_objects_m) {
   };
   // obstacles, furniture: any sample, unless the clearance already keeps them apart
   if (clearance_to_objects_m <= kContactTolerance_m) keep_near(ground_ids_, nullptr, nullptr);
+  // the moving objects, in their own caster
+  if (moving_) keep_near({}, nullptr, moving_);
   // the ground (its caster alone): anything but a sole, when the feet are known (not for a replayed trajectory)
   if (has_feet_) keep_near({}, &not_sole_, &ground_);
   std::vector<Contact> contacts;

@@ -53,6 +53,11 @@ class ContactFinder {
   ContactFinder(RobotInScene& robot, const RayCaster& ground, std::span<const std::int32_t> ground_ids,
                 std::span<const FootFrame> feet);
 
+  /// The scene's moving objects: `moving` holds them alone (their ids as in
+  /// the robot's caster, whose distances measure the still scene only); they
+  /// are measured there every sample. Null: none.
+  void SetMoving(const RayCaster* moving) { moving_ = moving; }
+
   /// The contacts at the pose the robot was last placed at, one per (link,
   /// object or other link), the deepest sample of each.
   /// `clearance_to_objects_m`: the robot's clearance to every object but the
@@ -91,6 +96,7 @@ class ContactFinder {
   std::map<int, LegLink> leg_links_;
   const RayCaster& ground_;                   // the ground alone
   std::vector<std::int32_t> ground_ids_;      // objects the soles may touch
+  const RayCaster* moving_ = nullptr;         // the moving objects alone, or null
   RobotInScene::SampleMask not_sole_;          // the samples that may not touch the ground
   bool has_feet_ = false;                      // without feet (a replayed trajectory) the ground is not checked
   std::vector<std::pair<int, int>> leg_pairs_;  // (left leg link, right leg link)

@@ -99,6 +99,21 @@ RobotInScene::BoundsSlot& RobotInScene::SlotFor(std::span<const std::int32_t> ex
   return slot;
 }
 
+void RobotInScene::LowerClearanceBounds(const RayCaster* against, double moved_m) {
+  // an unbounded move (a moving plane) leaves nothing to remember
+  if (!std::isfinite(moved_m)) {
+    std::erase_if(bounds_slots_, [against](const BoundsSlot& slot) { return slot.against == against; });
+    return;
+  }
+  for (BoundsSlot& slot : bounds_slots_) {
+    if (slot.against != against) continue;
+    for (ClearanceBounds& bounds : slot.links) {
+      bounds.link_lower_m -= moved_m;
+      for (double& lower_m : bounds.point_lower_m) lower_m -= moved_m;
+    }
+  }
+}
+
 double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_ids, double below_m,
                                  const SampleMask* mask, const RayCaster* against) {
   BoundsSlot& slot = SlotFor(exclude_object_ids, mask, against);
@@ -113,6 +128,18 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
     // no sample has moved farther than the link's travel since its bound was taken: skip it when it cannot win
     const double travel_m = MaxTravel_m(bounds.X_WL_ref, X_WL, samples.center_L, samples.radius_m);
     if (bounds.link_lower_m - travel_m - kBoundSlack_m >= best_m) continue;
+    // the link's bounding sphere first, one capped query, before its samples:
+    // nothing may be remembered (a first query), or the bounds may have
+    // dropped because the world moved (an object turning on its path)
+    {
+      const double reach_m = samples.radius_m + best_m;
+      const double centre_m = world.DistanceToWorld(X_WL * samples.center_L, exclude_object_ids, reach_m);
+      if (centre_m >= reach_m) {
+        bounds.link_lower_m = centre_m - samples.radius_m;
+        bounds.X_WL_ref = X_WL;
+        continue;
+      }
+    }
 
     // else each sample the same way with its own bound and travel, and the
     // ones that could win measured with capped queries: a distance below the

@@ -45,6 +45,10 @@ class RobotInScene {
 
   /// Forgets ClearanceTo's bounds (a new episode: the measure starts afresh).
   void ForgetClearanceBounds() { bounds_slots_.clear(); }
+  /// The bodies of `against` moved, none of their points farther than
+  /// `moved_m`: every bound remembered against it is lowered by that much
+  /// (a distance to them shrank by moved_m at most), so it stays a bound.
+  void LowerClearanceBounds(const RayCaster* against, double moved_m);
 
   /// Which of a link's surface samples a query counts: [link][sample], true
   /// to count it (a foot's sole points are left out against the ground).

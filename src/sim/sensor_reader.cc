@@ -157,8 +157,17 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
         echo.specular = material.specular;
       }
       if (sensor.flight_time) {
+        // a moving object is met where it is when the wave reaches it
         const Vec3 p_WH = MeasuredPoint_W(out.p_WS, dir_W, echo.distance_m);
-        echo.flight_shift_m = FlightTimeShift(out.p_WS, v_W, p_WH, echo.distance_m, c_m_s);
+        const Motion* motion = echo.from_robot || !scenario_.scene.objects[hit.object_id].motion
+                                   ? nullptr
+                                   : &*scenario_.scene.objects[hit.object_id].motion;
+        const double out_m =
+            motion ? MovingSurfaceMeeting_m(echo.distance_m, dir_W, hit.normal_W.cast<double>(),
+                                            MotionPointVelocity_W(*motion, frame.t_s, p_WH), c_m_s)
+                   : echo.distance_m;
+        echo.flight_shift_m = (out_m - echo.distance_m) +
+                              FlightTimeShift(out.p_WS, v_W, MeasuredPoint_W(out.p_WS, dir_W, out_m), out_m, c_m_s);
       }
     }
   }

@@ -117,6 +117,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     feet_ = locomotion_->Feet();
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
     contacts_ = std::make_unique<ContactFinder>(*world_->robot(), world_->ground_caster(), world_->ground_ids(), feet_);
+    contacts_->SetMoving(world_->moving_caster());
     if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
     if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
       goal_m_ = scenario_.robot->waypoints_m.back();
@@ -200,6 +201,13 @@ const SampleFrame& Simulation::TakeSample() {
   frame_.sample = next_sample_++;
   frame_.t_s = static_cast<double>(frame_.sample) / scenario_.rate_hz;
   RobotInScene* robot = world_->robot();
+  // the scene's moving objects where they are at this sample's time
+  if (world_->has_moving_objects()) {
+    const double moved_m = world_->MoveObjects(frame_.t_s);
+    // the clearance's remembered bounds against them shrink by as much as they moved
+    if (robot) robot->LowerClearanceBounds(world_->moving_caster(), moved_m);
+    if (!locomotion_) world_->caster().Commit();
+  }
   if (locomotion_) {
     // every link at its pose of this very sample time
     state_ = locomotion_->Advance(frame_.t_s);
@@ -228,9 +236,16 @@ const SampleFrame& Simulation::TakeSample() {
   runner_.Invoke([this] { reader_->Read(frame_, runner_); },
                  [&] {
                    if (!locomotion_) return;
-                   clearance_m = robot->ClearanceTo(world_->ground_ids(), outcome_.min_clearance_m);
-                   // the clearance is exact when below the running minimum, else only bounded by it
-                   contacts_now_ = contacts_->Find(std::min(clearance_m, outcome_.min_clearance_m));
+                   // the still scene (remembered bounds), then the moving objects (measured
+                   // afresh); each exact below the cap: the running minimum, or the reach of a
+                   // contact once the minimum is below it (a touch does not make every later
+                   // sample search for contacts)
+                   const double cap_m = std::max(outcome_.min_clearance_m, kContactTolerance_m);
+                   const double still_m = robot->ClearanceTo(world_->ground_ids(), cap_m);
+                   clearance_m = still_m;
+                   if (const RayCaster* moving = world_->moving_caster())
+                     clearance_m = std::min(clearance_m, robot->ClearanceTo({}, cap_m, nullptr, moving));
+                   contacts_now_ = contacts_->Find(still_m);
                  });
   if (delivery_->active()) delivery_->Deliver(frame_, delivered_);
   if (locomotion_) KnowRobot(state_, *robot, feet_, half_width_m_, knowledge_);

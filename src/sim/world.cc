@@ -4,9 +4,26 @@
 #include "core/nearest_key.h"
 #include "sensors/multizone.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace proxsim {
 
 namespace {
+
+// The radius of a sphere about a shape's origin that holds it (a plane: unbounded).
+double BoundingRadius_m(const Shape& shape) {
+  if (const auto* box = std::get_if<Box>(&shape)) return 0.5 * box->size_m.norm();
+  if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->radius_m;
+  if (const auto* cylinder = std::get_if<Cylinder>(&shape)) return std::hypot(cylinder->radius_m, 0.5 * cylinder->length_m);
+  if (const auto* mesh = std::get_if<Mesh>(&shape)) {
+    double radius_m = 0;
+    for (const Vec3f& v : mesh->data->vertices_O) radius_m = std::max(radius_m, static_cast<double>(v.norm()));
+    return radius_m;
+  }
+  return std::numeric_limits<double>::infinity();
+}
 
 // "scenario.yaml:12: sensors.NAME.link: unknown link ..." with the nearest name suggested
 std::string UnknownLinkProblem(const Scenario& scenario, const SensorConfig& sensor, const RobotModel* model) {
@@ -27,12 +44,22 @@ std::string UnknownLinkProblem(const Scenario& scenario, const SensorConfig& sen
 }  // namespace
 
 World::World(const Scenario& scenario, const RobotModel* robot_model, int threads) {
-  // the static world: one body, one shape per scene object, ids = scene order
+  // the static world: one body, one shape per scene object, ids = scene order;
+  // each moving object a body of its own, its instance moved every sample
   std::vector<BodyShape> world_shapes;
   world_shapes.reserve(scenario.scene.objects.size());
   for (const SceneObject& object : scenario.scene.objects) {
-    world_shapes.push_back({object.shape, object.X_WO, static_cast<std::int32_t>(object_names_.size())});
+    const auto id = static_cast<std::int32_t>(object_names_.size());
     object_names_.push_back(object.name);
+    if (!object.motion) {
+      world_shapes.push_back({object.shape, object.X_WO, id});
+      continue;
+    }
+    const int body = caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO);
+    moving_.push_back({&*object.motion, body, BoundingRadius_m(object.shape), object.X_WO});
+    // (world bodies there: that caster is for distances, which measure world bodies)
+    moving_caster_body_.push_back(
+        moving_caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kWorld, object.X_WO));
   }
   caster_.AddBody(std::move(world_shapes), BodyKind::kWorld);
   first_robot_object_id_ = static_cast<std::int32_t>(object_names_.size());
@@ -52,6 +79,7 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   }
   ground_caster_.AddBody(std::move(ground_shapes), BodyKind::kWorld);
   ground_caster_.Commit();
+  moving_caster_.Commit();
 
   // the robot: its links are bodies too, with object ids after the scene's
   if (robot_model != nullptr) {
@@ -84,5 +112,22 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
 }
 
 World::~World() = default;
+
+double World::MoveObjects(double t_s) {
+  double moved_m = 0;
+  for (std::size_t i = 0; i < moving_.size(); ++i) {
+    MovingBody& moving = moving_[i];
+    const Pose X_WO = MotionPoseAt(*moving.motion, t_s);
+    // a point at r from the origin moves by the origin's step plus r times the turn
+    const double turn_rad = Eigen::AngleAxisd(moving.X_WO.linear().transpose() * X_WO.linear()).angle();
+    moved_m = std::max(moved_m, (X_WO.translation() - moving.X_WO.translation()).norm() + turn_rad * moving.radius_m);
+    moving.X_WO = X_WO;
+    caster_.SetBodyPose(moving.body, X_WO);
+    moving_caster_.SetBodyPose(moving_caster_body_[i], X_WO);
+  }
+  // (moving_caster_ only answers distances, which read the bodies' poses as
+  // set: its top-level scene, for rays, is not rebuilt every sample)
+  return moved_m;
+}
 
 }  // namespace proxsim

@@ -2,8 +2,9 @@
 // objects and the robot's links as bodies in the ray caster (with their
 // acceleration structures), the object table that names what a ray hits, the
 // link each sensor is fixed on, and the beams' rays in their sensor frames.
-// An episode (sim/simulation.h) moves the robot's bodies; nothing here is
-// rebuilt between episodes.
+// An episode (sim/simulation.h) moves the robot's bodies and the scene's
+// moving objects (instances whose transforms change: no BVH is rebuilt);
+// nothing here is rebuilt between episodes.
 //
 // Frames: W world, L a link, S a sensor.
 #pragma once
@@ -54,6 +55,18 @@ class World {
   RobotInScene* robot() { return robot_.get(); }
   const RobotInScene* robot() const { return robot_.get(); }
 
+  /// Puts every moving object where it is at t_s (takes effect at the
+  /// caster's next Commit()); returns how far any of their points moved at
+  /// most since the last call (a bound: translation plus turn × radius).
+  double MoveObjects(double t_s);
+  /// Whether the scene has moving objects (they are bodies of their own in caster()).
+  bool has_moving_objects() const { return !moving_.empty(); }
+  /// The moving objects alone, in a caster of their own (object ids as in
+  /// caster()), for the robot's clearance and contacts (caster()'s distances
+  /// measure the still scene only); null without any.
+  const RayCaster* moving_caster() const { return moving_.empty() ? nullptr : &moving_caster_; }
+
+
   /// The link sensor i is fixed on; -1 for world.
   int sensor_link(std::size_t sensor) const { return sensor_link_[sensor]; }
   /// Sensor i owns rays [ray_begin(i), ray_begin(i + 1)) of every per-ray buffer.
@@ -73,6 +86,15 @@ class World {
   std::vector<int> sensor_link_;
   std::vector<std::size_t> ray_begin_;
   std::vector<BeamRay> beam_rays_;
+  struct MovingBody {
+    const Motion* motion;  // the scenario's (it outlives the world)
+    int body;              // in caster_
+    double radius_m;       // of a sphere about the object's origin holding it
+    Pose X_WO;             // where it was last put
+  };
+  std::vector<MovingBody> moving_;
+  RayCaster moving_caster_;
+  std::vector<int> moving_caster_body_;  // each moving object's body in moving_caster_
 };
 
 }  // namespace proxsim

@@ -114,7 +114,12 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
     for (std::size_t k = 0; k < scored_n; ++k) cells[k] = grid.Find({scored.ix_min + static_cast<std::int32_t>(k), iy});
     const std::vector<float> scored_truth =
         TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.truth_ceiling_z_m());
-    scorer.AddRow(iy, scored.ix_min, cells, scored_truth);
+    // with moving objects: the heights with them where they are now, for the ghost cells
+    const std::vector<float> scored_now =
+        caster.has_moving()
+            ? TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.truth_ceiling_z_m(), true)
+            : std::vector<float>{};
+    scorer.AddRow(iy, scored.ix_min, cells, scored_truth, scored_now);
     if (arrays.empty() || iy < extent.iy_min || iy > extent.iy_max) continue;
     for (std::size_t k = 0; k < row_n; ++k) {
       const TerrainCell* cell = cells[offset + k];

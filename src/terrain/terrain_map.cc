@@ -150,18 +150,26 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
         return false;
       }
       // a detection's ray overrides a height only where it passes near the
-      // cell's centre: one passing through a corner may miss a surface that
-      // covers the rest of the cell (an edge)
-      bool overrides = false;
+      // cell's centre, or crosses the cell over half its side or more, below
+      // the height all the way: one passing through a corner may miss a
+      // surface that covers the rest of the cell (an edge). (A ray along a
+      // line between two rows of centres, as a sensor's on a straight walk,
+      // must still be able to clear what a person walking by left behind.)
       if (evidence.proves_empty && measured) {
         const Vec2 centre = grid_.CellCentre(cell);
         double t = ab_xy2 > 0 ? (centre - a.head<2>()).dot(ab.head<2>()) / ab_xy2 : t0;
         t = std::clamp(t, t0, t1);
         const Vec3 p = a + t * ab;
-        overrides = (p.head<2>() - centre).norm() <= 0.25 * r;
-        if (overrides) {
+        const double crossing_m = std::sqrt(ab_xy2) * (t1 - t0);
+        const double z_hi = std::max(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
+        if ((p.head<2>() - centre).norm() <= 0.25 * r) {
           grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
           grid_.BoundFromFreeSpace(cell, p.z(), true, t_s);
+          return true;
+        }
+        if (crossing_m >= 0.5 * r) {
+          grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
+          grid_.BoundFromFreeSpace(cell, z_hi, true, t_s);
           return true;
         }
       }

@@ -51,8 +51,9 @@ TerrainScorer::TerrainScorer(const TerrainMap& map, const Corridor& corridor) : 
 }
 
 void TerrainScorer::AddRow(std::int32_t iy, std::int32_t ix_min, std::span<const TerrainCell* const> cells,
-                           std::span<const float> truth_m) {
+                           std::span<const float> truth_m, std::span<const float> now_m) {
   const TerrainMapConfig& config = map_.config();
+  scores_ghosts_ = scores_ghosts_ || !now_m.empty();
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const CellIndex c{ix_min + static_cast<std::int32_t>(k), iy};
     const TerrainCell* cell = cells[k];
@@ -64,6 +65,12 @@ void TerrainScorer::AddRow(std::int32_t iy, std::int32_t ix_min, std::span<const
       const double error_m = static_cast<double>(cell->elevation_m) - truth;
       abs_errors_m_.push_back(static_cast<float>(std::abs(error_m)));
       sum_squared_error_m2_ += error_m * error_m;
+    }
+    // a ghost: raised above the still scene, and above whatever stands there now
+    if (measured && !now_m.empty()) {
+      const double above_still_m = std::isnan(truth) ? std::numeric_limits<double>::infinity() : cell->elevation_m - truth;
+      const double above_now_m = std::isnan(now_m[k]) ? std::numeric_limits<double>::infinity() : cell->elevation_m - now_m[k];
+      if (above_still_m > config.obstacle_min_m && above_now_m > config.obstacle_min_m) ++ghost_cells_;
     }
     // free space's bound, where there is a surface it should stay above
     if (cell != nullptr && std::isfinite(cell->upper_bound_m) && !std::isnan(truth)) {
@@ -210,7 +217,7 @@ nlohmann::json TerrainScorer::Json() {
                             {"first_detection_t_s", truth.detected ? NumberOrNull(h.first_detection_t_s) : nlohmann::json(nullptr)},
                             {"lead_distance_m", truth.detected ? NumberOrNull(truth.lead_distance_m) : nlohmann::json(nullptr)}});
   }
-  return {{"resolution_m", map_.grid().resolution_m()},
+  nlohmann::json json = {{"resolution_m", map_.grid().resolution_m()},
           {"cells_measured", cells_measured_},
           {"elevation_error", error},
           {"corridor", {{"half_width_m", Corridor::kHalfWidth_m},
@@ -227,6 +234,8 @@ nlohmann::json TerrainScorer::Json() {
           {"true_hazards", true_hazards},
           {"map_memory_bytes", map_.grid().memory_bytes()},
           {"map_tiles", map_.grid().tile_count()}};
+  if (scores_ghosts_) json["ghost_cells"] = {{"cells", ghost_cells_}, {"tolerance_m", map_.config().obstacle_min_m}};
+  return json;
 }
 
 }  // namespace proxsim

@@ -8,6 +8,9 @@
 //    true surface), how many put the surface lower than it is by more than
 //    drop_min_m (alone, a false hole: a silent ray read as free space where a
 //    surface was, e.g. a wall met too obliquely to echo);
+//  - ghost cells (scenes with moving objects only): cells whose height
+//    stands above the still scene by more than obstacle_min_m where nothing
+//    stands now either: a moved object's height the map did not forget;
 //  - the true hazards: the truth's cells classified by the map's own rules
 //    (hazards.h), each relative to the ground the robot stood on when it
 //    came nearest to it; per class, the precision of the map's hazards (the
@@ -48,9 +51,12 @@ class TerrainScorer {
   /// `map` and `corridor` must outlive the scorer.
   TerrainScorer(const TerrainMap& map, const Corridor& corridor);
 
-  /// Cells [ix_min, ix_min + n) of row iy: the map's (null: never touched) and the true heights (NaN: no surface).
+  /// Cells [ix_min, ix_min + n) of row iy: the map's (null: never touched)
+  /// and the true heights of the still scene (NaN: no surface); `now_m`, in
+  /// a scene with moving objects, the heights with them where they are at
+  /// the end (empty otherwise: no ghost cells are counted).
   void AddRow(std::int32_t iy, std::int32_t ix_min, std::span<const TerrainCell* const> cells,
-              std::span<const float> truth_m);
+              std::span<const float> truth_m, std::span<const float> now_m = {});
 
   /// The true hazards found and matched; call after the last row.
   const std::vector<TrueHazard>& FindTrueHazards();
@@ -66,6 +72,8 @@ class TerrainScorer {
   double sum_squared_error_m2_ = 0;
   std::size_t corridor_cells_ = 0, corridor_measured_ = 0, corridor_bounded_ = 0, cells_measured_ = 0;
   std::size_t cells_bounded_ = 0, bounds_below_truth_ = 0;  // cells with a bound and a true surface; bound too low
+  bool scores_ghosts_ = false;  // rows came with the heights of now (a scene with moving objects)
+  std::size_t ghost_cells_ = 0;
   // the true surface of every cell that is a hazard relative to some level
   std::unordered_map<std::uint64_t, CellSurface> off_ground_;
   std::vector<TrueHazard> true_hazards_;

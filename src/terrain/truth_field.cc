@@ -4,7 +4,8 @@
 
 namespace proxsim {
 
-std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double ceiling_z_m) {
+std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double ceiling_z_m,
+                               bool see_moving) {
   const std::size_t nx = static_cast<std::size_t>(box.nx()), ny = static_cast<std::size_t>(box.ny());
   std::vector<float> heights(nx * ny, std::numeric_limits<float>::quiet_NaN());
   std::vector<Ray> rays(nx), up_rays(nx);
@@ -16,8 +17,8 @@ std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, doub
     for (std::size_t col = 0; col < nx; ++col) {
       const double x = (box.ix_min + static_cast<double>(col) + 0.5) * resolution_m;
       const Vec3f origin(static_cast<float>(x), static_cast<float>(y), ceiling);
-      rays[col] = Ray{.origin_W = origin, .direction_W = -Vec3f::UnitZ(), .max_range_m = static_cast<float>(kTruthDepth_m), .see_robot = false};
-      up_rays[col] = Ray{.origin_W = origin, .direction_W = Vec3f::UnitZ(), .max_range_m = static_cast<float>(kTruthDepth_m), .see_robot = false};
+      rays[col] = Ray{.origin_W = origin, .direction_W = -Vec3f::UnitZ(), .max_range_m = static_cast<float>(kTruthDepth_m), .see_robot = false, .see_moving = see_moving};
+      up_rays[col] = Ray{.origin_W = origin, .direction_W = Vec3f::UnitZ(), .max_range_m = static_cast<float>(kTruthDepth_m), .see_robot = false, .see_moving = see_moving};
     }
     caster.Cast(rays, hits);
     caster.Cast(up_rays, up_hits);

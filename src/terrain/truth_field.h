@@ -6,6 +6,9 @@
 // starts inside a solid (a wall, a cupboard taller than the ceiling) is full
 // up to it: its height is the ceiling, which is also the most the map can
 // hold there. NaN where the ray meets nothing.
+// The scene's moving objects are left out (the truth is the still scene);
+// with them where they stand at the end, the same rays tell which raised
+// cells of the map something still stands on (the score's ghost cells).
 // Only the scoring and the output files use it, never the map.
 //
 // Frames: W world.
@@ -23,6 +26,9 @@ constexpr double kTruthDepth_m = 100.0;
 
 /// The true heights of the cells of `box`, row after row (index
 /// (iy − iy_min)·nx + (ix − ix_min)), float32 with NaN where there is no surface.
-std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double ceiling_z_m);
+/// `see_moving`: with the scene's moving objects where they are now; without
+/// them (the default), the still scene, which is what the map is scored against.
+std::vector<float> TrueHeights(const RayCaster& caster, const CellBox& box, double resolution_m, double ceiling_z_m,
+                               bool see_moving = false);
 
 }  // namespace proxsim

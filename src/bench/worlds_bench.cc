@@ -1,0 +1,133 @@
+#include "bench/worlds_bench.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "bench/bench_measures.h"
+#include "scenario/scenario.h"
+#include "scenario/scenario_generate.h"
+#include "scene/world_generator.h"
+#include "sim/simulation.h"
+
+namespace proxsim::bench {
+
+namespace {
+
+constexpr int kMovingObjects = 50;
+
+// The paper's walk without its stop rule or map, in the bench's room.
+Scenario PaperLikeIn(const BenchScene& scene) {
+  Scenario scenario = LoadBuiltinScenario("paper");
+  scenario.robot->strategy.reset();
+  scenario.map.enabled = false;
+  scenario.builtin_scene = "bench_dining_room";
+  scenario.scene = ToScene(scene);
+  return scenario;
+}
+
+// 50 boxes of 0.2 m circling on loops of their own about the room, off the robot's way
+void AddMovingBoxes(Scenario& scenario) {
+  for (int i = 0; i < kMovingObjects; ++i) {
+    SceneObject box;
+    box.name = "mover_" + std::to_string(i + 1);
+    box.shape = Box{Vec3(0.2, 0.2, 0.2)};
+    Motion motion;
+    const double x0 = 0.5 + 0.08 * i, y0 = (i % 2 ? 1.0 : -1.0) * (0.9 + 0.01 * i);
+    motion.waypoints_m = {Vec2(x0, y0), Vec2(x0 + 0.6, y0), Vec2(x0 + 0.6, y0 + 0.3)};
+    motion.speed_m_s = 0.5 + 0.01 * i;
+    motion.X_MO.translation() = Vec3(0, 0, 0.1);
+    box.X_WO = MotionPoseAt(motion, 0);
+    box.motion = motion;
+    scenario.scene.objects.push_back(box);
+  }
+}
+
+// Wall time per Simulation::Step over the whole walk, best of `repeats`.
+double SecondsPerStep(const Scenario& scenario, int repeats) {
+  double best = std::numeric_limits<double>::infinity();
+  Simulation sim(scenario, 1);
+  for (int i = 0; i < repeats; ++i) {
+    sim.Reset(scenario.seed);
+    const auto start = Clock::now();
+    while (!sim.done()) sim.Step();
+    best = std::min(best, Since(start) / static_cast<double>(sim.sample_count()));
+  }
+  return best;
+}
+
+// The slowest of 20 seeds: generating alone, and the round trip through the scenario text.
+nlohmann::json GenerationTimes(const std::string& generate) {
+  double generate_s = 0, round_trip_s = 0;
+  std::size_t objects = 0;
+  for (int seed = 1; seed <= 20; ++seed) {
+    const std::string text = "proxsim: 1\nscene:\n  generate: {" + generate + ", seed: " + std::to_string(seed) +
+                             ", difficulty: 1}\nrobot: {}\nsensors:\n  - {name: s, type: ideal, link: left_tibia}\n";
+    GenerateConfig config;
+    config.seed = static_cast<std::uint64_t>(seed);
+    config.difficulty = 1;
+    config.kind = generate.find("room") != std::string::npos ? GenerateConfig::Kind::kRoom : GenerateConfig::Kind::kCourse;
+    auto start = Clock::now();
+    const GeneratedWorld world = GenerateWorld(config);
+    generate_s = std::max(generate_s, Since(start));
+    start = Clock::now();
+    const Scenario scenario = LoadScenarioText(text, "bench:generate");
+    round_trip_s = std::max(round_trip_s, Since(start));
+    objects = std::max(objects, scenario.scene.objects.size());
+    (void)world;
+  }
+  return {{"generate_max_ms", 1e3 * generate_s}, {"generate_and_read_max_ms", 1e3 * round_trip_s}, {"objects_max", objects}};
+}
+
+}  // namespace
+
+nlohmann::json WorldsSection(bool quick, const BenchScene& scene_1m) {
+  const BenchScene made = scene_1m.objects.empty() ? MakeBenchDiningRoom(1'000'000) : BenchScene{};
+  const BenchScene& scene = scene_1m.objects.empty() ? made : scene_1m;
+  const int repeats = quick ? 2 : 7;
+  const Scenario still = PaperLikeIn(scene);
+  Scenario moving = still;
+  AddMovingBoxes(moving);
+  const double still_s = SecondsPerStep(still, repeats);
+  const double moving_s = SecondsPerStep(moving, repeats);
+  Progress("worlds: a paper-like sample in the %zu-triangle room %.1f µs, with %d moving objects %.1f µs (+%.1f %%)",
+           scene.triangle_count, 1e6 * still_s, kMovingObjects, 1e6 * moving_s, 100 * (moving_s / still_s - 1));
+  nlohmann::json section = {{"triangles", scene.triangle_count},
+                            {"moving_objects", kMovingObjects},
+                            {"step_still_us", 1e6 * still_s},
+                            {"step_moving_us", 1e6 * moving_s},
+                            {"moving_extra_fraction", moving_s / still_s - 1},
+                            {"moving_target_fraction", 0.10}};
+  section["course_20m"] = GenerationTimes("kind: course, length_m: 20");
+  section["room_10x10m"] = GenerationTimes("kind: room, size_m: [10, 10]");
+  section["generation_target_ms"] = 50;
+  Progress("worlds: generating a 20 m course %.2f ms, a 10 x 10 m room %.2f ms (slowest of 20 seeds at difficulty 1)",
+           section["course_20m"]["generate_max_ms"].get<double>(), section["room_10x10m"]["generate_max_ms"].get<double>());
+  return section;
+}
+
+std::string WorldsReport(const nlohmann::json& s) {
+  std::ostringstream out;
+  char line[400];
+  out << "\n## Worlds: moving objects and generated worlds\n\n";
+  std::snprintf(line, sizeof line,
+                "A paper-like sample in the %zu-triangle room: %.1f µs; with %d moving objects: %.1f µs, "
+                "**+%.1f %%** (target ≤ %.0f %%).\n\n",
+                s.at("triangles").get<std::size_t>(), s.at("step_still_us").get<double>(), s.at("moving_objects").get<int>(),
+                s.at("step_moving_us").get<double>(), 100 * s.at("moving_extra_fraction").get<double>(),
+                100 * s.at("moving_target_fraction").get<double>());
+  out << line;
+  out << "| world (difficulty 1, slowest of 20 seeds) | generate | generate + write + read | objects |\n|---|---|---|---|\n";
+  for (const auto& [key, name] : {std::pair{"course_20m", "20 m course"}, {"room_10x10m", "10 × 10 m room"}}) {
+    const auto& g = s.at(key);
+    std::snprintf(line, sizeof line, "| %s | %.2f ms | %.2f ms | %zu |\n", name, g.at("generate_max_ms").get<double>(),
+                  g.at("generate_and_read_max_ms").get<double>(), g.at("objects_max").get<std::size_t>());
+    out << line;
+  }
+  std::snprintf(line, sizeof line, "\nTarget: under %d ms.\n", s.at("generation_target_ms").get<int>());
+  out << line;
+  return out.str();
+}
+
+}  // namespace proxsim::bench

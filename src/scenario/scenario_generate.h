@@ -1,0 +1,22 @@
+// Generated worlds in a scenario (docs/worlds.md): `scene: {generate: {...}}`
+// read, the world generated and written in as plain objects.
+#pragma once
+
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+namespace proxsim {
+
+/// Whether a parsed scenario document asks for a generated world (`scene.generate`).
+bool HasGenerate(const YAML::Node& document);
+
+/// The scenario `yaml_text` with its generated world written out: the
+/// generated objects (then the file's own) under scene.objects, and the
+/// robot's path when the file has a robot without a path. What
+/// `proxsim generate` writes, and what a scenario with `generate` is read as.
+/// Throws InputError naming the fault (an unknown family, an impossible
+/// range, a person taller than the room) with `source` in every message.
+std::string GeneratedScenarioText(const std::string& yaml_text, const std::string& source);
+
+}  // namespace proxsim
