@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bench/bench_measures.h"
+#include "bench/step_timing.h"
 #include "scenario/scenario.h"
 #include "sim/simulation.h"
 #include "terrain/octomap_recorder.h"
@@ -23,19 +24,6 @@ Scenario PaperWalk(bool with_map) {
   scenario.robot->strategy.reset();
   scenario.map.enabled = with_map;
   return scenario;
-}
-
-// Wall time per Simulation::Step over the whole walk, best of `repeats`.
-double SecondsPerStep(const Scenario& scenario, int repeats) {
-  double best = std::numeric_limits<double>::infinity();
-  Simulation sim(scenario, 1);
-  for (int i = 0; i < repeats; ++i) {
-    sim.Reset(scenario.seed);
-    const auto start = Clock::now();
-    while (!sim.done()) sim.Step();
-    best = std::min(best, Since(start) / static_cast<double>(sim.sample_count()));
-  }
-  return best;
 }
 
 // One sample's observation, copied out of the simulation.

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "bench/bench_measures.h"
+#include "bench/step_timing.h"
 #include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
@@ -35,18 +36,6 @@ Scenario PaperLike(const Scenario& base, const std::string& link, const Pose& X_
   scenario.rate_hz = paper.rate_hz;
   scenario.robot->strategy.reset();
   return scenario;
-}
-
-// Wall time per Simulation::Step over a whole run, best of `repeats`.
-double SecondsPerStep(const Scenario& scenario, int repeats) {
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < repeats; ++i) {
-    Simulation sim(scenario, 1);
-    const auto start = Clock::now();
-    while (!sim.done()) sim.Step();
-    best = std::min(best, Since(start) / static_cast<double>(sim.sample_count()));
-  }
-  return best;
 }
 
 // What checking the robot's contacts costs per sample of `scenario`: the same

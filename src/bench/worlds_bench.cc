@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bench/bench_measures.h"
+#include "bench/step_timing.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_generate.h"
 #include "scene/world_generator.h"
@@ -42,19 +43,6 @@ void AddMovingBoxes(Scenario& scenario) {
     box.motion = motion;
     scenario.scene.objects.push_back(box);
   }
-}
-
-// Wall time per Simulation::Step over the whole walk, best of `repeats`.
-double SecondsPerStep(const Scenario& scenario, int repeats) {
-  double best = std::numeric_limits<double>::infinity();
-  Simulation sim(scenario, 1);
-  for (int i = 0; i < repeats; ++i) {
-    sim.Reset(scenario.seed);
-    const auto start = Clock::now();
-    while (!sim.done()) sim.Step();
-    best = std::min(best, Since(start) / static_cast<double>(sim.sample_count()));
-  }
-  return best;
 }
 
 // The slowest of 20 seeds: generating alone, and the round trip through the scenario text.

@@ -192,13 +192,7 @@ Scenario LoadScenarioText(const std::string& yaml_text, const std::string& sourc
   YamlReader reader(source);
 
   // the text must be YAML, and not empty
-  YAML::Node document;
-  try {
-    document = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& error) {
-    reader.FailAtLine(error.mark.is_null() ? 0 : error.mark.line + 1, "", "not valid YAML: " + error.msg);
-    throw InputError(reader.Problems());
-  }
+  YAML::Node document = reader.Parse(yaml_text);
   if (!document.IsDefined() || document.IsNull()) {
     reader.FailFile("the file is empty; expected a scenario map starting with 'proxsim: 1'");
     throw InputError(reader.Problems());

@@ -175,13 +175,7 @@ bool HasGenerate(const YAML::Node& document) {
 
 std::string GeneratedScenarioText(const std::string& yaml_text, const std::string& source) {
   YamlReader reader(source);
-  YAML::Node document;
-  try {
-    document = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& error) {
-    reader.FailAtLine(error.mark.is_null() ? 0 : error.mark.line + 1, "", "not valid YAML: " + error.msg);
-    throw InputError(reader.Problems());
-  }
+  YAML::Node document = reader.Parse(yaml_text);
   if (!HasGenerate(document)) {
     reader.FailFile("scene.generate: no world to generate (expected scene: {generate: {kind: course | room, ...}})");
     throw InputError(reader.Problems());

@@ -3,6 +3,7 @@
 // every node with its position; its lines count from 0, ours from 1.
 #include "scenario/yaml_reader.h"
 
+#include "core/input_error.h"
 #include "core/input_limits.h"
 
 #include <algorithm>
@@ -119,6 +120,15 @@ bool MapView::Has(const std::string& key) const {
 
 void YamlReader::Fail(const Field& field, const std::string& message) {
   FailAtLine(LineOf(field.node), field.path, message);
+}
+
+YAML::Node YamlReader::Parse(const std::string& text) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& error) {
+    FailAtLine(error.mark.is_null() ? 0 : error.mark.line + 1, "", "not valid YAML: " + error.msg);
+    throw InputError(Problems());
+  }
 }
 
 void YamlReader::FailFile(const std::string& message) { problems_.emplace_back(0, source_ + ": " + message); }

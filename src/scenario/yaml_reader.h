@@ -89,6 +89,8 @@ class YamlReader {
 
   /// The document root as a field.
   Field Root(const YAML::Node& document) const { return Field{document, "", true}; }
+  /// `text` parsed as YAML; text that is not YAML throws InputError naming its line.
+  YAML::Node Parse(const std::string& text);
 
   /// Records "SOURCE:LINE: PATH: message" at the field's line.
   void Fail(const Field& field, const std::string& message);

@@ -270,13 +270,7 @@ StudyConfig LoadStudyFile(const std::string& path, bool allow_large) {
   std::ostringstream text;
   text << file.rdbuf();
   YamlReader reader(path);
-  YAML::Node document;
-  try {
-    document = YAML::Load(text.str());
-  } catch (const YAML::Exception& e) {
-    reader.FailAtLine(e.mark.is_null() ? 0 : e.mark.line + 1, "", "not valid YAML: " + e.msg);
-    throw InputError(reader.Problems());
-  }
+  const YAML::Node document = reader.Parse(text.str());
   StudyConfig study;
   study.source = path;
   const auto top = reader.Map(reader.Root(document),
