@@ -51,7 +51,7 @@ TEST(ReadingsColumnsTest, ARunsFieldsAreWhatColumnsJsonSays) {
   EXPECT_EQ(csv.header, header);
   EXPECT_EQ(ReadFile(out / "readings.csv").substr(0, ReadingsCsvHeader().size() + 1), ReadingsCsvHeader() + "\n");
   EXPECT_EQ(document["statuses"].front(), "ok");
-  EXPECT_EQ(document["statuses"].size(), 7u);
+  EXPECT_EQ(document["statuses"].size(), 8u);
   EXPECT_EQ(document["support_legs"], nlohmann::json({"left", "right", "double"}));
   EXPECT_EQ(document["types"], nlohmann::json({"ideal", "laser", "ultrasonic", "reflectance", "lookup", "multizone"}));
 

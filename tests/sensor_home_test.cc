@@ -104,6 +104,13 @@ sensors:
     zone_rays: 9
     targets: 3
     target_separation_m: 0.4
+  - name: sonar
+    type: ultrasonic
+    beam: {aperture_deg: 40, rays: 19, reach: [[0.2, 20], [1.0, 8]]}
+    echo_timeout_s: 0.02
+    rate_hz: 10
+    fire: 0.03
+    crosstalk: false
   - name: reflect
     type: reflectance
     use_material: true

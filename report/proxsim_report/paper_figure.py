@@ -33,7 +33,7 @@ def paper_figure(plt, run, path, has_robot):
         axes[1, j].set_title(f"profile: {sensor.name}", fontsize=10)
     status_handles = [Line2D([], [], ls="none", marker="o", color=STATUS_COLORS[s], label=STATUS_LABELS[s])
                       for s in STATUSES
-                      if s != "dropout" or any((sensor.status == s).any() for sensor in cols)]
+                      if s not in ("dropout", "crosstalk") or any((sensor.status == s).any() for sensor in cols)]
     status_handles.append(Line2D([], [], color="#222222", lw=0.8, label="noise-free"))
     status_handles.append(Line2D([], [], color="#b03030", ls="--", lw=0.9, label="d_max"))
     status_handles.append(Line2D([], [], color="#777777", lw=0.6, label="sensor track"))

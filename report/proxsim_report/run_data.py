@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-STATUSES = ("ok", "no_echo", "too_close", "grazing", "self", "dropout")
+STATUSES = ("ok", "no_echo", "too_close", "grazing", "self", "dropout", "crosstalk")
 
 
 class RunError(Exception):

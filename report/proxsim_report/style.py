@@ -8,10 +8,11 @@ STATUS_COLORS = {
     "grazing": "#d62728",    # incidence outside the sensor's window
     "self": "#8c56b8",       # hit the robot's own body
     "dropout": "#e7c31c",    # an echo lost to the noise model's dropout
+    "crosstalk": "#17becf",  # another ultrasonic sensor's ping, read as an echo
 }
 STATUS_LABELS = {"ok": "detected", "no_echo": "no echo", "too_close": "too close",
                  "grazing": "grazing", "self": "self (own body)",
-                 "dropout": "dropout"}
+                 "dropout": "dropout", "crosstalk": "crosstalk (another's ping)"}
 TYPE_LABELS = {"ideal": "ideal sensor", "laser": "laser range finder",
                "ultrasonic": "ultrasonic sensor", "reflectance": "reflectance (IR) sensor",
                "lookup": "lookup-table sensor"}

@@ -25,7 +25,7 @@ const std::array<ReadingsColumn, 24> kColumns = {{
      "its physics: `ideal`, `laser`, `ultrasonic`, `reflectance`, `lookup` or `multizone` (a named part reports its physics)",
      [](const ReadingRow& r) { return static_cast<double>(r.config.spec.type); }},
     {"status", ColumnType::kCode8, ColumnCodes::kStatuses, "",
-     "`ok`, `no_echo`, `too_close`, `grazing`, `self`, `dropout` ([sensors.md](sensors.md))",
+     "`ok`, `no_echo`, `too_close`, `grazing`, `self`, `dropout`, `crosstalk` ([sensors.md](sensors.md))",
      [](const ReadingRow& r) { return static_cast<double>(r.sample.reading.status); }},
     {"detected", ColumnType::kBool, ColumnCodes::kNone, "0/1", "1 only for `ok`",
      [](const ReadingRow& r) { return r.sample.reading.detected() ? 1.0 : 0.0; }},
@@ -85,7 +85,8 @@ const std::array<ReadingsColumn, 24> kColumns = {{
 double Rep117Range_m(const ReadingRow& r) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   switch (r.sample.reading.status) {
-    case ReadingStatus::kOk: return r.sample.reading.d_m;
+    case ReadingStatus::kOk:
+    case ReadingStatus::kCrosstalk: return r.sample.reading.d_m;  // the device reports it, whoever's echo it was
     case ReadingStatus::kTooClose: return -kInf;                 // "an object too close to measure"
     case ReadingStatus::kNoEcho:
     case ReadingStatus::kGrazing: return kInf;                   // no echo came back: nothing in range for the device

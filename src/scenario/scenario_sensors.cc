@@ -8,6 +8,7 @@
 // SensorConfig.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <set>
 
@@ -120,6 +121,15 @@ void ReadBeam(YamlReader& reader, const Field& field, SensorSpec& spec) {
       }
     }
   }
+  // reach: [[d_m, half_angle_deg], ...] (checked by SensorSpec::Validate)
+  if (const auto rows = reader.List((*map)["reach"], "a list of [d_m, half_angle_deg] rows")) {
+    if (map->Has("reach")) beam.reach.clear();
+    for (const Field& row : *rows) {
+      if (const auto values = reader.Numbers(row, 2, AnyNumber(), "[d_m, half_angle_deg]")) {
+        beam.reach.push_back({(*values)[0], (*values)[1]});
+      }
+    }
+  }
   spec.beam = beam;
 }
 
@@ -174,6 +184,57 @@ std::string RateLimitProblem(const SensorSpec& spec, const RateLimit& limit, dou
   return message;
 }
 
+// fire: simultaneous | round_robin | an offset in seconds (round_robin's
+// slots are given once every sensor is read: ResolveRoundRobin); crosstalk: bool
+void ReadFiring(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
+  const Field crosstalk = map["crosstalk"];
+  sensor.crosstalk = reader.Bool(crosstalk).value_or(sensor.crosstalk);
+  if (crosstalk && sensor.spec.type != SensorType::kUltrasonic) {
+    reader.Fail(crosstalk, std::string("expected no crosstalk key for a ") + SensorTypeName(sensor.spec.type) +
+                               " sensor (ultrasonic sensors hear each other's pings), got one");
+  }
+  const Field fire = map["fire"];
+  if (!fire) return;
+  const auto text = reader.String(fire);
+  if (!text) return;
+  if (*text == "simultaneous" || *text == "round_robin") {
+    sensor.fire = *text;
+  } else if (char* end = nullptr; std::strtod(text->c_str(), &end), end != text->c_str() && *end == '\0') {
+    const auto offset_s = reader.Number(fire, NonNegativeNumber("s"));
+    if (!offset_s) return;  // reported by Number
+    sensor.fire = *text;
+    sensor.fire_offset_s = *offset_s;
+  } else {
+    reader.Fail(fire, "expected simultaneous, round_robin or an offset in seconds, got '" + *text + "'");
+    return;
+  }
+  const bool has_rate = map.Has("rate_hz") || PartRateLimit(sensor.spec).max_hz > 0;
+  if (sensor.fire != "simultaneous" && !has_rate) {
+    reader.Fail(fire, "expected a rate_hz beside fire: " + sensor.fire +
+                          " (the offset is within the sensor's period), got none");
+  }
+}
+
+// round_robin sensors share their period out evenly, in file order; an
+// offset must lie within the sensor's period
+void ResolveFiring(YamlReader& reader, const std::vector<Field>& items, std::vector<SensorConfig>& sensors) {
+  std::size_t round_robin_count = 0, slot = 0;
+  for (const SensorConfig& sensor : sensors) round_robin_count += sensor.fire == "round_robin" ? 1 : 0;
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    SensorConfig& sensor = sensors[i];
+    if (!(sensor.rate_hz > 0)) continue;  // reported by ReadFiring
+    const double period_s = 1.0 / sensor.rate_hz;
+    if (sensor.fire == "round_robin") {
+      sensor.fire_offset_s = period_s * static_cast<double>(slot++) / static_cast<double>(round_robin_count);
+    } else if (sensor.fire_offset_s >= period_s) {
+      char message[200];
+      std::snprintf(message, sizeof message, "expected an offset in [0, %g) s, within the sensor's period at %g Hz, got %g",
+                    period_s, sensor.rate_hz, sensor.fire_offset_s);
+      reader.Fail(Field{NodeAtKeyPath(items[i].node, "fire"), JoinPath(items[i].path, "fire"), true}, message);
+    }
+  }
+}
+
 // the sensor's own sampling and the echo's flight
 void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
   sensor.rate_hz = reader.Number(map["rate_hz"], PositiveNumber("Hz")).value_or(sensor.rate_hz);
@@ -185,6 +246,9 @@ void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
     reader.Fail(flight, std::string("expected false for a ") + SensorTypeName(sensor.spec.type) +
                             " sensor (flight_time applies to the time-of-flight types), got true");
   }
+  sensor.spec.echo_timeout_s =
+      reader.Number(map["echo_timeout_s"], NonNegativeNumber("s")).value_or(sensor.spec.echo_timeout_s);
+  ReadFiring(reader, map, sensor);
   // a part samples no faster than its datasheet allows, by default at that limit
   if (const RateLimit limit = PartRateLimit(sensor.spec); limit.max_hz > 0) {
     if (!map.Has("rate_hz")) sensor.rate_hz = limit.max_hz;
@@ -292,6 +356,7 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
   const auto items = reader.List(field, "a list of sensors");
   if (!items) return sensors;
   std::map<std::string, std::string> name_origin;  // name -> key path of its first use
+  std::vector<Field> sensor_items;                 // each read sensor's item, for ResolveFiring's messages
   for (const Field& item : *items) {
     const auto map = reader.Map(item, SensorKeyNames());
     if (!map) continue;
@@ -308,7 +373,9 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
       }
     }
     sensors.push_back(std::move(sensor));
+    sensor_items.push_back(item);
   }
+  ResolveFiring(reader, sensor_items, sensors);
   return sensors;
 }
 

@@ -6,6 +6,31 @@
 
 namespace proxsim {
 
+namespace {
+
+// y(x) through [x, y] rows (x ascending, at least one row), held beyond the ends
+double PiecewiseLinear(const std::vector<std::array<double, 2>>& rows, double x) {
+  if (x <= rows.front()[0]) return rows.front()[1];
+  if (x >= rows.back()[0]) return rows.back()[1];
+  const auto upper = std::upper_bound(rows.begin(), rows.end(), x,
+                                      [](double value, const std::array<double, 2>& row) { return value < row[0]; });
+  const auto& [x1, y1] = *upper;
+  const auto& [x0, y0] = *(upper - 1);
+  return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+}
+
+}  // namespace
+
+double BeamReachDeg(const BeamSpec& beam, double d_m) {
+  const double half_aperture_deg = 0.5 * beam.aperture_deg;
+  return beam.reach.empty() ? half_aperture_deg : std::min(half_aperture_deg, PiecewiseLinear(beam.reach, d_m));
+}
+
+bool BeamReaches(const std::optional<BeamSpec>& beam, double off_axis_deg, double d_m) {
+  // the axis ray is always heard: a reach table narrows the lobe, it does not close it
+  return !beam || off_axis_deg == 0.0 || off_axis_deg <= BeamReachDeg(*beam, d_m);
+}
+
 double BeamGain(const BeamSpec& beam, double off_axis_deg) {
   switch (beam.pattern) {
     case BeamPattern::kUniform:
@@ -15,18 +40,10 @@ double BeamGain(const BeamSpec& beam, double off_axis_deg) {
       return std::exp(-0.5 * x * x);
     }
     case BeamPattern::kTable: {
-      // piecewise linear; before the first row its gain, after the last its gain
-      const auto& table = beam.table;
       double peak = 0;
-      for (const auto& row : table) peak = std::max(peak, row[1]);
-      if (table.empty() || !(peak > 0)) return 0.0;
-      if (off_axis_deg <= table.front()[0]) return table.front()[1] / peak;
-      if (off_axis_deg >= table.back()[0]) return table.back()[1] / peak;
-      const auto upper = std::upper_bound(table.begin(), table.end(), off_axis_deg,
-                                          [](double angle, const std::array<double, 2>& row) { return angle < row[0]; });
-      const auto& [a1, g1] = *upper;
-      const auto& [a0, g0] = *(upper - 1);
-      return (g0 + (g1 - g0) * (off_axis_deg - a0) / (a1 - a0)) / peak;
+      for (const auto& row : beam.table) peak = std::max(peak, row[1]);
+      if (beam.table.empty() || !(peak > 0)) return 0.0;
+      return PiecewiseLinear(beam.table, off_axis_deg) / peak;
     }
   }
   return 1.0;

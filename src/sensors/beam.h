@@ -26,6 +26,14 @@ struct BeamRay {
 /// The pattern's gain at θ degrees off the axis, relative to its peak (in [0, 1]).
 double BeamGain(const BeamSpec& beam, double off_axis_deg);
 
+/// How far off the axis, degrees, an echo from d_m away is heard: the
+/// `reach` rows at d_m (piecewise linear, held beyond the ends), at most the
+/// cone's half-aperture; the half-aperture when there are no rows.
+double BeamReachDeg(const BeamSpec& beam, double d_m);
+/// Whether a ray off_axis_deg off the axis whose echo comes from d_m away is
+/// heard (always, without a beam or a reach table, and on the axis).
+bool BeamReaches(const std::optional<BeamSpec>& beam, double off_axis_deg, double d_m);
+
 /// The rays of a beam; one axis ray for a sensor without one.
 std::vector<BeamRay> MakeBeamRays(const std::optional<BeamSpec>& beam);
 

@@ -8,7 +8,10 @@ nlohmann::json BeamJson(const BeamSpec& beam) {
   nlohmann::json pattern = "uniform";
   if (beam.pattern == BeamPattern::kGaussian) pattern = {{"gaussian", {{"width_deg", beam.width_deg}}}};
   if (beam.pattern == BeamPattern::kTable) pattern = {{"table", beam.table}};
-  return {{"aperture_deg", beam.aperture_deg}, {"rays", beam.rays}, {"pattern", pattern}};
+  return {{"aperture_deg", beam.aperture_deg},
+          {"rays", beam.rays},
+          {"pattern", pattern},
+          {"reach", beam.reach.empty() ? nlohmann::json(nullptr) : nlohmann::json(beam.reach)}};
 }
 
 }  // namespace
@@ -35,6 +38,7 @@ nlohmann::json SensorSpecJson(const SensorSpec& spec) {
           {"specular_exponent", spec.specular_exponent},
           {"use_material", spec.use_material},
           {"lookup_table", lookup},
+          {"echo_timeout_s", spec.echo_timeout_s > 0 ? nlohmann::json(spec.echo_timeout_s) : nlohmann::json(nullptr)},
           {"range_table", spec.range_table.empty() ? nlohmann::json(nullptr) : nlohmann::json(spec.range_table)},
           {"zones", spec.zones ? nlohmann::json{spec.zones->nx, spec.zones->ny} : nlohmann::json(nullptr)},
           {"fov_deg", spec.zones ? nlohmann::json{spec.zones->fov_h_deg, spec.zones->fov_v_deg} : nlohmann::json(nullptr)},

@@ -36,6 +36,8 @@ const std::vector<SensorKey>& SensorKeys() {
      "rays in the cone (1: the axis alone)"},
     {"beam.pattern", R"(`uniform` \| `{gaussian: {width_deg}}` \| `{table: [[angle_deg, gain], ...]}`)", "`uniform`",
      "the gain g(θ) of a ray θ off the axis"},
+    {"beam.reach", "`[[d_m, half_angle_deg], ...]`", "none (`hc_sr04`: its published lobe)",
+     "time of flight only: an echo from d_m away is heard only from rays at most this far off the axis (piecewise linear, held beyond the ends): a lobe that narrows with distance"},
     {"echo_model", R"(`window` \| `physical`)", "`window`",
      "time of flight only: the paper's incidence window, or a returned energy against `echo_threshold`"},
     {"echo_threshold", "[0, 1]", "0.1",
@@ -65,7 +67,13 @@ const std::vector<SensorKey>& SensorKeys() {
     {"flight_time", "bool", "false",
      "time of flight only: the echo is received where the moving sensor is when it returns"},
     {"wave_speed_m_s", "> 0, m/s", "343 (ultrasonic), 299 792 458 (others)",
-     "the wave speed for `flight_time`"},
+     "the wave speed for `flight_time` and crosstalk"},
+    {"echo_timeout_s", "≥ 0, s", "0 (`hc_sr04`: 0.038)",
+     "ultrasonic only: how long the receiver listens after its ping (0: until its next ping); later echoes are not heard"},
+    {"fire", R"(`simultaneous` \| `round_robin` \| offset, s)", "`simultaneous`",
+     "when the sensor pings within its period: at t = 0 + k/rate_hz, in an even slot among the `round_robin` sensors (file order), or this offset in [0, 1/rate_hz); needs `rate_hz` unless simultaneous"},
+    {"crosstalk", "bool", "true",
+     "ultrasonic only: the sensor hears other ultrasonic sensors' pings that reach it within its listening window (status `crosstalk`)"},
   };
   return keys;
 }

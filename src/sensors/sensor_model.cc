@@ -8,7 +8,7 @@
 namespace proxsim {
 
 namespace {
-constexpr EnumNameTable<ReadingStatus, 7> kStatusNames = {{
+constexpr EnumNameTable<ReadingStatus, 8> kStatusNames = {{
     {ReadingStatus::kOk, "ok"},
     {ReadingStatus::kNoEcho, "no_echo"},
     {ReadingStatus::kTooClose, "too_close"},
@@ -16,6 +16,7 @@ constexpr EnumNameTable<ReadingStatus, 7> kStatusNames = {{
     {ReadingStatus::kSelf, "self"},
     {ReadingStatus::kDropout, "dropout"},
     {ReadingStatus::kNotSampled, "not_sampled"},
+    {ReadingStatus::kCrosstalk, "crosstalk"},
 }};
 static_assert(InCodeOrder(kStatusNames));
 }  // namespace
@@ -242,7 +243,8 @@ BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, st
   const auto no_detection = [&]() {
     int nearest = -1;
     for (std::size_t i = 0; i < n; ++i) {
-      if (echoes[i].distance_m <= spec.max_range_m && (nearest < 0 || echoes[i].distance_m < echoes[nearest].distance_m)) {
+      if (echoes[i].distance_m <= spec.max_range_m && BeamReaches(spec.beam, rays[i].off_axis_deg, echoes[i].distance_m) &&
+          (nearest < 0 || echoes[i].distance_m < echoes[nearest].distance_m)) {
         nearest = static_cast<int>(i);
       }
     }
@@ -291,6 +293,7 @@ BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, st
   for (std::size_t i = 0; i < n; ++i) {
     const double arrival = echoes[i].distance_m + echoes[i].flight_shift_m;
     if (first >= 0 && !(arrival < echoes[first].distance_m + echoes[first].flight_shift_m)) continue;
+    if (!BeamReaches(spec.beam, rays[i].off_axis_deg, echoes[i].distance_m)) continue;
     const ReadingStatus status = EchoStatus(spec, echoes[i], rays[i].gain);
     if (!Counts(status)) continue;
     first = static_cast<int>(i);

@@ -58,9 +58,10 @@ enum class ReadingStatus : std::uint8_t {
   kSelf,      ///< the echo came from the robot's own body
   kDropout,   ///< an echo that counted, lost to the noise model's dropout
   kNotSampled,  ///< the sensor took no sample at this time (its rate_hz is below the run's)
+  kCrosstalk,   ///< the device reports an echo, but of another sensor's ping (sim/crosstalk.h); a detection to the robot
 };
 
-/// "ok", "no_echo", "too_close", "grazing", "self", "dropout" or "not_sampled".
+/// "ok", "no_echo", "too_close", "grazing", "self", "dropout", "not_sampled" or "crosstalk".
 const char* ReadingStatusName(ReadingStatus status);
 /// Every status's name, in code order (the output files' codes).
 const std::vector<std::string>& ReadingStatusNames();
@@ -95,7 +96,8 @@ struct Reading {
   /// A lookup sensor's output (the table's unit); NaN for the other types.
   double output = std::numeric_limits<double>::quiet_NaN();
 
-  bool detected() const { return status == ReadingStatus::kOk; }
+  /// The device reports an echo (crosstalk included: the device cannot tell).
+  bool detected() const { return status == ReadingStatus::kOk || status == ReadingStatus::kCrosstalk; }
 };
 
 /// Incidence α in degrees, in [0, 90], between a ray of unit direction `dir`

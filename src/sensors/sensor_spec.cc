@@ -153,20 +153,36 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
   if (name == "hc_sr04") {
     // HC-SR04 ultrasonic ranging module (ElecFreaks / Cytron datasheet
     // "Ultrasonic Ranging Module HC-SR04"): 40 kHz, range 2 cm – 4 m,
-    // "measuring angle 15 degree" (read here as the lobe's half-angle: a 30°
-    // cone), "ranging accuracy can reach 3 mm". The datasheet gives no lobe
-    // shape or incidence limit: the paper's 15° ultrasonic window is kept and
-    // the lobe is uniform over the cone.
+    // "ranging accuracy can reach 3 mm". Its "measuring angle 15 degree" is a
+    // nominal figure; published measurements show a lobe wide near the
+    // sensor that narrows with distance. The reach rows are the Parallax
+    // PING))) product guide's (28015, v2.0: same open 40 kHz transducer pair)
+    // for a flat target kept normal to the axis — about 30° off the axis at
+    // 12 in (0.305 m) narrowing to 10° at 45 in (1.143 m) — as G. Dyrkacz's
+    // HC-SR04 beam tests (2020) report and confirm in shape on the HC-SR04
+    // (wider close in, tightening beyond 40 cm). The cone is therefore 60°
+    // wide and the rays far off the axis count only near the sensor. The
+    // paper's 15° ultrasonic incidence window is kept; the lobe is uniform
+    // within the reach.
     SensorSpec spec = Preset(SensorType::kUltrasonic);
     spec.part = "hc_sr04";
     spec.min_range_m = 0.02;
     spec.max_range_m = 4.0;
     spec.noise = {.sigma = 0.003, .mean = 0.0, .model = NoiseModel::kAdditive, .resolution_m = 0.003};
-    spec.beam = BeamSpec{.aperture_deg = 30.0, .rays = 37, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    spec.beam = BeamSpec{.aperture_deg = 60.0,
+                         .rays = 91,
+                         .pattern = BeamPattern::kUniform,
+                         .width_deg = 10.0,
+                         .table = {},
+                         .reach = {{0.305, 30.0}, {1.143, 10.0}}};
     // "we suggest to use over 60ms measurement cycle, in order to prevent
     // trigger signal to the echo signal": at most 1/60 ms ≈ 16.7 Hz
     spec.max_rate_hz = 1.0 / 0.060;
     spec.max_rate_source = "HC-SR04 datasheet: \"we suggest to use over 60ms measurement cycle\"";
+    // with no echo the module's echo line stays high 38 ms, then it gives up
+    // (the module's documented timeout, e.g. buildcircuit.com's HC-SR04 page:
+    // "If no obstacle is detected, the output pin will give a 38ms high level signal")
+    spec.echo_timeout_s = 0.038;
     return spec;
   }
   if (name == "sharp_gp2y0a21") {
@@ -290,6 +306,25 @@ std::vector<std::string> SensorSpec::Validate() const {
       }
       if (beam->table.size() >= 2 && !(max_gain > 0)) fail("beam.pattern.table", "at least one gain > 0", max_gain);
     }
+    if (!beam->reach.empty() && !IsTimeOfFlight(type)) {
+      problems.push_back("beam.reach: expected only for a time-of-flight sensor (an echo heard off the axis by "
+                         "distance), got it for a " + std::string(SensorTypeName(type)) + " sensor");
+    }
+    for (std::size_t i = 0; i < beam->reach.size(); ++i) {
+      const auto& [d_m, half_angle_deg] = beam->reach[i];
+      const std::string row = "beam.reach[" + std::to_string(i) + "]";
+      if (!finite(d_m) || d_m < 0 || (i > 0 && !(d_m > beam->reach[i - 1][0]))) {
+        fail(row + "[0]", "distances >= 0 m, strictly ascending", d_m);
+      }
+      if (!finite(half_angle_deg) || half_angle_deg < 0 || half_angle_deg > 90) {
+        fail(row + "[1]", "a half-angle in [0, 90] degrees", half_angle_deg);
+      }
+    }
+  }
+  if (!finite(echo_timeout_s) || echo_timeout_s < 0) fail("echo_timeout_s", "a finite time >= 0 s", echo_timeout_s);
+  if (echo_timeout_s > 0 && type != SensorType::kUltrasonic) {
+    problems.push_back("echo_timeout_s: expected only for an ultrasonic sensor, got it for a " +
+                       std::string(SensorTypeName(type)) + " sensor");
   }
   if (type == SensorType::kLookup) {
     if (lookup_table.size() < 2) {

@@ -62,6 +62,11 @@ struct BeamSpec {
   BeamPattern pattern = BeamPattern::kUniform;
   double width_deg = 10.0;    ///< the gaussian's w, > 0
   std::vector<std::array<double, 2>> table;  ///< [angle_deg, gain] rows, angles ascending
+  /// How far off the axis an echo is still heard, by distance: [d_m,
+  /// half_angle_deg] rows, distances ascending, piecewise linear and held
+  /// beyond the ends (an ultrasonic lobe narrows with distance); empty: the
+  /// whole cone at every distance (beam.h's BeamReaches).
+  std::vector<std::array<double, 2>> reach;
 };
 
 /// How a time-of-flight echo is judged to come back.
@@ -122,6 +127,10 @@ struct SensorSpec {
   /// comes from; a multi-zone part's depends on its zones (PartRateLimit).
   double max_rate_hz = 0.0;
   std::string max_rate_source;
+  /// Ultrasonic: how long the receiver listens after its ping, s (0: until
+  /// the next ping). An echo of any ping arriving later is not heard; the
+  /// window in which other sensors' pings are heard (crosstalk).
+  double echo_timeout_s = 0.0;
 
   /// The paper's values for a type (§5; the ideal sensor: [0, 2] m, 90°, no
   /// noise; lookup: an empty table, to be given).

@@ -55,6 +55,11 @@ nlohmann::json InputsJson(const Scenario& scenario) {
     echo["latency_s"] = sensor.latency_s;
     echo["flight_time"] = sensor.flight_time;
     echo["wave_speed_m_s"] = WaveSpeed_m_s(sensor.spec.type, sensor.wave_speed_m_s);
+    // as given (a name, or the offset), and the offset it resolved to
+    const bool named_schedule = sensor.fire == "simultaneous" || sensor.fire == "round_robin";
+    echo["fire"] = named_schedule ? nlohmann::json(sensor.fire) : nlohmann::json(sensor.fire_offset_s);
+    echo["fire_offset_s"] = sensor.fire_offset_s;
+    echo["crosstalk"] = NullUnless(sensor.spec.type == SensorType::kUltrasonic, sensor.crosstalk);
     sensors.push_back(std::move(echo));
   }
   nlohmann::json objects = nlohmann::json::array();

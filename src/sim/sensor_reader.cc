@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "sensors/echo.h"
+#include "sim/crosstalk.h"
 #include "sensors/multizone.h"
 #include "sensors/measured_point.h"
 #include "sensors/noise.h"
@@ -22,12 +23,14 @@ SensorReader::SensorReader(const Scenario& scenario, World& world) : scenario_(s
       rays_[r].max_range_m = static_cast<float>(scenario.sensors[i].spec.max_range_m);
       rays_[r].see_robot = scenario.sensors[i].see_robot;
     }
+    if (scenario.sensors[i].spec.type == SensorType::kUltrasonic && scenario.sensors[i].spec.beam) sonars_.push_back(i);
   }
   Reset();
 }
 
 void SensorReader::Reset() {
   p_WS_previous_.assign(scenario_.sensors.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  last_ping_t_s_.assign(scenario_.sensors.size(), std::numeric_limits<double>::quiet_NaN());
 }
 
 void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
@@ -51,15 +54,100 @@ void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
   } else {
     read(0, sensor_count);
   }
+  // after every sensor is read: a listener needs the others' pings
+  if (sonars_.size() > 1) ApplyCrosstalk(frame);
+}
+
+double SensorReader::ListeningWindow_s(std::size_t sensor) const {
+  const SensorConfig& config = scenario_.sensors[sensor];
+  if (config.spec.echo_timeout_s > 0) return config.spec.echo_timeout_s;
+  return config.rate_hz > 0 ? 1.0 / config.rate_hz : 1.0 / scenario_.rate_hz;  // until its next ping
+}
+
+std::vector<double> SensorReader::PingOffsets_s(std::size_t emitter, std::size_t listener, std::int64_t sample) const {
+  // relative to the listener's ping at this sample: the emitter's last ping
+  // (this sample's included) and its next one, when within the listening window
+  std::vector<double> offsets;
+  const double t_s = static_cast<double>(sample) / scenario_.rate_hz;
+  const double window_s = ListeningWindow_s(listener);
+  if (std::isfinite(last_ping_t_s_[emitter]) && t_s - last_ping_t_s_[emitter] < window_s) {
+    offsets.push_back(last_ping_t_s_[emitter] - t_s);
+  }
+  for (std::int64_t k = sample + 1; static_cast<double>(k - sample) / scenario_.rate_hz <= window_s; ++k) {
+    if (IsSensorSample(emitter, k)) {
+      offsets.push_back(static_cast<double>(k - sample) / scenario_.rate_hz);
+      break;
+    }
+  }
+  return offsets;
+}
+
+void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
+  for (const std::size_t listener : sonars_) {
+    const SensorConfig& config = scenario_.sensors[listener];
+    SensorSample& out = frame.sensors[listener];
+    if (!config.crosstalk || out.reading.status == ReadingStatus::kNotSampled) continue;
+    const double c_m_s = WaveSpeed_m_s(config.spec.type, config.wave_speed_m_s);
+    const double window_s = ListeningWindow_s(listener);
+    // its own first echo, when one came back (the dead zone's and its body's too)
+    const ReadingStatus own = out.reading.status;
+    const bool own_heard = own == ReadingStatus::kOk || own == ReadingStatus::kTooClose || own == ReadingStatus::kSelf;
+    double first_s = own_heard ? 2.0 * (out.echo.distance_m + out.echo.flight_shift_m) / c_m_s
+                               : std::numeric_limits<double>::infinity();
+    bool heard_another = false;
+    const ListeningSensor ear{out.p_WS, out.dir_W};
+    for (const std::size_t emitter : sonars_) {
+      if (emitter == listener) continue;
+      const std::vector<double> offsets_s = PingOffsets_s(emitter, listener, frame.sample);
+      if (offsets_s.empty()) continue;
+      const std::size_t begin = world_.ray_begin(emitter), count = world_.ray_begin(emitter + 1) - begin;
+      const PingRays ping{frame.sensors[emitter].p_WS, std::span(ray_dir_W_).subspan(begin, count),
+                          std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
+      for (const CrossEchoPath& path : CrossEchoPaths(scenario_.sensors[emitter].spec, ping, config.spec, ear)) {
+        double arrival_s = std::numeric_limits<double>::infinity();
+        for (const double offset_s : offsets_s) {
+          const double a_s = offset_s + path.path_m / c_m_s;
+          if (a_s >= 0.0 && a_s <= window_s) arrival_s = std::min(arrival_s, a_s);
+        }
+        if (!(arrival_s < first_s)) continue;
+        // the listener must see the reflecting point
+        const Vec3 to_H = path.p_WH - out.p_WS;
+        const double d_m = to_H.norm();
+        Ray ray{.origin_W = out.p_WS.cast<float>(), .direction_W = (to_H / d_m).cast<float>(),
+                .max_range_m = static_cast<float>(d_m), .see_robot = config.see_robot};
+        Hit hit;
+        world_.caster().Cast(std::span(&ray, 1), std::span(&hit, 1));
+        if (hit.is_hit() && hit.distance_m < d_m - 1e-3) continue;
+        first_s = arrival_s;
+        heard_another = true;
+      }
+    }
+    if (!heard_another) continue;
+    // the device reads the other ping's echo as its own: range limits and noise
+    // as for any echo, from a draw keyed past its rays (no ray of its own)
+    Echo echo;
+    echo.distance_m = 0.5 * c_m_s * first_s;
+    const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(listener), static_cast<std::uint64_t>(frame.sample),
+                       static_cast<std::uint32_t>(world_.ray_begin(listener + 1) - world_.ray_begin(listener))};
+    Reading reading = Measure(config.spec, echo, [&](int) { return KeyedNoiseDraw(config.spec.noise, key); });
+    if (reading.status != ReadingStatus::kOk) continue;
+    reading.status = ReadingStatus::kCrosstalk;
+    out.reading = reading;
+    out.ray = -1;
+  }
 }
 
 bool SensorReader::IsSensorSample(std::size_t sensor, std::int64_t sample) const {
   const double rate_hz = scenario_.sensors[sensor].rate_hz;
-  if (!(rate_hz > 0) || sample == 0) return true;
-  // the first run sample in each of the sensor's periods (1e-9: t_k·rate on an exact multiple)
+  if (!(rate_hz > 0)) return true;
+  // the first run sample in each of the sensor's periods, which start at its
+  // fire offset (1e-9: t_k·rate on an exact multiple); sample −1 lies before
+  // every period, so a sensor without an offset reads at sample 0
+  const double offset_s = scenario_.sensors[sensor].fire_offset_s;
   const auto period = [&](std::int64_t k) {
-    return std::floor(static_cast<double>(k) * rate_hz / scenario_.rate_hz + 1e-9);
+    return std::floor(static_cast<double>(k) * rate_hz / scenario_.rate_hz - offset_s * rate_hz + 1e-9);
   };
+  if (offset_s == 0.0 && sample == 0) return true;
   return period(sample) > period(sample - 1);
 }
 
@@ -116,7 +204,9 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
   p_WS_previous_[i] = out.p_WS;
 
   // between the sensor's own samples: no reading
-  if (!IsSensorSample(i, frame.sample)) {
+  const bool pings = IsSensorSample(i, frame.sample);
+  if (pings) last_ping_t_s_[i] = frame.t_s;
+  if (!pings) {
     out.reading = Reading{};
     out.reading.status = ReadingStatus::kNotSampled;
     out.reading.d_m = spec.max_range_m;

@@ -1,0 +1,52 @@
+// Ultrasonic crosstalk's geometry: the ways one sensor's ping reaches another
+// sensor's receiver after one reflection. A ray of the emitter's beam that
+// counts (its gain reaches the emitter's echo threshold, its reach holds at
+// that distance) hits a surface at H; the echo leaves H around the mirror
+// direction and is heard by the listener when that direction is within twice
+// the listener's incidence window of the way to it — the paper's window read
+// for two sensors: for one sensor it is "incidence α <= α*", the mirror
+// direction within 2α* of the way back — and the listener's beam reaches H's
+// direction at that distance. Sensors without a beam (one ray) neither send
+// nor hear off their axis, so they take no part. The listener's line of sight
+// to H and the timing of the pings are the caller's (sim/sensor_reader.cc).
+//
+// Frames: W world.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/geometry.h"
+#include "raycast/ray_caster.h"
+#include "sensors/beam.h"
+#include "sensors/sensor_spec.h"
+
+namespace proxsim {
+
+/// One ping as cast: the emitter's origin and, per ray, its direction, hit and beam ray.
+struct PingRays {
+  Vec3 p_WS = Vec3::Zero();
+  std::span<const Vec3> dir_W;
+  std::span<const Hit> hits;
+  std::span<const BeamRay> beam_rays;
+};
+
+/// The listener's receiver: its origin and axis (unit).
+struct ListeningSensor {
+  Vec3 p_WS = Vec3::Zero();
+  Vec3 axis_W = Vec3::UnitX();
+};
+
+/// One way from the emitter to the listener: its length (emitter to H to
+/// listener) and the reflecting point H.
+struct CrossEchoPath {
+  double path_m = 0.0;
+  Vec3 p_WH = Vec3::Zero();
+};
+
+/// Every way the emitter's ping reaches the listener after one reflection,
+/// shortest first; empty when either has no beam.
+std::vector<CrossEchoPath> CrossEchoPaths(const SensorSpec& emitter_spec, const PingRays& emitter,
+                                          const SensorSpec& listener_spec, const ListeningSensor& listener);
+
+}  // namespace proxsim
