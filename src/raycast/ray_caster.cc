@@ -201,6 +201,17 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
 
   // the body's BVH, built once; then its instance in the top-level scenes
   rtcCommitScene(body.scene);
+  RTCBounds bounds_B;
+  rtcGetSceneBounds(body.scene, &bounds_B);
+  const Vec3 lower_B(bounds_B.lower_x, bounds_B.lower_y, bounds_B.lower_z);
+  const Vec3 upper_B(bounds_B.upper_x, bounds_B.upper_y, bounds_B.upper_z);
+  // a plane's bounds are unbounded in practice: no sphere skips it
+  if (lower_B.allFinite() && upper_B.allFinite() && (upper_B - lower_B).maxCoeff() < 1e6 &&
+      (upper_B - lower_B).minCoeff() >= 0) {
+    body.bound_center_B = 0.5 * (lower_B + upper_B);
+    body.bound_radius_m = 0.5 * (upper_B - lower_B).norm();
+  }
+  body.bound_center_W = X_WB * body.bound_center_B;
   if (kind == BodyKind::kWorld) {
     body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body_index));
     impl.world_dirty = true;
@@ -223,6 +234,7 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   Body& body = *impl_->bodies[body_index];
   body.X_WB = X_WB;
   body.R_WB = X_WB.linear().cast<float>();
+  body.bound_center_W = X_WB * body.bound_center_B;
   float xfm[12];
   ToColumnMajor3x4(X_WB, xfm);
   for (RTCGeometry instance : {body.instance_robot, body.instance_world, body.instance_moving}) {

@@ -129,6 +129,8 @@ RayCaster::NearestSurface RayCaster::NearestToWorld(const Vec3& p_W, std::span<c
   for (const auto& body_ptr : impl_->bodies) {
     const Body& body = *body_ptr;
     if (body.kind != BodyKind::kWorld) continue;
+    // nothing of the body is nearer than its bounding sphere (a margin for rounding)
+    if ((p_W - body.bound_center_W).norm() - body.bound_radius_m > best_m + 1e-9) continue;
     const Vec3 p_B = body.X_WB.inverse() * p_W;
 
     // boxes and analytic shapes: exact closed forms in the shape frame

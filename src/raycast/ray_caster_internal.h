@@ -46,6 +46,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -87,6 +88,11 @@ struct Body {
   RTCGeometry instance_moving = nullptr; ///< null for world and robot bodies
   bool has_mesh = false;
   std::vector<const GeomRecord*> closed_form_geoms;  ///< every geom but meshes, for DistanceToWorld
+  // a sphere holding every geom (from the body's bounds in B; infinite with a
+  // plane), so that a distance query skips a body farther than its best so far
+  Vec3 bound_center_B = Vec3::Zero();
+  double bound_radius_m = std::numeric_limits<double>::infinity();
+  Vec3 bound_center_W = Vec3::Zero();  ///< X_WB · bound_center_B, kept with X_WB
   // point-query scenes of this body's meshes without some objects (the
   // ground, say), keyed by the sorted excluded object ids; built on first use
   std::mutex query_scenes_mutex;
