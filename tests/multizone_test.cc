@@ -105,7 +105,9 @@ sensors:
   const NpyArray d = LoadNpy(out / "zones" / "grid" / "d_m.npy");
   const NpyArray status = LoadNpy(out / "zones" / "grid" / "status.npy");
   const NpyArray count = LoadNpy(out / "zones" / "grid" / "target_count.npy");
+  const NpyArray p_W = LoadNpy(out / "zones" / "grid" / "p_W.npy");
   ASSERT_EQ(d.shape, (std::vector<long>{1, 64, 1}));
+  ASSERT_EQ(p_W.shape, (std::vector<long>{1, 64, 1, 3}));
   ASSERT_EQ(count.shape, (std::vector<long>{1, 64}));
   const double c = std::cos(20 * kPi / 180), s = std::sin(20 * kPi / 180);
   int valid = 0, too_low = 0;
@@ -126,6 +128,11 @@ sensors:
       EXPECT_EQ(status.values[zone], 5) << "zone " << zone;
       EXPECT_EQ(count.values[zone], 1) << "zone " << zone;
       EXPECT_NEAR(d.values[zone], sum_m / counted, 1e-5) << "zone " << zone;
+      // its point: the sensor's origin (0, 0, 1) + d along the zone's axis (the cell's centre)
+      const Dir axis = ZoneRay(8, 8, 45, 45, 1, zone % 8, zone / 8, 0, 0);
+      EXPECT_NEAR(p_W.values[3 * zone + 0], d.values[zone] * axis.x, 1e-9) << "zone " << zone;
+      EXPECT_NEAR(p_W.values[3 * zone + 1], d.values[zone] * axis.y, 1e-9) << "zone " << zone;
+      EXPECT_NEAR(p_W.values[3 * zone + 2], 1 + d.values[zone] * axis.z, 1e-9) << "zone " << zone;
     } else {
       ++too_low;
       EXPECT_EQ(status.values[zone], 8) << "zone " << zone;

@@ -1,7 +1,7 @@
 """The 3D replay viewer's files in OUT/report/: viewer.js (the prebuilt bundle,
 copied), data.js (`window.PROXSIM_DATA = {...}`: the scene, link poses per
 sample, each sensor's readings as column arrays, the profile points, the
-terrain map's cells and hazards) and index.html, which loads both with plain
+terrain map's cells and hazards, multi-zone sensors' zone points) and index.html, which loads both with plain
 <script> tags so it opens from disk."""
 import html
 import json
@@ -71,6 +71,28 @@ def terrain_viewer_data(terrain):
             "zRange": [round(z_lo, 4), round(z_hi, 4)], "colorStops": VIRIDIS_STOPS, "hazards": hazards}
 
 
+def zones_viewer_data(run):
+    """Each multi-zone sensor's zones for the viewer (zones/ of the run, when
+    written): its grid, the sample times, and per sample every zone's nearest
+    target's point (zone-major; None where the zone has none)."""
+    columns_path = os.path.join(run.out_dir, "zones", "columns.json")
+    if not os.path.exists(columns_path):
+        return []
+    with open(columns_path) as f:
+        columns = json.load(f)
+    index = {s.name: s.index for s in run.sensors}
+    zones = []
+    for name, sensor in columns["sensors"].items():
+        folder = os.path.join(run.out_dir, "zones", sensor["folder"])
+        p_path = os.path.join(folder, "p_W.npy")
+        if not os.path.exists(p_path) or name not in index:
+            continue
+        nearest = np.load(p_path)[:, :, 0, :]  # samples x zones x 3: each zone's first target
+        zones.append({"sensor": index[name], "nx": sensor["zones"][0], "ny": sensor["zones"][1],
+                      "t": _col(np.load(os.path.join(folder, "t_s.npy"))), "p": _col(nearest.ravel())})
+    return zones
+
+
 def viewer_data(run, terrain=None):
     """The dict written as window.PROXSIM_DATA; terrain: the run's map (terrain_data.load_terrain) or None."""
     code = {s: i for i, s in enumerate(STATUSES)}
@@ -106,6 +128,7 @@ def viewer_data(run, terrain=None):
         "events": [{"t": e["t_s"], "event": e["event"], "detail": e.get("detail", "")} for e in (run.events or [])],
         "collisions": [{"t": c["t_s"], "link": c["link"], "p": c["p_W"]} for c in (run.collisions or [])],
         "terrain": terrain_viewer_data(terrain),
+        "zones": zones_viewer_data(run),
     }
 
 

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 
 #include "core/atomic_file.h"
+#include "sensors/measured_point.h"
 #include "sensors/multizone.h"
 
 namespace proxsim {
@@ -60,7 +62,7 @@ ZonesNpyWriter::ZonesNpyWriter(const std::string& out_dir, const Scenario& scena
     const auto& zones = scenario.sensors[i].spec.zones;
     if (!zones) continue;
     sensors_.push_back({.index = i, .folder = FolderFor(scenario.sensors[i].name, i), .zones = ZoneCount(*zones),
-                        .targets = zones->targets, .t_s = {}, .d_m = {}, .status = {}, .target_count = {}});
+                        .targets = zones->targets, .t_s = {}, .d_m = {}, .p_W = {}, .status = {}, .target_count = {}});
   }
 }
 
@@ -69,9 +71,14 @@ void ZonesNpyWriter::Add(const SampleFrame& frame) {
     const SensorSample& sample = frame.sensors[sensor.index];
     if (sample.reading.status == ReadingStatus::kNotSampled) continue;  // its own samples only
     sensor.t_s.push_back(frame.t_s);
-    for (const ZoneTarget& target : sample.zones.targets) {
+    for (std::size_t k = 0; k < sample.zones.targets.size(); ++k) {
+      const ZoneTarget& target = sample.zones.targets[k];
       sensor.d_m.push_back(target.d_m);
       sensor.status.push_back(target.status);
+      // along its zone's axis, as the map and the profile place it
+      const Vec3 p_W = target.d_m > 0 ? MeasuredPoint_W(sample.p_WS, sample.zone_dir_W[k / sensor.targets], target.d_m)
+                                      : Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+      sensor.p_W.insert(sensor.p_W.end(), {p_W.x(), p_W.y(), p_W.z()});
     }
     sensor.target_count.insert(sensor.target_count.end(), sample.zones.target_count.begin(),
                                sample.zones.target_count.end());
@@ -88,6 +95,7 @@ void ZonesNpyWriter::Commit() {
     const auto samples = static_cast<std::int64_t>(sensor.t_s.size());
     WriteArray(folder + "/t_s.npy", "<f8", {samples}, sensor.t_s);
     WriteArray(folder + "/d_m.npy", "<f8", {samples, sensor.zones, sensor.targets}, sensor.d_m);
+    WriteArray(folder + "/p_W.npy", "<f8", {samples, sensor.zones, sensor.targets, 3}, sensor.p_W);
     WriteArray(folder + "/status.npy", "|u1", {samples, sensor.zones, sensor.targets}, sensor.status);
     WriteArray(folder + "/target_count.npy", "|u1", {samples, sensor.zones}, sensor.target_count);
     const ZoneSpec& zones = *scenario_.sensors[sensor.index].spec.zones;
@@ -105,6 +113,8 @@ void ZonesNpyWriter::Commit() {
        {{{"name", "t_s"}, {"dtype", "float64"}, {"shape", "samples"}, {"unit", "s"}, {"meaning", "the sample's time"}},
         {{"name", "d_m"}, {"dtype", "float64"}, {"shape", "samples x zones x targets"}, {"unit", "m"},
          {"meaning", "the target's reported distance, nearest first; 0 where the zone has no such target"}},
+        {{"name", "p_W"}, {"dtype", "float64"}, {"shape", "samples x zones x targets x 3"}, {"unit", "m, world"},
+         {"meaning", "the target's measured point: the sensor's origin + d_m along its zone's axis; NaN without a target"}},
         {{"name", "status"}, {"dtype", "uint8"}, {"shape", "samples x zones x targets"}, {"unit", ""},
          {"meaning", "ST's target status code (UM2884 Table 4): see status_codes"}},
         {{"name", "target_count"}, {"dtype", "uint8"}, {"shape", "samples x zones"}, {"unit", ""},

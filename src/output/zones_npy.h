@@ -36,6 +36,7 @@ class ZonesNpyWriter : public RunSink {
     std::string folder;     // under zones/
     int zones, targets;
     std::vector<double> t_s, d_m;
+    std::vector<double> p_W;  // each target's measured point, x y z (NaN without a target)
     std::vector<std::uint8_t> status, target_count;
   };
   std::string dir_;

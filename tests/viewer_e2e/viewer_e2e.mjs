@@ -151,6 +151,33 @@ try {
       `the struck links are drawn red (${collisions.after.struck.join(', ')})`);
   }
 
+  // multi-zone sensors: each sample's zones drawn as points (and their grid),
+  // as many as the zones with a target in data.js at that sample; none for a
+  // sensor toggled off (the toggles are the rays' own, checked above)
+  const zones = await page.evaluate(([a, b]) => {
+    const v = window.proxsimViewer;
+    const list = window.PROXSIM_DATA.zones || [];
+    if (list.length === 0) return null;
+    const due = (t) => list.reduce((n, z) => {
+      if (z.t.length === 0 || t < z.t[0]) return n;
+      let i = 0;
+      while (i + 1 < z.t.length && z.t[i + 1] <= t) i += 1;
+      let count = 0;
+      for (let k = 0; k < z.nx * z.ny; k++) if (z.p[3 * (i * z.nx * z.ny + k)] !== null) count += 1;
+      return n + count;
+    }, 0);
+    const states = [];
+    for (const f of [0.3, 0.6, 0.9]) {
+      v.setTime(a + f * (b - a));
+      states.push({ shown: v.zonePointsShown(), due: due(v.currentTime()) });
+    }
+    return { sensors: list.length, states };
+  }, [tStart, tEnd]);
+  if (zones) {
+    check(zones.states.every((s) => s.shown === s.due) && zones.states.some((s) => s.shown > 0),
+      `every zone with a target is drawn (${zones.states.map((s) => `${s.shown}/${s.due}`).join(', ')})`);
+  }
+
   // the terrain map: every run with a robot has one; its cells appear when the
   // files say they were first measured, all of them by the end; its hazards
   // are marked (3D and side panel) once found; its toggle hides the layer

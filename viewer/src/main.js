@@ -9,6 +9,7 @@ import { ControlsPanel } from './controls_panel.js';
 import { CurvesView } from './curves_view.js';
 import { ProfileView } from './profile_view.js';
 import { RaysView } from './rays_view.js';
+import { ZonesView } from './zones_view.js';
 import { RobotView } from './robot_view.js';
 import { SceneView } from './scene_view.js';
 import { TerrainView } from './terrain_view.js';
@@ -71,6 +72,7 @@ function start() {
   const robot = new RobotView(stage.scene, data.scene.robot, data.poses);
   const rays = new RaysView(stage.scene, data.sensors, data.statusColors);
   const profile = new ProfileView(stage.scene, data.profile, data.sensors, data.objectColors);
+  const zones = new ZonesView(stage.scene, data.zones, data.sensors);
   const terrain = new TerrainView(stage.scene, data.terrain);
   const rootLink = robot.rootLink();
   const walk = new WalkView(stage.scene, data.poses, rootLink ? rootLink.name : null, data.events, data.collisions);
@@ -89,6 +91,7 @@ function start() {
     if (followed && state.follow) stage.translate(followed.position.clone().sub(lastRoot));
     rays.update(state.t, state.visible);
     profile.update(state.t, state.visible);
+    zones.update(state.t, state.visible);
     terrain.update(state.t);
     walk.update(state.t);
     curves.update(state.t);
@@ -149,6 +152,7 @@ function start() {
     get frameCount() { return frameCount; },
     rayEndpoints: () => rays.endpoints(),
     profilePointsShown: () => profile.shownCount(),
+    zonePointsShown: () => zones.pointsShown(),
     eventsShown: () => walk.eventsShown(),
     struckLinks: () => robot.struckLinks(),
     collisionsShown: () => walk.collisionsShown(),
