@@ -55,7 +55,8 @@ if(PROXSIM_BUILD_TESTS)
   set(e2e_options_stairs --climb-m 0.55)
   set(e2e_scenario_collision ${CMAKE_SOURCE_DIR}/data/scenarios/paper_no_stop_rule.yaml)
   set(e2e_scenario_multizone ${CMAKE_SOURCE_DIR}/data/scenarios/multizone_shins.yaml)
-  set(e2e_kinds walk no_robot circumvent stairs collision multizone)
+  set(e2e_scenario_moving ${CMAKE_SOURCE_DIR}/data/scenarios/person_crossing.yaml)
+  set(e2e_kinds walk no_robot circumvent stairs collision multizone moving)
   # and the Unitree H1's example (its meshes drawn), when the H1's description (Unitree's,
   # not part of this repository) is beside the repository in ../shared/robots
   if(EXISTS ${CMAKE_SOURCE_DIR}/../shared/robots/h1_description/urdf/h1.urdf)

@@ -49,6 +49,7 @@ class Run:
     events: list = None      # summary.json robot.events: [{t_s, event, detail}], [] without a robot
     collisions: list = None  # summary.json robot.collisions: [{t_s, link, object | other_link, depth_m, p_W}]
     outcome: dict = None     # summary.json robot.{outcome, outcome_t_s, outcome_detail}; None without a robot
+    object_poses: dict = None  # moving object name -> (t_s N, p N×3, quat_wxyz N×4); empty when none moves
 
 
 def _read_robot(out_dir):
@@ -253,15 +254,16 @@ def _read_readings(out_dir, scene):
     return sensors
 
 
-def _read_poses(out_dir):
-    path = os.path.join(out_dir, "poses.csv")
+def _read_poses(out_dir, file_name="poses.csv", key="link"):
+    """poses.csv (the robot's links) or objects_poses.csv (the moving objects), by name."""
+    path = os.path.join(out_dir, file_name)
     if not os.path.exists(path):
         return {}
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     by_link = {}
     for r in rows:
-        by_link.setdefault(r["link"], []).append(r)
+        by_link.setdefault(r[key], []).append(r)
     poses = {}
     for link, rs in by_link.items():
         rs.sort(key=lambda r: float(r["t_s"]))
@@ -306,4 +308,5 @@ def load_run(out_dir):
     robot = _read_robot(out_dir)
     return Run(out_dir=out_dir, scene=scene, sensors=_read_readings(out_dir, scene),
                poses=_read_poses(out_dir), profile=_read_profile(out_dir), events=_read_events(robot),
-               collisions=list(robot.get("collisions") or []), outcome=_read_outcome(robot))
+               collisions=list(robot.get("collisions") or []), outcome=_read_outcome(robot),
+               object_poses=_read_poses(out_dir, "objects_poses.csv", "object"))

@@ -93,6 +93,14 @@ def zones_viewer_data(run):
     return zones
 
 
+def _poses_data(poses, key):
+    """Poses by name as the viewer reads them: one time column, and per name [x y z qw qx qy qz] per sample."""
+    if not poses:
+        return None
+    t = next(iter(poses.values()))[0]
+    return {"t": _col(t), key: {name: _col(np.column_stack([p, q]).ravel()) for name, (_, p, q) in poses.items()}}
+
+
 def viewer_data(run, terrain=None):
     """The dict written as window.PROXSIM_DATA; terrain: the run's map (terrain_data.load_terrain) or None."""
     code = {s: i for i, s in enumerate(STATUSES)}
@@ -105,11 +113,7 @@ def viewer_data(run, terrain=None):
             "dM": _col(s.d_m), "dTrue": _col(s.d_true_m),
             "origin": _col(s.p_origin.ravel()), "end": _col(_ray_ends(s).ravel()),
         })
-    poses = None
-    if run.poses:
-        t = next(iter(run.poses.values()))[0]
-        poses = {"t": _col(t), "links": {name: _col(np.column_stack([p, q]).ravel())
-                                         for name, (_, p, q) in run.poses.items()}}
+    poses = _poses_data(run.poses, "links")
     prof = run.profile
     order = np.argsort(prof["t_s"], kind="stable")
     profile = {k: (_col(prof[k][order]) if k not in ("sensor", "object") else
@@ -129,6 +133,7 @@ def viewer_data(run, terrain=None):
         "collisions": [{"t": c["t_s"], "link": c["link"], "p": c["p_W"]} for c in (run.collisions or [])],
         "terrain": terrain_viewer_data(terrain),
         "zones": zones_viewer_data(run),
+        "objectPoses": _poses_data(run.object_poses, "objects"),
     }
 
 

@@ -1,5 +1,7 @@
 // poses.csv: the robot's links in the world at every sample, for replay
-// (`t_s,link,x,y,z,qw,qx,qy,qz`, one row per link per sample, streamed).
+// (`t_s,link,x,y,z,qw,qx,qy,qz`, one row per link per sample, streamed);
+// objects_poses.csv: the scene's moving objects likewise
+// (`t_s,object,x,y,z,qw,qx,qy,qz`), for scenes that have any.
 #pragma once
 
 #include <string>
@@ -7,9 +9,13 @@
 
 #include "core/atomic_file.h"
 #include "output/run_sink.h"
+#include "scene/scene.h"
 #include "sim/robot_in_scene.h"
 
 namespace proxsim {
+
+/// Appends one row `t_s,name,x,y,z,qw,qx,qy,qz` of pose X to `line`.
+void AppendPoseRow(std::string& line, double t_s, const std::string& name, const Pose& X);
 
 class PosesCsvWriter : public RunSink {
  public:
@@ -24,6 +30,24 @@ class PosesCsvWriter : public RunSink {
  private:
   AtomicFile file_;
   const RobotInScene& robot_;
+  std::string line_;
+};
+
+class ObjectPosesCsvWriter : public RunSink {
+ public:
+  /// Whether the scene has a moving object (the file is written only then).
+  static bool Needed(const Scene& scene);
+  /// Writes the moving objects of `scene` (which must outlive the writer) to `path`.
+  ObjectPosesCsvWriter(const std::string& path, const Scene& scene);
+
+  /// Appends every moving object's pose X_WO at the frame's time (MotionPoseAt: as the world placed it).
+  void Add(const SampleFrame& frame) override;
+  void Commit() override { file_.Commit(); }
+  void AddToSummary(nlohmann::json& summary) const override { summary["outputs"].push_back("objects_poses.csv"); }
+
+ private:
+  AtomicFile file_;
+  const Scene& scene_;
   std::string line_;
 };
 

@@ -84,6 +84,9 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
     sinks_.push_back(MakeReadingsSink(format, out_dir_, scenario, object_names));
     sinks_.push_back(std::make_unique<ProfilePlyWriter>((out / "profile.ply").string()));
     if (sim.robot()) sinks_.push_back(std::make_unique<PosesCsvWriter>((out / "poses.csv").string(), *sim.robot()));
+    if (ObjectPosesCsvWriter::Needed(scenario.scene)) {
+      sinks_.push_back(std::make_unique<ObjectPosesCsvWriter>((out / "objects_poses.csv").string(), scenario.scene));
+    }
     if (ZonesNpyWriter::Needed(scenario)) sinks_.push_back(std::make_unique<ZonesNpyWriter>(out_dir_, scenario));
   }
   if (sim.terrain_map()) {

@@ -151,6 +151,28 @@ try {
       `the struck links are drawn red (${collisions.after.struck.join(', ')})`);
   }
 
+  // moving objects (docs/worlds.md): each drawn where objects_poses.csv puts it at the time shown
+  const movers = await page.evaluate(([a, b]) => {
+    const v = window.proxsimViewer;
+    const d = window.PROXSIM_DATA.objectPoses;
+    if (!d) return null;
+    const name = Object.keys(d.objects)[0];
+    const expected = (t) => {
+      let i = 0;
+      while (i + 1 < d.t.length && d.t[i + 1] <= t) i += 1;
+      return d.objects[name].slice(7 * i, 7 * i + 3);
+    };
+    const at = (t) => { v.setTime(t); return { shown: v.objectPosition(name), want: expected(v.currentTime()) }; };
+    return { name, states: [at(a + 0.2 * (b - a)), at(a + 0.7 * (b - a))] };
+  }, [tStart, tEnd]);
+  if (movers) {
+    const off = (s) => Math.hypot(...s.shown.map((x, k) => x - s.want[k]));
+    check(movers.states.every((s) => off(s) < 1e-3),
+      `${movers.name} is drawn where objects_poses.csv puts it (${movers.states.map((s) => off(s).toFixed(4)).join(', ')} m off)`);
+    const [s0, s1] = movers.states;
+    check(Math.hypot(...s0.shown.map((x, k) => x - s1.shown[k])) > 0.05, `${movers.name} moves over the replay`);
+  }
+
   // multi-zone sensors: each sample's zones drawn as points (and their grid),
   // as many as the zones with a target in data.js at that sample; none for a
   // sensor toggled off (the toggles are the rays' own, checked above)

@@ -88,6 +88,7 @@ function start() {
   function apply() {
     if (followed) lastRoot.copy(followed.position);
     robot.update(state.t);
+    stage.moveObjects(data.objectPoses, state.t);
     if (followed && state.follow) stage.translate(followed.position.clone().sub(lastRoot));
     rays.update(state.t, state.visible);
     profile.update(state.t, state.visible);
@@ -149,6 +150,7 @@ function start() {
     setTime,
     currentTime: () => state.t,
     robotLinkPosition: (name) => robot.linkPosition(name),
+    objectPosition: (name) => stage.objectPosition(name),
     get frameCount() { return frameCount; },
     rayEndpoints: () => rays.endpoints(),
     profilePointsShown: () => profile.shownCount(),

@@ -4,6 +4,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { shapeMesh } from './shapes.js';
+import { sampleAt } from './timeline.js';
 
 /** A box at least this tall and this long is a wall: drawn see-through. */
 const WALL_HEIGHT_M = 1.0;
@@ -54,10 +55,12 @@ export class SceneView {
   /** Adds the scene.json objects; returns their bounding box (planes excluded). */
   addObjects(objects) {
     const box = new THREE.Box3();
+    this.objectMeshes = new Map();
     for (const object of objects) {
       const mesh = shapeMesh(object, objectMaterial(object));
       if (!mesh) continue;
       mesh.name = object.name;
+      this.objectMeshes.set(object.name, mesh);
       if (isWall(object)) mesh.renderOrder = 2;
       this.scene.add(mesh);
       if (object.shape === 'plane') {
@@ -71,6 +74,26 @@ export class SceneView {
       }
     }
     return box;
+  }
+
+  /** Moves the scene's moving objects to their recorded poses at time t
+   *  (objectPoses: data.objectPoses, {t, objects: {name: flat [x,y,z,qw,qx,qy,qz]*N}}, or null). */
+  moveObjects(objectPoses, t) {
+    if (!objectPoses) return;
+    const i = sampleAt(objectPoses.t, t);
+    for (const [name, p] of Object.entries(objectPoses.objects)) {
+      const mesh = this.objectMeshes.get(name);
+      if (!mesh) continue;
+      const k = 7 * i;
+      mesh.position.set(p[k], p[k + 1], p[k + 2]);
+      mesh.quaternion.set(p[k + 4], p[k + 5], p[k + 6], p[k + 3]).normalize();
+    }
+  }
+
+  /** World position [x, y, z] of a scene object as shown, or null (for tests). */
+  objectPosition(name) {
+    const mesh = this.objectMeshes ? this.objectMeshes.get(name) : null;
+    return mesh ? mesh.position.toArray() : null;
   }
 
   /** Places the camera to look at `target` from behind and to the robot's left
