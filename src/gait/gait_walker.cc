@@ -79,6 +79,7 @@ FootholdLimits GaitWalker::Limits() const {
 void GaitWalker::SetTerrain(const TerrainQuery* ground, const TerrainQuery* footholds) {
   terrain_ = ground;
   footholds_ = ground != nullptr ? footholds : nullptr;
+  felt_ = footholds_ != nullptr ? std::make_unique<FeltGround>(*footholds_) : nullptr;
   Start();
 }
 
@@ -105,7 +106,21 @@ bool GaitWalker::SettleLanding(const StepPose& strike) {
     plan_.landing_z_m = touchdown.rest_z_m;
     plan_.natural_landing = false;
   }
+  // the next step is planned with both feet where they stand: the landed one
+  // (flat about its heel), and the one it leaves, flat where it was latched
+  const Vec3 p_W_old_heel = plan_.X_WF * legs_->FootPoint_L(plan_.stance, FootPoint::kHeel);
+  felt_->set_footprints({SoleAt(plan_.swing, sole.p_W[0], plan_.yaw_to, plan_.landing_z_m),
+                         SoleAt(plan_.stance, p_W_old_heel, plan_.yaw_to, plan_.floor_z_m)});
   return true;
+}
+
+Footprint GaitWalker::SoleAt(Side side, const Vec3& p_W_heel, double yaw, double z_m) const {
+  const LegGeometry& leg = legs_->leg(side);
+  const Vec3 along(std::cos(yaw), std::sin(yaw), 0);
+  return Footprint{.p_W_heel = p_W_heel,
+                   .p_W_toe = p_W_heel + (leg.toe_x_m - leg.heel_x_m) * along,
+                   .half_width_m = leg.half_width_m,
+                   .z_m = z_m};
 }
 
 std::vector<LocomotionEvent> GaitWalker::TakeEvents() {
@@ -177,8 +192,20 @@ void GaitWalker::Start() {
     if (!std::isfinite(z)) terrain = nullptr;
     else if (std::abs(z - start.z()) > kLevelTolerance_m) start.z() = z;
   }
-  // the footholds on what the robot knows, when it plans on that (the start stays the truth's)
-  planner_->set_terrain(terrain != nullptr && footholds_ != nullptr ? footholds_ : terrain, Limits());
+  // the footholds on what the robot knows, when it plans on that (the start
+  // stays the truth's), with both feet standing where the robot starts
+  const bool on_map = terrain != nullptr && felt_ != nullptr;
+  if (on_map) {
+    planner_->set_terrain(nullptr, Limits());
+    const StepPlan standing = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
+    const double yaw = initial_.start_yaw_rad;
+    const LegGeometry& trailing = legs_->leg(standing.swing);
+    const Vec3 p_W_trailing_heel =
+        standing.p_W_trailing_toe - (trailing.toe_x_m - trailing.heel_x_m) * Vec3(std::cos(yaw), std::sin(yaw), 0);
+    felt_->set_footprints({SoleAt(standing.stance, standing.p_W_heel, yaw, start.z()),
+                           SoleAt(standing.swing, p_W_trailing_heel, yaw, start.z())});
+  }
+  planner_->set_terrain(on_map ? felt_.get() : terrain, Limits());
   plan_ = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
   step_duration_s_ = Duration_s(plan_);
   step_start_clock_s_ = 0;

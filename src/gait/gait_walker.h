@@ -51,7 +51,8 @@
 // foot is felt on the true surface (gait/touchdown.h): it settles where it
 // rests (the next step starts from there; its pelvis does not jump, the
 // stance leg takes up the difference), or the walker reports a `fall` event
-// with the reason and stands.
+// with the reason and stands. The planted feet stand where they were felt:
+// under them the planner reads that height, not the map's (gait/felt_ground.h).
 //
 // Joint limits (docs/robots.md): every step is checked before it is taken by
 // UnsafeStepReason (gait/step_safety.h): a step that would take a joint
@@ -65,6 +66,7 @@
 
 #include <memory>
 
+#include "gait/felt_ground.h"
 #include "gait/gait_steps.h"
 #include "gait/joint_limits.h"
 #include "gait/locomotion.h"
@@ -134,6 +136,8 @@ class GaitWalker : public Locomotion {
   // The landed foot of plan_ (at its heel strike `strike`) felt on the true
   // ground: plan_'s landing moved to where it rests, or false after a `fall` event.
   bool SettleLanding(const StepPose& strike);
+  // A planted sole: heel at p_W_heel, along heading yaw, resting at z_m.
+  Footprint SoleAt(Side side, const Vec3& p_W_heel, double yaw, double z_m) const;
   // Logs `cannot_step` once per reason in a row.
   void NoteCannotStep(const std::string& reason);
   // Whether waypoint i counts as passed with the pelvis at p.
@@ -159,6 +163,7 @@ class GaitWalker : public Locomotion {
   double achieved_stride_m_ = 0;
   const TerrainQuery* terrain_ = nullptr;    // the true surface
   const TerrainQuery* footholds_ = nullptr;  // what the footholds are planned on, when not the true surface
+  std::unique_ptr<FeltGround> felt_;          // footholds_ with the planted feet where the legs felt them
   bool landing_felt_ = false;                // plan_'s landing has been felt (footholds_ only)
   bool fell_ = false;                        // a landing could not stand: the walker stands for good
   double max_step_m_ = 0;             // highest step up or down (gait.max_step_m, or from the legs)

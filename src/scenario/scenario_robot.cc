@@ -20,9 +20,10 @@ namespace {
 // The gaits proxsim walks (bipeds from toys to adults, slow to running pace).
 constexpr double kMinStride_m = 0.01, kMaxStride_m = 3.0;
 constexpr double kMinGaitPeriod_s = 0.1, kMaxGaitPeriod_s = 30.0;
-// A foot landing more than this lower than planned is a fall whatever the
-// tolerance says: it is more than the built-in biped's whole foot height ten times.
-constexpr double kMaxTouchdownTolerance_m = 0.5;
+// The largest touchdown tolerance: a foot that settles moves to the true
+// ground within one sample (gait/touchdown.h), a jump that stays a kinematic
+// stand-in for a foot feeling its way down only over a few centimetres.
+constexpr double kMaxTouchdownTolerance_m = 0.05;
 }  // namespace
 
 namespace {
