@@ -25,6 +25,10 @@ struct GaitConfig {
   /// highest step up or down the gait takes on uneven ground, m (> 0); 0:
   /// from the legs, the rise at which the landing knee bends 100 degrees
   double max_step_m = 0.0;
+  /// `gait.touchdown_tolerance_m`: with footholds planned on what the robot
+  /// knows, a foot landing lower than planned by more than this falls, m
+  /// (gait/touchdown.h)
+  double touchdown_tolerance_m = 0.02;
 };
 
 /// One leg as the gait drives it (`robot.legs.left` / `.right`): the revolute

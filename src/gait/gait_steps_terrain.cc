@@ -184,6 +184,7 @@ void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing
   line.s_end_m = 3 * limits_.max_step_m + sole_m + limits_.margin_m + kProfileMargin_m;  // the look-ahead's reach
   line.z_top_m = plan->floor_z_m + legs_.leg_length_m();
   line.depth_m = line.z_top_m - plan->floor_z_m + 3.0;
+  line.unknown_z_m = plan->floor_z_m;  // what a map has not seen: level with the stance foot
   const TerrainProfile profile(*terrain_, line);
 
   const Foothold foothold = PlanFoothold(profile, 0.0, plan->floor_z_m, s_natural, limits_);

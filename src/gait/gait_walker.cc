@@ -10,12 +10,18 @@
 #include "gait/held_joints.h"
 #include "gait/level_gait_check.h"
 #include "gait/step_safety.h"
+#include "gait/touchdown.h"
 
 namespace proxsim {
 
 namespace {
 
 double WrapAngle(double a) { return std::remainder(a, 2 * kPi); }
+
+// A felt landing this close to the planned tread is on it, m: a map holds its
+// heights in float (an ideal sensor's tread is exact to about 1e-7 m), and the
+// step planned on it stays the step planned.
+constexpr double kSettleTolerance_m = 1e-5;
 
 }  // namespace
 
@@ -70,9 +76,51 @@ FootholdLimits GaitWalker::Limits() const {
                         .max_rise_m = max_step_m_};
 }
 
-void GaitWalker::SetTerrain(const TerrainQuery* terrain) {
-  terrain_ = terrain;
+void GaitWalker::SetTerrain(const TerrainQuery* ground, const TerrainQuery* footholds) {
+  terrain_ = ground;
+  footholds_ = ground != nullptr ? footholds : nullptr;
+  felt_ = footholds_ != nullptr ? std::make_unique<FeltGround>(*footholds_) : nullptr;
   Start();
+}
+
+bool GaitWalker::SettleLanding(const StepPose& strike) {
+  if (footholds_ == nullptr || landing_felt_) return true;
+  landing_felt_ = true;
+  const LegGeometry& leg = legs_->leg(plan_.swing);
+  LandedSole sole;
+  for (const FootPoint point : {FootPoint::kHeel, FootPoint::kMid, FootPoint::kToe})
+    sole.p_W[static_cast<int>(point)] = strike.X_WP * legs_->Point3(plan_.swing, strike.swing, point);
+  sole.across_W = strike.X_WP.linear().col(1);
+  sole.half_width_m = leg.half_width_m;
+  sole.side = plan_.swing == Side::kLeft ? "left" : "right";
+  const Touchdown touchdown =
+      FeelTouchdown(*terrain_, sole, plan_.landing_z_m, gait_.touchdown_tolerance_m, legs_->leg_length_m());
+  if (touchdown.fell) {
+    fell_ = true;
+    events_.push_back({"fall", touchdown.reason});
+    return false;
+  }
+  // the next step starts from where the foot rests: a terrain step, whose
+  // pelvis ramps on from where it is (gait_steps.h)
+  if (std::abs(touchdown.rest_z_m - plan_.landing_z_m) > kSettleTolerance_m) {
+    plan_.landing_z_m = touchdown.rest_z_m;
+    plan_.natural_landing = false;
+  }
+  // the next step is planned with both feet where they stand: the landed one
+  // (flat about its heel), and the one it leaves, flat where it was latched
+  const Vec3 p_W_old_heel = plan_.X_WF * legs_->FootPoint_L(plan_.stance, FootPoint::kHeel);
+  felt_->set_footprints({SoleAt(plan_.swing, sole.p_W[0], plan_.yaw_to, plan_.landing_z_m),
+                         SoleAt(plan_.stance, p_W_old_heel, plan_.yaw_to, plan_.floor_z_m)});
+  return true;
+}
+
+Footprint GaitWalker::SoleAt(Side side, const Vec3& p_W_heel, double yaw, double z_m) const {
+  const LegGeometry& leg = legs_->leg(side);
+  const Vec3 along(std::cos(yaw), std::sin(yaw), 0);
+  return Footprint{.p_W_heel = p_W_heel,
+                   .p_W_toe = p_W_heel + (leg.toe_x_m - leg.heel_x_m) * along,
+                   .half_width_m = leg.half_width_m,
+                   .z_m = z_m};
 }
 
 std::vector<LocomotionEvent> GaitWalker::TakeEvents() {
@@ -144,7 +192,20 @@ void GaitWalker::Start() {
     if (!std::isfinite(z)) terrain = nullptr;
     else if (std::abs(z - start.z()) > kLevelTolerance_m) start.z() = z;
   }
-  planner_->set_terrain(terrain, Limits());
+  // the footholds on what the robot knows, when it plans on that (the start
+  // stays the truth's), with both feet standing where the robot starts
+  const bool on_map = terrain != nullptr && felt_ != nullptr;
+  if (on_map) {
+    planner_->set_terrain(nullptr, Limits());
+    const StepPlan standing = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
+    const double yaw = initial_.start_yaw_rad;
+    const LegGeometry& trailing = legs_->leg(standing.swing);
+    const Vec3 p_W_trailing_heel =
+        standing.p_W_trailing_toe - (trailing.toe_x_m - trailing.heel_x_m) * Vec3(std::cos(yaw), std::sin(yaw), 0);
+    felt_->set_footprints({SoleAt(standing.stance, standing.p_W_heel, yaw, start.z()),
+                           SoleAt(standing.swing, p_W_trailing_heel, yaw, start.z())});
+  }
+  planner_->set_terrain(on_map ? felt_.get() : terrain, Limits());
   plan_ = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
   step_duration_s_ = Duration_s(plan_);
   step_start_clock_s_ = 0;
@@ -155,6 +216,8 @@ void GaitWalker::Start() {
   stopped_ = false;
   stop_requested_ = false;
   path_done_ = false;
+  landing_felt_ = false;
+  fell_ = false;
   distance_m_ = 0;
   last_p_WP_ = Vec3::Zero();
   has_last_p_WP_ = false;
@@ -176,6 +239,7 @@ void GaitWalker::SetStride(double stride_m) {
 }
 
 void GaitWalker::Resume() {
+  if (fell_) return;  // fallen: nothing walks on
   stopped_ = false;
   stop_requested_ = false;
 }
@@ -242,7 +306,8 @@ RobotState GaitWalker::Advance(double t_s) {
     while (clock_s_ >= step_start_clock_s_ + step_duration_s_) {
       const StepPose strike = planner_->Evaluate(plan_, 0.5);
       double yaw_to = 0;
-      bool stop = DecideAtHeelStrike(strike.X_WP, &yaw_to);
+      // (footholds on what the robot knows: the landed foot felt on the true ground first)
+      bool stop = !SettleLanding(strike) || DecideAtHeelStrike(strike.X_WP, &yaw_to);
       StepPlan next;
       double next_duration_s = 0;
       if (!stop) {
@@ -272,6 +337,7 @@ RobotState GaitWalker::Advance(double t_s) {
       }
       last_cannot_step_.clear();
       plan_ = std::move(next);
+      landing_felt_ = false;
       step_start_clock_s_ += step_duration_s_;
       step_duration_s_ = next_duration_s;
     }

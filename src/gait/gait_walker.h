@@ -44,6 +44,16 @@
 // strike (both feet down), and reports `cannot_step` with the reason; it
 // tries again when resumed or given a new path.
 //
+// Footholds on what the robot knows (`gait.footholds: map`, docs/terrain.md):
+// with a footholds terrain (SetTerrain's second), every step is planned on it
+// instead — where it knows nothing, level with the stance foot — while the
+// robot still starts on the true surface, and at each heel strike the landed
+// foot is felt on the true surface (gait/touchdown.h): it settles where it
+// rests (the next step starts from there; its pelvis does not jump, the
+// stance leg takes up the difference), or the walker reports a `fall` event
+// with the reason and stands. The planted feet stand where they were felt:
+// under them the planner reads that height, not the map's (gait/felt_ground.h).
+//
 // Joint limits (docs/robots.md): every step is checked before it is taken by
 // UnsafeStepReason (gait/step_safety.h): a step that would take a joint
 // outside its URDF range or beyond its top speed, fold a leg, or lift a foot
@@ -56,6 +66,7 @@
 
 #include <memory>
 
+#include "gait/felt_ground.h"
 #include "gait/gait_steps.h"
 #include "gait/joint_limits.h"
 #include "gait/locomotion.h"
@@ -89,7 +100,7 @@ class GaitWalker : public Locomotion {
   std::optional<GaitCycle> gait_cycle() const override {
     return GaitCycle{achieved_stride_m_, gait_.period_s, max_step_m_};
   }
-  void SetTerrain(const TerrainQuery* terrain) override;
+  void SetTerrain(const TerrainQuery* ground, const TerrainQuery* footholds = nullptr) override;
   std::vector<LocomotionEvent> TakeEvents() override;
   void Reset() override;
   const RobotModel& model() const override { return *model_; }
@@ -122,6 +133,11 @@ class GaitWalker : public Locomotion {
   /// duration_s, or longer when the joints would move too fast across the
   /// heel strike from the step in force to `next` (StrikeSpeedRatio).
   double StrikeLimitedDuration_s(const StepPlan& next, double duration_s) const;
+  // The landed foot of plan_ (at its heel strike `strike`) felt on the true
+  // ground: plan_'s landing moved to where it rests, or false after a `fall` event.
+  bool SettleLanding(const StepPose& strike);
+  // A planted sole: heel at p_W_heel, along heading yaw, resting at z_m.
+  Footprint SoleAt(Side side, const Vec3& p_W_heel, double yaw, double z_m) const;
   // Logs `cannot_step` once per reason in a row.
   void NoteCannotStep(const std::string& reason);
   // Whether waypoint i counts as passed with the pelvis at p.
@@ -145,7 +161,11 @@ class GaitWalker : public Locomotion {
   Vec2 path_origin_m_ = Vec2::Zero();  // where the robot was when its path was given
   double k_target_ = 1;
   double achieved_stride_m_ = 0;
-  const TerrainQuery* terrain_ = nullptr;
+  const TerrainQuery* terrain_ = nullptr;    // the true surface
+  const TerrainQuery* footholds_ = nullptr;  // what the footholds are planned on, when not the true surface
+  std::unique_ptr<FeltGround> felt_;          // footholds_ with the planted feet where the legs felt them
+  bool landing_felt_ = false;                // plan_'s landing has been felt (footholds_ only)
+  bool fell_ = false;                        // a landing could not stand: the walker stands for good
   double max_step_m_ = 0;             // highest step up or down (gait.max_step_m, or from the legs)
   std::vector<LocomotionEvent> events_;
   std::string last_cannot_step_;      // the reason last logged, until a step is taken

@@ -50,7 +50,7 @@ struct GaitCycle {
 /// Something the motion noticed or decided (a step it cannot take), for
 /// summary.json `robot.events`.
 struct LocomotionEvent {
-  std::string event;   ///< snake_case name: cannot_step
+  std::string event;   ///< snake_case name: cannot_step, fall (a foot landed where it cannot stand)
   std::string detail;  ///< one line for a person
 };
 
@@ -75,10 +75,15 @@ class Locomotion {
   /// The stride and period being walked (after defaults and limits); nullopt
   /// for a motion without a gait cycle (a replayed trajectory).
   virtual std::optional<GaitCycle> gait_cycle() const { return std::nullopt; }
-  /// The scene's true surface to plan footsteps on (null: a flat floor at the
-  /// start height); it must outlive the motion. Starts the episode afresh. A
-  /// motion that does not plan footsteps ignores it.
-  virtual void SetTerrain(const TerrainQuery* terrain) { (void)terrain; }
+  /// The scene's true surface the feet stand on (null: a flat floor at the
+  /// start height) and the terrain the footsteps are planned on (null: that
+  /// true surface; else what the robot knows, `gait.footholds: map`, each
+  /// landing then felt on the true surface); both must outlive the motion.
+  /// Starts the episode afresh. A motion that does not plan footsteps ignores it.
+  virtual void SetTerrain(const TerrainQuery* ground, const TerrainQuery* footholds = nullptr) {
+    (void)ground;
+    (void)footholds;
+  }
   /// What happened since the last call, oldest first.
   virtual std::vector<LocomotionEvent> TakeEvents() { return {}; }
   virtual const RobotModel& model() const = 0;

@@ -14,6 +14,13 @@ bool SameLevel(double a, double b) {
   return std::abs(a - b) <= kLevelTolerance_m;
 }
 
+// The terrain's answers, with what it does not know taken as `unknown_z_m`.
+template <class Heights>
+void FillUnknown(Heights& z, double unknown_z_m) {
+  for (double& h : z)
+    if (std::isnan(h)) h = unknown_z_m;
+}
+
 }  // namespace
 
 TerrainProfile::TerrainProfile(const TerrainQuery& terrain, const ProfileLine& line) : line_(line) {
@@ -34,6 +41,7 @@ TerrainProfile::TerrainProfile(const TerrainQuery& terrain, const ProfileLine& l
   }
   std::vector<double> z(from_W.size());
   terrain.HeightsBelow(from_W, line.depth_m, z);
+  FillUnknown(z, line.unknown_z_m);
   lines_cast_ += static_cast<int>(from_W.size());
   const auto envelope = [&](int i) { return std::max({z[3 * i], z[3 * i + 1], z[3 * i + 2]}); };
   const auto support = [&](int i) { return std::min({z[3 * i], z[3 * i + 1], z[3 * i + 2]}); };
@@ -77,6 +85,7 @@ std::pair<double, double> TerrainProfile::Sample(const TerrainQuery& terrain, do
   }
   std::array<double, 3> z{};
   terrain.HeightsBelow(from_W, line_.depth_m, z);
+  FillUnknown(z, line_.unknown_z_m);
   lines_cast_ += 3;
   return {std::max({z[0], z[1], z[2]}), std::min({z[0], z[1], z[2]})};
 }

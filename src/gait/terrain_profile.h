@@ -8,7 +8,8 @@
 // the lowest (what a sole standing there rests on). Consecutive samples whose
 // envelopes stay within kLevelTolerance_m of a segment's first one make a
 // level segment; between two segments the edge is located by bisection to
-// within kEdgeResolution_m. So a stair, a box or a hole in the floor is a few
+// within kEdgeResolution_m. A height the terrain does not know is taken as
+// line.unknown_z_m. So a stair, a box or a hole in the floor is a few
 // segments with exact edges; a slope is many short segments (no sole lies
 // flat on it).
 //
@@ -48,6 +49,10 @@ struct ProfileLine {
   double s_begin_m = 0, s_end_m = 1;
   double z_top_m = 1;               ///< vertical lines start at this height (above any step the legs take)
   double depth_m = 3;               ///< and reach this far down
+  /// Where the terrain does not know (kUnknownGround), the ground is taken to
+  /// be level at this height: the stance foot's (a robot planning on its own
+  /// map steps level into what it has not seen).
+  double unknown_z_m = 0;
 };
 
 class TerrainProfile {

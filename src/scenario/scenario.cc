@@ -114,6 +114,12 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   // the light the optical parts' range tables read
   for (SensorConfig& sensor : scenario.sensors) sensor.spec.ambient_klux = scenario.scene.ambient_klux;
   scenario.map = ReadTerrainMap(reader, (*top)["map"], scenario.sensors, scenario.robot.has_value());
+  // footholds planned on the map need the map
+  if (scenario.robot && scenario.robot->footholds == Footholds::kMap && !scenario.map.enabled) {
+    reader.FailAtLine(scenario.robot->footholds_line, "robot.gait.footholds",
+                      "map plans the footsteps on the robot's terrain map, but the map is off (map: {enabled: "
+                      "false}); turn it on or plan on the truth");
+  }
   // outputs: {range_convention: proxsim | rep117}
   if (const auto outputs = reader.Map((*top)["outputs"], {"range_convention"})) {
     if (const auto name = reader.String((*outputs)["range_convention"])) {

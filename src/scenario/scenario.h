@@ -43,6 +43,11 @@ enum class UnsafeSteps {
   kFall,    ///< it is taken: the robot falls there and the episode ends (default)
   kRefuse,  ///< the legs stand before it (`cannot_step`), the episode goes on
 };
+/// `gait.footholds`: what the footsteps are planned on (docs/terrain.md).
+enum class Footholds {
+  kTruth,  ///< the scene's true surface: perfect foot placement (default)
+  kMap,    ///< the robot's own terrain map; the true surface then decides each landing (gait/touchdown.h)
+};
 /// `robot.on_collision`: what a contact of the robot's body with the world does.
 enum class OnCollision {
   kStop,      ///< the episode ends at the first one (default)
@@ -57,6 +62,8 @@ enum class LocomotionSource {
 
 struct RobotConfig : WalkConfig {
   UnsafeSteps unsafe_steps = UnsafeSteps::kFall;
+  Footholds footholds = Footholds::kTruth;
+  int footholds_line = 0;  ///< line of `gait.footholds` in the file, for messages (0: none)
   OnCollision on_collision = OnCollision::kStop;
   std::string model = "builtin:biped";  ///< "builtin:biped" or a URDF path (relative to the scenario file)
   std::optional<StrategyConfig> strategy;  ///< the built-in strategy (`robot.strategy`, or `stop_distance_m` for stop); none when absent

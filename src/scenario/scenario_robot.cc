@@ -20,6 +20,10 @@ namespace {
 // The gaits proxsim walks (bipeds from toys to adults, slow to running pace).
 constexpr double kMinStride_m = 0.01, kMaxStride_m = 3.0;
 constexpr double kMinGaitPeriod_s = 0.1, kMaxGaitPeriod_s = 30.0;
+// The largest touchdown tolerance: a foot that settles moves to the true
+// ground within one sample (gait/touchdown.h), a jump that stays a kinematic
+// stand-in for a foot feeling its way down only over a few centimetres.
+constexpr double kMaxTouchdownTolerance_m = 0.05;
 }  // namespace
 
 namespace {
@@ -243,13 +247,23 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   // gait: {stride_m, period_s, max_step_m}; stride or period absent scales with
   // the legs, max_step_m absent comes from them
   robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
-  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m", "unsafe_steps"})) {
+  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m", "unsafe_steps", "footholds",
+                                                     "touchdown_tolerance_m"})) {
     robot.unsafe_steps =
         ReadChoice<UnsafeSteps>(reader, (*gait)["unsafe_steps"],
                                 {{"fall", UnsafeSteps::kFall}, {"refuse", UnsafeSteps::kRefuse}},
                                 "expected fall (a step the legs cannot take is taken, and the robot falls) or "
                                 "refuse (the legs stand before it)")
             .value_or(robot.unsafe_steps);
+    robot.footholds = ReadChoice<Footholds>(reader, (*gait)["footholds"],
+                                            {{"truth", Footholds::kTruth}, {"map", Footholds::kMap}},
+                                            "expected truth (footsteps planned on the scene's true surface) or map "
+                                            "(on the robot's own terrain map)")
+                          .value_or(robot.footholds);
+    if (const Field footholds = (*gait)["footholds"]) robot.footholds_line = footholds.node.Mark().line + 1;
+    robot.gait.touchdown_tolerance_m =
+        reader.Number((*gait)["touchdown_tolerance_m"], NumberIn(0.0, kMaxTouchdownTolerance_m, "m"))
+            .value_or(robot.gait.touchdown_tolerance_m);
     robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
     robot.gait.derive_period_from_legs = !gait->Has("period_s");
     // a walking gait, not a degenerate one: a period of 1e-9 s walked the

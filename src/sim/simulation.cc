@@ -103,8 +103,12 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
                             .aperture_deg = sensor.spec.beam && sensor.spec.beam->rays > 1 ? sensor.spec.beam->aperture_deg : 0.0});
   }
   if (locomotion_) {
-    // the gait plans its footsteps on the scene's true surface
-    locomotion_->SetTerrain(&world_->terrain());
+    if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
+    // the gait plans its footsteps on the scene's true surface, or on the
+    // robot's own map (gait.footholds: map), the true surface then deciding each landing
+    if (terrain_map_ && scenario_.robot && scenario_.robot->footholds == Footholds::kMap)
+      map_footholds_ = std::make_unique<MapTerrain>(*terrain_map_);
+    locomotion_->SetTerrain(&world_->terrain(), map_footholds_.get());
     // the scenario's own robot must start clear of the scene's objects, on its
     // ground (an injected motion is the caller's, and a co-simulated robot has
     // no state before its first sample: neither is stepped here)
@@ -118,7 +122,6 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
     contacts_ = std::make_unique<ContactFinder>(*world_->robot(), world_->ground_caster(), world_->ground_ids(), feet_);
     contacts_->SetMoving(world_->moving_caster());
-    if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
     if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
       goal_m_ = scenario_.robot->waypoints_m.back();
       // half the stride walked (the legs may set it rather than the scenario)
@@ -171,11 +174,12 @@ void Simulation::Reset(std::uint64_t seed) {
   cannot_step_t_s_ = -std::numeric_limits<double>::infinity();
   events_.clear();
   state_ = RobotState{};
+  // (the map first: a gait planning on it plans its first step as it starts afresh)
+  if (terrain_map_) terrain_map_->Reset();
   if (locomotion_) {
     locomotion_->Reset();
     world_->robot()->ForgetClearanceBounds();
   }
-  if (terrain_map_) terrain_map_->Reset();
   if (strategy_) strategy_->Reset(MakeSetup());
 }
 
@@ -213,6 +217,11 @@ const SampleFrame& Simulation::TakeSample() {
     state_ = locomotion_->Advance(frame_.t_s);
     std::string unsafe_step;
     for (LocomotionEvent& event : locomotion_->TakeEvents()) {
+      // a foot that landed where it cannot stand (gait.footholds: map): the fall is the event
+      if (event.event == "fall") {
+        Fall(event.detail);
+        continue;
+      }
       if (event.event == "cannot_step") {
         cannot_step_t_s_ = frame_.t_s;
         unsafe_step = event.detail;

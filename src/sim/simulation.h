@@ -27,6 +27,7 @@
 #include "scenario/scenario.h"
 #include "sim/contacts.h"
 #include "sim/delivery_queue.h"
+#include "sim/map_terrain.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"
 #include "sim/world.h"
@@ -131,7 +132,7 @@ class Simulation {
     };
     std::vector<Collision> collisions;
     bool collided = false;  ///< a contact ended the episode (on_collision: stop)
-    bool fell = false;      ///< an unsafe step was taken (unsafe_steps: fall)
+    bool fell = false;      ///< an unsafe step was taken (unsafe_steps: fall), or a foot landed where it cannot stand (footholds: map)
     bool ended = false;     ///< the episode ended before its last sample (collided or fell)
     double end_t_s = 0;
     std::string end_detail;
@@ -165,7 +166,7 @@ class Simulation {
   void UpdateStanding();
   // the contacts of this sample: logged when new, the end of the episode under on_collision: stop
   void UpdateContacts(const std::vector<Contact>& contacts);
-  // an unsafe step under unsafe_steps: fall
+  // an unsafe step under unsafe_steps: fall, or a landing that cannot stand
   void Fall(const std::string& reason);
   void FillObservation();
   StrategySetup MakeSetup() const;
@@ -184,6 +185,7 @@ class Simulation {
   std::unique_ptr<Commands> commands_;
   std::unique_ptr<Events> event_log_;
   std::unique_ptr<TerrainMap> terrain_map_;
+  std::unique_ptr<TerrainQuery> map_footholds_;  // the map as the gait's footholds terrain (gait.footholds: map), or null
   std::vector<SensorInfo> sensor_info_;
   std::vector<FootFrame> feet_;
   double half_width_m_ = 0;
