@@ -38,6 +38,7 @@
 #include "report/report_runner.h"
 #include "run/run.h"
 #include "sim/simulation.h"
+#include "core/message_format.h"
 #include "study/outcome_answers.h"
 #include "study/outcome_config.h"
 #include "study/outcome_runner.h"
@@ -251,7 +252,7 @@ int OutcomeStudy(const std::string& study_path, const std::string& out_dir, int 
     std::printf("  %-40s %-12s success %.3f [%.3f, %.3f]%s\n", row["set"].get<std::string>().c_str(),
                 row["strategy"].get<std::string>().c_str(), row["success_rate"].get<double>(),
                 row["success_ci95"][0].get<double>(), row["success_ci95"][1].get<double>(),
-                row["price_usd"].is_null() ? "" : (", $" + std::to_string(row["price_usd"].get<double>())).c_str());
+                row["price_usd"].is_null() ? "" : proxsim::FormatNumbers(", $%.2f", row["price_usd"].get<double>()).c_str());
   }
   const auto& cheapest = selection["cheapest_reaching_target"];
   if (cheapest.is_null()) {

@@ -56,7 +56,11 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
                     "walked_m,straight_m,path_ratio,min_clearance_m,price_usd\n";
   std::vector<Tally> tallies;
   for (std::size_t s = 0; s < n_sets; ++s)
-    for (std::size_t g = 0; g < n_strategies; ++g) tallies.push_back({.set = s, .strategy = g});
+    for (std::size_t g = 0; g < n_strategies; ++g) {
+      tallies.emplace_back();
+      tallies.back().set = s;
+      tallies.back().strategy = g;
+    }
   for (std::size_t job = 0; job < results.size(); ++job) {
     const WorldFamily& family = study.families[study.jobs[job].family];
     for (std::size_t s = 0; s < n_sets; ++s) {

@@ -548,8 +548,5 @@ std::string RunScenarioText(const OutcomeStudyConfig& study, std::size_t job, st
   return RunTextFromWorld(WorldText(study, job), &study.sets[set], &study.strategies[strategy], false);
 }
 
-std::string ReferenceScenarioText(const OutcomeStudyConfig& study, std::size_t job) {
-  return RunTextFromWorld(WorldText(study, job), nullptr, nullptr, true);
-}
 
 }  // namespace proxsim

@@ -84,10 +84,11 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
 
 /// The scenario text of one run: the job's world, the set's sensors, the
 /// strategy, `seed` the job's seed. What the run reads, and what its replay
-/// file holds. `reference`: no sensors, no strategy and `gait.unsafe_steps:
-/// refuse` — the episode that tells whether the legs can walk the path at all.
+/// file holds. (RunTextFromWorld with `reference` makes the job's reference
+/// walk instead.) The reference: no strategy (the first set's sensors, which then
+/// steer nothing: a scenario needs a sensor) and `gait.unsafe_steps: refuse` —
+/// the episode that tells whether the legs can walk the path at all.
 std::string RunScenarioText(const OutcomeStudyConfig& study, std::size_t job, std::size_t set, std::size_t strategy);
-std::string ReferenceScenarioText(const OutcomeStudyConfig& study, std::size_t job);
 
 /// The job's world without sensors or strategy (generated, for a generated family).
 std::string WorldText(const OutcomeStudyConfig& study, std::size_t job);

@@ -39,7 +39,9 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
   const std::string& source = study.families[study.jobs[job].family].source;
   const std::string world = WorldText(study, job);
   OutcomeJob result;
-  result.way_through = RunEpisode(RunTextFromWorld(world, nullptr, nullptr, true), source).outcome != "refused";
+  // (with the first set's sensors: a scenario needs one; without a strategy they do not steer)
+  result.way_through =
+      RunEpisode(RunTextFromWorld(world, &study.sets.front(), nullptr, true), source).outcome != "refused";
   for (const SensorSet& set : study.sets)
     for (const StrategyChoice& strategy : study.strategies)
       result.runs.push_back(RunEpisode(RunTextFromWorld(world, &set, &strategy, false), source));

@@ -22,13 +22,22 @@ double McNemarExactP(std::int64_t b, std::int64_t c) {
   const std::int64_t n = b + c;
   if (n <= 0) return 1.0;
   const std::int64_t k = std::min(b, c);
-  // Σ C(n, i) / 2^n for i ≤ k, each term in logs (n may be thousands)
-  const double log_half_n = -static_cast<double>(n) * std::log(2.0);
   double tail = 0;
-  for (std::int64_t i = 0; i <= k; ++i) {
-    const double log_choose = std::lgamma(static_cast<double>(n) + 1) - std::lgamma(static_cast<double>(i) + 1) -
-                              std::lgamma(static_cast<double>(n - i) + 1);
-    tail += std::exp(log_choose + log_half_n);
+  if (n <= 1000) {
+    // C(n, i) / 2^n term by term from 2^-n: exact while C(n, i) has at most 53 bits
+    double term = std::ldexp(1.0, -static_cast<int>(n));
+    for (std::int64_t i = 0; i <= k; ++i) {
+      tail += term;
+      term = term * static_cast<double>(n - i) / static_cast<double>(i + 1);
+    }
+  } else {
+    // beyond, 2^-n underflows: each term in logs
+    const double log_half_n = -static_cast<double>(n) * std::log(2.0);
+    for (std::int64_t i = 0; i <= k; ++i) {
+      const double log_choose = std::lgamma(static_cast<double>(n) + 1) - std::lgamma(static_cast<double>(i) + 1) -
+                                std::lgamma(static_cast<double>(n - i) + 1);
+      tail += std::exp(log_choose + log_half_n);
+    }
   }
   return std::min(1.0, 2.0 * tail);
 }
