@@ -147,6 +147,29 @@ TEST_F(OutcomeStudyCliTest, AFailedRunsReplayCommandReproducesItsOutcome) {
   EXPECT_EQ(std::string(t), failure->at("outcome_t_s"));
 }
 
+// The stairs-hole example as a world: its legs cannot cross the 0.6 m hole, so
+// the reference walk stands refused; the stop rule stopping before it is a
+// success, walking on into it (no strategy) a fall.
+TEST_F(OutcomeStudyCliTest, StoppingBeforeAnImpassableHoleIsASuccess) {
+  std::ofstream(dir_ / "hole.yaml")
+      << "proxsim_study: 1\nmode: outcomes\n"
+      << "sets:\n  - name: knee_lasers\n    sensors:\n"
+      << "      - {name: l, type: laser, link: left_tibia, pose: {xyz_m: [0.08, 0, -0.08], rpy_deg: [0, 35, 0]}}\n"
+      << "      - {name: r, type: laser, link: right_tibia, pose: {xyz_m: [0.08, 0, -0.08], rpy_deg: [0, 35, 0]}}\n"
+      << "strategies: [{name: stop}, none]\n"
+      << "worlds: [{name: hole, scenario: " << PROXSIM_SOURCE_DIR << "/data/scenarios/stairs_hole.yaml}]\n";
+  const fs::path out = dir_ / "hole_out";
+  const auto result = RunProxsim("study " + (dir_ / "hole.yaml").string() + " --no-report --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto results = ReadCsv(out / "results.csv");
+  ASSERT_EQ(results.rows.size(), 2u);
+  for (const auto& row : results.rows) EXPECT_EQ(row.at("way_through"), "0");
+  EXPECT_EQ(results.rows[0].at("outcome"), "stopped");
+  EXPECT_EQ(results.rows[0].at("success"), "1");
+  EXPECT_EQ(results.rows[1].at("outcome"), "fell");
+  EXPECT_EQ(results.rows[1].at("success"), "0");
+}
+
 TEST_F(OutcomeStudyCliTest, BadStudiesExitTwoBeforeAnyRun) {
   // a link the robot lacks is found when the worlds are built, before any run
   std::ofstream(dir_ / "bad_link.yaml") << "proxsim_study: 1\nmode: outcomes\nbase: " << PROXSIM_SOURCE_DIR

@@ -98,6 +98,7 @@ OutcomeResults PlantedResults() {
   for (int j = 0; j < 20; ++j) {
     OutcomeJob& job = results[j];
     job.way_through = j != 19;
+    if (j == 19) job.hazard_m = 3.0;  // B stopped after 2.0 m: within 2 m of it
     const double t = 8.0 + 0.1 * j;
     const OutcomeRun reached{"reached_goal", t, 4.4, 4.0, 0.2};
     job.runs.push_back(j < 19 ? reached : OutcomeRun{"collided", 3.0, 1.5, 4.0, 0.0});
@@ -169,6 +170,21 @@ TEST(OutcomeAnswers, APlantedStudyGivesExactlyThePlantedRates) {
   const auto results = ReadCsv(dir / "results.csv");
   EXPECT_EQ(results.rows.size(), 60u);
   fs::remove_all(dir);
+}
+
+// Without a way through, stopping counts only near the hazard (kStopBeforeHazard_m).
+TEST(OutcomeAnswers, AStopIsASuccessOnlyBeforeAnImpassableHazard) {
+  OutcomeJob blocked;
+  blocked.way_through = false;
+  blocked.hazard_m = 3.0;
+  EXPECT_TRUE(IsSuccess({"stopped", 4.0, 2.5, 5.0, 0.3}, blocked));
+  EXPECT_TRUE(IsSuccess({"refused", 4.0, 2.9, 5.0, 0.3}, blocked));
+  EXPECT_FALSE(IsSuccess({"stopped", 1.0, 0.5, 5.0, 0.3}, blocked)) << "stopped at its start";
+  EXPECT_FALSE(IsSuccess({"fell", 4.0, 3.0, 5.0, 0.3}, blocked));
+  EXPECT_FALSE(IsSuccess({"time_up", 14.0, 2.5, 5.0, 0.3}, blocked));
+  const OutcomeJob open;  // a way through: only the goal counts
+  EXPECT_FALSE(IsSuccess({"stopped", 4.0, 2.5, 5.0, 0.3}, open));
+  EXPECT_TRUE(IsSuccess({"reached_goal", 9.0, 5.2, 5.0, 0.3}, open));
 }
 
 TEST(OutcomeConfig, EveryProblemOfABadStudyIsListedAtOnce) {

@@ -75,7 +75,7 @@ nlohmann::json OutcomesSection(bool quick, const std::string& tmp) {
     section["outcome_wall_s"] = wall_s;
     section["outcome_mean_episode_s"] = simulated_s / runs;
     Progress("outcomes: %.0f closed-loop runs (8 lasers, stop rule, 10 x 10 m rooms at difficulty 0.5, episodes of "
-             "%.1f s on average, each room also walked once without sensors) on one core in %.2f s: %.1f runs/s/core "
+             "%.1f s on average) on one core in %.2f s: %.1f runs/s/core "
              "(target 200)",
              runs, simulated_s / runs, wall_s, runs / wall_s);
   }

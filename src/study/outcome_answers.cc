@@ -66,7 +66,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     for (std::size_t s = 0; s < n_sets; ++s) {
       for (std::size_t g = 0; g < n_strategies; ++g) {
         const OutcomeRun& run = run_of(job, s, g);
-        const bool success = IsSuccess(run, results[job].way_through);
+        const bool success = IsSuccess(run, results[job]);
         const bool reached = run.outcome == "reached_goal";
         const double ratio = reached && run.straight_m > 0 ? run.walked_m / run.straight_m : NAN;
         csv += CsvField(study.sets[s].name) + "," + CsvField(study.strategies[g].label) + "," + CsvField(family.name) +
@@ -144,8 +144,8 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
       for (std::size_t j = i + 1; j < sets.size(); ++j) {
         std::int64_t a_only = 0, b_only = 0, both = 0, neither = 0;
         for (std::size_t job = 0; job < results.size(); ++job) {
-          const bool a = IsSuccess(run_of(job, sets[i], g), results[job].way_through);
-          const bool b = IsSuccess(run_of(job, sets[j], g), results[job].way_through);
+          const bool a = IsSuccess(run_of(job, sets[i], g), results[job]);
+          const bool b = IsSuccess(run_of(job, sets[j], g), results[job]);
           a_only += a && !b;
           b_only += b && !a;
           both += a && b;
@@ -209,8 +209,9 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
       {"mode", "outcomes"},
       {"target_success", study.target_success},
       {"success",
-       "a run succeeds when the robot reached its goal, or stopped (its strategy, or its legs refusing a step) in a "
-       "world whose path the legs cannot walk (the reference walk, without sensors, stood refused)"},
+       "a run succeeds when the robot reached its goal, or stopped (its strategy, or its legs refusing a step) "
+       "within 2 m of the hazard in a world whose path the legs cannot walk (the reference walk, without a "
+       "strategy, stood refused there)"},
       {"interval", "95 % Wilson score interval"},
       {"pairs", "McNemar's exact two-sided test on the discordant worlds (pairs.csv)"},
       {"cheapest_reaching_target", cheapest},
@@ -227,7 +228,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     for (std::size_t s = 0; s < n_sets; ++s) {
       for (std::size_t g = 0; g < n_strategies; ++g) {
         const OutcomeRun& run = run_of(job, s, g);
-        if (IsSuccess(run, results[job].way_through)) continue;
+        if (IsSuccess(run, results[job])) continue;
         const std::string stem = FileSafe(family.name) + "_seed" + std::to_string(study.jobs[job].seed) + "_set" +
                                  std::to_string(s + 1) + "_" + FileSafe(study.strategies[g].label);
         std::string file, command, viewer;

@@ -39,9 +39,14 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
   const std::string& source = study.families[study.jobs[job].family].source;
   const std::string world = WorldText(study, job);
   OutcomeJob result;
-  // (with the first set's sensors: a scenario needs one; without a strategy they do not steer)
-  result.way_through =
-      RunEpisode(RunTextFromWorld(world, &study.sets.front(), nullptr, true), source).outcome != "refused";
+  // a generated room has a way through by construction (its free corridor,
+  // scene/world_room.cc); elsewhere the reference walk tells, with the first
+  // set's sensors (a scenario needs one; without a strategy they steer nothing)
+  if (study.families[study.jobs[job].family].kind != "room") {
+    const OutcomeRun reference = RunEpisode(RunTextFromWorld(world, &study.sets.front(), nullptr, true), source);
+    result.way_through = reference.outcome != "refused";
+    if (!result.way_through) result.hazard_m = reference.walked_m;
+  }
   for (const SensorSet& set : study.sets)
     for (const StrategyChoice& strategy : study.strategies)
       result.runs.push_back(RunEpisode(RunTextFromWorld(world, &set, &strategy, false), source));
@@ -50,9 +55,10 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
 
 }  // namespace
 
-bool IsSuccess(const OutcomeRun& run, bool way_through) {
+bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
   if (run.outcome == "reached_goal") return true;
-  return !way_through && (run.outcome == "stopped" || run.outcome == "refused");
+  return !job.way_through && (run.outcome == "stopped" || run.outcome == "refused") &&
+         run.walked_m >= job.hazard_m - kStopBeforeHazard_m;
 }
 
 OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source) {
@@ -76,19 +82,22 @@ OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& sourc
 json OutcomeJobJson(const OutcomeJob& job) {
   json runs = json::array();
   for (const OutcomeRun& r : job.runs) runs.push_back({r.outcome, r.outcome_t_s, r.walked_m, r.straight_m, r.min_clearance_m});
-  return {{"way", job.way_through}, {"runs", runs}};
+  return {{"way", job.way_through}, {"hazard_m", job.hazard_m}, {"runs", runs}};
 }
 
 OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const std::string& where) {
   if (!metrics.is_object()) Bad(where + ": expected an object {\"way\", \"runs\"}");
   const auto way = metrics.find("way");
+  const auto hazard = metrics.find("hazard_m");
   const auto runs = metrics.find("runs");
   if (way == metrics.end() || !way->is_boolean()) Bad(where + ": expected \"way\": true or false");
+  if (hazard == metrics.end() || !hazard->is_number()) Bad(where + ": expected \"hazard_m\": a number");
   if (runs == metrics.end() || !runs->is_array() || runs->size() != runs_per_job) {
     Bad(where + ": expected " + std::to_string(runs_per_job) + " runs (sets x strategies; a line of another study?)");
   }
   OutcomeJob job;
   job.way_through = way->get<bool>();
+  job.hazard_m = hazard->get<double>();
   for (const json& r : *runs) {
     if (!r.is_array() || r.size() != 5 || !r[0].is_string() ||
         std::ranges::find(Simulation::kOutcomeNames, r[0].get<std::string>()) == Simulation::kOutcomeNames.end()) {

@@ -29,14 +29,23 @@ struct OutcomeRun {
 /// One job's episodes: runs[set · strategies + strategy].
 struct OutcomeJob {
   bool way_through = true;      ///< the reference walk did not stand refused before an unsafe step
+  double hazard_m = 0;          ///< without a way through: how far the reference walked before it stood refused
   std::vector<OutcomeRun> runs;
 };
 
+/// Without a way through, a stop counts as "before the hazard" within this
+/// path length of where the reference walk stood refused: a robot that stops
+/// at its start does not succeed for it. About three of the paper's strides:
+/// the stop rule on the stairs-hole example stops 1.4 m short, on a drop its
+/// lasers saw 0.16 m ahead of the toe.
+inline constexpr double kStopBeforeHazard_m = 2.0;
+
 using OutcomeResults = std::vector<OutcomeJob>;  ///< per job
 
-/// Whether a run counts as a success: it reached its goal, or it stopped
-/// (its strategy, or its legs refusing) in a world with no way through.
-bool IsSuccess(const OutcomeRun& run, bool way_through);
+/// Whether a run counts as a success: it reached its goal, or, in a world
+/// with no way through, it stopped (its strategy, or its legs refusing)
+/// within kStopBeforeHazard_m of the hazard.
+bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job);
 
 /// A job as its journal line's "metrics", and back (checked against the
 /// study's shape: a malformed or foreign line is an InputError).
