@@ -187,6 +187,42 @@ TEST(OutcomeAnswers, AStopIsASuccessOnlyBeforeAnImpassableHazard) {
   EXPECT_TRUE(IsSuccess({"reached_goal", 9.0, 5.2, 5.0, 0.3}, open));
 }
 
+// combine: every set of `size` among the `top` rows of a detection study's
+// ranking.csv, or among this file's candidates; each mounting rebuilt as a
+// scenario sensor on its link at its axes' values.
+TEST(OutcomeConfig, CombineMakesEverySetOfSizeAmongTheTopMountings) {
+  const fs::path dir = FreshDir("outcome_combine");
+  fs::create_directories(dir);
+  std::ofstream(dir / "ranking.csv")
+      << "rank,candidate,type,part,link,along_m,forward_m,pitch_deg,yaw_deg,detection_rate,detection_rate_ci95,"
+         "lead_mean_m,lead_ci95_m,false_alarms_mean,self_share,grazing_share,floor_coverage\n"
+      << "1,laser@left_tibia:z-0.35:x0.06:p15:y0,laser,,left_tibia,-0.35,0.06,15,0,1,0,0.5,0,0,0,0,0.5\n"
+      << "2,vl53l0x@right_tibia:z-0.25:x0.06:p0:y0,laser,vl53l0x,right_tibia,-0.25,0.06,0,0,1,0,0.4,0,0,0,0,0.5\n"
+      << "3,hc_sr04@left_thigh:z-0.2:x0.06:p30:y0,ultrasonic,hc_sr04,left_thigh,-0.2,0.06,30,0,0.5,0,0.3,0,0,0,0,0\n"
+      << "4,ideal@left_tibia:z-0.1:x0.06:p0:y0,ideal,,left_tibia,-0.1,0.06,0,0,0.2,0,0.1,0,0,0,0,0\n";
+  const std::string head = "proxsim_study: 1\nmode: outcomes\nbase: " + std::string(PROXSIM_SOURCE_DIR) +
+                           "/data/scenarios/outcome_walker.yaml\nworlds: {generate: {kind: room}}\n";
+  std::ofstream(dir / "from_ranking.yaml") << head << "combine: {from: ranking.csv, size: 2, top: 3}\n";
+  const OutcomeStudyConfig ranked = LoadOutcomeStudyFile((dir / "from_ranking.yaml").string());
+  ASSERT_EQ(ranked.sets.size(), 3u);  // C(3, 2)
+  EXPECT_EQ(ranked.sets[0].name, "laser@left_tibia:z-0.35:x0.06:p15:y0 + vl53l0x@right_tibia:z-0.25:x0.06:p0:y0");
+  EXPECT_EQ(ranked.sets[2].sensor_names,
+            (std::vector<std::string>{"vl53l0x@right_tibia:z-0.25:x0.06:p0:y0", "hc_sr04@left_thigh:z-0.2:x0.06:p30:y0"}));
+  // the parts are priced from the catalogue; the paper's laser is not a part
+  EXPECT_DOUBLE_EQ(ranked.sets[2].price_usd, PartPriceOf("vl53l0x")->price_usd + PartPriceOf("hc_sr04")->price_usd);
+  EXPECT_TRUE(std::isnan(ranked.sets[0].price_usd));
+  EXPECT_EQ(ranked.sets[0].unpriced, (std::vector<std::string>{"laser@left_tibia:z-0.35:x0.06:p15:y0"}));
+
+  std::ofstream(dir / "from_candidates.yaml")
+      << head << "combine: {from: candidates, size: 3}\n"
+      << "candidates: {axes: {type: [vl53l0x, hc_sr04], link: [left_tibia, right_tibia], along_m: -0.3}}\n"
+      << "prices: {hc_sr04: {price_usd: 2.5}}\n";
+  const OutcomeStudyConfig listed = LoadOutcomeStudyFile((dir / "from_candidates.yaml").string());
+  ASSERT_EQ(listed.sets.size(), 4u);  // C(4, 3)
+  EXPECT_DOUBLE_EQ(listed.sets[0].price_usd, 2 * PartPriceOf("vl53l0x")->price_usd + 2.5);
+  fs::remove_all(dir);
+}
+
 TEST(OutcomeConfig, EveryProblemOfABadStudyIsListedAtOnce) {
   const fs::path dir = FreshDir("outcome_bad");
   fs::create_directories(dir);
