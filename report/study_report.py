@@ -11,6 +11,9 @@ wrote in OUT: results.csv, ranking.csv and selection.json.
                              for the greedy sets (Pareto points marked)
   OUT/index.html             links them, with the ranking's head and the chosen set
 
+A closed-loop study (selection.json "mode": "outcomes") is drawn by
+outcome_report.py instead.
+
 Usage: study_report.py OUT   (Debian's /usr/bin/python3 with python3-matplotlib)
 """
 import csv
@@ -147,6 +150,14 @@ def main():
         print(__doc__, file=sys.stderr)
         sys.exit(2)
     out = sys.argv[1]
+    with open(os.path.join(out, "selection.json")) as f:
+        if json.load(f).get("mode") == "outcomes":
+            # a closed-loop study: its own figures (outcome_report.py, beside this file)
+            sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+            import outcome_report
+            outcome_report.draw(out)
+            print(f"study_report: figures and index.html in {out}")
+            return
     results = read_csv(os.path.join(out, "results.csv"))
     ranking = read_csv(os.path.join(out, "ranking.csv"))
     with open(os.path.join(out, "selection.json")) as f:

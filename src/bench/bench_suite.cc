@@ -1,7 +1,8 @@
 // The suite behind `proxsim bench`: the machine, then each section the
 // options select, in a fixed order — the engines on the ray sets
 // (rays_bench.h), a real robot (robot_bench.h), footstep planning
-// (terrain_bench.h), placement studies (study_bench.h), the terrain map
+// (terrain_bench.h), placement studies (study_bench.h), closed-loop studies
+// (outcome_bench.h), the terrain map
 // (map_bench.h), co-simulation and batched environments from Python
 // (python_envs_bench.h), and last the end-to-end runs (end_to_end_bench.h), which
 // walk in the 1M-triangle room the ray sets were cast in. Rays/s is always
@@ -20,6 +21,7 @@
 #include "bench/closed_loop_bench.h"
 #include "bench/end_to_end_bench.h"
 #include "bench/map_bench.h"
+#include "bench/outcome_bench.h"
 #include "bench/worlds_bench.h"
 #include "bench/peers.h"
 #include "bench/python_envs_bench.h"
@@ -39,6 +41,14 @@ json StudyInScratch(bool quick) {
   const auto study_tmp = std::filesystem::temp_directory_path() / ("proxsim-bench-study-" + std::to_string(::getpid()));
   json section = StudySection(quick, study_tmp.string());
   std::filesystem::remove_all(study_tmp);
+  return section;
+}
+
+/// Closed-loop (outcome) studies in a scratch folder of their own, removed after.
+json OutcomesInScratch(bool quick) {
+  const auto tmp = std::filesystem::temp_directory_path() / ("proxsim-bench-outcomes-" + std::to_string(::getpid()));
+  json section = OutcomesSection(quick, tmp.string());
+  std::filesystem::remove_all(tmp);
   return section;
 }
 
@@ -73,6 +83,7 @@ json RunBench(const BenchOptions& options) {
   }
   if (options.terrain) result["terrain"] = TerrainSection(options.quick);
   if (options.study) result["study"] = StudyInScratch(options.quick);
+  if (options.outcomes) result["outcomes"] = OutcomesInScratch(options.quick);
   if (options.map) result["terrain_map"] = MapSection(options.quick);
   if (options.python) result["python_envs"] = PythonEnvsSection(options.quick);
   if (options.worlds) result["worlds"] = WorldsSection(options.quick, scene_1m);
@@ -96,6 +107,7 @@ std::string BenchReport(const json& r) {
   if (r.contains("terrain_map")) out << MapReport(r.at("terrain_map"));
   if (r.contains("worlds")) out << WorldsReport(r.at("worlds"));
   if (r.contains("study")) out << StudyReport(r.at("study"));
+  if (r.contains("outcomes")) out << OutcomesReport(r.at("outcomes"));
   if (r.contains("python_envs")) out << PythonEnvsReport(r.at("python_envs"));
   return out.str();
 }

@@ -17,6 +17,7 @@ struct BenchOptions {
   bool end_to_end = true; ///< the paper run and the heavy scenario
   bool robots = true;     ///< loading the Unitree H1 and its cost per sample against the built-in biped
   bool study = true;      ///< placement studies: runs per second per core, a 1000-run study, 2 MPI ranks against 1
+  bool outcomes = true;   ///< closed-loop studies: runs per second per core on generated rooms, 2 MPI ranks against 1
   bool terrain = true;    ///< planning footsteps on the stairs course against a paper-like sample
   bool map = true;        ///< the terrain map's cost per sample (bench/map_bench.h)
   bool python = true;     ///< co-simulation and the batched environment from Python (bench/python_envs_bench.h)

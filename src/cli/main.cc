@@ -38,6 +38,10 @@
 #include "report/report_runner.h"
 #include "run/run.h"
 #include "sim/simulation.h"
+#include "core/message_format.h"
+#include "study/outcome_answers.h"
+#include "study/outcome_config.h"
+#include "study/outcome_runner.h"
 #include "study/study_answers.h"
 #include "study/study_config.h"
 #include "study/study_runner.h"
@@ -230,9 +234,50 @@ int Generate(const std::string& scenario_path, const std::string& out_path) {
   return 0;
 }
 
+// `mode: outcomes`: sensor sets with strategies, closed loop, ranked by how often the robot gets through
+int OutcomeStudy(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
+                 bool force, bool allow_large) {
+  const proxsim::OutcomeStudyConfig study = proxsim::LoadOutcomeStudyFile(study_path, allow_large);
+  bool writer = false;
+  std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
+  const proxsim::OutcomeResults results = proxsim::RunOutcomeStudy(
+      study,
+      {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true, .force = force, .folder = &folder},
+      &writer);
+  if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
+  const nlohmann::json selection = proxsim::WriteOutcomeAnswers(study, results, folder->path());
+  std::printf("proxsim study: %s — %zu closed-loop runs\n", study_path.c_str(), study.runs_per_job() * study.jobs.size());
+  for (std::size_t i = 0; i < std::min<std::size_t>(5, selection["ranking"].size()); ++i) {
+    const auto& row = selection["ranking"][i];
+    std::printf("  %-40s %-12s success %.3f [%.3f, %.3f]%s\n", row["set"].get<std::string>().c_str(),
+                row["strategy"].get<std::string>().c_str(), row["success_rate"].get<double>(),
+                row["success_ci95"][0].get<double>(), row["success_ci95"][1].get<double>(),
+                row["price_usd"].is_null() ? "" : proxsim::FormatNumbers(", $%.2f", row["price_usd"].get<double>()).c_str());
+  }
+  const auto& cheapest = selection["cheapest_reaching_target"];
+  if (cheapest.is_null()) {
+    std::printf("no priced set reaches the target success rate %.3f\n", study.target_success);
+  } else {
+    std::printf("cheapest reaching %.3f: %s with %s, $%.2f, success %.3f\n", study.target_success,
+                cheapest["set"].get<std::string>().c_str(), cheapest["strategy"].get<std::string>().c_str(),
+                cheapest["price_usd"].get<double>(), cheapest["success_rate"].get<double>());
+  }
+  std::printf("outputs in %s/ (results.csv, ranking.csv, pairs.csv, selection.json, failures.csv)\n", out_dir.c_str());
+  std::fflush(stdout);
+  if (!report) return 0;
+  if (proxsim::MakeStudyReport(out_dir) != 0) {
+    std::fprintf(stderr, "proxsim: the study's files are complete, but its figures could not be drawn\n");
+    return kExitFailure;
+  }
+  std::printf("report: %s/index.html\n", out_dir.c_str());
+  return 0;
+}
+
 int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
           bool force, bool allow_large) {
   CheckOutArgument(out_dir);
+  if (proxsim::IsOutcomeStudyFile(study_path))
+    return OutcomeStudy(study_path, out_dir, threads, resume, report, force, allow_large);
   const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, allow_large);
   bool writer = false;
   std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
@@ -303,10 +348,10 @@ int main(int argc, char** argv) {
   std::string bench_only = "all";
   bench->add_option("--only", bench_only,
                     "run one part: rays (the engines), e2e (paper and heavy runs), robots (the H1 against the biped), "
-                    "study (placement studies, MPI), terrain (planning footsteps on the stairs course), map "
+                    "study (placement studies, MPI), outcomes (closed-loop studies on generated rooms, MPI), terrain (planning footsteps on the stairs course), map "
                     "(the terrain map's cost per sample), python (co-simulation and VecWalkEnv from Python) or worlds "
                     "(moving objects, generating worlds)")
-      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "terrain", "map", "python", "worlds"}))
+      ->check(CLI::IsMember({"all", "rays", "e2e", "robots", "study", "outcomes", "terrain", "map", "python", "worlds"}))
       ->capture_default_str();
 
   std::string plot_dir;
@@ -386,6 +431,7 @@ int main(int argc, char** argv) {
            .end_to_end = bench_only == "all" || bench_only == "e2e",
            .robots = bench_only == "all" || bench_only == "robots",
            .study = bench_only == "all" || bench_only == "study",
+           .outcomes = bench_only == "all" || bench_only == "outcomes",
            .terrain = bench_only == "all" || bench_only == "terrain",
            .map = bench_only == "all" || bench_only == "map",
            .python = bench_only == "all" || bench_only == "python",

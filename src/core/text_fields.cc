@@ -63,6 +63,31 @@ std::vector<std::string> SplitCsvLine(const std::string& line) {
   return cells;
 }
 
+std::vector<std::string> SplitQuotedCsvLine(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else if (c != '\r') {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
 bool ParseFiniteNumber(const std::string& text, double* out) {
   if (text.empty()) return false;
   const char* end = text.data() + text.size();

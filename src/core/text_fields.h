@@ -25,6 +25,10 @@ std::string CsvField(std::string_view field);
 /// (printable UTF-8 of at least one byte); else e.g. "a control character (byte 0x0a at 4)".
 std::string NamingProblem(std::string_view name);
 
+/// The fields of one CSV record as proxsim writes them (RFC 4180: a field in
+/// double quotes may hold commas and doubled quotes; a Windows line end dropped).
+std::vector<std::string> SplitQuotedCsvLine(const std::string& line);
+
 /// The cells of one line of a plain CSV file (no quoting), each trimmed of
 /// spaces, tabs and a Windows line end; a trailing comma gives an empty last cell.
 std::vector<std::string> SplitCsvLine(const std::string& line);

@@ -100,7 +100,23 @@ std::vector<std::pair<std::string, double>> ReadJointAngles(YamlReader& reader, 
   return angles;
 }
 
-// `strategy: {name, ...}`: the keys allowed depend on the name.
+
+// One of a few named values (absent: nullopt); anything else fails naming them.
+template <typename Value>
+std::optional<Value> ReadChoice(YamlReader& reader, const Field& field,
+                                std::initializer_list<std::pair<const char*, Value>> choices,
+                                const std::string& expected) {
+  if (!field) return std::nullopt;
+  const auto text = reader.String(field);
+  if (!text) return std::nullopt;
+  for (const auto& [name, value] : choices)
+    if (*text == name) return value;
+  reader.Fail(field, expected + ", got '" + *text + "'");
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& field) {
   const std::vector<std::string> names = {"stop", "circumvent"};
   const YAML::Node name_node = field.node.IsMap() ? field.node["name"] : YAML::Node();
@@ -142,22 +158,6 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
   }
   return std::nullopt;
 }
-
-// One of a few named values (absent: nullopt); anything else fails naming them.
-template <typename Value>
-std::optional<Value> ReadChoice(YamlReader& reader, const Field& field,
-                                std::initializer_list<std::pair<const char*, Value>> choices,
-                                const std::string& expected) {
-  if (!field) return std::nullopt;
-  const auto text = reader.String(field);
-  if (!text) return std::nullopt;
-  for (const auto& [name, value] : choices)
-    if (*text == name) return value;
-  reader.Fail(field, expected + ", got '" + *text + "'");
-  return std::nullopt;
-}
-
-}  // namespace
 
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
                       const Scene& scene) {

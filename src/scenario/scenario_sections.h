@@ -38,6 +38,11 @@ void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::pa
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
                       const Scene& scene);
 
+/// `strategy: {name: stop | circumvent, ...}`: the keys allowed depend on the
+/// name; nullopt after reporting when the field is not one (an outcome study
+/// reads its strategies with it).
+std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& field);
+
 /// `sensors: [...]`: presets from `type`, overrides, SensorSpec::Validate();
 /// without a robot, every link must be "world".
 std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bool has_robot);

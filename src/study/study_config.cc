@@ -106,6 +106,8 @@ Candidate MakeCandidate(const SensorSpec& spec, const std::string& type, const s
   c.forward_m = forward_m;
   c.pitch_deg = pitch_deg;
   c.yaw_deg = yaw_deg;
+  c.xyz_m = Vec3(forward_m, 0, along_m);
+  c.rpy_deg = Vec3(0, pitch_deg, yaw_deg);
   return c;
 }
 
@@ -178,6 +180,8 @@ void ReadCandidates(YamlReader& reader, const Field& field, StudyConfig& study, 
       }
       Candidate c = MakeCandidate(*spec, *type, *link, xyz.z(), xyz.x(), rpy.y(), rpy.z());
       c.sensor.X_LS = PoseFromXyzRpy(xyz, rpy * (kPi / 180.0));
+      c.xyz_m = xyz;
+      c.rpy_deg = rpy;
       c.id += ":l" + std::to_string(study.candidates.size());  // a listed one is unique by its place
       c.sensor.name = c.id;
       study.candidates.push_back(c);
@@ -263,6 +267,19 @@ void ReadVariants(YamlReader& reader, const Field& field, const std::optional<Sc
 
 }  // namespace
 
+std::vector<Candidate> ReadStudyCandidates(YamlReader& reader, const Field& field, bool allow_large) {
+  StudyConfig study;
+  ReadCandidates(reader, field, study, allow_large);
+  return study.candidates;
+}
+
+std::optional<Candidate> MakeStudyCandidate(const std::string& type, const std::string& link, double along_m,
+                                            double forward_m, double pitch_deg, double yaw_deg) {
+  const auto spec = SpecOf(type);
+  if (!spec) return std::nullopt;
+  return MakeCandidate(*spec, type, link, along_m, forward_m, pitch_deg, yaw_deg);
+}
+
 StudyConfig LoadStudyFile(const std::string& path, bool allow_large) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": cannot read the study file: no such file");
@@ -274,12 +291,17 @@ StudyConfig LoadStudyFile(const std::string& path, bool allow_large) {
   StudyConfig study;
   study.source = path;
   const auto top = reader.Map(reader.Root(document),
-                              {"proxsim_study", "base", "candidates", "scenes", "seeds", "hazards", "select"},
+                              {"proxsim_study", "mode", "base", "candidates", "scenes", "seeds", "hazards", "select"},
                               "a study map starting with 'proxsim_study: 1'");
   if (!top) throw InputError(reader.Problems());
   if (const auto version = reader.Count((*top)["proxsim_study"]); !version || *version != 1) {
     if (!(*top)["proxsim_study"]) reader.Fail((*top)["proxsim_study"], "expected proxsim_study: 1");
     else if (version) reader.Fail((*top)["proxsim_study"], "expected 1, the only study schema");
+  }
+
+  // detection, the default; outcome studies are read by LoadOutcomeStudyFile
+  if (const auto mode = reader.String((*top)["mode"]); mode && *mode != "detection") {
+    reader.Fail((*top)["mode"], "expected detection (the default) or outcomes, got '" + *mode + "'");
   }
 
   // the base scenario

@@ -39,6 +39,7 @@ struct Candidate {
   std::string type;            ///< as the study names it: a sensor type or a part
   SensorConfig sensor;         ///< name = id
   double along_m = 0, forward_m = 0, pitch_deg = 0, yaw_deg = 0;  ///< the axes' values (for the figures)
+  Vec3 xyz_m = Vec3::Zero(), rpy_deg = Vec3::Zero();  ///< its pose on the link, as a scenario writes it
 };
 
 /// One scene variant: the scenario every candidate runs in.
@@ -64,6 +65,18 @@ inline constexpr std::size_t kMaxStudyCandidates = 10'000;
 inline constexpr std::size_t kMaxStudyRuns = 1'000'000;
 /// Even with allow_large: beyond this the candidates alone would not fit in memory.
 inline constexpr std::size_t kHardMaxStudyCandidates = 1'000'000;
+
+class YamlReader;
+struct Field;
+
+/// The `candidates:` section (axes and/or list), read as a detection study
+/// reads it (problems recorded in `reader`); an outcome study combines them.
+std::vector<Candidate> ReadStudyCandidates(YamlReader& reader, const Field& field, bool allow_large);
+
+/// A candidate of a sensor type or part on `link` at the axes' values (a row
+/// of a detection study's ranking.csv); nullopt for an unknown type or part.
+std::optional<Candidate> MakeStudyCandidate(const std::string& type, const std::string& link, double along_m,
+                                            double forward_m, double pitch_deg, double yaw_deg);
 
 /// Reads and validates a study; throws InputError listing every problem.
 /// `allow_large` (--allow-large) lifts kMaxStudyCandidates and kMaxStudyRuns.

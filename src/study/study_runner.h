@@ -18,22 +18,12 @@
 #include <string>
 #include <vector>
 
-#include "core/output_folder.h"
 #include "study/run_metrics.h"
 #include "study/study_config.h"
+#include "study/study_jobs.h"
 
 namespace proxsim {
 
-struct StudyOptions {
-  std::string out_dir = "study-out";
-  int threads = 0;      ///< worker threads in this process; 0: every core (1 per rank under MPI)
-  bool resume = false;  ///< keep the journal's finished jobs
-  bool progress = true; ///< a progress line on stderr (rank 0)
-  bool force = false;   ///< write into a non-empty folder that holds no previous study (--force)
-  /// Receives the claimed, locked output folder (rank 0), to hold while the
-  /// answers and figures are written; the lock ends with the last holder.
-  std::shared_ptr<OutputFolder>* folder = nullptr;
-};
 
 /// The metrics of every job: [variant][seed][candidate].
 using StudyResults = std::vector<std::vector<std::vector<RunMetrics>>>;

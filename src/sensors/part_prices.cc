@@ -1,0 +1,32 @@
+#include "sensors/part_prices.h"
+
+namespace proxsim {
+
+namespace {
+
+struct Row {
+  std::string_view part;
+  PartPrice price;
+};
+
+// Approximate list prices of one unit on the usual hobby breakout boards, and
+// their masses; the sources and their dates are in docs/sensors.md ("Price and
+// mass"). A study overrides any of them (`prices:` in the study file).
+constexpr Row kRows[] = {
+    {"hc_sr04", {3.95, 8.5}},
+    {"sharp_gp2y0a21", {12.95, 3.5}},
+    {"vl53l0x", {14.95, 1.0}},
+    {"vl53l5cx", {24.95, 1.5}},
+    {"vl53l7cx", {24.95, 1.5}},
+    {"vl53l8cx", {24.95, 1.5}},
+};
+
+}  // namespace
+
+std::optional<PartPrice> PartPriceOf(std::string_view part) {
+  for (const Row& row : kRows)
+    if (row.part == part) return row.price;
+  return std::nullopt;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,260 @@
+#include "study/outcome_answers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+
+#include "core/atomic_file.h"
+#include "core/text_fields.h"
+#include "study/outcome_stats.h"
+
+namespace proxsim {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string Number(double value) {
+  if (!std::isfinite(value)) return "";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
+}
+
+json JsonNumber(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+// a name made safe for a file name
+std::string FileSafe(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+  return out;
+}
+
+// the tally of one set with one strategy over every world
+struct Tally {
+  std::size_t set = 0, strategy = 0;
+  std::int64_t runs = 0, successes = 0, reached = 0, collided = 0, fell = 0, stopped = 0, time_up = 0;
+  std::vector<double> time_to_goal_s, path_ratio, clearance_m;
+  double min_clearance_m = std::numeric_limits<double>::infinity();
+  double rate() const { return runs > 0 ? static_cast<double>(successes) / static_cast<double>(runs) : 0.0; }
+};
+
+}  // namespace
+
+json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& results, const std::string& out_dir) {
+  const fs::path out(out_dir);
+  const std::size_t n_sets = study.sets.size(), n_strategies = study.strategies.size();
+  const auto run_of = [&](std::size_t job, std::size_t set, std::size_t strategy) -> const OutcomeRun& {
+    return results[job].runs[set * n_strategies + strategy];
+  };
+
+  // results.csv: one row per run, in job order
+  std::string csv = "set,strategy,world,kind,difficulty,seed,way_through,outcome,outcome_t_s,success,time_to_goal_s,"
+                    "walked_m,straight_m,path_ratio,min_clearance_m,price_usd\n";
+  std::vector<Tally> tallies;
+  for (std::size_t s = 0; s < n_sets; ++s)
+    for (std::size_t g = 0; g < n_strategies; ++g) {
+      tallies.emplace_back();
+      tallies.back().set = s;
+      tallies.back().strategy = g;
+    }
+  for (std::size_t job = 0; job < results.size(); ++job) {
+    const WorldFamily& family = study.families[study.jobs[job].family];
+    for (std::size_t s = 0; s < n_sets; ++s) {
+      for (std::size_t g = 0; g < n_strategies; ++g) {
+        const OutcomeRun& run = run_of(job, s, g);
+        const bool success = IsSuccess(run, results[job]);
+        const bool reached = run.outcome == "reached_goal";
+        const double ratio = reached && run.straight_m > 0 ? run.walked_m / run.straight_m : NAN;
+        csv += CsvField(study.sets[s].name) + "," + CsvField(study.strategies[g].label) + "," + CsvField(family.name) +
+               "," + family.kind + "," + Number(family.difficulty) + "," + std::to_string(study.jobs[job].seed) + "," +
+               (results[job].way_through ? "1" : "0") + "," + run.outcome + "," + Number(run.outcome_t_s) + "," +
+               (success ? "1" : "0") + "," + (reached ? Number(run.outcome_t_s) : "") + "," + Number(run.walked_m) +
+               "," + Number(run.straight_m) + "," + Number(ratio) + "," + Number(run.min_clearance_m) + "," +
+               Number(study.sets[s].price_usd) + "\n";
+        Tally& t = tallies[s * n_strategies + g];
+        ++t.runs;
+        t.successes += success;
+        t.reached += reached;
+        t.collided += run.outcome == "collided";
+        t.fell += run.outcome == "fell";
+        t.stopped += run.outcome == "stopped" || run.outcome == "refused";
+        t.time_up += run.outcome == "time_up";
+        if (reached) t.time_to_goal_s.push_back(run.outcome_t_s);
+        if (std::isfinite(ratio)) t.path_ratio.push_back(ratio);
+        if (std::isfinite(run.min_clearance_m)) {
+          t.clearance_m.push_back(run.min_clearance_m);
+          t.min_clearance_m = std::min(t.min_clearance_m, run.min_clearance_m);
+        }
+      }
+    }
+  }
+  WriteFileAtomically((out / "results.csv").string(), csv);
+
+  // ranking.csv: by success rate, then price (unknown last), then the order given
+  std::vector<std::size_t> order(tallies.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto price_key = [&](const Tally& t) {
+    const double p = study.sets[t.set].price_usd;
+    return std::isfinite(p) ? p : std::numeric_limits<double>::infinity();
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (tallies[a].rate() != tallies[b].rate()) return tallies[a].rate() > tallies[b].rate();
+    return price_key(tallies[a]) < price_key(tallies[b]);
+  });
+  std::string ranking = "rank,set,strategy,sensors,price_usd,mass_g,runs,successes,success_rate,success_ci95_low,"
+                        "success_ci95_high,reached_goal_rate,collision_rate,fall_rate,stopped_rate,time_up_rate,"
+                        "median_time_to_goal_s,median_path_ratio,median_min_clearance_m,min_clearance_m\n";
+  json rows = json::array();
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    const Tally& t = tallies[order[r]];
+    const SensorSet& set = study.sets[t.set];
+    const Interval ci = WilsonInterval95(t.successes, t.runs);
+    const auto share = [&](std::int64_t k) { return t.runs > 0 ? static_cast<double>(k) / static_cast<double>(t.runs) : 0.0; };
+    std::string sensors;
+    for (const std::string& name : set.sensor_names) sensors += (sensors.empty() ? "" : " ") + name;
+    ranking += std::to_string(r + 1) + "," + CsvField(set.name) + "," + CsvField(study.strategies[t.strategy].label) +
+               "," + CsvField(sensors) + "," + Number(set.price_usd) + "," + Number(set.mass_g) + "," +
+               std::to_string(t.runs) + "," + std::to_string(t.successes) + "," + Number(t.rate()) + "," +
+               Number(ci.low) + "," + Number(ci.high) + "," + Number(share(t.reached)) + "," +
+               Number(share(t.collided)) + "," + Number(share(t.fell)) + "," + Number(share(t.stopped)) + "," +
+               Number(share(t.time_up)) + "," + Number(Median(t.time_to_goal_s)) + "," + Number(Median(t.path_ratio)) +
+               "," + Number(Median(t.clearance_m)) + "," + Number(t.min_clearance_m) + "\n";
+    rows.push_back({{"set", set.name},
+                    {"strategy", study.strategies[t.strategy].label},
+                    {"price_usd", JsonNumber(set.price_usd)},
+                    {"mass_g", JsonNumber(set.mass_g)},
+                    {"runs", t.runs},
+                    {"success_rate", t.rate()},
+                    {"success_ci95", {ci.low, ci.high}}});
+  }
+  WriteFileAtomically((out / "ranking.csv").string(), ranking);
+
+  // pairs.csv: every two sets with the same strategy, on the same worlds and seeds
+  std::string pairs = "strategy,set_a,set_b,runs,a_only,b_only,both,neither,success_rate_a,success_rate_b,p_value,"
+                      "verdict\n";
+  for (std::size_t g = 0; g < n_strategies; ++g) {
+    std::vector<std::size_t> sets;  // the strategy's sets in ranking order, the best kMaxPairedSets
+    for (std::size_t i : order)
+      if (tallies[i].strategy == g && sets.size() < kMaxPairedSets) sets.push_back(tallies[i].set);
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+      for (std::size_t j = i + 1; j < sets.size(); ++j) {
+        std::int64_t a_only = 0, b_only = 0, both = 0, neither = 0;
+        for (std::size_t job = 0; job < results.size(); ++job) {
+          const bool a = IsSuccess(run_of(job, sets[i], g), results[job]);
+          const bool b = IsSuccess(run_of(job, sets[j], g), results[job]);
+          a_only += a && !b;
+          b_only += b && !a;
+          both += a && b;
+          neither += !a && !b;
+        }
+        const double p = McNemarExactP(a_only, b_only);
+        const double runs = static_cast<double>(results.size());
+        const std::string verdict = p >= 0.05         ? "no significant difference"
+                                    : a_only > b_only ? "a better"
+                                                      : "b better";
+        pairs += CsvField(study.strategies[g].label) + "," + CsvField(study.sets[sets[i]].name) + "," +
+                 CsvField(study.sets[sets[j]].name) + "," + std::to_string(results.size()) + "," +
+                 std::to_string(a_only) + "," + std::to_string(b_only) + "," + std::to_string(both) + "," +
+                 std::to_string(neither) + "," + Number(static_cast<double>(a_only + both) / runs) + "," +
+                 Number(static_cast<double>(b_only + both) / runs) + "," + Number(p) + "," + verdict + "\n";
+      }
+    }
+  }
+  WriteFileAtomically((out / "pairs.csv").string(), pairs);
+
+  // selection.json: the cheapest set reaching the target, and the Pareto front of price against success
+  std::vector<std::size_t> priced;
+  json unpriced = json::array();
+  for (std::size_t i : order) {
+    if (std::isfinite(study.sets[tallies[i].set].price_usd)) priced.push_back(i);
+  }
+  for (const SensorSet& set : study.sets)
+    if (!std::isfinite(set.price_usd)) unpriced.push_back({{"set", set.name}, {"sensors_without_price", set.unpriced}});
+  std::stable_sort(priced.begin(), priced.end(), [&](std::size_t a, std::size_t b) {
+    if (price_key(tallies[a]) != price_key(tallies[b])) return price_key(tallies[a]) < price_key(tallies[b]);
+    return tallies[a].rate() > tallies[b].rate();
+  });
+  const auto point = [&](std::size_t i) {
+    const Tally& t = tallies[i];
+    const Interval ci = WilsonInterval95(t.successes, t.runs);
+    return json{{"set", study.sets[t.set].name},
+                {"strategy", study.strategies[t.strategy].label},
+                {"price_usd", study.sets[t.set].price_usd},
+                {"mass_g", JsonNumber(study.sets[t.set].mass_g)},
+                {"sensors", study.sets[t.set].sensor_names},
+                {"success_rate", t.rate()},
+                {"success_ci95", {ci.low, ci.high}},
+                {"target_met_at_95_confidence", ci.low >= study.target_success}};
+  };
+  json cheapest = nullptr;
+  for (std::size_t i : priced) {
+    if (tallies[i].rate() >= study.target_success) {
+      cheapest = point(i);
+      break;
+    }
+  }
+  json front = json::array();
+  double best_rate = -1;
+  for (std::size_t i : priced) {  // by price: a point is on the front when no cheaper one succeeds as often
+    if (tallies[i].rate() > best_rate) {
+      front.push_back(point(i));
+      best_rate = tallies[i].rate();
+    }
+  }
+  const json selection = {
+      {"mode", "outcomes"},
+      {"target_success", study.target_success},
+      {"success",
+       "a run succeeds when the robot reached its goal, or stopped (its strategy, or its legs refusing a step) "
+       "within 2 m of the hazard in a world whose path the legs cannot walk (the reference walk, without a "
+       "strategy, stood refused there)"},
+      {"interval", "95 % Wilson score interval"},
+      {"pairs", "McNemar's exact two-sided test on the discordant worlds (pairs.csv)"},
+      {"cheapest_reaching_target", cheapest},
+      {"pareto_front", front},
+      {"unpriced_sets", unpriced},
+      {"ranking", rows}};
+  WriteFileAtomically((out / "selection.json").string(), selection.dump(2) + "\n");
+
+  // failures.csv and the world files their replay commands run
+  std::string failures = "set,strategy,world,seed,outcome,outcome_t_s,world_file,command,viewer\n";
+  std::size_t written = 0;
+  for (std::size_t job = 0; job < results.size(); ++job) {
+    const WorldFamily& family = study.families[study.jobs[job].family];
+    for (std::size_t s = 0; s < n_sets; ++s) {
+      for (std::size_t g = 0; g < n_strategies; ++g) {
+        const OutcomeRun& run = run_of(job, s, g);
+        if (IsSuccess(run, results[job])) continue;
+        const std::string stem = FileSafe(family.name) + "_seed" + std::to_string(study.jobs[job].seed) + "_set" +
+                                 std::to_string(s + 1) + "_" + FileSafe(study.strategies[g].label);
+        std::string file, command, viewer;
+        if (written < study.replay_files) {
+          ++written;
+          fs::create_directories(out / "failures");
+          const std::string text =
+              "# " + run.outcome + " at t = " + Number(run.outcome_t_s) + " s: set '" + study.sets[s].name +
+              "', strategy " + study.strategies[g].label + ", world " + family.name + " seed " +
+              std::to_string(study.jobs[job].seed) + " (written by proxsim study " + study.source + ")\n" +
+              RunScenarioText(study, job, s, g);
+          WriteFileAtomically((out / "failures" / (stem + ".yaml")).string(), text);
+          // relative to the study's folder: the files are the same wherever the study was written
+          file = "failures/" + stem + ".yaml";
+          command = "proxsim run " + file + " --out replays/" + stem;
+          viewer = "replays/" + stem + "/report/index.html";
+        }
+        failures += CsvField(study.sets[s].name) + "," + CsvField(study.strategies[g].label) + "," +
+                    CsvField(family.name) + "," + std::to_string(study.jobs[job].seed) + "," + run.outcome + "," +
+                    Number(run.outcome_t_s) + "," + CsvField(file) + "," + CsvField(command) + "," +
+                    CsvField(viewer) + "\n";
+      }
+    }
+  }
+  WriteFileAtomically((out / "failures.csv").string(), failures);
+  return selection;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,99 @@
+// A closed-loop study (`mode: outcomes` in a study file; docs/studies.md
+// "Outcome mode"): sensor sets crossed with strategies, each run as one
+// episode in each world of each world family with each seed, scored by how
+// the episode ended. Read and validated like a scenario: every problem listed
+// at once, before any run.
+//
+//   proxsim_study: 1
+//   mode: outcomes
+//   base: ../scenarios/outcomes_base.yaml   # robot, gait, timing; its scene, sensors, path and strategy replaced
+//   sets:                                   # sensor sets, each a scenario's `sensors:` list
+//     - {name: two_tof, sensors: [{name: l, type: vl53l0x, link: left_tibia, pose: {...}}, ...]}
+//   combine: {from: study-out/ranking.csv, size: 2, top: 4}   # and/or every set of `size` of the top mountings
+//   strategies: [{name: stop}, {name: circumvent, margin_m: 0.2}, none]
+//   worlds:                                 # one map or a list of them
+//     - {generate: {kind: room, difficulty: [0.3, 0.6], size_m: [5, 5]}, seeds: {from: 1, to: 50}}
+//     - {name: corridor, scenario: my_corridor.yaml, seeds: [1, 2, 3]}
+//   target_success: 0.95
+//   prices: {vl53l0x: {price_usd: 9.5}, my_sensor: {price_usd: 120, mass_g: 30}}   # by sensor name, then part or type
+//   replay_files: 1000                      # failed runs whose replay world is written
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.h"
+
+namespace proxsim {
+
+/// One candidate set of sensors: what a robot would be bought with.
+struct SensorSet {
+  std::string name;
+  std::string sensors_yaml;  ///< the set as a scenario's `sensors:` list (YAML, flow style)
+  std::vector<std::string> sensor_names;
+  double price_usd = 0;      ///< the sum over its sensors; NaN when one has no price
+  double mass_g = 0;         ///< the sum; NaN when one has no mass
+  std::vector<std::string> unpriced;  ///< its sensors without a price (why price_usd is NaN)
+};
+
+/// One strategy the sets are run with.
+struct StrategyChoice {
+  std::string label;          ///< its name, numbered when a name repeats (stop, stop_2)
+  std::string yaml;           ///< the scenario's `robot.strategy` map; empty: none (the walk goes on)
+};
+
+/// One kind of world: a generated kind at one difficulty, or a scenario.
+struct WorldFamily {
+  std::string name;           ///< room_d0.3, course_d0.6, or the scenario variant's name
+  std::string kind;           ///< room, course, or scenario
+  double difficulty = 0;      ///< NaN for a scenario
+  std::string document_yaml;  ///< the scenario, without sensors or strategy; a generated one with `scene.generate` (its seed set per job)
+  std::string source;         ///< the file relative paths are resolved from (the base, or the variant's file)
+  bool generated = false;
+};
+
+struct OutcomeStudyConfig {
+  std::string source;
+  std::vector<SensorSet> sets;
+  std::vector<StrategyChoice> strategies;
+  std::vector<WorldFamily> families;
+  /// A job: one family with one seed (the world's and the noise's); every run of
+  /// every set with every strategy in it.
+  struct Job {
+    std::size_t family = 0;
+    std::uint64_t seed = 0;
+  };
+  std::vector<Job> jobs;
+  double target_success = 0.95;
+  std::size_t replay_files = 1000;
+  std::size_t runs_per_job() const { return sets.size() * strategies.size(); }
+};
+
+/// Bounds on an outcome study's size (each run is an episode of its own).
+inline constexpr std::size_t kMaxOutcomeSets = 10'000;
+inline constexpr std::size_t kMaxOutcomeRuns = 1'000'000;
+
+/// Whether a study file says `mode: outcomes` (anything else is read as a
+/// detection study, which reports a bad mode).
+bool IsOutcomeStudyFile(const std::string& path);
+
+/// Reads and validates an outcome study; throws InputError listing every problem.
+OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_large = false);
+
+/// The scenario text of one run: the job's world, the set's sensors, the
+/// strategy, `seed` the job's seed. What the run reads, and what its replay
+/// file holds. (RunTextFromWorld with `reference` makes the job's reference
+/// walk instead.) The reference: no strategy (the first set's sensors, which then
+/// steer nothing: a scenario needs a sensor) and `gait.unsafe_steps: refuse` —
+/// the episode that tells whether the legs can walk the path at all.
+std::string RunScenarioText(const OutcomeStudyConfig& study, std::size_t job, std::size_t set, std::size_t strategy);
+
+/// The job's world without sensors or strategy (generated, for a generated family).
+std::string WorldText(const OutcomeStudyConfig& study, std::size_t job);
+/// A run's text from its job's WorldText (what RunScenarioText does, without regenerating the world).
+std::string RunTextFromWorld(const std::string& world_text, const SensorSet* set, const StrategyChoice* strategy,
+                             bool reference);
+
+}  // namespace proxsim

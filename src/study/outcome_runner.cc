@@ -1,0 +1,173 @@
+#include "study/outcome_runner.h"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "core/input_error.h"
+#include "sim/simulation.h"
+
+namespace proxsim {
+
+namespace {
+
+using nlohmann::json;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+[[noreturn]] void Bad(const std::string& what) { throw InputError("journal line: " + what); }
+
+double NumberOrNaN(const json& value, const std::string& where) {
+  if (value.is_null()) return kNaN;
+  if (!value.is_number()) Bad(where + ": expected a number, got " + value.dump());
+  return value.get<double>();
+}
+
+// What identifies an outcome study's journal: its sets, strategies and worlds.
+std::string Fingerprint(const OutcomeStudyConfig& study) {
+  std::string text = "outcomes;";
+  for (const SensorSet& set : study.sets) text += set.name + "=" + set.sensors_yaml + ";";
+  for (const StrategyChoice& s : study.strategies) text += s.label + "=" + s.yaml + ";";
+  for (const WorldFamily& f : study.families) text += f.name + "=" + f.document_yaml + ";";
+  for (const OutcomeStudyConfig::Job& j : study.jobs) text += std::to_string(j.family) + ":" + std::to_string(j.seed) + ";";
+  return StudyFingerprint("outcomes-" + std::to_string(study.sets.size()) + "x" +
+                              std::to_string(study.strategies.size()) + "x" + std::to_string(study.jobs.size()),
+                          text);
+}
+
+// one job: the world generated once, the reference walk, then every run
+OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
+  const std::string& source = study.families[study.jobs[job].family].source;
+  const std::string world = WorldText(study, job);
+  OutcomeJob result;
+  // a generated room has a way through by construction (its free corridor,
+  // scene/world_room.cc); elsewhere the reference walk tells, with the first
+  // set's sensors (a scenario needs one; without a strategy they steer nothing)
+  if (study.families[study.jobs[job].family].kind != "room") {
+    const OutcomeRun reference = RunEpisode(RunTextFromWorld(world, &study.sets.front(), nullptr, true), source);
+    result.way_through = reference.outcome != "refused";
+    if (!result.way_through) result.hazard_m = reference.walked_m;
+  }
+  for (const SensorSet& set : study.sets)
+    for (const StrategyChoice& strategy : study.strategies)
+      result.runs.push_back(RunEpisode(RunTextFromWorld(world, &set, &strategy, false), source));
+  return result;
+}
+
+}  // namespace
+
+bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
+  if (run.outcome == "reached_goal") return true;
+  return !job.way_through && (run.outcome == "stopped" || run.outcome == "refused") &&
+         run.walked_m >= job.hazard_m - kStopBeforeHazard_m;
+}
+
+OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source) {
+  Simulation sim(LoadScenarioText(scenario_text, source), 1);
+  while (!sim.done()) sim.Step();
+  OutcomeRun run;
+  const Simulation::Outcome outcome = sim.outcome();
+  run.outcome = outcome.name;
+  run.outcome_t_s = outcome.t_s;
+  const RobotKnowledge* robot = sim.observation().robot;
+  run.walked_m = robot != nullptr ? robot->distance_walked_m : 0.0;
+  run.straight_m = kNaN;
+  if (const auto& config = sim.scenario().robot; config && !config->waypoints_m.empty()) {
+    run.straight_m = (config->waypoints_m.back() - config->start_xyz_m.head<2>()).norm();
+  }
+  const double clearance = sim.robot_outcome().min_clearance_m;
+  run.min_clearance_m = std::isfinite(clearance) ? clearance : kNaN;
+  return run;
+}
+
+json OutcomeJobJson(const OutcomeJob& job) {
+  json runs = json::array();
+  for (const OutcomeRun& r : job.runs) runs.push_back({r.outcome, r.outcome_t_s, r.walked_m, r.straight_m, r.min_clearance_m});
+  return {{"way", job.way_through}, {"hazard_m", job.hazard_m}, {"runs", runs}};
+}
+
+OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const std::string& where) {
+  if (!metrics.is_object()) Bad(where + ": expected an object {\"way\", \"runs\"}");
+  const auto way = metrics.find("way");
+  const auto hazard = metrics.find("hazard_m");
+  const auto runs = metrics.find("runs");
+  if (way == metrics.end() || !way->is_boolean()) Bad(where + ": expected \"way\": true or false");
+  if (hazard == metrics.end() || !hazard->is_number()) Bad(where + ": expected \"hazard_m\": a number");
+  if (runs == metrics.end() || !runs->is_array() || runs->size() != runs_per_job) {
+    Bad(where + ": expected " + std::to_string(runs_per_job) + " runs (sets x strategies; a line of another study?)");
+  }
+  OutcomeJob job;
+  job.way_through = way->get<bool>();
+  job.hazard_m = hazard->get<double>();
+  for (const json& r : *runs) {
+    if (!r.is_array() || r.size() != 5 || !r[0].is_string() ||
+        std::ranges::find(Simulation::kOutcomeNames, r[0].get<std::string>()) == Simulation::kOutcomeNames.end()) {
+      Bad(where + ": a run is not [outcome, outcome_t_s, walked_m, straight_m, min_clearance_m]: " + r.dump());
+    }
+    job.runs.push_back({r[0].get<std::string>(), NumberOrNaN(r[1], where), NumberOrNaN(r[2], where),
+                        NumberOrNaN(r[3], where), NumberOrNaN(r[4], where)});
+  }
+  return job;
+}
+
+OutcomeResults RunOutcomeStudy(const OutcomeStudyConfig& study, const StudyOptions& options, bool* is_writer) {
+  StudyMpi mpi;  // a no-op unless started by mpirun with more than one rank
+
+  // every family's first world with every set, built before any run: every
+  // problem listed at once (a link the robot lacks, a bad generate key)
+  {
+    std::vector<std::string> problems;
+    std::vector<bool> checked(study.families.size(), false);
+    for (std::size_t job = 0; job < study.jobs.size(); ++job) {
+      const std::size_t family = study.jobs[job].family;
+      if (checked[family]) continue;
+      checked[family] = true;
+      const std::string& name = study.families[family].name;
+      try {
+        const std::string world = WorldText(study, job);
+        for (const SensorSet& set : study.sets) {
+          try {
+            const Simulation sim(LoadScenarioText(RunTextFromWorld(world, &set, &study.strategies.front(), false),
+                                                  study.families[family].source),
+                                 1);
+          } catch (const InputError& error) {
+            for (const std::string& p : error.problems())
+              problems.push_back(study.source + ": set '" + set.name + "' in world '" + name + "': " + p);
+          }
+        }
+      } catch (const InputError& error) {
+        for (const std::string& p : error.problems()) problems.push_back(study.source + ": world '" + name + "': " + p);
+      }
+    }
+    if (!problems.empty()) throw InputError(problems);
+  }
+
+  JobSet set;
+  set.jobs = study.jobs.size();
+  set.runs_per_job = study.runs_per_job();
+  set.fingerprint = Fingerprint(study);
+  set.check = [&study](const json& line) -> std::size_t {
+    if (!line.is_object()) Bad("expected an object {\"job\": ..., \"metrics\": {...}}");
+    const auto job = line.find("job");
+    if (job == line.end() || !job->is_number_unsigned() || job->get<std::uint64_t>() >= study.jobs.size())
+      Bad("job: expected a job index below " + std::to_string(study.jobs.size()));
+    const auto metrics = line.find("metrics");
+    if (metrics == line.end()) Bad("job " + job->dump() + ": no 'metrics'");
+    ParseOutcomeJob(*metrics, study.runs_per_job(), "job " + job->dump());
+    return job->get<std::size_t>();
+  };
+  const int threads = WorkerThreads(options.threads, mpi);
+  for (int t = 0; t < threads; ++t)
+    set.workers.push_back([&study](std::size_t job) { return OutcomeJobJson(RunJob(study, job)); });
+  set.header = std::to_string(study.sets.size()) + " sets x " + std::to_string(study.strategies.size()) +
+               " strategies x " + std::to_string(study.jobs.size()) + " worlds = " +
+               std::to_string(study.runs_per_job() * study.jobs.size()) +
+               " runs (closed loop; a job: one world, every set with every strategy)";
+  const std::map<std::size_t, json> lines = RunJobs(set, options, mpi, is_writer);
+  if (!*is_writer) return {};
+  OutcomeResults results(study.jobs.size());
+  for (const auto& [job, line] : lines)
+    results[job] = ParseOutcomeJob(line.at("metrics"), study.runs_per_job(), "job " + std::to_string(job));
+  return results;
+}
+
+}  // namespace proxsim
