@@ -9,7 +9,7 @@
 
 #include "scenario/scenario.h"
 #include "sim/simulation.h"
-#include "terrain/terrain_files.h"
+#include "output/terrain_files.h"
 
 namespace proxsim {
 namespace {

@@ -23,10 +23,10 @@
 #include "raycast/ray_caster.h"
 #include "run/run.h"
 #include "sim/simulation.h"
-#include "terrain/octomap_recorder.h"
-#include "terrain/terrain_files.h"
-#include "terrain/terrain_map.h"
-#include "terrain/truth_field.h"
+#include "output/octomap_recorder.h"
+#include "output/terrain_files.h"
+#include "knowledge/terrain_map.h"
+#include "output/truth_field.h"
 
 namespace proxsim {
 namespace {

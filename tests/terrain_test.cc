@@ -1,4 +1,4 @@
-// Closed-form tests of the terrain map's parts (src/terrain/): the column
+// Closed-form tests of the terrain map's parts (src/knowledge/): the column
 // traversal against a brute-force clip of the segment by every cell, one
 // reading's point and variance from each noise model, the empty part of a
 // ray lowering exactly the cells it crosses (and the score counting those it
@@ -12,14 +12,14 @@
 #include <random>
 #include <set>
 
-#include "terrain/elevation_grid.h"
-#include "terrain/grid_traversal.h"
-#include "terrain/hazards.h"
-#include "terrain/ray_evidence.h"
-#include "terrain/terrain_config.h"
-#include "terrain/terrain_map.h"
-#include "terrain/terrain_archive.h"
-#include "terrain/terrain_score.h"
+#include "knowledge/elevation_grid.h"
+#include "knowledge/grid_traversal.h"
+#include "knowledge/hazards.h"
+#include "knowledge/ray_evidence.h"
+#include "knowledge/terrain_config.h"
+#include "knowledge/terrain_map.h"
+#include "output/terrain_archive.h"
+#include "output/terrain_score.h"
 
 namespace proxsim {
 namespace {

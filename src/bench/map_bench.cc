@@ -10,10 +10,10 @@
 #include "bench/step_timing.h"
 #include "scenario/scenario.h"
 #include "sim/simulation.h"
-#include "terrain/octomap_recorder.h"
-#include "terrain/terrain_archive.h"
-#include "terrain/terrain_files.h"
-#include "terrain/terrain_map.h"
+#include "output/octomap_recorder.h"
+#include "output/terrain_archive.h"
+#include "output/terrain_files.h"
+#include "knowledge/terrain_map.h"
 
 namespace proxsim::bench {
 

@@ -1,6 +1,6 @@
 #include "output/terrain_sink.h"
 
-#include "terrain/terrain_files.h"
+#include "output/terrain_files.h"
 
 namespace proxsim {
 

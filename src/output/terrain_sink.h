@@ -1,5 +1,5 @@
 // The terrain map as a run's output: each sample, what the map retired, the
-// track and the rays into the archive (terrain/terrain_archive.h), then at the end OUT/terrain/ (terrain/terrain_files.h) and the map's score
+// track and the rays into the archive (output/terrain_archive.h), then at the end OUT/terrain/ (output/terrain_files.h) and the map's score
 // against the truth in summary.json `terrain`.
 #pragma once
 
@@ -8,7 +8,7 @@
 
 #include "output/run_sink.h"
 #include "raycast/ray_caster.h"
-#include "terrain/terrain_archive.h"
+#include "output/terrain_archive.h"
 
 namespace proxsim {
 

@@ -1,4 +1,4 @@
-// The `map` section: the terrain map's parameters (terrain/terrain_config.h),
+// The `map` section: the terrain map's parameters (knowledge/terrain_config.h),
 // `map: {enabled, resolution_m, max_height_m, obstacle_min_m, drop_min_m,
 // step_max_m, step_min_size_m, window_m, sensors: [names]}`, every key optional. The map
 // is built by a walking robot: a `map` section without a `robot` is a

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "core/spill_file.h"
-#include "terrain/octomap_recorder.h"
-#include "terrain/terrain_map.h"
+#include "output/octomap_recorder.h"
+#include "knowledge/terrain_map.h"
 
 namespace proxsim {
 

@@ -1,4 +1,4 @@
-#include "terrain/terrain_files.h"
+#include "output/terrain_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 
 #include "core/atomic_file.h"
 #include "core/number_format.h"
-#include "terrain/corridor.h"
-#include "terrain/terrain_score.h"
-#include "terrain/truth_field.h"
+#include "output/corridor.h"
+#include "output/terrain_score.h"
+#include "output/truth_field.h"
 
 namespace proxsim {
 

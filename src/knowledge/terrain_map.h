@@ -27,11 +27,11 @@
 #include <vector>
 
 #include "sensors/sensor_spec.h"
-#include "strategy/strategy.h"
-#include "terrain/elevation_grid.h"
-#include "terrain/hazards.h"
-#include "terrain/ray_evidence.h"
-#include "terrain/terrain_config.h"
+#include "knowledge/observation.h"
+#include "knowledge/elevation_grid.h"
+#include "knowledge/hazards.h"
+#include "knowledge/ray_evidence.h"
+#include "knowledge/terrain_config.h"
 
 namespace proxsim {
 

@@ -30,7 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "terrain/grid_traversal.h"
+#include "knowledge/grid_traversal.h"
 
 namespace proxsim {
 

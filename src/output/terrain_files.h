@@ -24,7 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "raycast/ray_caster.h"
-#include "terrain/terrain_archive.h"
+#include "output/terrain_archive.h"
 
 namespace proxsim {
 

@@ -1,4 +1,4 @@
-#include "terrain/terrain_config.h"
+#include "knowledge/terrain_config.h"
 
 #include <cmath>
 #include <sstream>

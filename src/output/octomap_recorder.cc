@@ -1,4 +1,4 @@
-#include "terrain/octomap_recorder.h"
+#include "output/octomap_recorder.h"
 
 #include <array>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "terrain/elevation_grid.h"
+#include "knowledge/elevation_grid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -30,9 +30,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "terrain/corridor.h"
-#include "terrain/hazards.h"
-#include "terrain/terrain_map.h"
+#include "output/corridor.h"
+#include "knowledge/hazards.h"
+#include "knowledge/terrain_map.h"
 
 namespace proxsim {
 

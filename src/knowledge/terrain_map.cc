@@ -1,4 +1,4 @@
-#include "terrain/terrain_map.h"
+#include "knowledge/terrain_map.h"
 
 #include <algorithm>
 #include <cmath>

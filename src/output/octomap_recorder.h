@@ -22,7 +22,7 @@
 #include <string>
 
 #include "core/geometry.h"
-#include "terrain/ray_evidence.h"
+#include "knowledge/ray_evidence.h"
 
 namespace proxsim {
 

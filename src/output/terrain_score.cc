@@ -1,9 +1,9 @@
-#include "terrain/terrain_score.h"
+#include "output/terrain_score.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "terrain/truth_field.h"
+#include "output/truth_field.h"
 
 namespace proxsim {
 

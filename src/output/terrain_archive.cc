@@ -1,4 +1,4 @@
-#include "terrain/terrain_archive.h"
+#include "output/terrain_archive.h"
 
 #include <algorithm>
 #include <cmath>
