@@ -9,7 +9,7 @@
 
 #include "scenario/scenario.h"
 #include "sim/simulation.h"
-#include "terrain/terrain_files.h"
+#include "output/terrain_files.h"
 
 namespace proxsim {
 namespace {
@@ -43,10 +43,12 @@ TEST(GhostCells, APersonWhoCrossedInFrontLeavesNoGhostCellsTwoSecondsAfterLeavin
       "",  // (a level ultrasonic beam never passes below what it saw: its echoes stay)
       "ghost.yaml");
   Simulation sim(scenario, 1);
+  TerrainArchive archive(*sim.terrain_map(), false);
   int most_raised = 0;
   bool person_seen = false;
   while (!sim.done()) {
     const SampleFrame& frame = sim.Step();
+    archive.Add();
     for (const SensorSample& sample : frame.sensors)
       person_seen = person_seen || (sample.reading.detected() && sim.object_name(sample.object_id).starts_with("walker/"));
     if (frame.t_s < left_view_t_s) most_raised = std::max(most_raised, RaisedCells(*sim.terrain_map(), 1.5, 2.1, -1.5, 1.5));
@@ -54,7 +56,7 @@ TEST(GhostCells, APersonWhoCrossedInFrontLeavesNoGhostCellsTwoSecondsAfterLeavin
   ASSERT_TRUE(person_seen) << "the sensors must have seen the person";
   EXPECT_GT(most_raised, 0) << "the map held the person's legs while it crossed";
   EXPECT_EQ(RaisedCells(*sim.terrain_map(), 1.5, 2.1, -1.5, 1.5), 0);
-  const nlohmann::json score = RecordTerrain(*sim.terrain_map(), sim.world().caster(), "", nullptr);
+  const nlohmann::json score = RecordTerrain(archive, sim.world().caster(), "");
   ASSERT_TRUE(score.contains("ghost_cells"));
   EXPECT_EQ(score["ghost_cells"]["cells"], 0) << score.dump(2);
 }

@@ -13,7 +13,7 @@
 #include "cli_helpers.h"
 #include "sensors/range_table.h"
 #include "strategy/strategy.h"
-#include "terrain/ray_evidence.h"
+#include "knowledge/ray_evidence.h"
 
 namespace proxsim {
 namespace {

@@ -1,4 +1,4 @@
-// Closed-form tests of the terrain map's parts (src/terrain/): the column
+// Closed-form tests of the terrain map's parts (src/knowledge/): the column
 // traversal against a brute-force clip of the segment by every cell, one
 // reading's point and variance from each noise model, the empty part of a
 // ray lowering exactly the cells it crosses (and the score counting those it
@@ -12,13 +12,14 @@
 #include <random>
 #include <set>
 
-#include "terrain/elevation_grid.h"
-#include "terrain/grid_traversal.h"
-#include "terrain/hazards.h"
-#include "terrain/ray_evidence.h"
-#include "terrain/terrain_config.h"
-#include "terrain/terrain_map.h"
-#include "terrain/terrain_score.h"
+#include "knowledge/elevation_grid.h"
+#include "knowledge/grid_traversal.h"
+#include "knowledge/hazards.h"
+#include "knowledge/ray_evidence.h"
+#include "knowledge/terrain_config.h"
+#include "knowledge/terrain_map.h"
+#include "output/terrain_archive.h"
+#include "output/terrain_score.h"
 
 namespace proxsim {
 namespace {
@@ -265,6 +266,8 @@ TEST(TerrainMapTest, AnEmptyRayLowersTheUpperBoundOfTheCellsItCrossesAndOnlyThos
   const SensorOutput reading = Reading(p_WS, dir, false, 2.0);
   const RobotKnowledge robot = Standing({0, 0});
   map.Update(Observation{.t_s = 1.0, .sensors = std::span(&reading, 1), .robot = &robot});
+  TerrainArchive archive(map, false);
+  archive.Add();
 
   const Vec3 end = p_WS + 2.0 * dir;
   const auto expected = BruteForceCells(p_WS, end, 0.02);
@@ -299,6 +302,8 @@ TEST(TerrainScoreTest, CountsTheBoundsThatPutTheSurfaceLowerThanTheTruthByMoreTh
   const SensorOutput reading = Reading(p_WS, dir, false, 2.0);
   const RobotKnowledge robot = Standing({0, 0});
   map.Update(Observation{.t_s = 1.0, .sensors = std::span(&reading, 1), .robot = &robot});
+  TerrainArchive archive(map, false);
+  archive.Add();
 
   const Vec3 end = p_WS + 2.0 * dir;
   std::size_t below = 0;
@@ -309,8 +314,9 @@ TEST(TerrainScoreTest, CountsTheBoundsThatPutTheSurfaceLowerThanTheTruthByMoreTh
     box.Expand(CellIndex{key.first, key.second});
   }
   ASSERT_GT(below, 10u);
-  const Corridor corridor(map.track(), map.last_position(), 0.02);
-  TerrainScorer scorer(map, corridor);
+  const std::vector<TrackPoint> track = archive.Track();
+  const Corridor corridor(track, map.last_position(), 0.02);
+  TerrainScorer scorer(map, track, archive.Hazards(), archive.truth_ceiling_z_m(), corridor);
   // the truth: a flat surface at z = 0 under every cell
   const std::vector<float> flat(static_cast<std::size_t>(box.nx()), 0.0f);
   std::vector<const TerrainCell*> cells(flat.size());
@@ -345,16 +351,20 @@ TEST(TerrainMapTest, TheCeilingRidesWithTheGroundTheRobotStandsOn) {
   TerrainMap from_floor(TerrainMapConfig{}, {ideal}, {true});  // max_height_m 0.6
   const RobotKnowledge on_floor = Standing({0, 0});
   from_floor.Update(Observation{.t_s = 0, .sensors = std::span(&reading, 1), .robot = &on_floor});
+  TerrainArchive floor_archive(from_floor, false);
+  floor_archive.Add();
   EXPECT_FALSE(from_floor.CellAt(0.5, 0.0) != nullptr && from_floor.CellAt(0.5, 0.0)->has_elevation());
   TerrainMap from_landing(TerrainMapConfig{}, {ideal}, {true});
   RobotKnowledge on_landing = Standing({0, 0});
   on_landing.ground_z_m = 0.6;
   from_landing.Update(Observation{.t_s = 0, .sensors = std::span(&reading, 1), .robot = &on_landing});
+  TerrainArchive landing_archive(from_landing, false);
+  landing_archive.Add();
   ASSERT_NE(from_landing.CellAt(0.5, 0.0), nullptr);
   EXPECT_NEAR(from_landing.CellAt(0.5, 0.0)->elevation_m, 0.6, 1e-6);
   // the truth's ceiling: above the highest ground stood on
-  EXPECT_NEAR(from_floor.truth_ceiling_z_m(), 0.6, 1e-12);
-  EXPECT_NEAR(from_landing.truth_ceiling_z_m(), 1.2, 1e-12);
+  EXPECT_NEAR(floor_archive.truth_ceiling_z_m(), 0.6, 1e-12);
+  EXPECT_NEAR(landing_archive.truth_ceiling_z_m(), 1.2, 1e-12);
 }
 
 // ------------------------------------------------------------ fusion rules

@@ -39,7 +39,7 @@
 #include "run/run.h"
 #include "run/run_recorder.h"
 #include "sim/simulation.h"
-#include "terrain/terrain_map.h"
+#include "knowledge/terrain_map.h"
 
 namespace py = pybind11;
 

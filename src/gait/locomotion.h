@@ -10,16 +10,10 @@
 
 #include "core/geometry.h"
 #include "gait/terrain_query.h"
+#include "knowledge/support_leg.h"
 #include "robot/robot_model.h"
 
 namespace proxsim {
-
-enum class SupportLeg { kLeft, kRight, kDouble };
-
-/// "left", "right" or "double".
-const char* SupportLegName(SupportLeg s);
-/// Every support leg's name, in code order (the output files' codes).
-const std::vector<std::string>& SupportLegNames();
 
 /// The robot at one sample time.
 struct RobotState {

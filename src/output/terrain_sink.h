@@ -1,5 +1,5 @@
-// The terrain map as a run's output: each sample's rays into the OctoMap tree,
-// then at the end OUT/terrain/ (terrain/terrain_files.h) and the map's score
+// The terrain map as a run's output: each sample, what the map retired, the
+// track and the rays into the archive (output/terrain_archive.h), then at the end OUT/terrain/ (output/terrain_files.h) and the map's score
 // against the truth in summary.json `terrain`.
 #pragma once
 
@@ -8,8 +8,7 @@
 
 #include "output/run_sink.h"
 #include "raycast/ray_caster.h"
-#include "terrain/octomap_recorder.h"
-#include "terrain/terrain_map.h"
+#include "output/terrain_archive.h"
 
 namespace proxsim {
 
@@ -25,10 +24,10 @@ class TerrainSink : public RunSink {
   void AddToSummary(nlohmann::json& summary) const override;
 
  private:
-  const TerrainMap& map_;
+  // mutable: the summary of a run without files scores the archive as it stands
+  mutable TerrainArchive archive_;
   const RayCaster& caster_;
   std::string dir_;
-  std::optional<OctomapRecorder> octomap_;
   std::optional<nlohmann::json> committed_;
 };
 

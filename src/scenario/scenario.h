@@ -14,7 +14,7 @@
 #include "scene/scene.h"
 #include "sensors/sensor_spec.h"
 #include "strategy/strategy_config.h"
-#include "terrain/terrain_config.h"
+#include "knowledge/terrain_config.h"
 
 namespace proxsim {
 

@@ -1,5 +1,5 @@
 // The sensor models' inverse, for whoever reads a reading back into the
-// world (the terrain map, terrain/ray_evidence.h): how far a reported
+// world (the terrain map, knowledge/ray_evidence.h): how far a reported
 // distance may lie from the truth (the noise model's σ at d, per type), the
 // distance a reading stands for once the datasheet's bias is taken out, and
 // the incidence beyond which a surface gives no echo. They sit beside the

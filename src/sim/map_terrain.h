@@ -15,7 +15,7 @@
 #pragma once
 
 #include "gait/terrain_query.h"
-#include "terrain/terrain_map.h"
+#include "knowledge/terrain_map.h"
 
 namespace proxsim {
 

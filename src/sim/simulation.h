@@ -32,7 +32,7 @@
 #include "sim/sensor_reader.h"
 #include "sim/world.h"
 #include "strategy/strategy.h"
-#include "terrain/terrain_map.h"
+#include "knowledge/terrain_map.h"
 
 namespace proxsim {
 

@@ -4,10 +4,9 @@
 // output and where its own kinematics put its sensors and feet — and the
 // strategy commands the robot through RobotCommands.
 //
-// What the robot does not know cannot be reached from here: the types below
-// carry no reading status, no true distance, hit point, object or clearance
-// (SampleFrame in sim/ holds those, for outputs and scoring). A test checks
-// that these types have no such member.
+// What it knows is knowledge/observation.h's, a module below both the gait and
+// the strategies that sees no truth; a strategy reads the terrain map through
+// Observation::map (knowledge/terrain_map.h).
 //
 // Frames: W world, P pelvis (the robot's root link), S a sensor.
 #pragma once
@@ -20,96 +19,9 @@
 #include <vector>
 
 #include "core/geometry.h"
-#include "gait/locomotion.h"
-#include "sensors/measured_point.h"
-#include "sensors/sensor_spec.h"
+#include "knowledge/observation.h"
 
 namespace proxsim {
-
-class TerrainMap;  // terrain/terrain_map.h: built from the readings only
-
-/// One zone of a multi-zone sensor as the device reports it: its nearest
-/// target (ST's status "range valid") and, from the datasheet's geometry and
-/// the robot's kinematics, the zone's axis.
-struct ZoneOutput {
-  bool detected = false;       ///< the zone reports a valid target
-  double d_m = 0.0;            ///< its distance; the sensor's maximum range when none
-  Vec3 dir_W = Vec3::UnitX();  ///< the zone's axis (unit) when the sensor measured
-};
-
-/// What one sensor device delivered at a sample: its outputs, and where the
-/// robot's kinematics put the sensor when it measured.
-struct SensorOutput {
-  bool fresh = false;      ///< a reading arrived at this sample; otherwise the fields below hold no news
-  bool detected = false;   ///< the device reports an echo (d_m < its range)
-  double d_m = 0.0;        ///< the reported distance; the maximum range when nothing was detected
-  double signal = std::numeric_limits<double>::quiet_NaN();  ///< reflectance signal s; NaN for time of flight
-  double output = std::numeric_limits<double>::quiet_NaN();  ///< a lookup sensor's output; NaN otherwise
-  double t_reported_s = std::numeric_limits<double>::quiet_NaN();  ///< when the reading was reported
-  Vec3 p_WS = Vec3::Zero();    ///< the sensor's origin when it measured
-  Vec3 dir_W = Vec3::UnitX();  ///< its axis (unit) when it measured
-
-  /// A multi-zone sensor's zones (empty for the others), each zone's nearest target.
-  std::vector<ZoneOutput> zones;
-  /// Every target of every zone as the device reports it (zone-major,
-  /// `targets` per zone, sensors/multizone.h): distance (0 without a
-  /// target), ST's target status code, and each zone's count of targets.
-  std::vector<double> zone_d_m;
-  std::vector<std::uint8_t> zone_status;
-  std::vector<std::uint8_t> zone_target_count;
-
-  /// The point the reading puts in the world: origin + d_m along the axis.
-  Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
-  /// The point zone `zone`'s target puts in the world, along the zone's axis.
-  Vec3 p_W_zone(std::size_t zone) const { return MeasuredPoint_W(p_WS, zones[zone].dir_W, zones[zone].d_m); }
-};
-
-/// What the robot's datasheets and mounting tell it about one sensor.
-struct SensorInfo {
-  std::string name;
-  SensorType type = SensorType::kIdeal;
-  double min_range_m = 0.0;
-  double max_range_m = 0.0;
-  std::string link;  ///< the link it is fixed on ("world" for a fixed sensor)
-  double max_incidence_deg = 90.0;  ///< echoes come back from surfaces met within this angle of their normal
-  double aperture_deg = 0.0;        ///< full cone angle of its beam (0: one ray along its axis)
-};
-
-/// One foot's contact points, from the robot's kinematics.
-struct FootKnowledge {
-  Vec3 p_W_sole = Vec3::Zero();  ///< the sole point under the ankle
-  Vec3 p_W_toe = Vec3::Zero();   ///< the sole's front end, on the foot's centre line
-  Vec3 p_W_heel = Vec3::Zero();  ///< the sole's back end
-};
-
-/// The robot's knowledge of itself at a sample (odometry and joint encoders).
-struct RobotKnowledge {
-  Pose X_WP = Pose::Identity();  ///< pelvis pose
-  double yaw_rad = 0.0;          ///< pelvis heading about z
-  std::vector<double> q;         ///< joint positions by joint index (rad, or m for prismatic)
-  double gait_phase = 0.0;       ///< left leg's phase in [0, 1), 0 at its heel strike
-  SupportLeg support = SupportLeg::kDouble;
-  bool has_feet = false;                  ///< false for a robot whose locomotion names no feet
-  std::array<FootKnowledge, 2> feet;      ///< [0] left, [1] right
-  Vec3 heading_W = Vec3::UnitX();         ///< unit, horizontal: the walking direction
-  bool stopped = false;                   ///< standing still
-  double distance_walked_m = 0.0;
-  // derived from the above, as every strategy needs them
-  Vec3 p_W_front = Vec3::Zero();  ///< the foremost toe along the heading
-  double ground_z_m = 0.0;        ///< height of the ground the robot stands on: its lowest sole or toe point
-  double half_width_m = 0.0;      ///< the robot's half-width about its pelvis's sagittal plane (at start)
-};
-
-/// Everything a strategy sees at one sample.
-struct Observation {
-  double t_s = 0.0;
-  std::int64_t sample = 0;
-  std::span<const SensorOutput> sensors;  ///< one per sensor, in scenario order
-  const RobotKnowledge* robot = nullptr;  ///< null when the scenario has no robot
-  /// The terrain map built so far from the delivered readings (this sample's
-  /// included); null without a robot or when the scenario turns it off.
-  const TerrainMap* map = nullptr;
-};
 
 /// What a strategy knows before the first sample of an episode.
 struct StrategySetup {

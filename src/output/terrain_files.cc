@@ -1,4 +1,4 @@
-#include "terrain/terrain_files.h"
+#include "output/terrain_files.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 
 #include "core/atomic_file.h"
 #include "core/number_format.h"
-#include "terrain/corridor.h"
-#include "terrain/terrain_score.h"
-#include "terrain/truth_field.h"
+#include "output/corridor.h"
+#include "output/terrain_score.h"
+#include "output/truth_field.h"
 
 namespace proxsim {
 
@@ -72,13 +72,14 @@ std::string HazardsCsvText(const std::vector<Hazard>& hazards) {
   return text;
 }
 
-nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, const std::string& dir,
-                             OctomapRecorder* octomap) {
-  const ElevationGrid& grid = map.grid();
-  const double r = grid.resolution_m();
-  const Corridor corridor(map.track(), map.last_position(), r);
-  TerrainScorer scorer(map, corridor);
-  CellBox extent = grid.Bounds();
+nlohmann::json RecordTerrain(TerrainArchive& archive, const RayCaster& caster, const std::string& dir) {
+  const TerrainMap& map = archive.map();
+  const double r = map.grid().resolution_m();
+  const double ceiling_z_m = archive.truth_ceiling_z_m();
+  const std::vector<TrackPoint> track = archive.Track();
+  const Corridor corridor(track, map.last_position(), r);
+  TerrainScorer scorer(map, track, archive.Hazards(), ceiling_z_m, corridor);
+  CellBox extent = archive.Bounds();
   extent.Expand(corridor.Bounds());
   const std::int32_t nx = extent.nx(), ny = extent.ny();
   // the truth is classified over a wider box, so that a hazard the extent
@@ -108,16 +109,17 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
   const auto scored_n = static_cast<std::size_t>(scored.nx());
   const auto offset = static_cast<std::size_t>(extent.ix_min - scored.ix_min);
   std::vector<const TerrainCell*> cells(scored_n);
+  std::vector<TerrainCell> retired_cells;
   std::vector<float> elevation(row_n), variance(row_n), upper_bound(row_n), first_t(row_n), last_t(row_n), truth(row_n);
   std::vector<std::uint32_t> hits(row_n);
   for (std::int32_t iy = scored.iy_min; iy <= scored.iy_max; ++iy) {
-    for (std::size_t k = 0; k < scored_n; ++k) cells[k] = grid.Find({scored.ix_min + static_cast<std::int32_t>(k), iy});
+    archive.ReadRow(iy, scored.ix_min, scored_n, cells, retired_cells);
     const std::vector<float> scored_truth =
-        TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.truth_ceiling_z_m());
+        TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, ceiling_z_m);
     // with moving objects: the heights with them where they are now, for the ghost cells
     const std::vector<float> scored_now =
         caster.has_moving()
-            ? TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, map.truth_ceiling_z_m(), true)
+            ? TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, ceiling_z_m, true)
             : std::vector<float>{};
     scorer.AddRow(iy, scored.ix_min, cells, scored_truth, scored_now);
     if (arrays.empty() || iy < extent.iy_min || iy > extent.iy_max) continue;
@@ -149,12 +151,12 @@ nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, con
       {"origin_xy_m", {extent.ix_min * r, extent.iy_min * r}},
       {"shape", {ny, nx}},
       {"max_height_m", map.config().max_height_m},
-      {"truth_ceiling_z_m", map.truth_ceiling_z_m()},
+      {"truth_ceiling_z_m", ceiling_z_m},
       {"frame", "world"},
       {"arrays", kArrayNames}};
   WriteFileAtomically((final_dir / "meta.json").string(), meta.dump(2) + "\n");
-  WriteFileAtomically((final_dir / "hazards.csv").string(), HazardsCsvText(map.hazards()));
-  if (octomap != nullptr) octomap->WriteBinary((final_dir / "map.bt").string());
+  WriteFileAtomically((final_dir / "hazards.csv").string(), HazardsCsvText(archive.Hazards()));
+  if (archive.octomap() != nullptr) archive.octomap()->WriteBinary((final_dir / "map.bt").string());
   return score;
 }
 

@@ -9,23 +9,34 @@
 // leading toe's distance to it then, while later passes grow or reclassify
 // it. Strategies read it through Observation::map.
 //
+// The map is a rolling window (`map.window_m`): whenever the robot has moved
+// a tile's side, the tiles with no cell within window_m of its pelvis (in x
+// or y) leave the map, and with them the hazards all of whose tiles are
+// outside (a tile under a hazard that is not wholly outside stays, so that a
+// hazard leaves whole, as it was found). They are
+// handed over for one sample (last_retired_tiles(), last_retired_hazards()),
+// for the outputs to keep (terrain_archive.h); the map forgets them. Where the
+// robot comes back, the map starts that ground anew.
+//
 // Frames: W world, S a sensor.
 #pragma once
 
+#include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "sensors/sensor_spec.h"
-#include "strategy/strategy.h"
-#include "terrain/elevation_grid.h"
-#include "terrain/hazards.h"
-#include "terrain/ray_evidence.h"
-#include "terrain/terrain_config.h"
+#include "knowledge/observation.h"
+#include "knowledge/elevation_grid.h"
+#include "knowledge/hazards.h"
+#include "knowledge/ray_evidence.h"
+#include "knowledge/terrain_config.h"
 
 namespace proxsim {
 
-/// Where the robot was: its track, kept every centimetre walked (and when
-/// the ground it stands on changes), for the corridor and the hazards' distances.
+/// Where the robot is: the map's last position, which the outputs keep as the
+/// track (every centimetre walked, and when the ground it stands on changes).
 struct TrackPoint {
   double t_s = 0.0;
   Vec2 p_W_pelvis = Vec2::Zero();
@@ -53,26 +64,27 @@ class TerrainMap {
   const ElevationGrid& grid() const { return grid_; }
   /// The cell holding world point (x, y), or null when it is still unknown land.
   const TerrainCell* CellAt(double x_m, double y_m) const { return grid_.Find(grid_.IndexOf(x_m, y_m)); }
-  /// The hazards found so far (the last pass's, and those left behind on another ground).
+  /// The hazards found so far (the last pass's, and those left behind on
+  /// another ground), within the window.
   const std::vector<Hazard>& hazards() const { return hazards_; }
+  /// The tiles and hazards that left the window at the last sample.
+  const std::vector<std::unique_ptr<ElevationGrid::Tile>>& last_retired_tiles() const { return retired_tiles_; }
+  const std::vector<Hazard>& last_retired_hazards() const { return retired_hazards_; }
   /// What the last sample's readings said, one entry per fresh reading of a map sensor.
   std::span<const RayEvidence> last_evidence() const { return evidence_; }
   /// Whether sensor i's readings feed the map.
   bool feeds_map(std::size_t sensor) const { return feeds_map_[sensor]; }
-  /// The robot's track (decimated) and its last point.
-  const std::vector<TrackPoint>& track() const { return track_; }
+  /// Where the robot was at the last sample.
   const TrackPoint& last_position() const { return last_; }
-  /// The map's ceiling for the truth: max_height_m above the highest ground
-  /// the robot stood on (each reading's own ceiling is max_height_m above the
-  /// ground the robot stood on then).
-  double truth_ceiling_z_m() const;
   double last_t_s() const { return last_.t_s; }
 
  private:
   // one ray's evidence: clipped at the robot's feet when silent, kept for the viewer, inserted
   void AddEvidence(RayEvidence evidence, const Observation& observation);
   void Insert(const RayEvidence& evidence, double t_s, double ceiling_z_m);
-  void UpdateTrack(double t_s, const RobotKnowledge& robot);
+  void UpdatePosition(double t_s, const RobotKnowledge& robot);
+  // retires the tiles and hazards beyond the window, when the robot moved a tile's side since the last time
+  void RollWindow();
   // relabel changed tiles; true if a label changed
   bool Relabel(double ground_z_m);
   void FindHazardsAgain(double t_s, const RobotKnowledge& robot);
@@ -83,8 +95,10 @@ class TerrainMap {
   ElevationGrid grid_;
   std::vector<RayEvidence> evidence_;
   std::vector<Hazard> hazards_;
-  std::vector<TrackPoint> track_;
+  std::vector<std::unique_ptr<ElevationGrid::Tile>> retired_tiles_;
+  std::vector<Hazard> retired_hazards_;
   TrackPoint last_;
+  Vec2 rolled_at_W_ = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());  // where the window last rolled
   double labelled_ground_z_m_ = 0.0;
   bool labels_changed_ = false;
   double next_pass_t_s_ = 0.0;

@@ -2,9 +2,9 @@
 // the fused height of the highest surface below max_height_m, its variance,
 // the upper bound that free space puts on it, how many points were fused and
 // when the cell last changed. Storage is tiles of 16 × 16 cells made when
-// first touched, so the extent grows with the walk and memory grows with the
-// area seen (about the metres walked times the sensors' reach), not with a
-// bounding box.
+// first touched, so memory grows with the area seen, not with a bounding box;
+// the terrain map (terrain_map.h) retires the tiles that leave its rolling
+// window, so that it stays bounded however long the walk.
 //
 // The update rules (after elevation_mapping, Fankhauser et al. 2014, where
 // this departs from it is said):
@@ -30,7 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "terrain/grid_traversal.h"
+#include "knowledge/grid_traversal.h"
 
 namespace proxsim {
 
@@ -59,6 +59,12 @@ struct CellBox {
   /// Whether the boxes share a cell once this one is grown by `margin` cells.
   bool Overlaps(const CellBox& other, int margin = 0) const;
 };
+
+/// The cells of tile (tx, ty) (16 cells a side: ElevationGrid::kTileSide).
+inline CellBox TileBox(std::int32_t tx, std::int32_t ty) {
+  constexpr int n = 16;
+  return {tx * n, ty * n, tx * n + n - 1, ty * n + n - 1};
+}
 
 class ElevationGrid {
  public:
@@ -106,8 +112,26 @@ class ElevationGrid {
   /// The tile holding cell c, or null.
   Tile* FindTile(CellIndex c);
 
-  /// The cells of every tile made so far (empty when none).
+  /// The cells of every tile held (empty when none).
   CellBox Bounds() const { return bounds_; }
+  /// Takes out every tile whose cells `keep(box)` does not want, and returns them.
+  template <class Keep>
+  std::vector<std::unique_ptr<Tile>> RetireTiles(Keep&& keep) {
+    std::vector<std::unique_ptr<Tile>> retired;
+    bounds_ = CellBox{};
+    for (auto it = tiles_.begin(); it != tiles_.end();) {
+      const CellBox box = TileBox(it->second->tx, it->second->ty);
+      if (keep(box)) {
+        bounds_.Expand(box);
+        ++it;
+        continue;
+      }
+      retired.push_back(std::move(it->second));
+      it = tiles_.erase(it);
+    }
+    if (!retired.empty()) last_tile_ = nullptr;
+    return retired;
+  }
   std::size_t tile_count() const { return tiles_.size(); }
   /// Bytes held by the tiles and their index.
   std::size_t memory_bytes() const;

@@ -30,8 +30,8 @@
 #include <string>
 #include <vector>
 
-#include "terrain/elevation_grid.h"
-#include "terrain/terrain_config.h"
+#include "knowledge/elevation_grid.h"
+#include "knowledge/terrain_config.h"
 
 namespace proxsim {
 

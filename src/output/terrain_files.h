@@ -10,7 +10,8 @@
 //   hazards.csv      class,x_m,y_m,size_x_m,size_y_m,height_m,first_detection_t_s,distance_at_detection_m
 //                    (height_m: above the ground for obstacle and step_up, minus the depth for step_down and hole)
 //   map.bt           the OctoMap tree (octomap_recorder.h)
-// The extent is the map's tiles and the corridor's cells together (the true
+// The extent is the tiles the map held or retired (terrain_archive.h) and the
+// corridor's cells together (the true
 // hazards are classified over 1 m more on every side, so that the extent
 // does not cut them down to another class). Rows are
 // written one at a time (the truth cast row by row too), so a long walk needs
@@ -23,16 +24,15 @@
 #include <nlohmann/json.hpp>
 
 #include "raycast/ray_caster.h"
-#include "terrain/octomap_recorder.h"
-#include "terrain/terrain_map.h"
+#include "output/terrain_archive.h"
 
 namespace proxsim {
 
-/// Scores the map against the scene (terrain_score.h) and, when `dir` is not
-/// empty, writes the files into it (OUT/terrain), with map.bt from `octomap`
-/// when it is not null. Returns summary.json `terrain`. Throws std::runtime_error on I/O failure.
-nlohmann::json RecordTerrain(const TerrainMap& map, const RayCaster& caster, const std::string& dir,
-                             OctomapRecorder* octomap);
+/// Scores the whole walk's map against the scene (terrain_score.h) and, when
+/// `dir` is not empty, writes the files into it (OUT/terrain), with map.bt
+/// when the archive keeps the OctoMap tree. Returns summary.json `terrain`.
+/// Throws std::runtime_error on I/O failure.
+nlohmann::json RecordTerrain(TerrainArchive& archive, const RayCaster& caster, const std::string& dir);
 
 /// hazards.csv's text for a list of hazards (sorted by first detection, then x, then y).
 std::string HazardsCsvText(const std::vector<Hazard>& hazards);

@@ -1,4 +1,4 @@
-#include "terrain/terrain_config.h"
+#include "knowledge/terrain_config.h"
 
 #include <cmath>
 #include <sstream>
@@ -36,6 +36,9 @@ std::vector<std::string> TerrainMapConfig::Validate() const {
                        Text(drop_min_m) + "), got " + Text(step_max_m));
   }
   positive(step_min_size_m, "step_min_size_m");
+  if (!(window_m >= 1.0) || !std::isfinite(window_m)) {
+    problems.push_back("window_m: expected a finite half-side >= 1 m, got " + Text(window_m));
+  }
   return problems;
 }
 

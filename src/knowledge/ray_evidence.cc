@@ -1,4 +1,4 @@
-#include "terrain/ray_evidence.h"
+#include "knowledge/ray_evidence.h"
 
 #include <algorithm>
 #include <cmath>

@@ -28,7 +28,7 @@
 #include "sensors/measured_point.h"
 #include "sensors/range_inverse.h"
 #include "sensors/sensor_spec.h"
-#include "strategy/strategy.h"
+#include "knowledge/observation.h"
 
 namespace proxsim {
 

@@ -19,6 +19,12 @@ struct TerrainMapConfig {
   double drop_min_m = 0.05;       ///< a cell this much below the ground is dropped (hole or step down), > 0
   double step_max_m = 0.20;       ///< the highest step the robot can take up or down, >= obstacle_min_m and drop_min_m
   double step_min_size_m = 0.25;  ///< a step's top (or lower floor) must be at least this long and wide, > 0
+  /// The rolling window: cells farther than this from the robot's pelvis in x
+  /// or y leave the map, a tile at a time (their state goes to the outputs).
+  /// 20 m: five times the longest reach of the built-in sensors (4 m), and
+  /// longer than a generated room or course, so that only a long walk retires
+  /// anything. >= 1 m.
+  double window_m = 20.0;
   /// Sensors whose readings feed the map, by name; empty with sensors_given
   /// false: every sensor but the reflectance ones (their distance assumes
   /// normal incidence and a white surface: an oblique floor reads farther).

@@ -1,4 +1,4 @@
-#include "gait/locomotion.h"
+#include "knowledge/support_leg.h"
 
 #include "core/enum_names.h"
 

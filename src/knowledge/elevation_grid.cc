@@ -1,4 +1,4 @@
-#include "terrain/elevation_grid.h"
+#include "knowledge/elevation_grid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@ std::uint64_t TileKey(std::int32_t tx, std::int32_t ty) {
 
 }  // namespace
 
-static_assert(ElevationGrid::kTileSide == 16, "TileCoord shifts by 4");
+static_assert(ElevationGrid::kTileSide == 16, "TileCoord shifts by 4, TileBox multiplies by 16");
 
 void CellBox::Expand(const CellBox& other) {
   if (other.empty()) return;
@@ -44,7 +44,7 @@ ElevationGrid::Tile& ElevationGrid::TileOf(CellIndex c, int* cell_in_tile) {
     slot = std::make_unique<Tile>();
     slot->tx = tx;
     slot->ty = ty;
-    bounds_.Expand(CellBox{tx * kTileSide, ty * kTileSide, tx * kTileSide + kTileSide - 1, ty * kTileSide + kTileSide - 1});
+    bounds_.Expand(TileBox(tx, ty));
   }
   last_tile_ = slot.get();
   return *slot;

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "raycast/ray_caster.h"
-#include "terrain/elevation_grid.h"
+#include "knowledge/elevation_grid.h"
 
 namespace proxsim {
 

@@ -30,9 +30,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "terrain/corridor.h"
-#include "terrain/hazards.h"
-#include "terrain/terrain_map.h"
+#include "output/corridor.h"
+#include "knowledge/hazards.h"
+#include "knowledge/terrain_map.h"
 
 namespace proxsim {
 
@@ -48,8 +48,10 @@ struct TrueHazard {
 
 class TerrainScorer {
  public:
-  /// `map` and `corridor` must outlive the scorer.
-  TerrainScorer(const TerrainMap& map, const Corridor& corridor);
+  /// `map`, `track` and `corridor` must outlive the scorer; `track` and
+  /// `hazards` are the whole walk's (terrain_archive.h), `truth_ceiling_z_m` the truth's ceiling.
+  TerrainScorer(const TerrainMap& map, const std::vector<TrackPoint>& track, std::vector<Hazard> hazards,
+                double truth_ceiling_z_m, const Corridor& corridor);
 
   /// Cells [ix_min, ix_min + n) of row iy: the map's (null: never touched)
   /// and the true heights of the still scene (NaN: no surface); `now_m`, in
@@ -66,6 +68,9 @@ class TerrainScorer {
 
  private:
   const TerrainMap& map_;
+  const std::vector<TrackPoint>& track_;
+  std::vector<Hazard> hazards_;
+  double truth_ceiling_z_m_;
   const Corridor& corridor_;
   std::vector<double> levels_m_;    // the grounds the robot stood on (5 mm apart at least)
   std::vector<float> abs_errors_m_;

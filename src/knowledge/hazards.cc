@@ -1,4 +1,4 @@
-#include "terrain/hazards.h"
+#include "knowledge/hazards.h"
 
 #include <algorithm>
 #include <cmath>

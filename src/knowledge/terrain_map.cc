@@ -1,4 +1,4 @@
-#include "terrain/terrain_map.h"
+#include "knowledge/terrain_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +14,6 @@ namespace {
 constexpr double kMinVariance_m2 = 1e-8;
 // Labels are recomputed everywhere when the ground moves this much.
 constexpr double kRelabelShift_m = 0.005;
-// The track keeps a point every this far walked.
-constexpr double kTrackStep_m = 0.01;
 // A silent ray that comes this close to a sole's heel–toe line has met the
 // robot's own foot (a 0.26 × 0.10 × 0.06 m box on the biped), at an angle
 // that sent no echo back: it says nothing beyond.
@@ -86,8 +84,10 @@ void TerrainMap::Reset() {
   grid_.Clear();
   evidence_.clear();
   hazards_.clear();
-  track_.clear();
+  retired_tiles_.clear();
+  retired_hazards_.clear();
   last_ = TrackPoint{};
+  rolled_at_W_ = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
   labelled_ground_z_m_ = 0.0;
   labels_changed_ = false;
   next_pass_t_s_ = 0.0;
@@ -95,6 +95,8 @@ void TerrainMap::Reset() {
 
 void TerrainMap::Update(const Observation& observation) {
   evidence_.clear();
+  retired_tiles_.clear();
+  retired_hazards_.clear();
   for (std::size_t i = 0; i < observation.sensors.size() && i < specs_.size(); ++i) {
     if (!feeds_map_[i] || !observation.sensors[i].fresh) continue;
     const SensorOutput& output = observation.sensors[i];
@@ -113,7 +115,8 @@ void TerrainMap::Update(const Observation& observation) {
     }
   }
   if (observation.robot == nullptr) return;
-  UpdateTrack(observation.t_s, *observation.robot);
+  UpdatePosition(observation.t_s, *observation.robot);
+  RollWindow();
   if (observation.t_s + 1e-9 >= next_pass_t_s_) {
     next_pass_t_s_ = observation.t_s + kHazardPeriod_s;
     if (Relabel(observation.robot->ground_z_m)) FindHazardsAgain(observation.t_s, *observation.robot);
@@ -186,23 +189,40 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
   }
 }
 
-double TerrainMap::truth_ceiling_z_m() const {
-  double ground_z_m = track_.empty() ? 0.0 : last_.ground_z_m;
-  for (const TrackPoint& point : track_) ground_z_m = std::max(ground_z_m, point.ground_z_m);
-  return ground_z_m + config_.max_height_m;
-}
-
-void TerrainMap::UpdateTrack(double t_s, const RobotKnowledge& robot) {
+void TerrainMap::UpdatePosition(double t_s, const RobotKnowledge& robot) {
   last_.t_s = t_s;
   last_.p_W_pelvis = robot.X_WP.translation().head<2>();
   last_.p_W_front = robot.p_W_front.head<2>();
   const Vec2 heading = robot.heading_W.head<2>();
   last_.heading_W = heading.norm() > 0 ? Vec2(heading.normalized()) : Vec2::UnitX();
   last_.ground_z_m = robot.ground_z_m;
-  if (track_.empty() || (track_.back().p_W_pelvis - last_.p_W_pelvis).norm() >= kTrackStep_m ||
-      std::abs(track_.back().ground_z_m - last_.ground_z_m) >= kRelabelShift_m) {
-    track_.push_back(last_);
-  }
+}
+
+void TerrainMap::RollWindow() {
+  const double r = grid_.resolution_m();
+  const Vec2 p = last_.p_W_pelvis;
+  if ((p - rolled_at_W_).cwiseAbs().maxCoeff() < ElevationGrid::kTileSide * r) return;  // false for NaN: the first time
+  rolled_at_W_ = p;
+  // the window's cells, clamped to the lattice's (a window of 1e9 m keeps everything)
+  const auto cell = [r](double v_m) {
+    return static_cast<std::int32_t>(std::clamp(std::floor(v_m / r), -2.0e9, 2.0e9));
+  };
+  const double w = config_.window_m;
+  const CellBox keep{cell(p.x() - w), cell(p.y() - w), cell(p.x() + w), cell(p.y() + w)};
+  // a hazard leaves with its tiles, once every tile its box touches is outside;
+  // until then they all stay, so that it leaves whole
+  const auto tiles_of = [](const CellBox& cells) {
+    const CellBox lo_tile = TileBox(TileCoord(cells.ix_min), TileCoord(cells.iy_min));
+    const CellBox hi_tile = TileBox(TileCoord(cells.ix_max), TileCoord(cells.iy_max));
+    return CellBox{lo_tile.ix_min, lo_tile.iy_min, hi_tile.ix_max, hi_tile.iy_max};
+  };
+  const auto gone = std::stable_partition(hazards_.begin(), hazards_.end(),
+                                          [&](const Hazard& h) { return tiles_of(h.cells).Overlaps(keep); });
+  retired_hazards_.assign(gone, hazards_.end());
+  retired_tiles_ = grid_.RetireTiles([&](const CellBox& tile) {
+    return tile.Overlaps(keep) || std::any_of(hazards_.begin(), gone, [&](const Hazard& h) { return tiles_of(h.cells).Overlaps(tile); });
+  });
+  hazards_.erase(gone, hazards_.end());
 }
 
 bool TerrainMap::Relabel(double ground_z_m) {

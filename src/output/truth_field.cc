@@ -1,4 +1,4 @@
-#include "terrain/truth_field.h"
+#include "output/truth_field.h"
 
 #include <limits>
 

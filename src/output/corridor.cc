@@ -1,4 +1,4 @@
-#include "terrain/corridor.h"
+#include "output/corridor.h"
 
 #include <algorithm>
 #include <cmath>

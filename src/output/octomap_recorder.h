@@ -6,6 +6,14 @@
 // Written as OctoMap's binary tree (terrain/map.bt), which octovis opens.
 // This is the only file that includes OctoMap.
 //
+// Bounded over a long walk like the map: RetireOutside() takes the subtrees
+// of 256 voxels a side (depth 8 of the tree's 16: 5.12 m at 2 cm) whose x-y
+// square lies wholly outside the window, pruned, into a scratch file as
+// OctoMap's own binary nodes, and frees them; WriteBinary() then writes the
+// top of the tree itself around the held and the retired subtrees, node for
+// node what OctoMap writes for the whole tree (a subtree retired and later
+// grown again is written as it stands at the end).
+//
 // Frames: W world.
 #pragma once
 
@@ -13,7 +21,8 @@
 #include <memory>
 #include <string>
 
-#include "terrain/ray_evidence.h"
+#include "core/geometry.h"
+#include "knowledge/ray_evidence.h"
 
 namespace proxsim {
 
@@ -30,6 +39,13 @@ class OctomapRecorder {
   /// Writes the tree as a .bt file (maximum-likelihood occupancy); throws std::runtime_error on failure.
   void WriteBinary(const std::string& path) const;
 
+  /// Moves the subtrees whose x-y square lies outside [lo_W, hi_W] out of memory.
+  void RetireOutside(const Vec2& lo_W, const Vec2& hi_W);
+  /// Subtrees retired so far.
+  std::size_t retired_subtrees() const;
+  /// Nodes held in memory.
+  std::size_t node_count() const;
+
   /// Leaves of the tree, for tests and reports.
   std::size_t leaf_count() const;
   /// Whether the voxel holding p_W is known and occupied (for tests).
@@ -41,6 +57,9 @@ class OctomapRecorder {
   void Clear();
 
  private:
+  // WriteBinary() once subtrees were retired: the top of the tree written here
+  void WriteWithRetired(const std::string& path) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

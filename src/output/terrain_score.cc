@@ -1,9 +1,9 @@
-#include "terrain/terrain_score.h"
+#include "output/terrain_score.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "terrain/truth_field.h"
+#include "output/truth_field.h"
 
 namespace proxsim {
 
@@ -41,8 +41,10 @@ const TrackPoint& PointAt(const std::vector<TrackPoint>& track, const TrackPoint
 
 }  // namespace
 
-TerrainScorer::TerrainScorer(const TerrainMap& map, const Corridor& corridor) : map_(map), corridor_(corridor) {
-  for (const TrackPoint& point : map.track()) {
+TerrainScorer::TerrainScorer(const TerrainMap& map, const std::vector<TrackPoint>& track, std::vector<Hazard> hazards,
+                             double truth_ceiling_z_m, const Corridor& corridor)
+    : map_(map), track_(track), hazards_(std::move(hazards)), truth_ceiling_z_m_(truth_ceiling_z_m), corridor_(corridor) {
+  for (const TrackPoint& point : track) {
     const bool known = std::any_of(levels_m_.begin(), levels_m_.end(),
                                    [&](double level) { return std::abs(level - point.ground_z_m) < kLevelStep_m; });
     if (!known) levels_m_.push_back(point.ground_z_m);
@@ -85,7 +87,7 @@ void TerrainScorer::AddRow(std::int32_t iy, std::int32_t ix_min, std::span<const
     // a column with no surface is as deep as the truth looked
     const CellSurface surface = std::isnan(truth)
                                     ? CellSurface{std::numeric_limits<float>::quiet_NaN(),
-                                                  static_cast<float>(map_.truth_ceiling_z_m() - kTruthDepth_m)}
+                                                  static_cast<float>(truth_ceiling_z_m_ - kTruthDepth_m)}
                                     : CellSurface{truth, std::numeric_limits<float>::quiet_NaN()};
     for (double level : levels_m_) {
       if (LabelCell(surface, level, config) != CellLabel::kNone) {
@@ -101,7 +103,7 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
   matched_ = true;
   const TerrainMapConfig& config = map_.config();
   const double r = map_.grid().resolution_m();
-  const std::vector<TrackPoint>& track = map_.track();
+  const std::vector<TrackPoint>& track = track_;
   std::vector<CellIndex> seeds;
   for (const auto& [key, surface] : off_ground_) {
     seeds.push_back({static_cast<std::int32_t>(key >> 32), static_cast<std::int32_t>(key & 0xFFFFFFFFu)});
@@ -138,7 +140,7 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
   }
   // the map's first detection over each true hazard, and the toe's distance to it then
   for (TrueHazard& truth : true_hazards_) {
-    for (const Hazard& mapped : map_.hazards()) {
+    for (const Hazard& mapped : hazards_) {
       if (!Overlaps(mapped, truth)) continue;
       if (!truth.detected || mapped.first_detection_t_s < truth.hazard.first_detection_t_s) {
         truth.detected = true;
@@ -183,7 +185,7 @@ nlohmann::json TerrainScorer::Json() {
   for (int k = 0; k < kHazardClassCount; ++k) {
     const auto hazard_class = static_cast<HazardClass>(k);
     std::size_t mapped = 0, mapped_right = 0, truths_in_corridor = 0, truths_found = 0;
-    for (const Hazard& hazard : map_.hazards()) {
+    for (const Hazard& hazard : hazards_) {
       if (hazard.hazard_class != hazard_class) continue;
       ++mapped;
       mapped_right += std::any_of(truths.begin(), truths.end(), [&](const TrueHazard& truth) {
@@ -193,7 +195,7 @@ nlohmann::json TerrainScorer::Json() {
     for (const TrueHazard& truth : truths) {
       if (truth.hazard.hazard_class != hazard_class || !truth.in_corridor) continue;
       ++truths_in_corridor;
-      truths_found += std::any_of(map_.hazards().begin(), map_.hazards().end(), [&](const Hazard& hazard) {
+      truths_found += std::any_of(hazards_.begin(), hazards_.end(), [&](const Hazard& hazard) {
         return hazard.hazard_class == hazard_class && Overlaps(hazard, truth);
       });
     }
@@ -230,7 +232,7 @@ nlohmann::json TerrainScorer::Json() {
                            {"below_truth", bounds_below_truth_},
                            {"below_truth_share", Ratio(bounds_below_truth_, cells_bounded_)},
                            {"tolerance_m", map_.config().drop_min_m}}},
-          {"hazards", {{"mapped", map_.hazards().size()}, {"classes", classes}}},
+          {"hazards", {{"mapped", hazards_.size()}, {"classes", classes}}},
           {"true_hazards", true_hazards},
           {"map_memory_bytes", map_.grid().memory_bytes()},
           {"map_tiles", map_.grid().tile_count()}};

@@ -12,8 +12,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "terrain/elevation_grid.h"
-#include "terrain/terrain_map.h"
+#include "knowledge/elevation_grid.h"
+#include "knowledge/terrain_map.h"
 
 namespace proxsim {
 

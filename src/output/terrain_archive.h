@@ -1,0 +1,80 @@
+// What the outputs keep of the terrain map over the whole walk, while the map
+// itself holds its rolling window only (terrain_map.h): fed after every
+// sample, it appends the tiles the map retired to a scratch file (the tiles'
+// cells as they were), the robot's track (a point every centimetre walked,
+// and whenever the ground it stands on changes) to another, keeps the hazards
+// the map retired, and feeds the OctoMap tree the sample's rays, retiring its
+// subtrees with the map's window. At the end the files and the score read
+// the retired tiles back row by row (terrain_files.h), so that a walk of any
+// length is written and scored whole, in memory that does not grow with it
+// (the hazards aside, a few dozen bytes each).
+//
+// Frames: W world.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/spill_file.h"
+#include "output/octomap_recorder.h"
+#include "knowledge/terrain_map.h"
+
+namespace proxsim {
+
+class TerrainArchive {
+ public:
+  /// The track keeps a point every this far walked ...
+  static constexpr double kTrackStep_m = 0.01;
+  /// ... and whenever the ground the robot stands on changes this much.
+  static constexpr double kTrackGroundStep_m = 0.005;
+
+  /// `map` must outlive the archive; `with_octomap`: keep the OctoMap tree too.
+  TerrainArchive(const TerrainMap& map, bool with_octomap);
+
+  /// After each map update: what the map retired, the track, the rays.
+  void Add();
+
+  const TerrainMap& map() const { return map_; }
+  /// The whole walk's track (read back from the scratch file).
+  std::vector<TrackPoint> Track() const;
+  /// Every hazard: those retired, then those the map holds.
+  std::vector<Hazard> Hazards() const;
+  /// The cells of every tile the map held or retired.
+  CellBox Bounds() const;
+  /// The map's ceiling for the truth: max_height_m above the highest ground
+  /// the robot stood on (each reading's own ceiling is max_height_m above the
+  /// ground the robot stood on then).
+  double truth_ceiling_z_m() const;
+  OctomapRecorder* octomap() { return octomap_ ? &*octomap_ : nullptr; }
+  std::size_t retired_tiles() const { return retired_tiles_; }
+
+  /// Reads cells [ix_min, ix_min + n) of row iy into `cells` (null where no
+  /// tile was ever made): the map's tile where it holds one, otherwise the
+  /// tile as it was last retired. `storage` holds the retired ones' cells.
+  void ReadRow(std::int32_t iy, std::int32_t ix_min, std::size_t n, std::vector<const TerrainCell*>& cells,
+               std::vector<TerrainCell>& storage) const;
+
+ private:
+  void AddTrackPoint(const TrackPoint& point);
+
+  const TerrainMap& map_;
+  std::optional<OctomapRecorder> octomap_;
+  SpillFile tiles_{"the terrain map's retired tiles"};
+  SpillFile track_file_{"the robot's track"};
+  std::vector<TrackPoint> track_tail_;  // the points not yet in track_file_
+  std::optional<TrackPoint> last_track_point_;
+  std::size_t track_points_ = 0;
+  double max_ground_z_m_ = -std::numeric_limits<double>::infinity();
+  std::vector<Hazard> retired_hazards_;
+  CellBox retired_bounds_;
+  std::size_t retired_tiles_ = 0;
+  Vec2 octomap_rolled_at_W_ = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+  // where each retired tile's cells are in tiles_, by tile row then column (built at the first ReadRow)
+  mutable std::map<std::int32_t, std::map<std::int32_t, std::uint64_t>> tile_index_;
+  mutable bool indexed_ = false;
+};
+
+}  // namespace proxsim
