@@ -24,6 +24,23 @@ constexpr double kReplanTolerance_m = 0.03;
 constexpr double kRejoined_m = 0.1;
 // the safety stop looks this much wider than the robot's own half-width
 constexpr double kSafetyWidthMargin_m = 0.05;
+// Near an obstacle or a sharp corner of the path the robot walks at this
+// stride (or its own, if shorter): the gait turns at most 15 degrees a step,
+// so half the step halves the radius it turns on — the detour's sideways
+// shift is made in half the distance, and a corner is overshot by half as much
+// (a 90-degree corner 1 m before a wall is overshot into the wall at 0.6 m).
+constexpr double kSlowStride_m = 0.3;
+// the detour's shift counts as made once the pelvis is this close to it sideways
+constexpr double kShifted_m = 0.05;
+// a corner of the path turning more than this is walked slowly ...
+constexpr double kSharpCorner_rad = 30.0 * kPi / 180.0;
+// ... from this far before it (pelvis to corner) until this far past it
+constexpr double kCornerSlowBefore_m = 1.0;
+constexpr double kCornerSlowAfter_m = 0.3;
+// The safety stop takes effect at the next double support: the swing foot
+// still lands up to a step (half the stride) beyond the leading toe, so the
+// stop looks at least that far ahead, and this much more.
+constexpr double kSwingMargin_m = 0.05;
 
 
 Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
@@ -32,6 +49,11 @@ Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
 
 void CircumventStrategy::Reset(const StrategySetup& setup) {
   path_m_ = setup.path_m;
+  stride_m_ = setup.stride_m;
+  stride_now_m_ = setup.stride_m;
+  stride_in_force_m_ = setup.stride_m;
+  stride_changed_ = false;
+  last_support_ = SupportLeg::kDouble;
   started_ = false;
   mode_ = Mode::kFollowing;
   points_.clear();
@@ -195,6 +217,35 @@ bool CircumventStrategy::PlanDetour(const Extent& extent, std::vector<Vec2>* way
   return true;
 }
 
+bool CircumventStrategy::NearSharpCorner(const Vec2& p_WP) const {
+  for (std::size_t i = 1; i + 1 < path_m_.size(); ++i) {
+    const Vec2 in = path_m_[i] - path_m_[i - 1], out = path_m_[i + 1] - path_m_[i];
+    if (in.norm() < 1e-6 || out.norm() < 1e-6) continue;
+    const double turn_rad = std::acos(std::clamp(in.dot(out) / (in.norm() * out.norm()), -1.0, 1.0));
+    if (turn_rad > kSharpCorner_rad && (path_m_[i] - p_WP).norm() < kCornerSlowBefore_m) return true;
+  }
+  return false;
+}
+
+void CircumventStrategy::Pace(const Vec2& p_WP, RobotCommands& robot, EventLog& events) {
+  if (!(stride_m_ > 0)) return;  // the gait's stride is not known: leave it
+  // slow while the detour's sideways shift is still to be made, or a sharp corner is near
+  bool shifting = false;
+  if (mode_ == Mode::kDetouring && !passed_) {
+    const double l_WP = (p_WP - segment_.origin).dot(Left(segment_.u));
+    shifting = std::abs(l_WP - shift_m_) > kShifted_m;
+  }
+  const bool slow = shifting || NearSharpCorner(p_WP);
+  const double stride_m = slow ? std::min(kSlowStride_m, stride_m_) : stride_m_;
+  if (stride_m == stride_now_m_) return;
+  robot.SetStride(stride_m);
+  stride_now_m_ = stride_m;
+  stride_changed_ = true;
+  events.Log(slow ? "slowing_down" : "speeding_up",
+             FormatNumbers(slow ? "an obstacle or a sharp corner ahead: stride %.2f m" : "the way is clear: stride %.2f m",
+                           stride_m));
+}
+
 std::vector<Vec2> CircumventStrategy::Remaining() const {
   return {detour_.begin() + static_cast<std::ptrdiff_t>(std::min(next_waypoint_, detour_.size())), detour_.end()};
 }
@@ -225,7 +276,18 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
 
   // whatever the plan, something right in front of the feet stops the robot
   const double own_width_m = half_width_m_ + kSafetyWidthMargin_m;
-  if (const auto p_W = PointInTheWay(observation, config_.stop_distance_m, own_width_m)) {
+  // the stride commanded takes effect at the next heel strike: until then the longer one reaches
+  // (a heel strike: into double support, or straight from one leg to the other)
+  const bool heel_strike = self.support != last_support_ &&
+                           (self.support == SupportLeg::kDouble || last_support_ != SupportLeg::kDouble);
+  if (heel_strike && stride_changed_) {
+    stride_changed_ = false;
+    stride_in_force_m_ = stride_now_m_;
+  }
+  last_support_ = self.support;
+  const double reach_stride_m = stride_changed_ ? std::max(stride_in_force_m_, stride_now_m_) : stride_in_force_m_;
+  const double reach_m = reach_stride_m > 0 ? 0.5 * reach_stride_m + kSwingMargin_m : 0.0;
+  if (const auto p_W = PointInTheWay(observation, std::max(config_.stop_distance_m, reach_m), own_width_m)) {
     robot.Stop();
     mode_ = Mode::kStopped;
     events.Log("blocked", FormatNumbers("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
@@ -235,6 +297,13 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   if (mode_ == Mode::kBlocked) return;
 
   const Vec2 p_WP = self.X_WP.translation().head<2>();
+  FollowOrDetour(observation, p_WP, robot, events);
+  if (mode_ != Mode::kBlocked) Pace(p_WP, robot, events);
+}
+
+void CircumventStrategy::FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot,
+                                EventLog& events) {
+  const RobotKnowledge& self = *observation.robot;
   if (mode_ == Mode::kFollowing) {
     const auto p_W = PointOnThePath(observation);
     if (!p_W) return;

@@ -71,6 +71,11 @@ class CircumventStrategy : public Strategy {
     std::vector<Vec2> rest;          // the path's waypoints after this segment's start
   };
 
+  // following the path or detouring around what was seen (after the safety stop)
+  void FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot, EventLog& events);
+  // the stride for what is ahead: slower while detouring or near a sharp corner of the path
+  void Pace(const Vec2& p_WP, RobotCommands& robot, EventLog& events);
+  bool NearSharpCorner(const Vec2& p_WP) const;
   void KeepPoints(const Observation& observation);
   // the first fresh point within look_ahead_m ahead of the leading toe, inside lateral_m of the pelvis's heading line
   std::optional<Vec3> PointInTheWay(const Observation& observation, double look_ahead_m, double lateral_m) const;
@@ -91,6 +96,11 @@ class CircumventStrategy : public Strategy {
 
   CircumventConfig config_;
   std::vector<Vec2> path_m_;
+  double stride_m_ = 0;      // the gait's own stride (NaN: not known)
+  double stride_now_m_ = 0;  // the stride last commanded
+  double stride_in_force_m_ = 0;  // the stride of the step being walked
+  bool stride_changed_ = false;   // a stride commanded that the step being walked does not have yet
+  SupportLeg last_support_ = SupportLeg::kDouble;
   bool started_ = false;
   Mode mode_ = Mode::kFollowing;
   double half_width_m_ = 0;
