@@ -1,5 +1,6 @@
 #include "strategy/circumvent_strategy.h"
 #include "core/message_format.h"
+#include "gait/gait_walker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,20 +86,43 @@ void CircumventStrategy::KeepPoints(const Observation& observation) {
   }
 }
 
-std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observation, double look_ahead_m,
-                                                       double lateral_m) const {
+std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observation, const Vec3& walking_W,
+                                                       double look_ahead_m, double lateral_m) const {
   const RobotKnowledge& self = *observation.robot;
-  const Vec3 lateral_W = Vec3::UnitZ().cross(self.heading_W);
+  const Vec3 lateral_W = Vec3::UnitZ().cross(walking_W);
   for (const SensorOutput& sensor : observation.sensors) {
     if (!sensor.fresh || !sensor.detected) continue;
     const Vec3 p_W = sensor.p_W_measured();
     if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;
     // ahead of the leading toe, aside of the pelvis (the toe leads on one side)
-    const double ahead_m = (p_W - self.p_W_front).dot(self.heading_W);
+    const double ahead_m = (p_W - self.p_W_front).dot(walking_W);
     const double aside_m = (p_W - self.X_WP.translation()).dot(lateral_W);
     if (ahead_m <= look_ahead_m && std::abs(aside_m) <= lateral_m) return p_W;
   }
   return std::nullopt;
+}
+
+Vec2 CircumventStrategy::GaitTarget(const Vec2& p_WP) const {
+  // the gait's rule (gait/gait_walker.cc): a waypoint is passed once the
+  // pelvis is within half a stride of it or beyond it along its approach
+  // (the path's first waypoint is where the robot started; a detour's first is the first still ahead)
+  const std::vector<Vec2> waypoints = mode_ == Mode::kDetouring ? Remaining() : path_m_;
+  for (std::size_t i = mode_ == Mode::kDetouring ? 0 : 1; i < waypoints.size(); ++i) {
+    const Vec2 approach = i == 0 ? Vec2(waypoints[0] - p_WP) : Vec2(waypoints[i] - waypoints[i - 1]);
+    const bool passed = (waypoints[i] - p_WP).norm() < 0.5 * stride_in_force_m_ || (p_WP - waypoints[i]).dot(approach) >= 0;
+    if (!passed || i + 1 == waypoints.size()) return waypoints[i];
+  }
+  return p_WP;
+}
+
+Vec3 CircumventStrategy::WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const {
+  // the step under way turns toward the gait's target by at least the
+  // smaller of its bearing and the gait's usual turn; the pelvis lags it
+  const Vec2 to = GaitTarget(p_WP) - p_WP;
+  if (to.norm() < 1e-6) return self.heading_W;
+  const double bearing = std::remainder(std::atan2(to.y(), to.x()) - self.yaw_rad, 2 * kPi);
+  const double yaw = self.yaw_rad + std::clamp(bearing, -kMaxTurnPerStep_rad, kMaxTurnPerStep_rad);
+  return {std::cos(yaw), std::sin(yaw), 0.0};
 }
 
 std::optional<Vec3> CircumventStrategy::PointOnThePath(const Observation& observation) const {
@@ -287,11 +311,12 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   last_support_ = self.support;
   const double reach_stride_m = stride_changed_ ? std::max(stride_in_force_m_, stride_now_m_) : stride_in_force_m_;
   const double reach_m = reach_stride_m > 0 ? 0.5 * reach_stride_m + kSwingMargin_m : 0.0;
-  if (const auto p_W = PointInTheWay(observation, std::max(config_.stop_distance_m, reach_m), own_width_m)) {
+  const Vec3 walking_W = WalkingDirection(self, self.X_WP.translation().head<2>());
+  if (const auto p_W = PointInTheWay(observation, walking_W, std::max(config_.stop_distance_m, reach_m), own_width_m)) {
     robot.Stop();
     mode_ = Mode::kStopped;
     events.Log("blocked", FormatNumbers("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
-                                 (*p_W - self.p_W_front).dot(self.heading_W)));
+                                 (*p_W - self.p_W_front).dot(walking_W)));
     return;
   }
   if (mode_ == Mode::kBlocked) return;

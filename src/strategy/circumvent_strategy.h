@@ -77,8 +77,13 @@ class CircumventStrategy : public Strategy {
   void Pace(const Vec2& p_WP, RobotCommands& robot, EventLog& events);
   bool NearSharpCorner(const Vec2& p_WP) const;
   void KeepPoints(const Observation& observation);
-  // the first fresh point within look_ahead_m ahead of the leading toe, inside lateral_m of the pelvis's heading line
-  std::optional<Vec3> PointInTheWay(const Observation& observation, double look_ahead_m, double lateral_m) const;
+  // the first fresh point within look_ahead_m ahead of the leading toe, inside lateral_m of the pelvis's line along walking_W
+  std::optional<Vec3> PointInTheWay(const Observation& observation, const Vec3& walking_W, double look_ahead_m,
+                                    double lateral_m) const;
+  // the waypoint the gait walks toward: the first of the path it follows not yet passed
+  Vec2 GaitTarget(const Vec2& p_WP) const;
+  // the heading turned toward the gait's target as the step under way turns (unit, horizontal)
+  Vec3 WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const;
   // the first fresh point ahead within detect_distance_m and within half-width + margin of the path
   std::optional<Vec3> PointOnThePath(const Observation& observation) const;
   double DistanceToPath_m(const Vec2& p_W) const;
