@@ -33,6 +33,13 @@ constexpr double kSafetyWidthMargin_m = 0.05;
 constexpr double kSlowStride_m = 0.3;
 // the detour's shift counts as made once the pelvis is this close to it sideways
 constexpr double kShifted_m = 0.05;
+// following the path: off its line by more than this, the gait is steered back
+// to a point on the line this far ahead (re-aimed when it has moved this much),
+// until the pelvis is back within kBackOnPath_m
+constexpr double kOffPath_m = 0.10;
+constexpr double kCarrot_m = 0.6;
+constexpr double kCarrotMove_m = 0.1;
+constexpr double kBackOnPath_m = 0.03;
 // a corner of the path turning more than this is walked slowly ...
 constexpr double kSharpCorner_rad = 30.0 * kPi / 180.0;
 // ... from this far before it (pelvis to corner) until this far past it
@@ -62,6 +69,8 @@ void CircumventStrategy::Reset(const StrategySetup& setup) {
   detour_.clear();
   shift_m_ = 0;
   side_ = 0;
+  tracking_ = false;
+  path_target_ = 1;
   next_waypoint_ = 0;
   detour_waypoints_ = 0;
   passed_ = false;
@@ -102,17 +111,56 @@ std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observa
   return std::nullopt;
 }
 
-Vec2 CircumventStrategy::GaitTarget(const Vec2& p_WP) const {
+std::size_t CircumventStrategy::GaitTargetIndex(const std::vector<Vec2>& waypoints, std::size_t first,
+                                               const Vec2& p_WP) const {
   // the gait's rule (gait/gait_walker.cc): a waypoint is passed once the
   // pelvis is within half a stride of it or beyond it along its approach
-  // (the path's first waypoint is where the robot started; a detour's first is the first still ahead)
-  const std::vector<Vec2> waypoints = mode_ == Mode::kDetouring ? Remaining() : path_m_;
-  for (std::size_t i = mode_ == Mode::kDetouring ? 0 : 1; i < waypoints.size(); ++i) {
+  for (std::size_t i = first; i < waypoints.size(); ++i) {
     const Vec2 approach = i == 0 ? Vec2(waypoints[0] - p_WP) : Vec2(waypoints[i] - waypoints[i - 1]);
     const bool passed = (waypoints[i] - p_WP).norm() < 0.5 * stride_in_force_m_ || (p_WP - waypoints[i]).dot(approach) >= 0;
-    if (!passed || i + 1 == waypoints.size()) return waypoints[i];
+    if (!passed) return i;
   }
-  return p_WP;
+  return waypoints.size() - 1;
+}
+
+Vec2 CircumventStrategy::GaitTarget(const Vec2& p_WP) const {
+  if (tracking_) return carrot_;
+  // (the path's first waypoint is where the robot started; a detour's first is the first still ahead)
+  if (mode_ == Mode::kDetouring) {
+    const std::vector<Vec2> waypoints = Remaining();
+    return waypoints.empty() ? p_WP : waypoints[GaitTargetIndex(waypoints, 0, p_WP)];
+  }
+  return path_m_.size() < 2 ? p_WP : path_m_[GaitTargetIndex(path_m_, path_target_, p_WP)];
+}
+
+void CircumventStrategy::TrackPath(const Vec2& p_WP, RobotCommands& robot) {
+  // Following the path, the gait heads for the next waypoint, not along the
+  // line to it: after overshooting a corner (it turns at most 15 degrees a
+  // step) it would cut back to the far waypoint on a line of its own, out of
+  // the corridor the path keeps clear. Off the line by more than kOffPath_m,
+  // it is given a point on the line kCarrot_m ahead, then the rest of the path.
+  if (path_m_.size() < 2) return;
+  const std::size_t i = path_target_ = GaitTargetIndex(path_m_, path_target_, p_WP);
+  const Vec2 a = path_m_[i - 1], b = path_m_[i];
+  const double length_m = (b - a).norm();
+  if (length_m < 1e-6) return;
+  const Vec2 u = (b - a) / length_m;
+  const double s = std::clamp((p_WP - a).dot(u), 0.0, length_m);
+  const double off_m = (p_WP - (a + s * u)).norm();
+  if (!tracking_ && off_m <= kOffPath_m) return;
+  std::vector<Vec2> path;
+  if (off_m <= kBackOnPath_m || length_m - s <= kCarrot_m) {
+    if (!tracking_) return;
+    tracking_ = false;  // back on the line, or near its end: the path itself
+  } else {
+    const Vec2 carrot = a + (s + kCarrot_m) * u;
+    if (tracking_ && (carrot - carrot_).norm() < kCarrotMove_m) return;
+    tracking_ = true;
+    carrot_ = carrot;
+    path.push_back(carrot);
+  }
+  path.insert(path.end(), path_m_.begin() + static_cast<std::ptrdiff_t>(i), path_m_.end());
+  robot.SetPath(path);
 }
 
 Vec3 CircumventStrategy::WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const {
@@ -331,7 +379,11 @@ void CircumventStrategy::FollowOrDetour(const Observation& observation, const Ve
   const RobotKnowledge& self = *observation.robot;
   if (mode_ == Mode::kFollowing) {
     const auto p_W = PointOnThePath(observation);
-    if (!p_W) return;
+    if (!p_W) {
+      TrackPath(p_WP, robot);
+      return;
+    }
+    tracking_ = false;
     seed_ = CellOf(*p_W);
     segment_ = SegmentNear(p_W->head<2>());
     extent_ = MeasureCluster(seed_, segment_);

@@ -82,6 +82,9 @@ class CircumventStrategy : public Strategy {
                                     double lateral_m) const;
   // the waypoint the gait walks toward: the first of the path it follows not yet passed
   Vec2 GaitTarget(const Vec2& p_WP) const;
+  std::size_t GaitTargetIndex(const std::vector<Vec2>& waypoints, std::size_t first, const Vec2& p_WP) const;
+  // following the path: steer the gait back onto the path's line when it strays
+  void TrackPath(const Vec2& p_WP, RobotCommands& robot);
   // the heading turned toward the gait's target as the step under way turns (unit, horizontal)
   Vec3 WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const;
   // the first fresh point ahead within detect_distance_m and within half-width + margin of the path
@@ -120,6 +123,9 @@ class CircumventStrategy : public Strategy {
   std::size_t detour_waypoints_ = 0;  // of detour_, the ones the strategy steers through
   int side_ = 0;                   // +1 left, -1 right, 0 not chosen yet
   bool passed_ = false;
+  std::size_t path_target_ = 1;  // following: the path's waypoint the gait walks toward (only moves on)
+  bool tracking_ = false;  // following: the gait is steered to carrot_ on the path's line
+  Vec2 carrot_ = Vec2::Zero();
 };
 
 }  // namespace proxsim
