@@ -164,12 +164,25 @@ void CircumventStrategy::TrackPath(const Vec2& p_WP, RobotCommands& robot) {
 }
 
 Vec3 CircumventStrategy::WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const {
-  // the step under way turns toward the gait's target by at least the
-  // smaller of its bearing and the gait's usual turn; the pelvis lags it
+  // the step under way turns toward the gait's target as the gait turns it
+  // (gait/gait_walker.cc, DecideAtHeelStrike): up to kMaxTurnPerStep_rad, or
+  // more sharply, up to kMaxSharpTurnPerStep_rad, when the target lies inside
+  // the circle those steps would walk; the pelvis lags the step
   const Vec2 to = GaitTarget(p_WP) - p_WP;
   if (to.norm() < 1e-6) return self.heading_W;
   const double bearing = std::remainder(std::atan2(to.y(), to.x()) - self.yaw_rad, 2 * kPi);
-  const double yaw = self.yaw_rad + std::clamp(bearing, -kMaxTurnPerStep_rad, kMaxTurnPerStep_rad);
+  const double step_m = 0.5 * stride_in_force_m_;
+  double limit = kMaxTurnPerStep_rad;
+  const double radius_m = step_m / (2 * std::sin(kMaxTurnPerStep_rad / 2));
+  const Vec2 left(-std::sin(self.yaw_rad), std::cos(self.yaw_rad));
+  const Vec2 centre = p_WP + (bearing >= 0 ? radius_m : -radius_m) * left;
+  if ((p_WP + to - centre).norm() < radius_m) {
+    const double chord = step_m * std::abs(std::sin(bearing)) / to.norm();
+    limit = std::abs(bearing) < kPi / 2 && chord < 1
+                ? std::clamp(2 * std::asin(chord), kMaxTurnPerStep_rad, kMaxSharpTurnPerStep_rad)
+                : kMaxSharpTurnPerStep_rad;
+  }
+  const double yaw = self.yaw_rad + std::clamp(bearing, -limit, limit);
   return {std::cos(yaw), std::sin(yaw), 0.0};
 }
 
@@ -299,7 +312,7 @@ bool CircumventStrategy::NearSharpCorner(const Vec2& p_WP) const {
   return false;
 }
 
-void CircumventStrategy::Pace(const Vec2& p_WP, RobotCommands& robot, EventLog& events) {
+void CircumventStrategy::Pace(const Vec2& p_WP, double yaw_rad, RobotCommands& robot, EventLog& events) {
   if (!(stride_m_ > 0)) return;  // the gait's stride is not known: leave it
   // slow while the detour's sideways shift is still to be made, or a sharp corner is near
   bool shifting = false;
@@ -307,7 +320,11 @@ void CircumventStrategy::Pace(const Vec2& p_WP, RobotCommands& robot, EventLog& 
     const double l_WP = (p_WP - segment_.origin).dot(Left(segment_.u));
     shifting = std::abs(l_WP - shift_m_) > kShifted_m;
   }
-  const bool slow = shifting || NearSharpCorner(p_WP);
+  // (turning hard toward the gait's target counts as a corner: at the start, facing away from the path)
+  const Vec2 to = GaitTarget(p_WP) - p_WP;
+  const bool turning = to.norm() > 1e-6 &&
+                       std::abs(std::remainder(std::atan2(to.y(), to.x()) - yaw_rad, 2 * kPi)) > kSharpCorner_rad;
+  const bool slow = shifting || turning || NearSharpCorner(p_WP);
   const double stride_m = slow ? std::min(kSlowStride_m, stride_m_) : stride_m_;
   if (stride_m == stride_now_m_) return;
   robot.SetStride(stride_m);
@@ -371,7 +388,7 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
 
   const Vec2 p_WP = self.X_WP.translation().head<2>();
   FollowOrDetour(observation, p_WP, robot, events);
-  if (mode_ != Mode::kBlocked) Pace(p_WP, robot, events);
+  if (mode_ != Mode::kBlocked) Pace(p_WP, self.yaw_rad, robot, events);
 }
 
 void CircumventStrategy::FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot,

@@ -73,8 +73,9 @@ class CircumventStrategy : public Strategy {
 
   // following the path or detouring around what was seen (after the safety stop)
   void FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot, EventLog& events);
-  // the stride for what is ahead: slower while detouring or near a sharp corner of the path
-  void Pace(const Vec2& p_WP, RobotCommands& robot, EventLog& events);
+  // the stride for what is ahead: slower while the detour's shift is being made, near a sharp
+  // corner of the path, or while turning hard toward the gait's target
+  void Pace(const Vec2& p_WP, double yaw_rad, RobotCommands& robot, EventLog& events);
   bool NearSharpCorner(const Vec2& p_WP) const;
   void KeepPoints(const Observation& observation);
   // the first fresh point within look_ahead_m ahead of the leading toe, inside lateral_m of the pelvis's line along walking_W
