@@ -21,10 +21,22 @@
 //     waypoints still ahead (a waypoint counts as passed once the pelvis is
 //     kPassed_m from it along the path), so it never turns back to one.
 //  4. A shift beyond max_detour_m means no way around is seen (a wall): from
-//     then on it stops as `stop` would. Whatever the state, a point within
-//     stop_distance_m ahead of the toe inside the robot's own width stops it.
+//     then on it stops as `stop` would. Whatever the state, a point inside
+//     the robot's own width within stop_distance_m ahead of the toe, or
+//     within half a stride + 5 cm when that is farther (the swing foot lands
+//     up to a step beyond the toe after the stop is commanded), stops it;
+//     "ahead" along the heading turned toward the gait's next waypoint as
+//     the gait turns its steps (the pelvis lags the step).
+//  5. It paces the gait: a 0.3 m stride (or its own, if shorter) while the
+//     detour's sideways shift is still to be made, near a sharp corner of
+//     the path, or turning hard toward the gait's next waypoint — half the
+//     step halves the radius the gait turns on (15 degrees a step).
+//  6. Following the path, it keeps the gait on the path's line: the gait
+//     heads for the next waypoint, so after overshooting a corner it would
+//     cut across, out of the corridor the path keeps clear; off the line by
+//     more than 0.1 m it is given a point on the line 0.6 m ahead.
 // Events: obstacle_seen, detour_planned, detour_replanned, obstacle_passed,
-// rejoined, no_way_around, blocked.
+// rejoined, no_way_around, blocked, slowing_down, speeding_up.
 //
 // Frames: W world; the path frame: origin at the segment's start, s along it,
 // l to its left, both in metres on the floor plane.
