@@ -154,7 +154,10 @@ StrategySetup Simulation::MakeSetup() const {
   setup.sensors = sensor_info_;
   if (scenario_.robot) setup.path_m = scenario_.robot->waypoints_m;
   setup.rate_hz = scenario_.rate_hz;
-  if (const auto cycle = locomotion_ ? locomotion_->gait_cycle() : std::nullopt) setup.max_step_m = cycle->max_step_m;
+  if (const auto cycle = locomotion_ ? locomotion_->gait_cycle() : std::nullopt) {
+    setup.max_step_m = cycle->max_step_m;
+    setup.stride_m = cycle->stride_m;
+  }
   return setup;
 }
 

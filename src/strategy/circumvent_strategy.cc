@@ -1,5 +1,6 @@
 #include "strategy/circumvent_strategy.h"
 #include "core/message_format.h"
+#include "gait/gait_walker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,30 @@ constexpr double kReplanTolerance_m = 0.03;
 constexpr double kRejoined_m = 0.1;
 // the safety stop looks this much wider than the robot's own half-width
 constexpr double kSafetyWidthMargin_m = 0.05;
+// Near an obstacle or a sharp corner of the path the robot walks at this
+// stride (or its own, if shorter): the gait turns at most 15 degrees a step,
+// so half the step halves the radius it turns on — the detour's sideways
+// shift is made in half the distance, and a corner is overshot by half as much
+// (a 90-degree corner 1 m before a wall is overshot into the wall at 0.6 m).
+constexpr double kSlowStride_m = 0.3;
+// the detour's shift counts as made once the pelvis is this close to it sideways
+constexpr double kShifted_m = 0.05;
+// following the path: off its line by more than this, the gait is steered back
+// to a point on the line this far ahead (re-aimed when it has moved this much),
+// until the pelvis is back within kBackOnPath_m
+constexpr double kOffPath_m = 0.10;
+constexpr double kCarrot_m = 0.6;
+constexpr double kCarrotMove_m = 0.1;
+constexpr double kBackOnPath_m = 0.03;
+// a corner of the path turning more than this is walked slowly ...
+constexpr double kSharpCorner_rad = 30.0 * kPi / 180.0;
+// ... from this far before it (pelvis to corner) until this far past it
+constexpr double kCornerSlowBefore_m = 1.0;
+constexpr double kCornerSlowAfter_m = 0.3;
+// The safety stop takes effect at the next double support: the swing foot
+// still lands up to a step (half the stride) beyond the leading toe, so the
+// stop looks at least that far ahead, and this much more.
+constexpr double kSwingMargin_m = 0.05;
 
 
 Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
@@ -32,6 +57,11 @@ Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
 
 void CircumventStrategy::Reset(const StrategySetup& setup) {
   path_m_ = setup.path_m;
+  stride_m_ = setup.stride_m;
+  stride_now_m_ = setup.stride_m;
+  stride_in_force_m_ = setup.stride_m;
+  stride_changed_ = false;
+  last_support_ = SupportLeg::kDouble;
   started_ = false;
   mode_ = Mode::kFollowing;
   points_.clear();
@@ -39,6 +69,8 @@ void CircumventStrategy::Reset(const StrategySetup& setup) {
   detour_.clear();
   shift_m_ = 0;
   side_ = 0;
+  tracking_ = false;
+  path_target_ = 1;
   next_waypoint_ = 0;
   detour_waypoints_ = 0;
   passed_ = false;
@@ -63,20 +95,95 @@ void CircumventStrategy::KeepPoints(const Observation& observation) {
   }
 }
 
-std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observation, double look_ahead_m,
-                                                       double lateral_m) const {
+std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observation, const Vec3& walking_W,
+                                                       double look_ahead_m, double lateral_m) const {
   const RobotKnowledge& self = *observation.robot;
-  const Vec3 lateral_W = Vec3::UnitZ().cross(self.heading_W);
+  const Vec3 lateral_W = Vec3::UnitZ().cross(walking_W);
   for (const SensorOutput& sensor : observation.sensors) {
     if (!sensor.fresh || !sensor.detected) continue;
     const Vec3 p_W = sensor.p_W_measured();
     if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;
     // ahead of the leading toe, aside of the pelvis (the toe leads on one side)
-    const double ahead_m = (p_W - self.p_W_front).dot(self.heading_W);
+    const double ahead_m = (p_W - self.p_W_front).dot(walking_W);
     const double aside_m = (p_W - self.X_WP.translation()).dot(lateral_W);
     if (ahead_m <= look_ahead_m && std::abs(aside_m) <= lateral_m) return p_W;
   }
   return std::nullopt;
+}
+
+std::size_t CircumventStrategy::GaitTargetIndex(const std::vector<Vec2>& waypoints, std::size_t first,
+                                               const Vec2& p_WP) const {
+  // the gait's rule (gait/gait_walker.cc): a waypoint is passed once the
+  // pelvis is within half a stride of it or beyond it along its approach
+  for (std::size_t i = first; i < waypoints.size(); ++i) {
+    const Vec2 approach = i == 0 ? Vec2(waypoints[0] - p_WP) : Vec2(waypoints[i] - waypoints[i - 1]);
+    const bool passed = (waypoints[i] - p_WP).norm() < 0.5 * stride_in_force_m_ || (p_WP - waypoints[i]).dot(approach) >= 0;
+    if (!passed) return i;
+  }
+  return waypoints.size() - 1;
+}
+
+Vec2 CircumventStrategy::GaitTarget(const Vec2& p_WP) const {
+  if (tracking_) return carrot_;
+  // (the path's first waypoint is where the robot started; a detour's first is the first still ahead)
+  if (mode_ == Mode::kDetouring) {
+    const std::vector<Vec2> waypoints = Remaining();
+    return waypoints.empty() ? p_WP : waypoints[GaitTargetIndex(waypoints, 0, p_WP)];
+  }
+  return path_m_.size() < 2 ? p_WP : path_m_[GaitTargetIndex(path_m_, path_target_, p_WP)];
+}
+
+void CircumventStrategy::TrackPath(const Vec2& p_WP, RobotCommands& robot) {
+  // Following the path, the gait heads for the next waypoint, not along the
+  // line to it: after overshooting a corner (it turns at most 15 degrees a
+  // step) it would cut back to the far waypoint on a line of its own, out of
+  // the corridor the path keeps clear. Off the line by more than kOffPath_m,
+  // it is given a point on the line kCarrot_m ahead, then the rest of the path.
+  if (path_m_.size() < 2) return;
+  const std::size_t i = path_target_ = GaitTargetIndex(path_m_, path_target_, p_WP);
+  const Vec2 a = path_m_[i - 1], b = path_m_[i];
+  const double length_m = (b - a).norm();
+  if (length_m < 1e-6) return;
+  const Vec2 u = (b - a) / length_m;
+  const double s = std::clamp((p_WP - a).dot(u), 0.0, length_m);
+  const double off_m = (p_WP - (a + s * u)).norm();
+  if (!tracking_ && off_m <= kOffPath_m) return;
+  std::vector<Vec2> path;
+  if (off_m <= kBackOnPath_m || length_m - s <= kCarrot_m) {
+    if (!tracking_) return;
+    tracking_ = false;  // back on the line, or near its end: the path itself
+  } else {
+    const Vec2 carrot = a + (s + kCarrot_m) * u;
+    if (tracking_ && (carrot - carrot_).norm() < kCarrotMove_m) return;
+    tracking_ = true;
+    carrot_ = carrot;
+    path.push_back(carrot);
+  }
+  path.insert(path.end(), path_m_.begin() + static_cast<std::ptrdiff_t>(i), path_m_.end());
+  robot.SetPath(path);
+}
+
+Vec3 CircumventStrategy::WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const {
+  // the step under way turns toward the gait's target as the gait turns it
+  // (gait/gait_walker.cc, DecideAtHeelStrike): up to kMaxTurnPerStep_rad, or
+  // more sharply, up to kMaxSharpTurnPerStep_rad, when the target lies inside
+  // the circle those steps would walk; the pelvis lags the step
+  const Vec2 to = GaitTarget(p_WP) - p_WP;
+  if (to.norm() < 1e-6) return self.heading_W;
+  const double bearing = std::remainder(std::atan2(to.y(), to.x()) - self.yaw_rad, 2 * kPi);
+  const double step_m = 0.5 * stride_in_force_m_;
+  double limit = kMaxTurnPerStep_rad;
+  const double radius_m = step_m / (2 * std::sin(kMaxTurnPerStep_rad / 2));
+  const Vec2 left(-std::sin(self.yaw_rad), std::cos(self.yaw_rad));
+  const Vec2 centre = p_WP + (bearing >= 0 ? radius_m : -radius_m) * left;
+  if ((p_WP + to - centre).norm() < radius_m) {
+    const double chord = step_m * std::abs(std::sin(bearing)) / to.norm();
+    limit = std::abs(bearing) < kPi / 2 && chord < 1
+                ? std::clamp(2 * std::asin(chord), kMaxTurnPerStep_rad, kMaxSharpTurnPerStep_rad)
+                : kMaxSharpTurnPerStep_rad;
+  }
+  const double yaw = self.yaw_rad + std::clamp(bearing, -limit, limit);
+  return {std::cos(yaw), std::sin(yaw), 0.0};
 }
 
 std::optional<Vec3> CircumventStrategy::PointOnThePath(const Observation& observation) const {
@@ -195,6 +302,39 @@ bool CircumventStrategy::PlanDetour(const Extent& extent, std::vector<Vec2>* way
   return true;
 }
 
+bool CircumventStrategy::NearSharpCorner(const Vec2& p_WP) const {
+  for (std::size_t i = 1; i + 1 < path_m_.size(); ++i) {
+    const Vec2 in = path_m_[i] - path_m_[i - 1], out = path_m_[i + 1] - path_m_[i];
+    if (in.norm() < 1e-6 || out.norm() < 1e-6) continue;
+    const double turn_rad = std::acos(std::clamp(in.dot(out) / (in.norm() * out.norm()), -1.0, 1.0));
+    if (turn_rad > kSharpCorner_rad && (path_m_[i] - p_WP).norm() < kCornerSlowBefore_m) return true;
+  }
+  return false;
+}
+
+void CircumventStrategy::Pace(const Vec2& p_WP, double yaw_rad, RobotCommands& robot, EventLog& events) {
+  if (!(stride_m_ > 0)) return;  // the gait's stride is not known: leave it
+  // slow while the detour's sideways shift is still to be made, or a sharp corner is near
+  bool shifting = false;
+  if (mode_ == Mode::kDetouring && !passed_) {
+    const double l_WP = (p_WP - segment_.origin).dot(Left(segment_.u));
+    shifting = std::abs(l_WP - shift_m_) > kShifted_m;
+  }
+  // (turning hard toward the gait's target counts as a corner: at the start, facing away from the path)
+  const Vec2 to = GaitTarget(p_WP) - p_WP;
+  const bool turning = to.norm() > 1e-6 &&
+                       std::abs(std::remainder(std::atan2(to.y(), to.x()) - yaw_rad, 2 * kPi)) > kSharpCorner_rad;
+  const bool slow = shifting || turning || NearSharpCorner(p_WP);
+  const double stride_m = slow ? std::min(kSlowStride_m, stride_m_) : stride_m_;
+  if (stride_m == stride_now_m_) return;
+  robot.SetStride(stride_m);
+  stride_now_m_ = stride_m;
+  stride_changed_ = true;
+  events.Log(slow ? "slowing_down" : "speeding_up",
+             FormatNumbers(slow ? "an obstacle or a sharp corner ahead: stride %.2f m" : "the way is clear: stride %.2f m",
+                           stride_m));
+}
+
 std::vector<Vec2> CircumventStrategy::Remaining() const {
   return {detour_.begin() + static_cast<std::ptrdiff_t>(std::min(next_waypoint_, detour_.size())), detour_.end()};
 }
@@ -225,19 +365,42 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
 
   // whatever the plan, something right in front of the feet stops the robot
   const double own_width_m = half_width_m_ + kSafetyWidthMargin_m;
-  if (const auto p_W = PointInTheWay(observation, config_.stop_distance_m, own_width_m)) {
+  // the stride commanded takes effect at the next heel strike: until then the longer one reaches
+  // (a heel strike: into double support, or straight from one leg to the other)
+  const bool heel_strike = self.support != last_support_ &&
+                           (self.support == SupportLeg::kDouble || last_support_ != SupportLeg::kDouble);
+  if (heel_strike && stride_changed_) {
+    stride_changed_ = false;
+    stride_in_force_m_ = stride_now_m_;
+  }
+  last_support_ = self.support;
+  const double reach_stride_m = stride_changed_ ? std::max(stride_in_force_m_, stride_now_m_) : stride_in_force_m_;
+  const double reach_m = reach_stride_m > 0 ? 0.5 * reach_stride_m + kSwingMargin_m : 0.0;
+  const Vec3 walking_W = WalkingDirection(self, self.X_WP.translation().head<2>());
+  if (const auto p_W = PointInTheWay(observation, walking_W, std::max(config_.stop_distance_m, reach_m), own_width_m)) {
     robot.Stop();
     mode_ = Mode::kStopped;
     events.Log("blocked", FormatNumbers("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
-                                 (*p_W - self.p_W_front).dot(self.heading_W)));
+                                 (*p_W - self.p_W_front).dot(walking_W)));
     return;
   }
   if (mode_ == Mode::kBlocked) return;
 
   const Vec2 p_WP = self.X_WP.translation().head<2>();
+  FollowOrDetour(observation, p_WP, robot, events);
+  if (mode_ != Mode::kBlocked) Pace(p_WP, self.yaw_rad, robot, events);
+}
+
+void CircumventStrategy::FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot,
+                                EventLog& events) {
+  const RobotKnowledge& self = *observation.robot;
   if (mode_ == Mode::kFollowing) {
     const auto p_W = PointOnThePath(observation);
-    if (!p_W) return;
+    if (!p_W) {
+      TrackPath(p_WP, robot);
+      return;
+    }
+    tracking_ = false;
     seed_ = CellOf(*p_W);
     segment_ = SegmentNear(p_W->head<2>());
     extent_ = MeasureCluster(seed_, segment_);

@@ -21,10 +21,22 @@
 //     waypoints still ahead (a waypoint counts as passed once the pelvis is
 //     kPassed_m from it along the path), so it never turns back to one.
 //  4. A shift beyond max_detour_m means no way around is seen (a wall): from
-//     then on it stops as `stop` would. Whatever the state, a point within
-//     stop_distance_m ahead of the toe inside the robot's own width stops it.
+//     then on it stops as `stop` would. Whatever the state, a point inside
+//     the robot's own width within stop_distance_m ahead of the toe, or
+//     within half a stride + 5 cm when that is farther (the swing foot lands
+//     up to a step beyond the toe after the stop is commanded), stops it;
+//     "ahead" along the heading turned toward the gait's next waypoint as
+//     the gait turns its steps (the pelvis lags the step).
+//  5. It paces the gait: a 0.3 m stride (or its own, if shorter) while the
+//     detour's sideways shift is still to be made, near a sharp corner of
+//     the path, or turning hard toward the gait's next waypoint — half the
+//     step halves the radius the gait turns on (15 degrees a step).
+//  6. Following the path, it keeps the gait on the path's line: the gait
+//     heads for the next waypoint, so after overshooting a corner it would
+//     cut across, out of the corridor the path keeps clear; off the line by
+//     more than 0.1 m it is given a point on the line 0.6 m ahead.
 // Events: obstacle_seen, detour_planned, detour_replanned, obstacle_passed,
-// rejoined, no_way_around, blocked.
+// rejoined, no_way_around, blocked, slowing_down, speeding_up.
 //
 // Frames: W world; the path frame: origin at the segment's start, s along it,
 // l to its left, both in metres on the floor plane.
@@ -71,9 +83,23 @@ class CircumventStrategy : public Strategy {
     std::vector<Vec2> rest;          // the path's waypoints after this segment's start
   };
 
+  // following the path or detouring around what was seen (after the safety stop)
+  void FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot, EventLog& events);
+  // the stride for what is ahead: slower while the detour's shift is being made, near a sharp
+  // corner of the path, or while turning hard toward the gait's target
+  void Pace(const Vec2& p_WP, double yaw_rad, RobotCommands& robot, EventLog& events);
+  bool NearSharpCorner(const Vec2& p_WP) const;
   void KeepPoints(const Observation& observation);
-  // the first fresh point within look_ahead_m ahead of the leading toe, inside lateral_m of the pelvis's heading line
-  std::optional<Vec3> PointInTheWay(const Observation& observation, double look_ahead_m, double lateral_m) const;
+  // the first fresh point within look_ahead_m ahead of the leading toe, inside lateral_m of the pelvis's line along walking_W
+  std::optional<Vec3> PointInTheWay(const Observation& observation, const Vec3& walking_W, double look_ahead_m,
+                                    double lateral_m) const;
+  // the waypoint the gait walks toward: the first of the path it follows not yet passed
+  Vec2 GaitTarget(const Vec2& p_WP) const;
+  std::size_t GaitTargetIndex(const std::vector<Vec2>& waypoints, std::size_t first, const Vec2& p_WP) const;
+  // following the path: steer the gait back onto the path's line when it strays
+  void TrackPath(const Vec2& p_WP, RobotCommands& robot);
+  // the heading turned toward the gait's target as the step under way turns (unit, horizontal)
+  Vec3 WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const;
   // the first fresh point ahead within detect_distance_m and within half-width + margin of the path
   std::optional<Vec3> PointOnThePath(const Observation& observation) const;
   double DistanceToPath_m(const Vec2& p_W) const;
@@ -91,6 +117,11 @@ class CircumventStrategy : public Strategy {
 
   CircumventConfig config_;
   std::vector<Vec2> path_m_;
+  double stride_m_ = 0;      // the gait's own stride (NaN: not known)
+  double stride_now_m_ = 0;  // the stride last commanded
+  double stride_in_force_m_ = 0;  // the stride of the step being walked
+  bool stride_changed_ = false;   // a stride commanded that the step being walked does not have yet
+  SupportLeg last_support_ = SupportLeg::kDouble;
   bool started_ = false;
   Mode mode_ = Mode::kFollowing;
   double half_width_m_ = 0;
@@ -105,6 +136,9 @@ class CircumventStrategy : public Strategy {
   std::size_t detour_waypoints_ = 0;  // of detour_, the ones the strategy steers through
   int side_ = 0;                   // +1 left, -1 right, 0 not chosen yet
   bool passed_ = false;
+  std::size_t path_target_ = 1;  // following: the path's waypoint the gait walks toward (only moves on)
+  bool tracking_ = false;  // following: the gait is steered to carrot_ on the path's line
+  Vec2 carrot_ = Vec2::Zero();
 };
 
 }  // namespace proxsim

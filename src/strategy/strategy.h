@@ -29,6 +29,7 @@ struct StrategySetup {
   std::vector<Vec2> path_m;             ///< the path the robot was given (world x-y), its goal last
   double rate_hz = 0.0;                 ///< samples per second
   double max_step_m = std::numeric_limits<double>::quiet_NaN();  ///< highest step up or down its legs take; NaN: not known
+  double stride_m = std::numeric_limits<double>::quiet_NaN();    ///< the stride its gait walks at the start; NaN: not known
 };
 
 /// The commands a strategy (or a script driving the simulation) gives the robot.
