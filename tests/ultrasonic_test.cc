@@ -4,6 +4,7 @@
 // Closed forms written here: the reach rows' interpolation, and the
 // shortest way from one sonar to a wall and on to another (its mirror image).
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -113,6 +114,13 @@ TEST(CrosstalkTest, TwoSonarsFiringTogetherHearEachOthersPingAtItsMirrorDistance
   for (const auto& row : Rows(out, "ping")) {
     EXPECT_EQ(row.at("status"), "ok");
   }
+  // summary.json counts them under their own status (its table once had no
+  // slot for it, and counting one wrote past the table)
+  std::ifstream summary_file(out / "summary.json");
+  const auto summary = nlohmann::json::parse(summary_file);
+  const auto& by_status = summary.at("sensors").at("ear").at("by_status");
+  EXPECT_EQ(by_status.at("crosstalk").get<std::size_t>(), ear.size());
+  EXPECT_FALSE(by_status.contains("not_sampled"));
 }
 
 TEST(CrosstalkTest, RoundRobinFiringPutsTheOtherPingOutsideTheListeningWindow) {

@@ -59,6 +59,7 @@ enum class ReadingStatus : std::uint8_t {
   kDropout,   ///< an echo that counted, lost to the noise model's dropout
   kNotSampled,  ///< the sensor took no sample at this time (its rate_hz is below the run's)
   kCrosstalk,   ///< the device reports an echo, but of another sensor's ping (sim/crosstalk.h); a detection to the robot
+  kLast = kCrosstalk,  ///< the highest status: tables indexed by status have kLast + 1 slots
 };
 
 /// "ok", "no_echo", "too_close", "grazing", "self", "dropout", "not_sampled" or "crosstalk".

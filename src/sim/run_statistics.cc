@@ -29,6 +29,7 @@ nlohmann::json RunStatistics::ToJson(const std::vector<std::string>& sensor_name
     const PerSensor& stats = sensors_[i];
     nlohmann::json by_status = nlohmann::json::object();
     for (std::size_t k = 0; k < kStatusCount; ++k) {
+      if (static_cast<ReadingStatus>(k) == ReadingStatus::kNotSampled) continue;  // not a sample
       by_status[ReadingStatusName(static_cast<ReadingStatus>(k))] = stats.by_status[k];
     }
     nlohmann::json by_object = nlohmann::json::object();

@@ -28,7 +28,10 @@ class RunStatistics {
   std::int64_t detections(std::size_t sensor) const;
 
  private:
-  static constexpr std::size_t kStatusCount = 6;  // every status but not_sampled, which is not a sample
+  // one slot per status, the last one included (a status added to the enum
+  // must get its slot: a reading's status indexes this array); not_sampled's
+  // stays 0 and is not written out
+  static constexpr std::size_t kStatusCount = static_cast<std::size_t>(ReadingStatus::kLast) + 1;
   struct PerSensor {
     std::int64_t samples = 0;
     std::array<std::int64_t, kStatusCount> by_status{};
