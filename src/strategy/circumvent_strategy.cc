@@ -31,6 +31,12 @@ constexpr double kSafetyWidthMargin_m = 0.05;
 // shift is made in half the distance, and a corner is overshot by half as much
 // (a 90-degree corner 1 m before a wall is overshot into the wall at 0.6 m).
 constexpr double kSlowStride_m = 0.3;
+// Facing more than kSharpCorner_rad away from the gait's target (at the start,
+// or after a detour's corner), the robot turns on short steps: its lasers look
+// along its heading, not along the way it is turning to, so a wide turn sweeps
+// its feet through ground no sensor has seen (generated rooms 105 and 438:
+// a table leg inside a 45-degree turn at the start, met by the swing foot).
+constexpr double kTurningStride_m = 0.1;
 // the detour's shift counts as made once the pelvis is this close to it sideways
 constexpr double kShifted_m = 0.05;
 // following the path: off its line by more than this, the gait is steered back
@@ -325,7 +331,9 @@ void CircumventStrategy::Pace(const Vec2& p_WP, double yaw_rad, RobotCommands& r
   const bool turning = to.norm() > 1e-6 &&
                        std::abs(std::remainder(std::atan2(to.y(), to.x()) - yaw_rad, 2 * kPi)) > kSharpCorner_rad;
   const bool slow = shifting || turning || NearSharpCorner(p_WP);
-  const double stride_m = slow ? std::min(kSlowStride_m, stride_m_) : stride_m_;
+  const double stride_m = turning ? std::min(kTurningStride_m, stride_m_)
+                          : slow  ? std::min(kSlowStride_m, stride_m_)
+                                  : stride_m_;
   if (stride_m == stride_now_m_) return;
   robot.SetStride(stride_m);
   stride_now_m_ = stride_m;
@@ -377,7 +385,12 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   const double reach_stride_m = stride_changed_ ? std::max(stride_in_force_m_, stride_now_m_) : stride_in_force_m_;
   const double reach_m = reach_stride_m > 0 ? 0.5 * reach_stride_m + kSwingMargin_m : 0.0;
   const Vec3 walking_W = WalkingDirection(self, self.X_WP.translation().head<2>());
-  if (const auto p_W = PointInTheWay(observation, walking_W, std::max(config_.stop_distance_m, reach_m), own_width_m)) {
+  // turning on short steps the feet move at most a step from where they are
+  // before a stop takes effect: the stop looks that far (the swing's reach),
+  // not stop_distance_m along a heading the robot is turning away from
+  const bool turning_on_short_steps = reach_stride_m > 0 && reach_stride_m <= kTurningStride_m;
+  const double look_ahead_m = turning_on_short_steps ? reach_m : std::max(config_.stop_distance_m, reach_m);
+  if (const auto p_W = PointInTheWay(observation, walking_W, look_ahead_m, own_width_m)) {
     robot.Stop();
     mode_ = Mode::kStopped;
     events.Log("blocked", FormatNumbers("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
