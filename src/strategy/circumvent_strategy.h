@@ -28,9 +28,11 @@
 //     "ahead" along the heading turned toward the gait's next waypoint as
 //     the gait turns its steps (the pelvis lags the step).
 //  5. It paces the gait: a 0.3 m stride (or its own, if shorter) while the
-//     detour's sideways shift is still to be made, near a sharp corner of
-//     the path, or turning hard toward the gait's next waypoint — half the
-//     step halves the radius the gait turns on (15 degrees a step).
+//     detour's sideways shift is still to be made or near a sharp corner of
+//     the path — half the step halves the radius the gait turns on (15
+//     degrees a step); a 0.1 m stride while facing more than 30 degrees away
+//     from the gait's next waypoint, the safety stop then looking only a
+//     step's reach ahead (the feet move no farther before it takes effect).
 //  6. Following the path, it keeps the gait on the path's line: the gait
 //     heads for the next waypoint, so after overshooting a corner it would
 //     cut across, out of the corridor the path keeps clear; off the line by
