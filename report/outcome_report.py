@@ -62,7 +62,7 @@ def success_by_set(ranking, results, out):
     ax.set_yticks(range(len(sets)), [s if len(s) <= 40 else s[:37] + "..." for s in sets], fontsize=8)
     ax.set_xlabel("strategy")
     runs = ranking[0]["runs"] if ranking else "0"
-    ax.set_title(f"Success rate by sensor set and strategy ({runs} worlds each; 95 % Wilson interval)", fontsize=9)
+    ax.set_title(f"Success rate by sensor set and strategy\n({runs} worlds each; 95 % Wilson interval)", fontsize=9)
     fig.colorbar(image, ax=ax, label="success rate")
     for ext in ("png", "svg"):
         fig.savefig(os.path.join(out, f"success_by_set.{ext}"), dpi=120)

@@ -66,8 +66,8 @@ TEST_F(OutcomeStudyCliTest, TheExampleRanksSetsAndStrategiesAndDrawsThem) {
   const auto result =
       RunProxsim("study " + std::string(PROXSIM_SOURCE_DIR) + "/data/studies/outcomes_room.yaml --out " + out.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  // 3 sets x 2 strategies x (2 room difficulties + 1 course) x 4 seeds
-  EXPECT_EQ(ReadCsv(out / "results.csv").rows.size(), 72u);
+  // 3 sets x 2 strategies x (2 room difficulties + 1 course) x 8 seeds
+  EXPECT_EQ(ReadCsv(out / "results.csv").rows.size(), 144u);
   EXPECT_EQ(ReadCsv(out / "ranking.csv").rows.size(), 6u);
   EXPECT_EQ(ReadCsv(out / "pairs.csv").rows.size(), 6u);  // 3 pairs per strategy
   const auto selection = nlohmann::json::parse(ReadFile(out / "selection.json"));
