@@ -151,6 +151,13 @@ TEST(FootholdsMapExamples, ABlindRobotFallsWhereTheGroundIsLowerThanItStepped) {
   EXPECT_EQ(down.robot["outcome"], "fell");
   EXPECT_NE(down.EventDetail("fall").find("landed 0.150 m lower than planned at (3.1"), std::string::npos)
       << down.EventDetail("fall");
+  // summary.json says where: the foothold it missed, planned level with the landing (z = 0.6 m)
+  // above the first tread down
+  const auto& fall = down.robot["fall"];
+  ASSERT_TRUE(fall.is_object()) << down.robot.dump();
+  EXPECT_NEAR(fall["p_W"][0].get<double>(), 3.15, 0.15);
+  EXPECT_NEAR(fall["p_W"][2].get<double>(), 0.6, 0.03);
+  EXPECT_DOUBLE_EQ(fall["t_s"].get<double>(), down.robot["outcome_t_s"].get<double>());
   // toward the small hole (x 5.0 .. 5.25): a heel lands over it
   const ExampleRun hole = RunFile(WriteScenario("footholds_hole", Edited("stairs_footholds_blind",
                                                                    {{"xyz_m: [0, 0, 0]", "xyz_m: [4.4, 0, 0]"},
@@ -159,6 +166,9 @@ TEST(FootholdsMapExamples, ABlindRobotFallsWhereTheGroundIsLowerThanItStepped) {
   ASSERT_EQ(hole.exit_code, 0) << hole.output;
   EXPECT_EQ(hole.robot["outcome"], "fell");
   EXPECT_NE(hole.EventDetail("fall").find("its heel over an edge"), std::string::npos) << hole.EventDetail("fall");
+  // the sole's middle, at the hole's edge (x 5.0 .. 5.25), within half a sole
+  ASSERT_TRUE(hole.robot["fall"].is_object());
+  EXPECT_NEAR(hole.robot["fall"]["p_W"][0].get<double>(), 5.1, 0.2);
 }
 
 TEST(FootholdsMapExamples, BadValuesAreRefusedNamingTheKey) {

@@ -47,6 +47,7 @@ class Run:
     poses: dict              # link name -> (t_s N, p N×3, quat_wxyz N×4); empty when no robot
     profile: dict            # x, y, z, sensor, t_s, object: 1-D arrays (detections, world frame)
     events: list = None      # summary.json robot.events: [{t_s, event, detail}], [] without a robot
+    fall: dict = None        # summary.json robot.fall: {t_s, p_W (or None), detail}, None when it did not fall
     collisions: list = None  # summary.json robot.collisions: [{t_s, link, object | other_link, depth_m, p_W}]
     outcome: dict = None     # summary.json robot.{outcome, outcome_t_s, outcome_detail}; None without a robot
     object_poses: dict = None  # moving object name -> (t_s N, p N×3, quat_wxyz N×4); empty when none moves
@@ -308,5 +309,5 @@ def load_run(out_dir):
     robot = _read_robot(out_dir)
     return Run(out_dir=out_dir, scene=scene, sensors=_read_readings(out_dir, scene),
                poses=_read_poses(out_dir), profile=_read_profile(out_dir), events=_read_events(robot),
-               collisions=list(robot.get("collisions") or []), outcome=_read_outcome(robot),
+               collisions=list(robot.get("collisions") or []), fall=robot.get("fall"), outcome=_read_outcome(robot),
                object_poses=_read_poses(out_dir, "objects_poses.csv", "object"))

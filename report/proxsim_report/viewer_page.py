@@ -131,6 +131,7 @@ def viewer_data(run, terrain=None):
         "profile": profile,
         "events": [{"t": e["t_s"], "event": e["event"], "detail": e.get("detail", "")} for e in (run.events or [])],
         "collisions": [{"t": c["t_s"], "link": c["link"], "p": c["p_W"]} for c in (run.collisions or [])],
+        "fall": {"t": run.fall["t_s"], "p": run.fall.get("p_W")} if run.fall else None,
         "terrain": terrain_viewer_data(terrain),
         "zones": zones_viewer_data(run),
         "objectPoses": _poses_data(run.object_poses, "objects"),

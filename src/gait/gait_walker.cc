@@ -97,7 +97,7 @@ bool GaitWalker::SettleLanding(const StepPose& strike) {
       FeelTouchdown(*terrain_, sole, plan_.landing_z_m, gait_.touchdown_tolerance_m, legs_->leg_length_m());
   if (touchdown.fell) {
     fell_ = true;
-    events_.push_back({"fall", touchdown.reason});
+    events_.push_back({"fall", touchdown.reason, sole.p_W[static_cast<int>(FootPoint::kMid)]});
     return false;
   }
   // the next step starts from where the foot rests: a terrain step, whose

@@ -46,6 +46,7 @@ struct GaitCycle {
 struct LocomotionEvent {
   std::string event;   ///< snake_case name: cannot_step, fall (a foot landed where it cannot stand)
   std::string detail;  ///< one line for a person
+  std::optional<Vec3> p_W;  ///< where it happened, when a place is known (a fall: the middle of the sole at the foothold it missed, as planned)
 };
 
 /// What moves the robot. Advance() is called with non-decreasing times.

@@ -222,7 +222,7 @@ const SampleFrame& Simulation::TakeSample() {
     for (LocomotionEvent& event : locomotion_->TakeEvents()) {
       // a foot that landed where it cannot stand (gait.footholds: map): the fall is the event
       if (event.event == "fall") {
-        Fall(event.detail);
+        Fall(event.detail, event.p_W);
         continue;
       }
       if (event.event == "cannot_step") {
@@ -338,9 +338,10 @@ void Simulation::UpdateRobot(double clearance_m) {
   }
 }
 
-void Simulation::Fall(const std::string& reason) {
+void Simulation::Fall(const std::string& reason, const std::optional<Vec3>& p_W) {
   if (outcome_.ended) return;
   outcome_.fell = outcome_.ended = true;
+  outcome_.fall_p_W = p_W;
   outcome_.end_t_s = frame_.t_s;
   outcome_.end_detail = "fell: " + reason;
   event_log_->Log("fall", outcome_.end_detail);

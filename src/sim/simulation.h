@@ -133,6 +133,7 @@ class Simulation {
     std::vector<Collision> collisions;
     bool collided = false;  ///< a contact ended the episode (on_collision: stop)
     bool fell = false;      ///< an unsafe step was taken (unsafe_steps: fall), or a foot landed where it cannot stand (footholds: map)
+    std::optional<Vec3> fall_p_W;  ///< the foothold the foot missed (the middle of its sole as planned), when a landing was felt
     bool ended = false;     ///< the episode ended before its last sample (collided or fell)
     double end_t_s = 0;
     std::string end_detail;
@@ -167,7 +168,7 @@ class Simulation {
   // the contacts of this sample: logged when new, the end of the episode under on_collision: stop
   void UpdateContacts(const std::vector<Contact>& contacts);
   // an unsafe step under unsafe_steps: fall, or a landing that cannot stand
-  void Fall(const std::string& reason);
+  void Fall(const std::string& reason, const std::optional<Vec3>& p_W = std::nullopt);
   void FillObservation();
   StrategySetup MakeSetup() const;
   std::unique_ptr<TerrainMap> MakeTerrainMap() const;

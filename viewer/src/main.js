@@ -75,7 +75,7 @@ function start() {
   const zones = new ZonesView(stage.scene, data.zones, data.sensors);
   const terrain = new TerrainView(stage.scene, data.terrain);
   const rootLink = robot.rootLink();
-  const walk = new WalkView(stage.scene, data.poses, rootLink ? rootLink.name : null, data.events, data.collisions);
+  const walk = new WalkView(stage.scene, data.poses, rootLink ? rootLink.name : null, data.events, data.collisions, data.fall);
   robot.markCollisions(data.collisions);
   rays.resize(stage.size);
 

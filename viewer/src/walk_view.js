@@ -11,8 +11,9 @@ const EVENT_COLORS = { obstacle_seen: 0xe67e22, obstacle_ahead: 0xe67e22, detour
 
 export class WalkView {
   /** poses: data.poses (or null); root: the root link's name; events: data.events;
-   *  collisions: data.collisions (a red ball at each contact point, from its time). */
-  constructor(scene, poses, root, events, collisions) {
+   *  collisions: data.collisions (a red ball at each contact point, from its time);
+   *  fall: data.fall ({t, p}: the fall's marker stands where the foot landed, when p is known). */
+  constructor(scene, poses, root, events, collisions, fall) {
     this.times = poses ? poses.t : [];
     this.line = null;
     this.markers = [];
@@ -32,13 +33,15 @@ export class WalkView {
     this.line = new THREE.Line(geometry, new THREE.LineBasicMaterial({ color: 0x1b4f72 }));
     this.line.name = 'walk-path';
     scene.add(this.line);
-    // one marker per event, at the root's place then
+    // one marker per event, at the root's place then; a fall's where the foot landed
     for (const e of events || []) {
       const i = sampleAt(this.times, e.t);
       const marker = new THREE.Mesh(new THREE.ConeGeometry(0.03, 0.12, 12),
         new THREE.MeshLambertMaterial({ color: EVENT_COLORS[e.event] ?? 0x7f8c8d }));
       marker.rotation.x = -Math.PI / 2;  // point down onto the floor
-      marker.position.set(p[7 * i], p[7 * i + 1], 0.08);
+      const at = e.event === 'fall' && fall && fall.p ? fall.p : null;
+      if (at) marker.position.set(at[0], at[1], at[2] + 0.08);
+      else marker.position.set(p[7 * i], p[7 * i + 1], 0.08);
       marker.name = `event-${e.event}`;
       marker.userData.t = e.t;
       scene.add(marker);
