@@ -1,9 +1,12 @@
 // Several echoes of one ping (`echoes: first | strongest | all`,
 // docs/sensors.md#several-echoes): a sonar facing a thin pole before a wall
-// hears the pole on its axis ray and the wall on every other ray. Closed
-// forms written here: the echoes' distances (the pole's face; the wall's
-// nearest ray, 5° off the axis: 1.5 m / cos 5°) and signals (the axis ray's
-// share of the beam's solid angle, and the rest times the wall's reflectivity).
+// hears the pole on its axis ray and on the two rays of its 10° ring that lie
+// in the pole's plane (φ = 90°, 270°; the 5° ring's rays, 60° apart, pass
+// 21 mm beside the pole's axis, outside its 15 mm half-width), and the wall
+// on every other ray. Closed forms written here: the echoes' distances (the
+// pole's face; the wall's nearest ray, 5° off the axis: 1.5 m / cos 5°) and
+// signals (those rays' shares of the beam's solid angle, and the rest times
+// the wall's reflectivity).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -30,23 +33,25 @@ using testing::RowsOf;
 using testing::RunProxsim;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kPoleFace_m = 0.48;  // a 4 cm pole centred 0.5 m ahead
+constexpr double kPoleFace_m = 0.485;  // a 3 cm pole centred 0.5 m ahead
 constexpr double kWall_m = 1.5;       // the wall's face
 
-// the 37-ray, 30° cone's rings lie at 5°, 10° and 15°; the axis ray stands
-// for the cap out to half the ring step (2.5°) of the cone's 15° cap
-double AxisWeight() { return (1 - std::cos(2.5 * kPi / 180)) / (1 - std::cos(15 * kPi / 180)); }
+// the 37-ray, 30° cone's rings of 6, 12 and 18 rays lie at 5°, 10° and 15°
+// (beam.h); the axis ray stands for the cap out to half the ring step (2.5°)
+// of the cone's 15° cap, a ray of the 10° ring for 1/12 of the band 7.5°–12.5°
+double Cos(double deg) { return std::cos(deg * kPi / 180); }
+double PoleSignal() { return ((1 - Cos(2.5)) + 2 * (Cos(7.5) - Cos(12.5)) / 12) / (1 - Cos(15)); }
 
 std::string PoleBeforeWall(const std::string& echoes, double wall_reflectivity) {
   return "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nscene:\n  objects:\n"
-         "    - {name: pole, box: {size_m: [0.04, 0.04, 2]}, pose: {xyz_m: [0.5, 0, 1]}}\n"
+         "    - {name: pole, box: {size_m: [0.03, 0.03, 2]}, pose: {xyz_m: [0.5, 0, 1]}}\n"
          "    - {name: wall, box: {size_m: [0.02, 4, 3]}, pose: {xyz_m: [1.51, 0, 1]}, "
          "material: {albedo: 0.5, acoustic_reflectivity: " + std::to_string(wall_reflectivity) + "}}\n"
          "sensors:\n  - {name: sonar, type: ultrasonic, range_m: [0.02, 3], max_incidence_deg: 20, "
          "noise: {sigma: 0}, beam: {aperture_deg: 30, rays: 37}, echoes: " + echoes + ", pose: {xyz_m: [0, 0, 1]}}\n";
 }
 
-fs::path Run(const std::string& name, const std::string& yaml) {
+fs::path RunFolder(const std::string& name, const std::string& yaml) {
   const fs::path dir = FreshDir(name);
   fs::create_directories(dir);
   std::ofstream(dir / "s.yaml") << yaml;
@@ -62,7 +67,7 @@ std::vector<double> ReadDistances(const fs::path& out) {
 }
 
 TEST(EchoesRun, AllHearsThePoleThenTheWallInOrder) {
-  const fs::path out = Run("echoes_all", PoleBeforeWall("all", 1.0));
+  const fs::path out = RunFolder("echoes_all", PoleBeforeWall("all", 1.0));
   const auto d = LoadNpy(out / "echoes" / "sonar" / "d_m.npy");
   const auto signal = LoadNpy(out / "echoes" / "sonar" / "signal.npy");
   const auto count = LoadNpy(out / "echoes" / "sonar" / "count.npy");
@@ -70,7 +75,7 @@ TEST(EchoesRun, AllHearsThePoleThenTheWallInOrder) {
   ASSERT_GT(d.shape[0], 0);
   EXPECT_EQ(d.shape[1], 4);
   EXPECT_EQ(signal.shape, d.shape);
-  const double w0 = AxisWeight();
+  const double w0 = PoleSignal();
   for (long k = 0; k < d.shape[0]; ++k) {
     EXPECT_EQ(count.values[k], 2.0) << k;
     EXPECT_NEAR(d.values[4 * k + 0], kPoleFace_m, 1e-6);
@@ -88,17 +93,17 @@ TEST(EchoesRun, AllHearsThePoleThenTheWallInOrder) {
 }
 
 TEST(EchoesRun, StrongestPicksTheWallWhenItReturnsMoreAndThePoleOtherwise) {
-  // the wall's 36 rays return (1 − w0)·1 against the pole's w0
-  for (const double d_m : ReadDistances(Run("echoes_strongest", PoleBeforeWall("strongest", 1.0)))) {
+  // the wall's 34 rays return (1 − w0)·1 against the pole's w0
+  for (const double d_m : ReadDistances(RunFolder("echoes_strongest", PoleBeforeWall("strongest", 1.0)))) {
     EXPECT_NEAR(d_m, kWall_m / std::cos(5 * kPi / 180), 1e-6);
   }
   // a wall that returns 2 % of the sound: (1 − w0)·0.02 < w0
-  ASSERT_LT((1 - AxisWeight()) * 0.02, AxisWeight());
-  for (const double d_m : ReadDistances(Run("echoes_strongest_soft", PoleBeforeWall("strongest", 0.02)))) {
+  ASSERT_LT((1 - PoleSignal()) * 0.02, PoleSignal());
+  for (const double d_m : ReadDistances(RunFolder("echoes_strongest_soft", PoleBeforeWall("strongest", 0.02)))) {
     EXPECT_NEAR(d_m, kPoleFace_m, 1e-6);
   }
   // first is the pole, and writes no echoes/
-  const fs::path first = Run("echoes_first", PoleBeforeWall("first", 1.0));
+  const fs::path first = RunFolder("echoes_first", PoleBeforeWall("first", 1.0));
   for (const double d_m : ReadDistances(first)) EXPECT_NEAR(d_m, kPoleFace_m, 1e-6);
   EXPECT_FALSE(fs::exists(first / "echoes"));
 }

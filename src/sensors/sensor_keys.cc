@@ -67,7 +67,7 @@ const std::vector<SensorKey>& SensorKeys() {
     {"echoes", R"(`first` \| `strongest` \| `all`)", "`first`",
      "time-of-flight beams of several rays only (not the single-echo parts): the reading is the nearest echo, or the one whose rays return the most signal; `all` also writes up to 4 echoes, nearest first, to `echoes/`"},
     {"echo_separation_m", "> 0, m", "0.0343 (ultrasonic: 8 cycles at 40 kHz), 0.6 (optical)",
-     "echoes of one ping closer in range than this merge into one (`echoes: strongest | all`)"},
+     "echoes of one ping closer in range than this merge into one (`echoes: strongest \\| all`)"},
     {"rate_hz", "> 0, Hz", "every sample; a part with a measurement cycle: its limit",
      "the sensor reads at the first run sample of each of its own periods; a part refuses a rate above its datasheet's limit (`hc_sr04`: 16.7 Hz, its 60 ms cycle; `vl53l1x`: 10 Hz, its tables' 100 ms timing budget; ST multi-zone parts: 60 Hz at 4x4, 15 Hz at 8x8)"},
     {"latency_s", "≥ 0, s", "0",
