@@ -21,6 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::FreshDir;
+using testing::RunScenarioYaml;
 using testing::LoadNpy;
 using testing::NpyArray;
 using testing::ReadFile;
@@ -42,22 +43,13 @@ Dir ZoneRay(int nx, int ny, double h_deg, double v_deg, int k, int column, int r
   return {1 / norm, u / norm, v / norm};
 }
 
-fs::path RunScenario(const std::string& name, const std::string& yaml) {
-  const fs::path dir = FreshDir(name);
-  fs::create_directories(dir);
-  std::ofstream(dir / "scenario.yaml") << yaml;
-  const auto run = RunProxsim("run " + (dir / "scenario.yaml").string() + " --no-report --out " + (dir / "out").string());
-  EXPECT_EQ(run.exit_code, 0) << run.output;
-  return dir / "out";
-}
-
 // An 8x8 sensor (4 rays per zone, no noise) at the origin, facing a plane
 // through (1, 0, 0) turned 20° about z: ray d meets it at t = cos20/(cos20·dx + sin20·dy);
 // a zone reads the mean of its rays' t. With max_incidence_deg 30, a ray counts
 // when its incidence α, cos α = |n·d|, is at most 30°; a zone with none reads
 // status 8 (signal too low), the others 5.
 TEST(MultizoneTest, EachZoneOfAnEightByEightReadsItsRaysMeanDistanceToATiltedPlane) {
-  const fs::path out = RunScenario("multizone_plane", R"(proxsim: 1
+  const fs::path out = RunScenarioYaml("multizone_plane", R"(proxsim: 1
 duration_s: 0.1
 rate_hz: 10
 scene:
@@ -143,7 +135,7 @@ double MeanDistance(double x_m, bool left) {
 }
 
 TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
-  const fs::path out = RunScenario("multizone_two_targets", BoxBeforeWall(0.8, 2));
+  const fs::path out = RunScenarioYaml("multizone_two_targets", BoxBeforeWall(0.8, 2));
   const NpyArray d = LoadNpy(out / "zones" / "zone" / "d_m.npy");
   const NpyArray status = LoadNpy(out / "zones" / "zone" / "status.npy");
   const NpyArray count = LoadNpy(out / "zones" / "zone" / "target_count.npy");
@@ -154,12 +146,12 @@ TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
   EXPECT_NEAR(d.values[0], MeanDistance(0.8, true), 1e-5);
   EXPECT_NEAR(d.values[1], MeanDistance(2.0, false), 1e-5);
 
-  const fs::path one = RunScenario("multizone_one_target", BoxBeforeWall(0.8, 1));
+  const fs::path one = RunScenarioYaml("multizone_one_target", BoxBeforeWall(0.8, 1));
   const NpyArray d1 = LoadNpy(one / "zones" / "zone" / "d_m.npy");
   ASSERT_EQ(d1.shape, (std::vector<long>{1, 1, 1}));
   EXPECT_NEAR(d1.values[0], MeanDistance(0.8, true), 1e-5);
 
-  const fs::path merged = RunScenario("multizone_merged", BoxBeforeWall(1.6, 2));
+  const fs::path merged = RunScenarioYaml("multizone_merged", BoxBeforeWall(1.6, 2));
   const NpyArray dm = LoadNpy(merged / "zones" / "zone" / "d_m.npy");
   const NpyArray cm = LoadNpy(merged / "zones" / "zone" / "target_count.npy");
   EXPECT_EQ(cm.values[0], 1);

@@ -83,15 +83,12 @@ TEST(NoiseTableTest, TheVl53l0xsErrorFollowsTheTargetAndTheLight) {
 
 // A VL53L1X facing a wall of albedo 0.17 at wall_x_m: the status of its first reading.
 std::string StatusFacingAGreyWall(const std::string& name, const std::string& mode, double ambient_klux, double wall_x_m) {
-  const fs::path dir = FreshDir(name);
-  fs::create_directories(dir);
-  std::ofstream(dir / "s.yaml") << "proxsim: 1\nduration_s: 0.1\nrate_hz: 10\nscene:\n  ambient_klux: " << ambient_klux
-                                << "\n  objects:\n    - {name: wall, plane: {}, pose: {xyz_m: [" << wall_x_m
-                                << ", 0, 0], rpy_deg: [0, -90, 0]}, material: {albedo: 0.17}}\nsensors:\n"
-                                << "  - {name: tof, type: vl53l1x, distance_mode: " << mode << ", pose: {xyz_m: [0, 0, 1]}}\n";
-  const auto run = RunProxsim("run " + (dir / "s.yaml").string() + " --no-report --out " + (dir / "out").string());
-  EXPECT_EQ(run.exit_code, 0) << run.output;
-  const auto rows = testing::ReadCsv(dir / "out" / "readings.csv").rows;
+  const fs::path out = testing::RunScenarioYaml(
+      name, "proxsim: 1\nduration_s: 0.1\nrate_hz: 10\nscene:\n  ambient_klux: " + std::to_string(ambient_klux) +
+                "\n  objects:\n    - {name: wall, plane: {}, pose: {xyz_m: [" + std::to_string(wall_x_m) +
+                ", 0, 0], rpy_deg: [0, -90, 0]}, material: {albedo: 0.17}}\nsensors:\n"
+                "  - {name: tof, type: vl53l1x, distance_mode: " + mode + ", pose: {xyz_m: [0, 0, 1]}}\n");
+  const auto rows = testing::ReadCsv(out / "readings.csv").rows;
   return rows.empty() ? "" : rows.front().at("status");
 }
 
@@ -104,24 +101,18 @@ TEST(Vl53l1xRun, AGreyWallIsSeenWithinItsModesRangeOnly) {
 }
 
 TEST(Vl53l1xRun, BadModesAndRatesAreRefusedNamingTheLimitAndItsSource) {
-  const fs::path dir = FreshDir("l1x_bad");
-  fs::create_directories(dir);
-  std::ofstream(dir / "s.yaml") << "proxsim: 1\nsensors:\n"
-                                   "  - {name: a, type: vl53l1x, distance_mode: far}\n"
-                                   "  - {name: b, type: vl53l0x, distance_mode: short}\n"
-                                   "  - {name: c, type: vl53l1x, rate_hz: 20}\n"
-                                   "  - {name: d, type: laser, noise: {sigma_table: [[0.5, 0, -1]]}}\n"
-                                   "  - {name: e, type: ultrasonic, noise: {sigma_table: [[0.5, 0, 0.01]]}}\n";
-  const auto run = RunProxsim("validate " + (dir / "s.yaml").string());
-  EXPECT_EQ(run.exit_code, 2) << run.output;
-  for (const char* expected :
-       {"sensors[0].distance_mode: expected one of short, medium, long for a vl53l1x (ST VL53L1X datasheet DocID031281 Rev 3",
-        "sensors[1].distance_mode: expected no distance_mode for a vl53l0x (only the vl53l1x has distance modes",
-        "sensors[2].rate_hz: expected at most 10 Hz for a vl53l1x (ST VL53L1X datasheet DocID031281 Rev 3",
-        "sensors[3].noise.sigma_table[0][2]: expected a standard deviation >= 0",
-        "sensors[4].noise.sigma_table: expected only for an optical time-of-flight sensor"}) {
-    EXPECT_NE(run.output.find(expected), std::string::npos) << expected << "\n" << run.output;
-  }
+  testing::ExpectRefused("l1x_bad",
+      "proxsim: 1\nsensors:\n"
+      "  - {name: a, type: vl53l1x, distance_mode: far}\n"
+      "  - {name: b, type: vl53l0x, distance_mode: short}\n"
+      "  - {name: c, type: vl53l1x, rate_hz: 20}\n"
+      "  - {name: d, type: laser, noise: {sigma_table: [[0.5, 0, -1]]}}\n"
+      "  - {name: e, type: ultrasonic, noise: {sigma_table: [[0.5, 0, 0.01]]}}\n",
+      {"sensors[0].distance_mode: expected one of short, medium, long for a vl53l1x (ST VL53L1X datasheet DocID031281 Rev 3",
+      "sensors[1].distance_mode: expected no distance_mode for a vl53l0x (only the vl53l1x has distance modes",
+      "sensors[2].rate_hz: expected at most 10 Hz for a vl53l1x (ST VL53L1X datasheet DocID031281 Rev 3",
+      "sensors[3].noise.sigma_table[0][2]: expected a standard deviation >= 0",
+      "sensors[4].noise.sigma_table: expected only for an optical time-of-flight sensor"});
 }
 
 }  // namespace
