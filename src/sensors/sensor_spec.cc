@@ -18,11 +18,9 @@ namespace {
 // Two echoes of one ping are told apart when they arrive at least a pulse
 // length apart: an ultrasonic burst of 8 cycles at 40 kHz (the HC-SR04
 // datasheet's "8 cycle sonic burst") lasts 200 µs, c·τ/2 = 343 × 200e-6 / 2
-// = 0.0343 m of range. An optical pulse has no such published figure; the
-// optical types take ST's 600 mm minimum separation of two targets (UM2884),
-// the only multi-target optical figure we have.
+// = 0.0343 m of range. An optical pulse has no such published figure: the
+// optical types keep SensorSpec's default (ST's 600 mm).
 constexpr double kUltrasonicEchoSeparation_m = kSpeedOfSoundInAir_m_s * (8.0 / 40000.0) / 2.0;
-constexpr double kOpticalEchoSeparation_m = 0.6;
 
 // a multizone sensor's grid, and the grids its part has
 void ValidateZones(const SensorSpec& spec, std::vector<std::string>& problems) {
@@ -154,7 +152,6 @@ std::optional<EchoSelection> EchoSelectionFromName(std::string_view name) {
 SensorSpec SensorSpec::Preset(SensorType type) {
   SensorSpec spec;
   spec.type = type;
-  spec.echo_separation_m = kOpticalEchoSeparation_m;
   switch (type) {
     case SensorType::kIdeal:  // exact distances, for comparison (the paper's Fig. 8)
       spec.min_range_m = 0.0;
