@@ -48,6 +48,28 @@ inline std::filesystem::path FreshDir(const std::string& name) {
   return dir;
 }
 
+// Writes `yaml` as a scenario in a fresh folder `name`, runs it without the
+// report (expecting success) and returns its output folder.
+inline std::filesystem::path RunScenarioYaml(const std::string& name, const std::string& yaml) {
+  const std::filesystem::path dir = FreshDir(name);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "scenario.yaml") << yaml;
+  const auto run = RunProxsim("run " + (dir / "scenario.yaml").string() + " --no-report --out " + (dir / "out").string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return dir / "out";
+}
+
+// `proxsim validate` on `yaml` written as a scenario in a fresh folder `name`,
+// expecting exit code 2 (bad input) and every one of `expected` in its output.
+inline void ExpectRefused(const std::string& name, const std::string& yaml, const std::vector<std::string>& expected) {
+  const std::filesystem::path dir = FreshDir(name);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "scenario.yaml") << yaml;
+  const auto run = RunProxsim("validate " + (dir / "scenario.yaml").string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  for (const std::string& text : expected) EXPECT_NE(run.output.find(text), std::string::npos) << text << "\n" << run.output;
+}
+
 inline std::string ReadFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;

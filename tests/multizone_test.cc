@@ -14,54 +14,20 @@
 #include <vector>
 
 #include "cli_helpers.h"
+#include "npy_read.h"
 
 namespace proxsim {
 namespace {
 
 namespace fs = std::filesystem;
 using testing::FreshDir;
+using testing::RunScenarioYaml;
+using testing::LoadNpy;
+using testing::NpyArray;
 using testing::ReadFile;
 using testing::RunProxsim;
 
 constexpr double kPi = 3.14159265358979323846;
-
-// An .npy array's shape and values (float64 or uint8, C order), read back.
-struct NpyArray {
-  std::vector<long> shape;
-  std::vector<double> values;
-};
-
-NpyArray LoadNpy(const fs::path& path) {
-  const std::string bytes = ReadFile(path);
-  NpyArray array;
-  EXPECT_EQ(bytes.substr(0, 6), "\x93NUMPY");
-  const std::size_t header_length =
-      static_cast<unsigned char>(bytes[8]) | (static_cast<std::size_t>(static_cast<unsigned char>(bytes[9])) << 8);
-  const std::string header = bytes.substr(10, header_length);
-  EXPECT_EQ((10 + header_length) % 64, 0u) << "the header is padded to 64 bytes";
-  const bool f8 = header.find("'<f8'") != std::string::npos;
-  const std::size_t open = header.find("'shape': (") + 10, close = header.find(')', open);
-  std::stringstream dims(header.substr(open, close - open));
-  std::string dim;
-  long count = 1;
-  while (std::getline(dims, dim, ',')) {
-    if (dim.find_first_not_of(' ') == std::string::npos) continue;
-    array.shape.push_back(std::stol(dim));
-    count *= array.shape.back();
-  }
-  const char* data = bytes.data() + 10 + header_length;
-  EXPECT_EQ(bytes.size() - 10 - header_length, static_cast<std::size_t>(count) * (f8 ? 8 : 1)) << path;
-  for (long i = 0; i < count; ++i) {
-    if (f8) {
-      double value;
-      std::memcpy(&value, data + 8 * i, 8);
-      array.values.push_back(value);
-    } else {
-      array.values.push_back(static_cast<unsigned char>(data[i]));
-    }
-  }
-  return array;
-}
 
 // Sub-ray (a, b) of zone (column, row) for an nx × ny grid over h × v degrees,
 // k × k rays per zone: the unit direction through the centre of its sub-cell
@@ -77,22 +43,13 @@ Dir ZoneRay(int nx, int ny, double h_deg, double v_deg, int k, int column, int r
   return {1 / norm, u / norm, v / norm};
 }
 
-fs::path RunScenario(const std::string& name, const std::string& yaml) {
-  const fs::path dir = FreshDir(name);
-  fs::create_directories(dir);
-  std::ofstream(dir / "scenario.yaml") << yaml;
-  const auto run = RunProxsim("run " + (dir / "scenario.yaml").string() + " --no-report --out " + (dir / "out").string());
-  EXPECT_EQ(run.exit_code, 0) << run.output;
-  return dir / "out";
-}
-
 // An 8x8 sensor (4 rays per zone, no noise) at the origin, facing a plane
 // through (1, 0, 0) turned 20° about z: ray d meets it at t = cos20/(cos20·dx + sin20·dy);
 // a zone reads the mean of its rays' t. With max_incidence_deg 30, a ray counts
 // when its incidence α, cos α = |n·d|, is at most 30°; a zone with none reads
 // status 8 (signal too low), the others 5.
 TEST(MultizoneTest, EachZoneOfAnEightByEightReadsItsRaysMeanDistanceToATiltedPlane) {
-  const fs::path out = RunScenario("multizone_plane", R"(proxsim: 1
+  const fs::path out = RunScenarioYaml("multizone_plane", R"(proxsim: 1
 duration_s: 0.1
 rate_hz: 10
 scene:
@@ -178,7 +135,7 @@ double MeanDistance(double x_m, bool left) {
 }
 
 TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
-  const fs::path out = RunScenario("multizone_two_targets", BoxBeforeWall(0.8, 2));
+  const fs::path out = RunScenarioYaml("multizone_two_targets", BoxBeforeWall(0.8, 2));
   const NpyArray d = LoadNpy(out / "zones" / "zone" / "d_m.npy");
   const NpyArray status = LoadNpy(out / "zones" / "zone" / "status.npy");
   const NpyArray count = LoadNpy(out / "zones" / "zone" / "target_count.npy");
@@ -189,12 +146,12 @@ TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
   EXPECT_NEAR(d.values[0], MeanDistance(0.8, true), 1e-5);
   EXPECT_NEAR(d.values[1], MeanDistance(2.0, false), 1e-5);
 
-  const fs::path one = RunScenario("multizone_one_target", BoxBeforeWall(0.8, 1));
+  const fs::path one = RunScenarioYaml("multizone_one_target", BoxBeforeWall(0.8, 1));
   const NpyArray d1 = LoadNpy(one / "zones" / "zone" / "d_m.npy");
   ASSERT_EQ(d1.shape, (std::vector<long>{1, 1, 1}));
   EXPECT_NEAR(d1.values[0], MeanDistance(0.8, true), 1e-5);
 
-  const fs::path merged = RunScenario("multizone_merged", BoxBeforeWall(1.6, 2));
+  const fs::path merged = RunScenarioYaml("multizone_merged", BoxBeforeWall(1.6, 2));
   const NpyArray dm = LoadNpy(merged / "zones" / "zone" / "d_m.npy");
   const NpyArray cm = LoadNpy(merged / "zones" / "zone" / "target_count.npy");
   EXPECT_EQ(cm.values[0], 1);

@@ -65,7 +65,7 @@ TEST(OutcomeStats, Median) {
 }
 
 TEST(OutcomeStats, EveryDatasheetPartHasAPriceAndAMass) {
-  for (const char* part : {"hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l5cx", "vl53l7cx", "vl53l8cx"}) {
+  for (const char* part : {"hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l1x", "vl53l5cx", "vl53l7cx", "vl53l8cx"}) {
     const auto price = PartPriceOf(part);
     ASSERT_TRUE(price.has_value()) << part;
     EXPECT_GT(price->price_usd, 0) << part;

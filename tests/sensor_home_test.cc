@@ -111,6 +111,12 @@ sensors:
     rate_hz: 10
     fire: 0.03
     crosstalk: false
+    echoes: all
+    echo_separation_m: 0.05
+  - name: ranged
+    type: vl53l1x
+    distance_mode: short
+    noise: {sigma_table: [[0.5, 0, 0.01], [0.9, 2, 0.02]]}
   - name: reflect
     type: reflectance
     use_material: true

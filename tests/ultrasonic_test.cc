@@ -22,6 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::FreshDir;
+using testing::RunScenarioYaml;
 using testing::ReadCsv;
 using testing::RowsOf;
 using testing::RunProxsim;
@@ -55,31 +56,21 @@ std::string PoleScenario(double range_m, double azimuth_deg) {
          "sensors:\n  - {name: sonar, type: hc_sr04, rate_hz: 10, pose: {xyz_m: [0, 0, 1]}}\n";
 }
 
-// runs the scenario through the CLI; its output folder
-fs::path RunScenario(const std::string& name, const std::string& yaml) {
-  const fs::path dir = FreshDir(name);
-  fs::create_directories(dir);
-  std::ofstream(dir / "s.yaml") << yaml;
-  const auto run = RunProxsim("run " + (dir / "s.yaml").string() + " --no-report --out " + (dir / "out").string());
-  EXPECT_EQ(run.exit_code, 0) << run.output;
-  return dir / "out";
-}
-
 std::vector<std::map<std::string, std::string>> Rows(const fs::path& out, const std::string& sensor) {
   return RowsOf(ReadCsv(out / "readings.csv"), sensor);
 }
 
 TEST(UltrasonicBeamTest, ALobeThatNarrowsWithDistanceHearsAnOffAxisPoleOnlyNearTheSensor) {
-  const auto near = Rows(RunScenario("ultrasonic_pole_near", PoleScenario(0.30, 24.0)), "sonar");
+  const auto near = Rows(RunScenarioYaml("ultrasonic_pole_near", PoleScenario(0.30, 24.0)), "sonar");
   ASSERT_FALSE(near.empty());
   for (const auto& row : near) {
     EXPECT_EQ(row.at("status"), "ok");
     EXPECT_NEAR(std::stod(row.at("d_m")), 0.28, 0.02);  // its near face 2 cm before its centre, ±noise and 3 mm steps
   }
-  const auto far = Rows(RunScenario("ultrasonic_pole_far", PoleScenario(1.0, 24.0)), "sonar");
+  const auto far = Rows(RunScenarioYaml("ultrasonic_pole_far", PoleScenario(1.0, 24.0)), "sonar");
   ASSERT_FALSE(far.empty());
   for (const auto& row : far) EXPECT_EQ(row.at("status"), "no_echo");
-  const auto ahead = Rows(RunScenario("ultrasonic_pole_ahead", PoleScenario(1.0, 0.0)), "sonar");
+  const auto ahead = Rows(RunScenarioYaml("ultrasonic_pole_ahead", PoleScenario(1.0, 0.0)), "sonar");
   ASSERT_FALSE(ahead.empty());
   for (const auto& row : ahead) EXPECT_EQ(row.at("status"), "ok");
 }
@@ -99,7 +90,7 @@ std::string TwoSonars(const std::string& fire) {
 }
 
 TEST(CrosstalkTest, TwoSonarsFiringTogetherHearEachOthersPingAtItsMirrorDistance) {
-  const fs::path out = RunScenario("crosstalk_simultaneous", TwoSonars("simultaneous"));
+  const fs::path out = RunScenarioYaml("crosstalk_simultaneous", TwoSonars("simultaneous"));
   const auto ear = Rows(out, "ear");
   ASSERT_GE(ear.size(), 9u);  // 16.7 Hz for 0.6 s
   const double mirror_m = 0.5 * std::sqrt(1.2 * 1.2 + 0.6 * 0.6);
@@ -126,7 +117,7 @@ TEST(CrosstalkTest, TwoSonarsFiringTogetherHearEachOthersPingAtItsMirrorDistance
 TEST(CrosstalkTest, RoundRobinFiringPutsTheOtherPingOutsideTheListeningWindow) {
   // slots 0 and 30 ms of the 60 ms cycle: the other ping's echo reaches `ear`
   // 26 ms before its own ping, or 33.9 ms after it (5.8 m: beyond its 4 m)
-  const fs::path out = RunScenario("crosstalk_round_robin", TwoSonars("round_robin"));
+  const fs::path out = RunScenarioYaml("crosstalk_round_robin", TwoSonars("round_robin"));
   const auto ear = Rows(out, "ear");
   ASSERT_GE(ear.size(), 9u);
   for (const auto& row : ear) EXPECT_NE(row.at("status"), "crosstalk") << row.at("t_s");
@@ -140,7 +131,7 @@ TEST(CrosstalkTest, RoundRobinFiringPutsTheOtherPingOutsideTheListeningWindow) {
 TEST(CrosstalkTest, WithoutCrosstalkTheListenerHearsNothing) {
   std::string yaml = TwoSonars("simultaneous");
   yaml.replace(yaml.find("fire: simultaneous, pose: {xyz_m: [0, -0.3"), 18, "crosstalk: false");
-  const auto ear = Rows(RunScenario("crosstalk_off", yaml), "ear");
+  const auto ear = Rows(RunScenarioYaml("crosstalk_off", yaml), "ear");
   ASSERT_FALSE(ear.empty());
   for (const auto& row : ear) EXPECT_EQ(row.at("detected"), "0") << row.at("t_s");
 }

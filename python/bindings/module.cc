@@ -22,6 +22,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -124,7 +125,7 @@ struct ObservationKeys {
   py::str t_s{"t_s"}, readings{"readings"}, robot{"robot"};
   py::str d_m{"d_m"}, detected{"detected"}, fresh{"fresh"}, signal{"signal"}, output{"output"},
       t_reported_s{"t_reported_s"}, origin_W{"origin_W"}, dir_W{"dir_W"}, zones{"zones"}, status{"status"},
-      target_count{"target_count"};
+      target_count{"target_count"}, echoes{"echoes"}, count{"count"};
   py::str left{"left"}, right{"right"}, pelvis_W{"pelvis_W"}, yaw_deg{"yaw_deg"}, joints_rad{"joints_rad"},
       gait_phase{"gait_phase"}, support_leg{"support_leg"}, has_feet{"has_feet"}, soles_W{"soles_W"},
       toes_W{"toes_W"}, heading_W{"heading_W"}, stopped{"stopped"}, distance_walked_m{"distance_walked_m"},
@@ -467,6 +468,25 @@ class PySimulation {
       zones[py::str(sim_->scenario().sensors[i].name)] = sensor;
     }
     readings[k.zones] = zones;
+
+    // a beam's several echoes (echoes: strongest | all) by its name: (4,)
+    // distances and signals, nearest first, NaN past the echoes heard, and their count
+    py::dict echoes;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (sim_->scenario().sensors[i].spec.echoes == EchoSelection::kFirst) continue;
+      const SensorOutput& s = obs.sensors[i];
+      py::array_t<double> echo_d(kMaxEchoes), echo_signal(kMaxEchoes);
+      std::fill_n(echo_d.mutable_data(), kMaxEchoes, std::numeric_limits<double>::quiet_NaN());
+      std::fill_n(echo_signal.mutable_data(), kMaxEchoes, std::numeric_limits<double>::quiet_NaN());
+      std::copy(s.echo_d_m.begin(), s.echo_d_m.end(), echo_d.mutable_data());
+      std::copy(s.echo_signal.begin(), s.echo_signal.end(), echo_signal.mutable_data());
+      py::dict sensor;
+      sensor[k.d_m] = echo_d;
+      sensor[k.signal] = echo_signal;
+      sensor[k.count] = static_cast<int>(s.echo_d_m.size());
+      echoes[py::str(sim_->scenario().sensors[i].name)] = sensor;
+    }
+    readings[k.echoes] = echoes;
 
     py::dict result;
     result[k.t_s] = obs.t_s;

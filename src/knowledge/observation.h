@@ -60,6 +60,10 @@ struct SensorOutput {
   std::vector<double> zone_d_m;
   std::vector<std::uint8_t> zone_status;
   std::vector<std::uint8_t> zone_target_count;
+  /// A beam with `echoes: strongest | all`: its echoes as reported, nearest
+  /// first (at most 4; empty for the other sensors), distance and signal.
+  std::vector<double> echo_d_m;
+  std::vector<double> echo_signal;
 
   /// The point the reading puts in the world: origin + d_m along the axis.
   Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }

@@ -5,51 +5,11 @@
 #include <limits>
 
 #include "core/atomic_file.h"
+#include "output/npy_files.h"
 #include "sensors/measured_point.h"
 #include "sensors/multizone.h"
 
 namespace proxsim {
-
-namespace {
-
-// a sensor's name as a folder when it is a plain file name, else its index
-std::string FolderFor(const std::string& name, std::size_t index) {
-  const bool plain = !name.empty() && name != "." && name != ".." &&
-                     std::all_of(name.begin(), name.end(), [](char c) {
-                       return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                              c == '-' || c == '.';
-                     });
-  return plain ? name : "sensor_" + std::to_string(index);
-}
-
-template <typename T>
-void WriteArray(const std::string& path, const char* descr, const std::vector<std::int64_t>& shape,
-                const std::vector<T>& values) {
-  std::string bytes = NpyArrayHeader(descr, shape);
-  bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-  WriteFileAtomically(path, bytes);
-}
-
-}  // namespace
-
-std::string NpyArrayHeader(const char* descr, const std::vector<std::int64_t>& shape) {
-  std::string dims;
-  for (const std::int64_t n : shape) dims += std::to_string(n) + ",";
-  if (shape.size() > 1) dims.pop_back();  // (n,) for one dimension, (a,b,c) for more
-  std::string dict = std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" + dims + "), }";
-  // magic 6 + version 2 + length 2 + dict + '\n', padded to a multiple of 64
-  const std::size_t total = (10 + dict.size() + 1 + 63) / 64 * 64;
-  const std::size_t length = total - 10;
-  dict.resize(length - 1, ' ');
-  std::string header = "\x93NUMPY";
-  header += '\x01';
-  header += '\x00';
-  header += static_cast<char>(length & 0xFF);
-  header += static_cast<char>(length >> 8);
-  header += dict;
-  header += '\n';
-  return header;
-}
 
 bool ZonesNpyWriter::Needed(const Scenario& scenario) {
   return std::any_of(scenario.sensors.begin(), scenario.sensors.end(),
@@ -61,7 +21,7 @@ ZonesNpyWriter::ZonesNpyWriter(const std::string& out_dir, const Scenario& scena
   for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
     const auto& zones = scenario.sensors[i].spec.zones;
     if (!zones) continue;
-    sensors_.push_back({.index = i, .folder = FolderFor(scenario.sensors[i].name, i), .zones = ZoneCount(*zones),
+    sensors_.push_back({.index = i, .folder = NpyFolderFor(scenario.sensors[i].name, i), .zones = ZoneCount(*zones),
                         .targets = zones->targets, .t_s = {}, .d_m = {}, .p_W = {}, .status = {}, .target_count = {}});
   }
 }
@@ -93,11 +53,11 @@ void ZonesNpyWriter::Commit() {
     const std::string folder = dir_ + "/" + sensor.folder;
     std::filesystem::create_directories(folder);
     const auto samples = static_cast<std::int64_t>(sensor.t_s.size());
-    WriteArray(folder + "/t_s.npy", "<f8", {samples}, sensor.t_s);
-    WriteArray(folder + "/d_m.npy", "<f8", {samples, sensor.zones, sensor.targets}, sensor.d_m);
-    WriteArray(folder + "/p_W.npy", "<f8", {samples, sensor.zones, sensor.targets, 3}, sensor.p_W);
-    WriteArray(folder + "/status.npy", "|u1", {samples, sensor.zones, sensor.targets}, sensor.status);
-    WriteArray(folder + "/target_count.npy", "|u1", {samples, sensor.zones}, sensor.target_count);
+    WriteNpyArray(folder + "/t_s.npy", "<f8", {samples}, sensor.t_s);
+    WriteNpyArray(folder + "/d_m.npy", "<f8", {samples, sensor.zones, sensor.targets}, sensor.d_m);
+    WriteNpyArray(folder + "/p_W.npy", "<f8", {samples, sensor.zones, sensor.targets, 3}, sensor.p_W);
+    WriteNpyArray(folder + "/status.npy", "|u1", {samples, sensor.zones, sensor.targets}, sensor.status);
+    WriteNpyArray(folder + "/target_count.npy", "|u1", {samples, sensor.zones}, sensor.target_count);
     const ZoneSpec& zones = *scenario_.sensors[sensor.index].spec.zones;
     sensors[scenario_.sensors[sensor.index].name] = {
         {"folder", sensor.folder},

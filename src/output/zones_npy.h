@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "output/npy_files.h"
 #include "output/run_sink.h"
 #include "scenario/scenario.h"
 
@@ -43,8 +44,5 @@ class ZonesNpyWriter : public RunSink {
   const Scenario& scenario_;
   std::vector<Sensor> sensors_;
 };
-
-/// The .npy (format 1.0) header of an array of dtype `descr` and `shape`, padded to a multiple of 64 bytes.
-std::string NpyArrayHeader(const char* descr, const std::vector<std::int64_t>& shape);
 
 }  // namespace proxsim

@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.h"
 #include "output/poses_csv.h"
+#include "output/echoes_npy.h"
 #include "output/zones_npy.h"
 #include "output/profile_ply.h"
 #include "output/run_manifest.h"
@@ -88,6 +89,7 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
       sinks_.push_back(std::make_unique<ObjectPosesCsvWriter>((out / "objects_poses.csv").string(), scenario.scene));
     }
     if (ZonesNpyWriter::Needed(scenario)) sinks_.push_back(std::make_unique<ZonesNpyWriter>(out_dir_, scenario));
+    if (EchoesNpyWriter::Needed(scenario)) sinks_.push_back(std::make_unique<EchoesNpyWriter>(out_dir_, scenario));
   }
   if (sim.terrain_map()) {
     sinks_.push_back(std::make_unique<TerrainSink>(*sim.terrain_map(), sim.world().caster(),

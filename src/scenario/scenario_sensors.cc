@@ -14,6 +14,7 @@
 
 #include "core/nearest_key.h"
 #include "core/text_fields.h"
+#include "sensors/distance_modes.h"
 #include "sensors/multizone.h"
 #include "sensors/sensor_keys.h"
 #include "scenario/scenario_sections.h"
@@ -143,6 +144,17 @@ void ReadLookupTable(YamlReader& reader, const Field& field, SensorSpec& spec) {
     if (const auto values = reader.Numbers(row, 3, AnyNumber(), "[distance_m, output, noise_fraction]")) {
       spec.lookup_table.push_back({(*values)[0], (*values)[1], (*values)[2]});
     }
+  }
+}
+
+// a [[reflectance, ambient_klux, value], ...] table (range_table, noise.sigma_table): a given list replaces the part's ([] turns it off)
+void ReadAmbientTable(YamlReader& reader, const Field& field, const std::string& row_text,
+                      std::vector<std::array<double, 3>>& table) {
+  const auto rows = reader.List(field, "a list of " + row_text + " rows");
+  if (!rows) return;
+  if (field) table.clear();
+  for (const Field& row : *rows) {
+    if (const auto values = reader.Numbers(row, 3, AnyNumber(), row_text)) table.push_back({(*values)[0], (*values)[1], (*values)[2]});
   }
 }
 
@@ -280,6 +292,22 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
     }
   }
 
+  // a part's distance mode presets its range and its tables (distance_modes.h)
+  if (const Field mode = map["distance_mode"]; mode) {
+    if (const auto name = reader.String(mode)) {
+      const std::string part = sensor.spec.part.empty() ? SensorTypeName(sensor.spec.type) : sensor.spec.part;
+      if (const DistanceMode* found = FindDistanceMode(sensor.spec.part, *name)) {
+        ApplyDistanceMode(*found, sensor.spec);
+      } else if (DistanceModeNames(sensor.spec.part).empty()) {
+        reader.Fail(mode, "expected no distance_mode for a " + part + " (only the vl53l1x has distance modes: " +
+                              DistanceModeNames("vl53l1x") + ", " + kDistanceModeSource + "), got '" + *name + "'");
+      } else {
+        reader.Fail(mode, "expected one of " + DistanceModeNames(sensor.spec.part) + " for a " + part + " (" +
+                              kDistanceModeSource + "), got '" + *name + "'");
+      }
+    }
+  }
+
   // overrides of the preset
   const bool range_valid = ReadRange(reader, map["range_m"], sensor.spec);
   sensor.spec.max_incidence_deg = reader.Number(map["max_incidence_deg"]).value_or(sensor.spec.max_incidence_deg);
@@ -288,6 +316,9 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
     sensor.spec.noise.mean = reader.Number((*noise)["mean"]).value_or(sensor.spec.noise.mean);
     sensor.spec.noise.resolution_m = reader.Number((*noise)["resolution_m"]).value_or(sensor.spec.noise.resolution_m);
     sensor.spec.noise.dropout = reader.Number((*noise)["dropout"]).value_or(sensor.spec.noise.dropout);
+    // a σ of the scenario's own replaces a part's table by target and light, unless it gives a table too
+    if (noise->Has("sigma") && !noise->Has("sigma_table")) sensor.spec.sigma_table.clear();
+    ReadAmbientTable(reader, (*noise)["sigma_table"], "[reflectance, ambient_klux, sigma]", sensor.spec.sigma_table);
     if (const auto model = reader.String((*noise)["model"])) {
       if (const auto parsed = NoiseModelFromName(*model)) {
         sensor.spec.noise.model = *parsed;
@@ -311,15 +342,19 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
   }
   ReadLookupTable(reader, map["lookup_table"], sensor.spec);
   ReadZones(reader, map, sensor.spec);
+  // a multi-zone part's range table is its datasheet's at the resolution read
+  if (map.Has("zones")) sensor.spec.range_table = MultizonePartRangeTable(sensor.spec);
   // range_table: [[reflectance, ambient_klux, max_range_m], ...] ([] turns a part's off)
-  if (const auto rows = reader.List(map["range_table"], "a list of [reflectance, ambient_klux, max_range_m] rows")) {
-    if (map.Has("range_table")) sensor.spec.range_table.clear();
-    for (const Field& row : *rows) {
-      if (const auto values = reader.Numbers(row, 3, AnyNumber(), "[reflectance, ambient_klux, max_range_m]")) {
-        sensor.spec.range_table.push_back({(*values)[0], (*values)[1], (*values)[2]});
-      }
+  ReadAmbientTable(reader, map["range_table"], "[reflectance, ambient_klux, max_range_m]", sensor.spec.range_table);
+  // echoes: first | strongest | all, and how far apart two echoes must be
+  if (const auto echoes = reader.String(map["echoes"])) {
+    if (const auto selection = EchoSelectionFromName(*echoes)) {
+      sensor.spec.echoes = *selection;
+    } else {
+      reader.Fail(map["echoes"], "expected first, strongest or all, got '" + *echoes + "'");
     }
   }
+  sensor.spec.echo_separation_m = reader.Number(map["echo_separation_m"]).value_or(sensor.spec.echo_separation_m);
   // a lookup sensor's range is its table's unless range_m says otherwise
   if (sensor.spec.type == SensorType::kLookup && map.Has("lookup_table") && !map.Has("range_m") &&
       sensor.spec.lookup_table.size() >= 2) {

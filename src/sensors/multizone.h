@@ -33,6 +33,7 @@
 // Frames: S the sensor (its +x is the field of view's axis), W world.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -97,6 +98,11 @@ std::vector<BeamRay> MakeSensorRays(const SensorSpec& spec);
 /// The zones' targets from every ray's echo (echoes[i] belongs to the
 /// sensor's ray i); `draw` gives ray i's noise draws. Writes `out`, sized here.
 void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out);
+
+/// The part's range table at the sensor's resolution, [reflectance,
+/// ambient_klux, max_range_m] rows (the VL53L5CX's DS13754 Tables 17 and 18);
+/// empty for a part whose tables were not found, or a generic grid.
+std::vector<std::array<double, 3>> MultizonePartRangeTable(const SensorSpec& spec);
 
 /// The fastest ranging rate of the sensor's part at its resolution, Hz (0: no limit).
 double MultizoneMaxRate_hz(const SensorSpec& spec);

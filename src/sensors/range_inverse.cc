@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/geometry.h"
+#include "sensors/noise_table.h"
 #include "sensors/sensor_model.h"
 
 namespace proxsim {
@@ -58,10 +59,12 @@ double RangeSigma_m(const SensorSpec& spec, double d_m) {
   } else if (spec.type == SensorType::kReflectance) {
     sigma_m = ReflectanceSigma_m(spec, d_m);
   } else {
+    // with a σ table the robot does not know the target's reflectance: the table's largest σ
+    const double sigma = LargestSigma(spec);
     switch (spec.noise.model) {
-      case NoiseModel::kMultiplicative: sigma_m = spec.noise.sigma * d_m; break;
-      case NoiseModel::kAdditive: sigma_m = spec.noise.sigma; break;
-      case NoiseModel::kDistanceScaled: sigma_m = spec.noise.sigma * d_m * d_m; break;
+      case NoiseModel::kMultiplicative: sigma_m = sigma * d_m; break;
+      case NoiseModel::kAdditive: sigma_m = sigma; break;
+      case NoiseModel::kDistanceScaled: sigma_m = sigma * d_m * d_m; break;
     }
   }
   // rounding to a resolution adds a uniform error of variance r²/12

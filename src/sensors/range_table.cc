@@ -27,19 +27,18 @@ double RangeAtLevel(const std::vector<std::array<double, 2>>& rows, double rho) 
   return rows.back()[1];
 }
 
-// the table by ambient level: level -> [ρ, d] rows by ascending ρ
-std::map<double, std::vector<std::array<double, 2>>> Levels(const SensorSpec& spec) {
-  std::map<double, std::vector<std::array<double, 2>>> levels;
-  for (const auto& [rho, klux, d_m] : spec.range_table) levels[klux].push_back({rho, d_m});
+}  // namespace
+
+AmbientLevels RowsByAmbient(const std::vector<std::array<double, 3>>& table) {
+  AmbientLevels levels;
+  for (const auto& [rho, klux, value] : table) levels[klux].push_back({rho, value});
   for (auto& [klux, rows] : levels) std::sort(rows.begin(), rows.end());
   return levels;
 }
 
-}  // namespace
-
 double ReflectanceMaxRange_m(const SensorSpec& spec, double reflectance) {
   if (spec.range_table.empty()) return spec.max_range_m;
-  const auto levels = Levels(spec);
+  const auto levels = RowsByAmbient(spec.range_table);
   const double a = std::max(spec.ambient_klux, 0.0);
   double d_m = 0;
   const auto above = levels.lower_bound(a);
@@ -64,6 +63,24 @@ double SilenceRange_m(const SensorSpec& spec) {
   return ReflectanceMaxRange_m(spec, darkest);
 }
 
+void ValidateAmbientTable(const std::string& key, const std::vector<std::array<double, 3>>& table,
+                          const char* value_expected, bool value_may_be_zero, std::vector<std::string>& problems) {
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const auto& [rho, klux, value] = table[i];
+    const auto fail = [&](int column, const char* expected, double got) {
+      std::ostringstream message;
+      message << key << "[" << i << "][" << column << "]: expected " << expected << ", got " << got;
+      problems.push_back(message.str());
+    };
+    if (!std::isfinite(rho) || rho <= 0 || rho > 1) fail(0, "a reflectance in (0, 1]", rho);
+    if (!std::isfinite(klux) || klux < 0) fail(1, "an ambient light >= 0 klux", klux);
+    if (!std::isfinite(value) || value < 0 || (value == 0 && !value_may_be_zero)) fail(2, value_expected, value);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (table[j][0] == rho && table[j][1] == klux) fail(0, "one row per reflectance and ambient light", rho);
+    }
+  }
+}
+
 void ValidateRangeTable(const SensorSpec& spec, std::vector<std::string>& problems) {
   if (spec.range_table.empty()) return;
   if (!(spec.type == SensorType::kLaser || spec.type == SensorType::kMultizone)) {
@@ -71,20 +88,7 @@ void ValidateRangeTable(const SensorSpec& spec, std::vector<std::string>& proble
                                    "multizone), got a table for a ") +
                        SensorTypeName(spec.type) + " sensor");
   }
-  for (std::size_t i = 0; i < spec.range_table.size(); ++i) {
-    const auto& [rho, klux, d_m] = spec.range_table[i];
-    const auto fail = [&](int column, const char* expected, double got) {
-      std::ostringstream message;
-      message << "range_table[" << i << "][" << column << "]: expected " << expected << ", got " << got;
-      problems.push_back(message.str());
-    };
-    if (!std::isfinite(rho) || rho <= 0 || rho > 1) fail(0, "a reflectance in (0, 1]", rho);
-    if (!std::isfinite(klux) || klux < 0) fail(1, "an ambient light >= 0 klux", klux);
-    if (!std::isfinite(d_m) || d_m <= 0) fail(2, "a range > 0 m", d_m);
-    for (std::size_t j = 0; j < i; ++j) {
-      if (spec.range_table[j][0] == rho && spec.range_table[j][1] == klux) fail(0, "one row per reflectance and ambient light", rho);
-    }
-  }
+  ValidateAmbientTable("range_table", spec.range_table, "a range > 0 m", false, problems);
 }
 
 }  // namespace proxsim

@@ -18,9 +18,19 @@
 // not know what it would have seen.
 #pragma once
 
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
 #include "sensors/sensor_spec.h"
 
 namespace proxsim {
+
+/// A datasheet table's rows [reflectance, ambient_klux, value] by ambient
+/// level: level -> [reflectance, value] rows by ascending reflectance.
+using AmbientLevels = std::map<double, std::vector<std::array<double, 2>>>;
+AmbientLevels RowsByAmbient(const std::vector<std::array<double, 3>>& table);
 
 /// The longest range for a target of reflectance ρ in the spec's ambient
 /// light, m, never beyond max_range_m (+inf... max_range_m without a table).
@@ -29,6 +39,10 @@ double ReflectanceMaxRange_m(const SensorSpec& spec, double reflectance);
 /// How far a silence of the sensor says that nothing is: max_range_m, or
 /// with a range table the range of its darkest tabulated target.
 double SilenceRange_m(const SensorSpec& spec);
+
+/// The problems of the rows of a [reflectance, ambient_klux, value] table, worded after `key`.
+void ValidateAmbientTable(const std::string& key, const std::vector<std::array<double, 3>>& table,
+                          const char* value_expected, bool value_may_be_zero, std::vector<std::string>& problems);
 
 /// The problems of a range table, worded after the key `range_table`.
 void ValidateRangeTable(const SensorSpec& spec, std::vector<std::string>& problems);

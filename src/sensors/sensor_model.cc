@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "core/enum_names.h"
+#include "sensors/beam_echoes.h"
+#include "sensors/noise_table.h"
 #include "sensors/range_table.h"
 
 namespace proxsim {
@@ -211,7 +213,9 @@ Reading MeasureCounted(const SensorSpec& spec, const Echo& echo, ReadingStatus s
   }
 
   // time of flight (laser, ultrasonic) and the ideal sensor: d_r = d·(1 + N), or a variant
-  reading.d_m = TimeOfFlightReading_m(spec.noise, echo.distance_m + echo.flight_shift_m, draw.gaussian_g);
+  // σ by the target's reflectance and the light, where the datasheet tabulates it (noise_table.h)
+  const NoiseSpec noise_spec = spec.sigma_table.empty() ? spec.noise : NoiseAt(spec, echo.ir_albedo);
+  reading.d_m = TimeOfFlightReading_m(noise_spec, echo.distance_m + echo.flight_shift_m, draw.gaussian_g);
   return reading;
 }
 
@@ -300,6 +304,11 @@ BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, st
     first_status = status;
   }
   if (first < 0) return no_detection();
+  if (spec.echoes == EchoSelection::kStrongest) {
+    // the echo whose rays return the most (beam_echoes.h), reported from its nearest ray
+    first = StrongestEchoRay(spec, echoes, rays);
+    first_status = EchoStatus(spec, echoes[first], rays[first].gain);
+  }
   out.reading = MeasureCounted(spec, echoes[first], first_status, draw(first));
   out.truth_ray = first;
   out.ray = out.reading.status == ReadingStatus::kDropout ? -1 : first;

@@ -4,13 +4,23 @@
 #include <cmath>
 #include <sstream>
 
+#include "sensors/distance_modes.h"
 #include "sensors/multizone.h"
+#include "sensors/noise_table.h"
 #include "sensors/range_table.h"
 #include "sensors/sensor_types.h"
+#include "sensors/wave_speed.h"
 
 namespace proxsim {
 
 namespace {
+
+// Two echoes of one ping are told apart when they arrive at least a pulse
+// length apart: an ultrasonic burst of 8 cycles at 40 kHz (the HC-SR04
+// datasheet's "8 cycle sonic burst") lasts 200 µs, c·τ/2 = 343 × 200e-6 / 2
+// = 0.0343 m of range. An optical pulse has no such published figure: the
+// optical types keep SensorSpec's default (ST's 600 mm).
+constexpr double kUltrasonicEchoSeparation_m = kSpeedOfSoundInAir_m_s * (8.0 / 40000.0) / 2.0;
 
 // a multizone sensor's grid, and the grids its part has
 void ValidateZones(const SensorSpec& spec, std::vector<std::string>& problems) {
@@ -50,6 +60,30 @@ void ValidateZones(const SensorSpec& spec, std::vector<std::string>& problems) {
   if (z.targets < 1 || z.targets > 4) fail("targets", "targets per zone in [1, 4] (ST's NB_TARGET_PER_ZONE)", z.targets);
   if (!std::isfinite(z.target_separation_m) || z.target_separation_m <= 0) {
     fail("target_separation_m", "a finite separation > 0 m", z.target_separation_m);
+  }
+}
+
+// echoes other than the first: a time-of-flight beam, of a type (not a part) that reports several
+void ValidateEchoes(const SensorSpec& spec, std::vector<std::string>& problems) {
+  if (!std::isfinite(spec.echo_separation_m) || spec.echo_separation_m <= 0) {
+    std::ostringstream message;
+    message << "echo_separation_m: expected a finite separation > 0 m, got " << spec.echo_separation_m;
+    problems.push_back(message.str());
+  }
+  if (spec.echoes == EchoSelection::kFirst) return;
+  const std::string got = std::string(", got ") + EchoSelectionName(spec.echoes);
+  if (!spec.single_echo_source.empty()) {
+    problems.push_back("echoes: expected first for a " + spec.part + ", which reports one echo (" +
+                       spec.single_echo_source + ")" + got);
+  } else if (spec.type == SensorType::kMultizone) {
+    problems.push_back("echoes: expected first for a multizone sensor (its zones report up to `targets` targets "
+                       "each, nearest first, in zones/)" + got);
+  } else if (!IsTimeOfFlight(spec.type)) {
+    problems.push_back("echoes: expected first for a " + std::string(SensorTypeName(spec.type)) +
+                       " sensor (only time-of-flight beams hear several echoes)" + got);
+  } else if (!spec.beam || spec.beam->rays < 2) {
+    problems.push_back("echoes: expected first for a sensor of one ray (one ray has one echo; give a beam of "
+                       "several rays)" + got);
   }
 }
 
@@ -99,6 +133,22 @@ std::optional<NoiseModel> NoiseModelFromName(std::string_view name) {
   return std::nullopt;
 }
 
+const char* EchoSelectionName(EchoSelection selection) {
+  switch (selection) {
+    case EchoSelection::kFirst: return "first";
+    case EchoSelection::kStrongest: return "strongest";
+    case EchoSelection::kAll: return "all";
+  }
+  return "?";
+}
+
+std::optional<EchoSelection> EchoSelectionFromName(std::string_view name) {
+  for (EchoSelection selection : {EchoSelection::kFirst, EchoSelection::kStrongest, EchoSelection::kAll}) {
+    if (name == EchoSelectionName(selection)) return selection;
+  }
+  return std::nullopt;
+}
+
 SensorSpec SensorSpec::Preset(SensorType type) {
   SensorSpec spec;
   spec.type = type;
@@ -120,6 +170,7 @@ SensorSpec SensorSpec::Preset(SensorType type) {
       spec.max_range_m = 1.0;
       spec.max_incidence_deg = 15.0;
       spec.noise = {0.01, 0.0};
+      spec.echo_separation_m = kUltrasonicEchoSeparation_m;
       break;
     case SensorType::kReflectance:  // §5 "A reflectance sensor"
       spec.min_range_m = 0.0;
@@ -145,7 +196,8 @@ SensorSpec SensorSpec::Preset(SensorType type) {
 }
 
 const std::vector<std::string>& SensorSpec::PartNames() {
-  static const std::vector<std::string> names = {"hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l5cx", "vl53l7cx", "vl53l8cx"};
+  static const std::vector<std::string> names = {"hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l1x",
+                                                      "vl53l5cx", "vl53l7cx", "vl53l8cx"};
   return names;
 }
 
@@ -183,6 +235,8 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     // (the module's documented timeout, e.g. buildcircuit.com's HC-SR04 page:
     // "If no obstacle is detected, the output pin will give a 38ms high level signal")
     spec.echo_timeout_s = 0.038;
+    // the echo line goes low at the first echo: the module reports one
+    spec.single_echo_source = "HC-SR04 datasheet: the echo pulse lasts until the first echo returns";
     return spec;
   }
   if (name == "sharp_gp2y0a21") {
@@ -222,7 +276,32 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.max_range_m = 2.0;
     spec.range_table = {{0.88, 0.0, 2.0}, {0.17, 0.0, 0.8}, {0.88, 5.0, 0.8}, {0.17, 5.0, 0.5}};
     spec.noise = {.sigma = 0.03, .mean = 0.0, .model = NoiseModel::kMultiplicative, .resolution_m = 0.001};
+    // the ranging error by target and light, Table 12 (standard deviation,
+    // 33 ms timing budget): white 4 % (at 120 cm) and grey 7 % (at 70 cm)
+    // indoors, 7 % (60 cm) and 12 % (40 cm) outdoors overcast; it replaces
+    // the 3 % above, which stays the σ a scenario's own noise.sigma replaces
+    spec.sigma_table = {{0.88, 0.0, 0.04}, {0.17, 0.0, 0.07}, {0.88, 5.0, 0.07}, {0.17, 5.0, 0.12}};
     spec.beam = BeamSpec{.aperture_deg = 25.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    spec.single_echo_source = "VL53L0X datasheet DocID029104: one ranging result per measurement";
+    return spec;
+  }
+  if (name == "vl53l1x") {
+    // ST VL53L1X time-of-flight ranging sensor (datasheet DocID031281 Rev 3):
+    // 940 nm VCSEL, receiver field of view "programmable from 15 to 27
+    // degrees" (diagonal; the full 16x16 SPAD array, taken here as a 27°
+    // cone), minimum ranging distance 4 cm, millimetre output. Its three
+    // distance modes carry the range and error tables (distance_modes.cc);
+    // long is the default. The tables hold at a 100 ms timing budget, which
+    // is not modelled otherwise: the part ranges at most every 100 ms (10 Hz).
+    SensorSpec spec = Preset(SensorType::kLaser);
+    spec.part = "vl53l1x";
+    spec.min_range_m = 0.04;
+    spec.noise = {.sigma = 0.020, .mean = 0.0, .model = NoiseModel::kAdditive, .resolution_m = 0.001};
+    spec.beam = BeamSpec{.aperture_deg = 27.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    ApplyDistanceMode(*FindDistanceMode("vl53l1x", DefaultDistanceMode("vl53l1x")), spec);
+    spec.max_rate_hz = 10.0;
+    spec.max_rate_source = std::string(kDistanceModeSource) + ": its ranges hold at one ranging per 100 ms";
+    spec.single_echo_source = "VL53L1X datasheet DocID031281: one ranging result per measurement";
     return spec;
   }
   if (const MultizonePart* part = FindMultizonePart(std::string(name))) {
@@ -238,6 +317,7 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.noise = {.sigma = 0.03, .mean = 0.0, .model = NoiseModel::kMultiplicative, .resolution_m = 0.001};
     spec.zones = ZoneSpec{.nx = 8, .ny = 8, .fov_h_deg = part->fov_deg, .fov_v_deg = part->fov_deg,
                           .rays_per_zone = 4, .targets = 1, .target_separation_m = 0.6};
+    spec.range_table = MultizonePartRangeTable(spec);
     return spec;
   }
   return std::nullopt;
@@ -343,8 +423,10 @@ std::vector<std::string> SensorSpec::Validate() const {
     problems.push_back("lookup_table: expected only with type lookup, got a table for a " +
                        std::string(SensorTypeName(type)) + " sensor");
   }
+  ValidateEchoes(*this, problems);
   ValidateZones(*this, problems);
   ValidateRangeTable(*this, problems);
+  ValidateSigmaTable(*this, problems);
   return problems;
 }
 

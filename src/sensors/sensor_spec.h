@@ -94,6 +94,18 @@ struct ZoneSpec {
   double target_separation_m = 0.6;  ///< surfaces closer in range than this merge into one target, > 0
 };
 
+/// Which echoes of a ping a time-of-flight beam reports (docs/sensors.md#several-echoes).
+enum class EchoSelection {
+  kFirst,      ///< the nearest echo that counts (the paper's reading; the default)
+  kStrongest,  ///< the echo whose rays return the most signal
+  kAll,        ///< the reading is the first; up to kMaxEchoes echoes, nearest first, beside it
+};
+/// "first", "strongest" or "all".
+const char* EchoSelectionName(EchoSelection selection);
+std::optional<EchoSelection> EchoSelectionFromName(std::string_view name);
+/// The most echoes a reading keeps with `echoes: all`.
+inline constexpr int kMaxEchoes = 4;
+
 struct SensorSpec {
   SensorType type = SensorType::kIdeal;
   std::string part;                  ///< the named part this came from ("" for the paper's presets)
@@ -131,6 +143,23 @@ struct SensorSpec {
   /// the next ping). An echo of any ping arriving later is not heard; the
   /// window in which other sensors' pings are heard (crosstalk).
   double echo_timeout_s = 0.0;
+
+  /// Which echoes a time-of-flight beam reports, and the range difference
+  /// below which two surfaces' echoes merge into one (m, > 0): for optical
+  /// beams ST's 600 mm minimum separation of two targets (UM2884), the only
+  /// multi-target optical figure we have; ultrasonic presets set their pulse's.
+  EchoSelection echoes = EchoSelection::kFirst;
+  double echo_separation_m = 0.6;
+  /// A named part that reports one echo per ping refuses `echoes` other than
+  /// first: why (its datasheet), "" for a type that may report several.
+  std::string single_echo_source;
+  /// A part's distance mode ("short", "medium", "long" for the VL53L1X), "" for none.
+  std::string distance_mode;
+  /// The ranging error by target and light, as the datasheet tabulates it:
+  /// rows [reflectance in (0, 1], ambient_klux >= 0, sigma >= 0], σ in the
+  /// noise model's unit; interpolated as range_table's rows (noise_table.h).
+  /// Empty: noise.sigma at any target and light.
+  std::vector<std::array<double, 3>> sigma_table;
 
   /// The paper's values for a type (§5; the ideal sensor: [0, 2] m, 90°, no
   /// noise; lookup: an empty table, to be given).

@@ -9,6 +9,7 @@
 
 #include "core/geometry.h"
 #include "gait/locomotion.h"
+#include "sensors/beam_echoes.h"
 #include "sensors/multizone.h"
 #include "sensors/sensor_model.h"
 
@@ -28,6 +29,9 @@ struct SensorSample {
   /// (all kZoneNotUpdated between its own samples), and each zone's axis in W.
   ZoneReadings zones;
   std::vector<Vec3> zone_dir_W;
+  /// A beam with `echoes: strongest | all`: its ping's echoes as reported,
+  /// nearest first, at most kMaxEchoes (empty otherwise and between its samples).
+  std::vector<BeamEcho> echoes;
 };
 
 struct RobotSample {

@@ -218,6 +218,7 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
     // a multizone sensor's zones say "not updated"
     for (ZoneTarget& target : out.zones.targets) target = ZoneTarget{.d_m = 0.0, .status = kZoneNotUpdated, .ray = -1};
     std::fill(out.zones.target_count.begin(), out.zones.target_count.end(), 0);
+    out.echoes.clear();
     return;
   }
 
@@ -282,6 +283,10 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
     out.reading = beam.reading;
     out.truth_ray = beam.truth_ray;
     out.ray = beam.ray;
+    if (spec.echoes != EchoSelection::kFirst) {
+      out.echoes = ReportedEchoes(spec, std::span(echoes_).subspan(begin, end - begin),
+                                  std::span(world_.beam_rays()).subspan(begin, end - begin), draw);
+    }
   }
 
   // the truth beside it: the echo, object and hit point of the ray it came from

@@ -295,6 +295,12 @@ void Simulation::FillObservation() {
         out.zone_status[k] = sample.zones.targets[k].status;
       }
       out.zone_target_count = sample.zones.target_count;
+      out.echo_d_m.resize(sample.echoes.size());
+      out.echo_signal.resize(sample.echoes.size());
+      for (std::size_t k = 0; k < sample.echoes.size(); ++k) {
+        out.echo_d_m[k] = sample.echoes[k].d_m;
+        out.echo_signal[k] = sample.echoes[k].signal;
+      }
       for (std::size_t zone = 0; zone < out.zones.size(); ++zone) {
         const ZoneTarget& first = sample.zones.targets[zone * static_cast<std::size_t>(zones->targets)];
         out.zones[zone].detected = first.status == kZoneRangeValid;

@@ -256,3 +256,25 @@ def test_a_multizone_sensor_gives_its_zones_by_name():
     assert obs["readings"]["d_m"][i] == pytest.approx(zones["d_m"][valid, 0].min(), abs=0)
     # the paper's sensors have no zones
     assert proxsim.Simulation.builtin("paper").step()["readings"]["zones"] == {}
+
+
+def test_a_beam_with_several_echoes_gives_them_by_name(tmp_path):
+    # a sonar facing a 3 cm pole 0.5 m ahead of a wall 1.5 m ahead: the pole's face on the axis ray,
+    # the wall on the 5° ring (docs/sensors.md#several-echoes; tests/echoes_test.cc)
+    path = tmp_path / "echoes.yaml"
+    path.write_text(
+        "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nscene:\n  objects:\n"
+        "    - {name: pole, box: {size_m: [0.03, 0.03, 2]}, pose: {xyz_m: [0.5, 0, 1]}}\n"
+        "    - {name: wall, box: {size_m: [0.02, 4, 3]}, pose: {xyz_m: [1.51, 0, 1]}}\n"
+        "sensors:\n  - {name: sonar, type: ultrasonic, range_m: [0.02, 3], max_incidence_deg: 20,"
+        " noise: {sigma: 0}, beam: {aperture_deg: 30, rays: 37}, echoes: all, pose: {xyz_m: [0, 0, 1]}}\n")
+    obs = proxsim.Simulation(str(path)).step()
+    echoes = obs["readings"]["echoes"]["sonar"]
+    assert echoes["count"] == 2
+    assert echoes["d_m"].shape == (4,) and echoes["signal"].shape == (4,)
+    np.testing.assert_allclose(echoes["d_m"][:2], [0.485, 1.5 / math.cos(math.radians(5))], atol=1e-6)
+    assert np.isnan(echoes["d_m"][2:]).all() and np.isnan(echoes["signal"][2:]).all()
+    assert echoes["signal"][1] > echoes["signal"][0]  # the wall fills 34 of the 37 rays
+    assert obs["readings"]["d_m"][0] == pytest.approx(0.485, abs=1e-6)  # the reading is the first echo
+    # the paper's sensors report one echo each
+    assert proxsim.Simulation.builtin("paper").step()["readings"]["echoes"] == {}
