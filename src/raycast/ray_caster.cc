@@ -6,6 +6,7 @@
 #include "raycast/embree_version.h"
 
 #include <cassert>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -196,7 +197,14 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
   }
 
   for (const auto& geom : body.geoms) {
-    if (geom->kind != GeomKind::kMesh) body.closed_form_geoms.push_back(geom.get());
+    if (geom->kind == GeomKind::kMesh) continue;
+    body.closed_form_geoms.push_back(geom.get());
+    // the shape's bounding sphere about its origin (O is its centre for each kind)
+    geom->sphere_center_B = geom->X_BO.translation();
+    if (const auto* box = std::get_if<Box>(&geom->shape)) geom->sphere_radius_m = 0.5 * box->size_m.norm();
+    if (const auto* sphere = std::get_if<Sphere>(&geom->shape)) geom->sphere_radius_m = sphere->radius_m;
+    if (const auto* cylinder = std::get_if<Cylinder>(&geom->shape))
+      geom->sphere_radius_m = std::hypot(cylinder->radius_m, 0.5 * cylinder->length_m);
   }
 
   // the body's BVH, built once; then its instance in the top-level scenes

@@ -136,6 +136,11 @@ RayCaster::NearestSurface RayCaster::NearestToWorld(const Vec3& p_W, std::span<c
     // boxes and analytic shapes: exact closed forms in the shape frame
     for (const GeomRecord* geom_ptr : body.closed_form_geoms) {
       const GeomRecord& geom = *geom_ptr;
+      // beyond its bounding sphere by more than the best so far: it cannot
+      // win (nor be a first touch: its distance is > best_m > 0), skip it
+      // before the transform and the closed form (a margin for rounding)
+      const double reach_m = geom.sphere_radius_m + best_m + 1e-9;
+      if ((p_B - geom.sphere_center_B).squaredNorm() > reach_m * reach_m) continue;
       if (IsExcluded(geom.object_id, exclude_object_ids)) continue;
       const Vec3 p_O = geom.X_OB * p_B;
       double distance_m = best_m;

@@ -71,6 +71,11 @@ struct GeomRecord {
   Pose X_BO = Pose::Identity();
   Pose X_OB = Pose::Identity();
   RTCBounds bounds_B{};  ///< user geometry only: conservative box in B
+  // boxes and analytic shapes: a sphere in B holding the shape (infinite for a
+  // plane), so a distance query skips, without moving the point into O, a
+  // shape that lies farther than its best so far (most of a room's furniture)
+  Vec3 sphere_center_B = Vec3::Zero();
+  double sphere_radius_m = std::numeric_limits<double>::infinity();
   // triangle geometry only: Embree's own buffers, in B (read by point queries)
   const float* vertices_B = nullptr;
   const std::uint32_t* indices = nullptr;
