@@ -215,7 +215,7 @@ void GaitWalker::Start() {
   }
   planner_->set_terrain(on_map ? felt_.get() : terrain, Limits());
   plan_ = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
-  step_duration_s_ = Duration_s(plan_);
+  step_duration_s_ = Duration_s(plan_, &windows_);
   step_start_clock_s_ = 0;
   clock_s_ = 0;
   step_phase_ = 0;
@@ -230,7 +230,7 @@ void GaitWalker::Start() {
   last_p_WP_ = Vec3::Zero();
   has_last_p_WP_ = false;
   // no foothold for the first step, or an unsafe one: stand where it starts
-  if (const std::string refusal = Refusal(plan_, step_duration_s_); !refusal.empty()) {
+  if (const std::string refusal = Refusal(plan_, step_duration_s_, &windows_); !refusal.empty()) {
     stopped_ = true;
     NoteCannotStep(refusal);
   }
