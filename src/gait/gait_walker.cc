@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "gait/gait_memo.h"
 #include "gait/held_joints.h"
 #include "gait/level_gait_check.h"
 #include "gait/step_safety.h"
@@ -56,10 +57,17 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   if (config.gait.derive_stride_from_legs) initial_.gait.stride_m = kReferenceStride_m * length_ratio;
   if (config.gait.derive_period_from_legs) initial_.gait.period_s = kReferencePeriod_s * std::sqrt(length_ratio);
   gait_ = initial_.gait;
-  // the exact amplitude search runs once; Reset() and SetStride() reuse its answer
-  const AmplitudeStride loaded = BisectAmplitude(*planner_, initial_.gait.stride_m);
+  // the exact amplitude search runs once; Reset() and SetStride() reuse its
+  // answer, and so does the next walker built from the same legs and gait in
+  // this process (a study's episodes: gait/gait_memo.h)
+  const std::string memo_key = GaitSearchKey(legs_->Fingerprint(), initial_.gait.stride_m, initial_.gait.period_s);
+  const std::optional<AmplitudeStride> remembered = RememberedGait(memo_key);
+  const AmplitudeStride loaded = remembered ? *remembered : BisectAmplitude(*planner_, initial_.gait.stride_m);
   stride_table_.AddExact(initial_.gait.stride_m, loaded);
-  CheckLevelGait(*planner_, *limits_, model_->source(), initial_.gait.stride_m, initial_.gait.period_s, loaded);
+  if (!remembered) {
+    CheckLevelGait(*planner_, *limits_, model_->source(), initial_.gait.stride_m, initial_.gait.period_s, loaded);
+    RememberGait(memo_key, loaded);
+  }
   initial_k_ = loaded.k;
   initial_achieved_stride_m_ = loaded.stride_m;
   max_step_m_ = config.gait.max_step_m > 0 ? config.gait.max_step_m : DefaultMaxStep_m(*legs_, initial_k_);
@@ -139,10 +147,10 @@ constexpr int kStrikeSlowingRounds = 8;
 constexpr double kStrikeSlowingMin = 1.05;
 }  // namespace
 
-double GaitWalker::Duration_s(const StepPlan& plan) const {
+double GaitWalker::Duration_s(const StepPlan& plan, StepWindows* sampled) const {
   // a step whose joints would move too fast (a sharp turn, a change of
   // stride, a step up) is slowed; steady walking is not (the load checked it)
-  return SpeedLimitedDuration_s(*planner_, *limits_, plan, StepDuration_s(plan, gait_.period_s));
+  return SpeedLimitedDuration_s(*planner_, *limits_, plan, StepDuration_s(plan, gait_.period_s), sampled);
 }
 
 double GaitWalker::StrikeLimitedDuration_s(const StepPlan& next, double duration_s) const {
@@ -158,9 +166,9 @@ double GaitWalker::StrikeLimitedDuration_s(const StepPlan& next, double duration
   return duration_s;
 }
 
-std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s) const {
+std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s, const StepWindows* sampled) const {
   if (!plan.cannot_step.empty()) return plan.cannot_step;
-  return UnsafeStepReason(*planner_, *limits_, plan, duration_s);
+  return UnsafeStepReason(*planner_, *limits_, plan, duration_s, sampled);
 }
 
 void GaitWalker::NoteCannotStep(const std::string& reason) {
@@ -207,7 +215,7 @@ void GaitWalker::Start() {
   }
   planner_->set_terrain(on_map ? felt_.get() : terrain, Limits());
   plan_ = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
-  step_duration_s_ = Duration_s(plan_);
+  step_duration_s_ = Duration_s(plan_, &windows_);
   step_start_clock_s_ = 0;
   clock_s_ = 0;
   step_phase_ = 0;
@@ -222,7 +230,7 @@ void GaitWalker::Start() {
   last_p_WP_ = Vec3::Zero();
   has_last_p_WP_ = false;
   // no foothold for the first step, or an unsafe one: stand where it starts
-  if (const std::string refusal = Refusal(plan_, step_duration_s_); !refusal.empty()) {
+  if (const std::string refusal = Refusal(plan_, step_duration_s_, &windows_); !refusal.empty()) {
     stopped_ = true;
     NoteCannotStep(refusal);
   }
@@ -318,8 +326,9 @@ RobotState GaitWalker::Advance(double t_s) {
         for (const auto& [turn_share, k_share] : kGentlerSteps) {
           const double yaw = plan_.yaw_to + turn_share * WrapAngle(yaw_to - plan_.yaw_to);
           next = planner_->NextStep(plan_, k_target_ * k_share, yaw);
-          next_duration_s = StrikeLimitedDuration_s(next, Duration_s(next));
-          refusal = Refusal(next, next_duration_s);
+          // (the step's poses sampled once for its duration and its safety)
+          next_duration_s = StrikeLimitedDuration_s(next, Duration_s(next, &windows_));
+          refusal = Refusal(next, next_duration_s, &windows_);
           // (no foothold within reach: a gentler step finds none either)
           if (refusal.empty() || !next.cannot_step.empty()) break;
         }

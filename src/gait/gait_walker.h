@@ -71,6 +71,7 @@
 #include "gait/joint_limits.h"
 #include "gait/locomotion.h"
 #include "gait/gait_config.h"
+#include "gait/step_safety.h"
 #include "gait/stride_table.h"
 
 namespace proxsim {
@@ -125,11 +126,13 @@ class GaitWalker : public Locomotion {
   FootholdLimits Limits() const;
   // How long `plan` lasts: half the period, longer for a terrain step that
   // must rise or fall slowly, or for any step whose joints would move too fast (step_safety.h).
-  double Duration_s(const StepPlan& plan) const;
+  // `sampled` receives the step's speed windows, for Refusal to reuse.
+  double Duration_s(const StepPlan& plan, StepWindows* sampled = nullptr) const;
   // Why `plan` is not to be taken ("" if it is): no foothold (the planner's
   // reason) or a step beyond the legs' limits (UnsafeStepReason, the one place
   // that decides; today it is refused like the other, see gait.unsafe_steps).
-  std::string Refusal(const StepPlan& plan, double duration_s) const;
+  // `sampled`: the windows Duration_s sampled (used if at duration_s).
+  std::string Refusal(const StepPlan& plan, double duration_s, const StepWindows* sampled = nullptr) const;
   /// duration_s, or longer when the joints would move too fast across the
   /// heel strike from the step in force to `next` (StrikeSpeedRatio).
   double StrikeLimitedDuration_s(const StepPlan& next, double duration_s) const;
@@ -149,6 +152,7 @@ class GaitWalker : public Locomotion {
   double initial_achieved_stride_m_ = 0;
   void Start();
   StrideTable stride_table_;
+  StepWindows windows_;  // a step's sampled poses, kept to reuse their buffer
 
   std::unique_ptr<RobotModel> model_;  // stable address: legs_ and planner_ refer into it
   std::unique_ptr<BipedLegs> legs_;

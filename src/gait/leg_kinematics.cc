@@ -346,6 +346,37 @@ Pose BipedLegs::FootPose_P(Side s, const LegAnglesRad& a) const {
   return X_PL;
 }
 
+std::string BipedLegs::Fingerprint() const {
+  std::string bytes;
+  const auto put = [&bytes](const auto& value) {
+    bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+  };
+  const auto put_vec = [&put](const Vec3& v) {
+    for (int i = 0; i < 3; ++i) put(v[i]);
+  };
+  for (int s = 0; s < 2; ++s) {
+    const LegGeometry& g = legs_[s];
+    for (const int i : {g.hip_joint, g.knee_joint, g.ankle_joint, g.foot_link}) put(i);
+    for (const double d : {g.hip_sign, g.knee_sign, g.ankle_sign, g.thigh0_rad, g.shank0_rad, g.thigh_m, g.shank_m,
+                           g.heel_x_m, g.toe_x_m, g.sole_z_m, g.sole_y_m, g.half_width_m, g.toe_top_m, g.heel_top_m,
+                           g.leg_length_m, g.knee_bend})
+      put(d);
+    for (const Vec3& v : {g.p_PH, g.p_L_heel, g.p_L_sole, g.p_L_toe}) put_vec(v);
+    put(chain_[s].size());
+    for (const int j : chain_[s]) {
+      const RobotJoint& joint = model_.joint(j);
+      put(j);
+      put(joint.type);
+      for (int k = 0; k < 16; ++k) put(joint.X_PJ.matrix().data()[k]);
+      put_vec(joint.axis_J);
+      for (const double d : {joint.lower, joint.upper, joint.velocity, q_reference_[j]}) put(d);
+      put(joint.has_limits);
+    }
+  }
+  put(standing_height_m_);
+  return bytes;
+}
+
 const Vec3& BipedLegs::FootPoint_L(Side s, FootPoint which) const {
   const LegGeometry& g = leg(s);
   switch (which) {

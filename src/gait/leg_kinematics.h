@@ -133,6 +133,11 @@ class BipedLegs {
   /// Reads them back.
   LegAnglesRad ReadJoints(Side s, std::span<const double> q) const;
 
+  /// Every number the gait's planning reads from these legs, as bytes: both
+  /// legs' geometry, the reference pose, and each chain joint's frame, axis,
+  /// type and limits. Equal fingerprints plan equal steps (gait/gait_memo.h).
+  std::string Fingerprint() const;
+
  private:
   const RobotModel& model_;
   std::array<LegGeometry, 2> legs_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <limits>
 
 namespace proxsim {
 
@@ -21,19 +22,25 @@ double SoleAboveKnee_m(const BipedLegs& legs, Side s, const LegAnglesRad& a) {
   return std::max(legs.Point(s, a, FootPoint::kHeel).y(), legs.Point(s, a, FootPoint::kToe).y()) - knee_z;
 }
 
+// The speed window in stance phase at a step's duration (p runs over [0, 0.5] in duration_s).
+double SpeedWindow(double duration_s) { return std::min(0.5, 0.5 * kSpeedWindow_s / duration_s); }
+
+// The end of speed window i: from p = window to 0.5.
+double WindowEnd(double window, int i) { return window + (0.5 - window) * i / kStepSafetySamples; }
+
 }  // namespace
 
 std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
-                             double duration_s) {
+                             double duration_s, const StepWindows* sampled) {
   const BipedLegs& legs = planner.legs();
-  // the speed window in stance phase (p runs over [0, 0.5] in duration_s)
-  const double window = std::min(0.5, 0.5 * kSpeedWindow_s / duration_s);
+  const double window = SpeedWindow(duration_s);
+  const bool known = sampled != nullptr && sampled->duration_s == duration_s;
   char text[320];
   for (int i = -1; i <= kStepSafetySamples; ++i) {
-    // p = 0, then the ends of the speed windows [p − window, p] from p = window to 0.5
-    const double p = i < 0 ? 0.0 : window + (0.5 - window) * i / kStepSafetySamples;
-    const StepPose pose = planner.Evaluate(plan, p);
-    const StepPose before = i < 0 ? pose : planner.Evaluate(plan, p - window);
+    // p = 0, then the ends of the speed windows [p − window, p]
+    const double p = i < 0 ? 0.0 : WindowEnd(window, i);
+    const StepPose pose = i >= 0 && known ? sampled->end_start[i].first : planner.Evaluate(plan, p);
+    const StepPose before = i < 0 ? pose : known ? sampled->end_start[i].second : planner.Evaluate(plan, p - window);
     for (const Side side : {plan.stance, plan.swing}) {
       const LegAnglesRad& a = side == plan.stance ? pose.stance : pose.swing;
       const char* role = side == plan.stance ? "stance" : "swing";
@@ -71,15 +78,21 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
 }
 
 double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
-                              double at_least_s) {
+                              double at_least_s, StepWindows* sampled) {
+  StepWindows own;
+  StepWindows& windows = sampled != nullptr ? *sampled : own;
   // the same windows as UnsafeStepReason's: the fastest joint's mean speed
   // over kSpeedWindow_s, relative to its top speed, at duration d
   const auto ratio_at = [&](double d) {
-    const double window = std::min(0.5, 0.5 * kSpeedWindow_s / d);
+    const double window = SpeedWindow(d);
+    windows.duration_s = d;
+    windows.end_start.resize(kStepSafetySamples + 1);
     double ratio = 0;
     for (int i = 0; i <= kStepSafetySamples; ++i) {
-      const double p = window + (0.5 - window) * i / kStepSafetySamples;
-      const StepPose pose = planner.Evaluate(plan, p), before = planner.Evaluate(plan, p - window);
+      const double p = WindowEnd(window, i);
+      auto& [pose, before] = windows.end_start[i];
+      pose = planner.Evaluate(plan, p);
+      before = planner.Evaluate(plan, p - window);
       ratio = std::max(ratio, limits.SpeedRatio(plan.stance, before.stance, pose.stance, 2 * window * d));
       ratio = std::max(ratio, limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
     }
@@ -93,6 +106,8 @@ double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limit
     if (ratio <= kSpeedMargin) break;
     d *= ratio / kSpeedMargin;
   }
+  // the windows held are d's only if the last round sampled d
+  if (windows.duration_s != d) windows.duration_s = std::numeric_limits<double>::quiet_NaN();
   return d;
 }
 

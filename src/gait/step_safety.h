@@ -24,6 +24,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gait/gait_steps.h"
 #include "gait/joint_limits.h"
@@ -42,14 +44,27 @@ constexpr double kSpeedWindow_s = 0.01;
 /// A terrain step slowed for its joints' speeds aims at this fraction of each top speed.
 constexpr double kSpeedMargin = 0.9;
 
+/// The poses of a step that both checks below read at one duration: for
+/// each speed window i in [0, kStepSafetySamples], the pose at its end p_i
+/// and at its start p_i − window. Planning a step evaluates the same ~400
+/// poses for its duration and then for its safety; sampled once, they are
+/// shared (each is StepPlanner::Evaluate's pure answer, so nothing changes).
+struct StepWindows {
+  double duration_s = 0;  ///< the duration they were sampled at; NaN: none
+  std::vector<std::pair<StepPose, StepPose>> end_start;
+};
+
 /// Why the step `plan` lasting duration_s cannot be taken ("" when it can).
+/// `sampled`: the step's windows if known (used when sampled at duration_s).
 std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
-                             double duration_s);
+                             double duration_s, const StepWindows* sampled = nullptr);
 
 /// The shortest duration, at least `at_least_s`, over which the joints of
-/// `plan` stay within kSpeedMargin of their top speeds, s.
+/// `plan` stay within kSpeedMargin of their top speeds, s. `sampled`, if
+/// given, receives the windows it sampled at the duration it returns (or a
+/// NaN duration when its last round did not sample them).
 double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
-                              double at_least_s);
+                              double at_least_s, StepWindows* sampled = nullptr);
 
 /// The fastest joint's mean speed over kSpeedWindow_s across the heel strike
 /// that ends `before` (lasting before_s) and starts `after` (lasting

@@ -6,6 +6,7 @@
 #include "raycast/embree_version.h"
 
 #include <cassert>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -196,7 +197,16 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
   }
 
   for (const auto& geom : body.geoms) {
-    if (geom->kind != GeomKind::kMesh) body.closed_form_geoms.push_back(geom.get());
+    if (geom->kind == GeomKind::kMesh) continue;
+    body.closed_form_geoms.push_back(geom.get());
+    // the shape's bounding sphere about its origin (O is its centre for each kind)
+    double radius_m = std::numeric_limits<double>::infinity();
+    if (const auto* box = std::get_if<Box>(&geom->shape)) radius_m = 0.5 * box->size_m.norm();
+    if (const auto* sphere = std::get_if<Sphere>(&geom->shape)) radius_m = sphere->radius_m;
+    if (const auto* cylinder = std::get_if<Cylinder>(&geom->shape))
+      radius_m = std::hypot(cylinder->radius_m, 0.5 * cylinder->length_m);
+    const Vec3 center_B = geom->X_BO.translation();
+    body.closed_form_spheres_B.emplace_back(center_B.x(), center_B.y(), center_B.z(), radius_m);
   }
 
   // the body's BVH, built once; then its instance in the top-level scenes
@@ -213,6 +223,10 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
   }
   body.bound_center_W = X_WB * body.bound_center_B;
   if (kind == BodyKind::kWorld) {
+    body.world_slot = static_cast<int>(impl.world_bodies.size());
+    impl.world_bodies.push_back(body_index);
+    impl.world_spheres_W.emplace_back(body.bound_center_W.x(), body.bound_center_W.y(), body.bound_center_W.z(),
+                                      body.bound_radius_m);
     body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body_index));
     impl.world_dirty = true;
   } else if (kind == BodyKind::kMoving) {
@@ -235,6 +249,7 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   body.X_WB = X_WB;
   body.R_WB = X_WB.linear().cast<float>();
   body.bound_center_W = X_WB * body.bound_center_B;
+  if (body.world_slot >= 0) impl_->world_spheres_W[body.world_slot].head<3>() = body.bound_center_W;
   float xfm[12];
   ToColumnMajor3x4(X_WB, xfm);
   for (RTCGeometry instance : {body.instance_robot, body.instance_world, body.instance_moving}) {

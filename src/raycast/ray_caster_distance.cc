@@ -126,16 +126,23 @@ RayCaster::NearestSurface RayCaster::NearestToWorld(const Vec3& p_W, std::span<c
   if (!(below_m > 0)) return nearest;
   // the cap is the first best: nothing at or beyond it is measured
   double& best_m = nearest.distance_m;
-  for (const auto& body_ptr : impl_->bodies) {
-    const Body& body = *body_ptr;
-    if (body.kind != BodyKind::kWorld) continue;
+  for (std::size_t w = 0; w < impl_->world_bodies.size(); ++w) {
     // nothing of the body is nearer than its bounding sphere (a margin for rounding)
-    if ((p_W - body.bound_center_W).norm() - body.bound_radius_m > best_m + 1e-9) continue;
+    const Eigen::Vector4d& sphere_W = impl_->world_spheres_W[w];
+    const double reach_m = sphere_W.w() + best_m + 1e-9;
+    if ((p_W - sphere_W.head<3>()).squaredNorm() > reach_m * reach_m) continue;
+    const Body& body = *impl_->bodies[impl_->world_bodies[w]];
     const Vec3 p_B = body.X_WB.inverse() * p_W;
 
     // boxes and analytic shapes: exact closed forms in the shape frame
-    for (const GeomRecord* geom_ptr : body.closed_form_geoms) {
-      const GeomRecord& geom = *geom_ptr;
+    for (std::size_t g = 0; g < body.closed_form_geoms.size(); ++g) {
+      // beyond its bounding sphere by more than the best so far: it cannot
+      // win (nor be a first touch: its distance is > best_m > 0), skip it
+      // before the transform and the closed form (a margin for rounding)
+      const Eigen::Vector4d& sphere_B = body.closed_form_spheres_B[g];
+      const double reach_m = sphere_B.w() + best_m + 1e-9;
+      if ((p_B - sphere_B.head<3>()).squaredNorm() > reach_m * reach_m) continue;
+      const GeomRecord& geom = *body.closed_form_geoms[g];
       if (IsExcluded(geom.object_id, exclude_object_ids)) continue;
       const Vec3 p_O = geom.X_OB * p_B;
       double distance_m = best_m;

@@ -88,11 +88,17 @@ struct Body {
   RTCGeometry instance_moving = nullptr; ///< null for world and robot bodies
   bool has_mesh = false;
   std::vector<const GeomRecord*> closed_form_geoms;  ///< every geom but meshes, for DistanceToWorld
+  // each of those shapes' bounding sphere in B (centre x, y, z, radius;
+  // infinite for a plane), side by side: a distance query skips, without
+  // touching the geom's record or moving the point into O, every shape
+  // farther than its best so far (most of a room's furniture from any point)
+  std::vector<Eigen::Vector4d> closed_form_spheres_B;
   // a sphere holding every geom (from the body's bounds in B; infinite with a
   // plane), so that a distance query skips a body farther than its best so far
   Vec3 bound_center_B = Vec3::Zero();
   double bound_radius_m = std::numeric_limits<double>::infinity();
   Vec3 bound_center_W = Vec3::Zero();  ///< X_WB · bound_center_B, kept with X_WB
+  int world_slot = -1;  ///< a kWorld body's index in Impl::world_bodies and world_spheres_W
   // point-query scenes of this body's meshes without some objects (the
   // ground, say), keyed by the sorted excluded object ids; built on first use
   std::mutex query_scenes_mutex;
@@ -112,6 +118,11 @@ struct RayCaster::Impl {
   RTCScene scene_robot = nullptr;
   RTCScene scene_moving = nullptr;  ///< the kMoving bodies' instances
   std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in the top-level scenes
+  // the kWorld bodies' indices and bounding spheres in W (centre x, y, z,
+  // radius), side by side and kept with their poses: a distance query culls
+  // bodies without touching their records (50 moving boxes: 50 bodies a query)
+  std::vector<int> world_bodies;
+  std::vector<Eigen::Vector4d> world_spheres_W;
   // the world body cast without its instance (see the top of the file), or null
   RTCScene world_direct = nullptr;
   int world_direct_body = -1;

@@ -192,6 +192,20 @@ std::vector<std::string> RobotProblems(const Scenario& scenario) {
   return {};
 }
 
+// The document read, every problem at once.
+Scenario ReadChecked(YamlReader& reader, const YAML::Node& document, const std::string& source) {
+  Scenario scenario = ReadScenario(reader, document, source);
+  if (reader.HasProblems()) {
+    // every problem at once: the robot's (its leg map, its held joints) are
+    // otherwise found only when the simulation is built, after these are fixed
+    std::vector<std::string> problems = reader.Problems();
+    for (const std::string& problem : RobotProblems(scenario))
+      if (std::find(problems.begin(), problems.end(), problem) == problems.end()) problems.push_back(problem);
+    throw InputError(problems);
+  }
+  return scenario;
+}
+
 }  // namespace
 
 Scenario LoadScenarioText(const std::string& yaml_text, const std::string& source) {
@@ -206,17 +220,17 @@ Scenario LoadScenarioText(const std::string& yaml_text, const std::string& sourc
 
   // a generated world: read as the plain scenario `proxsim generate` writes
   if (HasGenerate(document)) document = YAML::Load(GeneratedScenarioText(yaml_text, source));
+  return ReadChecked(reader, document, source);
+}
 
-  Scenario scenario = ReadScenario(reader, document, source);
-  if (reader.HasProblems()) {
-    // every problem at once: the robot's (its leg map, its held joints) are
-    // otherwise found only when the simulation is built, after these are fixed
-    std::vector<std::string> problems = reader.Problems();
-    for (const std::string& problem : RobotProblems(scenario))
-      if (std::find(problems.begin(), problems.end(), problem) == problems.end()) problems.push_back(problem);
-    throw InputError(problems);
+Scenario LoadScenarioNode(YAML::Node document, const std::string& source) {
+  YamlReader reader(source);
+  if (!document.IsDefined() || document.IsNull()) {
+    reader.FailFile("the document is empty; expected a scenario map starting with 'proxsim: 1'");
+    throw InputError(reader.Problems());
   }
-  return scenario;
+  if (HasGenerate(document)) document = GeneratedScenarioNode(document, source);
+  return ReadChecked(reader, document, source);
 }
 
 Scenario LoadScenarioFile(const std::string& path) {

@@ -14,6 +14,10 @@
 #include "scene/scene.h"
 #include "sensors/sensor_spec.h"
 #include "strategy/strategy_config.h"
+
+namespace YAML {
+class Node;
+}
 #include "knowledge/terrain_config.h"
 
 namespace proxsim {
@@ -107,6 +111,11 @@ Scenario LoadScenarioFile(const std::string& path);
 
 /// The same from YAML text; `source` names it in messages and resolves relative paths.
 Scenario LoadScenarioText(const std::string& yaml_text, const std::string& source);
+
+/// The same from a parsed document (a closed-loop study's episode, built as a
+/// node: study/outcome_config.h); messages name `source` without line numbers
+/// for what the document did not bring from a text.
+Scenario LoadScenarioNode(YAML::Node document, const std::string& source);
 
 /// Names of the built-in scenarios ("paper" is the default run).
 std::vector<std::string> BuiltinScenarioNames();

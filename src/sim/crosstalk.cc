@@ -12,10 +12,9 @@ double AngleDeg(const Vec3& a, const Vec3& b) { return RadToDeg(std::acos(std::c
 
 }  // namespace
 
-std::vector<CrossEchoPath> CrossEchoPaths(const SensorSpec& emitter_spec, const PingRays& emitter,
-                                          const SensorSpec& listener_spec, const ListeningSensor& listener) {
-  std::vector<CrossEchoPath> paths;
-  if (!emitter_spec.beam || !listener_spec.beam) return paths;
+std::vector<EchoSource> EchoSources(const SensorSpec& emitter_spec, const PingRays& emitter) {
+  std::vector<EchoSource> sources;
+  if (!emitter_spec.beam) return sources;
   for (std::size_t r = 0; r < emitter.hits.size(); ++r) {
     const Hit& hit = emitter.hits[r];
     const BeamRay& ray = emitter.beam_rays[r];
@@ -23,20 +22,41 @@ std::vector<CrossEchoPath> CrossEchoPaths(const SensorSpec& emitter_spec, const 
     const double out_m = hit.distance_m;
     if (!BeamReaches(emitter_spec.beam, ray.off_axis_deg, out_m)) continue;
     const Vec3& d = emitter.dir_W[r];
-    const Vec3 p_WH = emitter.p_WS + out_m * d;
-    const Vec3 to_listener = listener.p_WS - p_WH;
-    const double back_m = to_listener.norm();
-    if (!(back_m > 0.0)) continue;
     // the echo leaves H around the mirror direction
     const Vec3 n = hit.normal_W.cast<double>().normalized();
-    const Vec3 mirror = d - 2.0 * d.dot(n) * n;
-    if (AngleDeg(mirror, to_listener / back_m) > 2.0 * listener_spec.max_incidence_deg) continue;
+    sources.push_back({out_m, emitter.p_WS + out_m * d, d - 2.0 * d.dot(n) * n});
+  }
+  return sources;
+}
+
+std::vector<CrossEchoPath> CrossEchoPaths(std::span<const EchoSource> sources, const SensorSpec& listener_spec,
+                                          const ListeningSensor& listener) {
+  std::vector<CrossEchoPath> paths;
+  if (!listener_spec.beam) return paths;
+  // the mirror test by its cosine first: only a direction within 1e-9 of the
+  // window's edge takes the exact angle (acos), so each decision is the
+  // angle's, bit for bit, at a dot product's cost
+  const double window_deg = 2.0 * listener_spec.max_incidence_deg;
+  const double cos_window = std::cos(DegToRad(std::min(window_deg, 180.0)));
+  for (const EchoSource& source : sources) {
+    const Vec3 to_listener = listener.p_WS - source.p_WH;
+    const double back_m = to_listener.norm();
+    if (!(back_m > 0.0)) continue;
+    const double cos_mirror = source.mirror_W.dot(to_listener / back_m);
+    if (window_deg < 180.0 && cos_mirror < cos_window - 1e-9) continue;  // surely beyond the window
+    if (!(cos_mirror > cos_window + 1e-9) && AngleDeg(source.mirror_W, to_listener / back_m) > window_deg) continue;
     // and the listener's lobe reaches that far off its axis
     if (!BeamReaches(listener_spec.beam, AngleDeg(listener.axis_W, -to_listener / back_m), back_m)) continue;
-    paths.push_back({out_m + back_m, p_WH});
+    paths.push_back({source.out_m + back_m, source.p_WH});
   }
   std::sort(paths.begin(), paths.end(), [](const CrossEchoPath& a, const CrossEchoPath& b) { return a.path_m < b.path_m; });
   return paths;
+}
+
+std::vector<CrossEchoPath> CrossEchoPaths(const SensorSpec& emitter_spec, const PingRays& emitter,
+                                          const SensorSpec& listener_spec, const ListeningSensor& listener) {
+  if (!emitter_spec.beam || !listener_spec.beam) return {};
+  return CrossEchoPaths(EchoSources(emitter_spec, emitter), listener_spec, listener);
 }
 
 }  // namespace proxsim

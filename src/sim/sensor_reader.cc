@@ -83,6 +83,8 @@ std::vector<double> SensorReader::PingOffsets_s(std::size_t emitter, std::size_t
 }
 
 void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
+  echo_sources_.resize(scenario_.sensors.size());
+  echo_sources_found_.assign(scenario_.sensors.size(), false);
   for (const std::size_t listener : sonars_) {
     const SensorConfig& config = scenario_.sensors[listener];
     SensorSample& out = frame.sensors[listener];
@@ -100,10 +102,14 @@ void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
       if (emitter == listener) continue;
       const std::vector<double> offsets_s = PingOffsets_s(emitter, listener, frame.sample);
       if (offsets_s.empty()) continue;
-      const std::size_t begin = world_.ray_begin(emitter), count = world_.ray_begin(emitter + 1) - begin;
-      const PingRays ping{frame.sensors[emitter].p_WS, std::span(ray_dir_W_).subspan(begin, count),
-                          std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
-      for (const CrossEchoPath& path : CrossEchoPaths(scenario_.sensors[emitter].spec, ping, config.spec, ear)) {
+      if (!echo_sources_found_[emitter]) {
+        const std::size_t begin = world_.ray_begin(emitter), count = world_.ray_begin(emitter + 1) - begin;
+        const PingRays ping{frame.sensors[emitter].p_WS, std::span(ray_dir_W_).subspan(begin, count),
+                            std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
+        echo_sources_[emitter] = EchoSources(scenario_.sensors[emitter].spec, ping);
+        echo_sources_found_[emitter] = true;
+      }
+      for (const CrossEchoPath& path : CrossEchoPaths(echo_sources_[emitter], config.spec, ear)) {
         double arrival_s = std::numeric_limits<double>::infinity();
         for (const double offset_s : offsets_s) {
           const double a_s = offset_s + path.path_m / c_m_s;

@@ -20,6 +20,7 @@
 
 #include "core/parallel.h"
 #include "scenario/scenario.h"
+#include "sim/crosstalk.h"
 #include "sim/sample_frame.h"
 #include "sim/world.h"
 
@@ -67,6 +68,10 @@ class SensorReader {
   std::vector<Echo> echoes_;
   std::vector<Vec3> p_WS_previous_;  // each sensor's origin at the previous sample, for flight_time
   std::vector<std::size_t> sonars_;    // ultrasonic sensors with a beam: they ping and hear each other
+  // ApplyCrosstalk's per-emitter echo sources (sim/crosstalk.h), by sensor;
+  // each found once per sample, on first use (buffers kept across samples)
+  std::vector<std::vector<EchoSource>> echo_sources_;
+  std::vector<bool> echo_sources_found_;
   std::vector<double> last_ping_t_s_;  // each sensor's last ping, s (NaN before the first)
 };
 

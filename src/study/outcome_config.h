@@ -96,4 +96,12 @@ std::string WorldText(const OutcomeStudyConfig& study, std::size_t job);
 std::string RunTextFromWorld(const std::string& world_text, const SensorSet* set, const StrategyChoice* strategy,
                              bool reference);
 
+/// The same two as documents, for running: WorldText is WorldNode written
+/// out, RunTextFromWorld is RunNodeFromWorld written out (the world node is
+/// copied, never changed). An episode run from the node reads the very
+/// values its replay text holds, without writing and parsing the text.
+YAML::Node WorldNode(const OutcomeStudyConfig& study, std::size_t job);
+YAML::Node RunNodeFromWorld(const YAML::Node& world, const SensorSet* set, const StrategyChoice* strategy,
+                            bool reference);
+
 }  // namespace proxsim

@@ -4,6 +4,8 @@
 #include <limits>
 #include <memory>
 
+#include <yaml-cpp/yaml.h>
+
 #include "core/input_error.h"
 #include "sim/simulation.h"
 
@@ -37,19 +39,21 @@ std::string Fingerprint(const OutcomeStudyConfig& study) {
 // one job: the world generated once, the reference walk, then every run
 OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
   const std::string& source = study.families[study.jobs[job].family].source;
-  const std::string world = WorldText(study, job);
+  // the world and each run as documents: the values their replay texts hold
+  // (WorldText, RunScenarioText), never written out and parsed back
+  const YAML::Node world = WorldNode(study, job);
   OutcomeJob result;
   // a generated room has a way through by construction (its free corridor,
   // scene/world_room.cc); elsewhere the reference walk tells, with the first
   // set's sensors (a scenario needs one; without a strategy they steer nothing)
   if (study.families[study.jobs[job].family].kind != "room") {
-    const OutcomeRun reference = RunEpisode(RunTextFromWorld(world, &study.sets.front(), nullptr, true), source);
+    const OutcomeRun reference = RunEpisodeNode(RunNodeFromWorld(world, &study.sets.front(), nullptr, true), source);
     result.way_through = reference.outcome != "refused";
     if (!result.way_through) result.hazard_m = reference.walked_m;
   }
   for (const SensorSet& set : study.sets)
     for (const StrategyChoice& strategy : study.strategies)
-      result.runs.push_back(RunEpisode(RunTextFromWorld(world, &set, &strategy, false), source));
+      result.runs.push_back(RunEpisodeNode(RunNodeFromWorld(world, &set, &strategy, false), source));
   return result;
 }
 
@@ -61,8 +65,11 @@ bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
          run.walked_m >= job.hazard_m - kStopBeforeHazard_m;
 }
 
-OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source) {
-  Simulation sim(LoadScenarioText(scenario_text, source), 1);
+namespace {
+
+// The episode of a loaded scenario, walked to its end.
+OutcomeRun RunLoaded(Scenario scenario) {
+  Simulation sim(std::move(scenario), 1);
   while (!sim.done()) sim.Step();
   OutcomeRun run;
   const Simulation::Outcome outcome = sim.outcome();
@@ -77,6 +84,16 @@ OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& sourc
   const double clearance = sim.robot_outcome().min_clearance_m;
   run.min_clearance_m = std::isfinite(clearance) ? clearance : kNaN;
   return run;
+}
+
+}  // namespace
+
+OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source) {
+  return RunLoaded(LoadScenarioText(scenario_text, source));
+}
+
+OutcomeRun RunEpisodeNode(const YAML::Node& scenario, const std::string& source) {
+  return RunLoaded(LoadScenarioNode(scenario, source));
 }
 
 json OutcomeJobJson(const OutcomeJob& job) {

@@ -54,6 +54,9 @@ OutcomeJob ParseOutcomeJob(const nlohmann::json& metrics, std::size_t runs_per_j
 
 /// One episode of a run's scenario text.
 OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source);
+/// One episode of a run's scenario document (RunNodeFromWorld): the same run
+/// as from its text, without writing and parsing it.
+OutcomeRun RunEpisodeNode(const YAML::Node& scenario, const std::string& source);
 
 /// Runs every job not in the journal; returns the results on rank 0 (and
 /// `is_writer` true there), nothing on the other ranks. Every family's first
