@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "bench/outcome_bench.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_generate.h"
 #include "sim/world.h"
@@ -17,20 +18,11 @@ namespace {
 // A 10 x 10 m room at difficulty 0.5 (seed `seed`), the builtin biped with
 // 8 lasers on its shins and the stop rule: the bench's outcome study's run.
 std::string EpisodeText(int seed) {
-  std::string sensors;
-  int n = 0;
-  for (const char* link : {"left_tibia", "right_tibia"}) {
-    for (const char* yaw_pitch : {"0, 8, 0", "0, 20, 0", "0, 8, 30", "0, 8, -30"}) {
-      sensors += std::string(n == 0 ? "" : ", ") + "{name: l" + std::to_string(n) + ", type: laser, link: " + link +
-                 ", pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [" + yaw_pitch + "]}}";
-      ++n;
-    }
-  }
   return "proxsim: 1\nseed: " + std::to_string(seed) +
          "\nduration_s: 10.0\nrate_hz: 50\nscene: {generate: {kind: room, difficulty: 0.5, seed: " +
          std::to_string(seed) +
          "}}\nrobot:\n  model: builtin:biped\n  gait: {stride_m: 0.6, period_s: 1.2}\n  strategy: {name: stop}\n"
-         "sensors: [" + sensors + "]\n";
+         "sensors: " + proxsim::bench::EightShinLasers() + "\n";
 }
 
 // One whole episode (generate, load, build, walk to its end) per iteration,

@@ -31,8 +31,21 @@ constexpr const char* kBase =
     "proxsim: 1\nseed: 1\nduration_s: 10.0\nrate_hz: 50\nscene: {builtin: empty}\n"
     "robot:\n  model: builtin:biped\n  gait: {stride_m: 0.6, period_s: 1.2}\n";
 
-// 8 lasers: on each shin, straight ahead and yawed ±15° and ±30° at two pitches
-std::string EightLasers() {
+
+std::string WriteStudy(const fs::path& dir, const std::string& name, int rooms) {
+  fs::create_directories(dir);
+  std::ofstream(dir / "walker.yaml") << kBase;
+  const fs::path path = dir / name;
+  std::ofstream(path) << "proxsim_study: 1\nmode: outcomes\nbase: walker.yaml\n"
+                      << "sets: [{name: eight_lasers, sensors: " << EightShinLasers() << "}]\n"
+                      << "strategies: [{name: stop}]\n"
+                      << "worlds: {generate: {kind: room, difficulty: 0.5}, seeds: {from: 1, to: " << rooms << "}}\n";
+  return path.string();
+}
+
+}  // namespace
+
+std::string EightShinLasers() {
   std::string sensors;
   int n = 0;
   for (const char* link : {"left_tibia", "right_tibia"}) {
@@ -44,19 +57,6 @@ std::string EightLasers() {
   }
   return "[" + sensors + "]";
 }
-
-std::string WriteStudy(const fs::path& dir, const std::string& name, int rooms) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "walker.yaml") << kBase;
-  const fs::path path = dir / name;
-  std::ofstream(path) << "proxsim_study: 1\nmode: outcomes\nbase: walker.yaml\n"
-                      << "sets: [{name: eight_lasers, sensors: " << EightLasers() << "}]\n"
-                      << "strategies: [{name: stop}]\n"
-                      << "worlds: {generate: {kind: room, difficulty: 0.5}, seeds: {from: 1, to: " << rooms << "}}\n";
-  return path.string();
-}
-
-}  // namespace
 
 nlohmann::json OutcomesSection(bool quick, const std::string& tmp) {
   nlohmann::json section;

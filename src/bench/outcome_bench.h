@@ -12,6 +12,10 @@
 
 namespace proxsim::bench {
 
+/// The section's sensor set as a YAML flow list: 8 lasers, on each shin
+/// straight ahead and yawed ±30° at two pitches (the micro-benchmark's too).
+std::string EightShinLasers();
+
 /// `tmp`: a scratch folder; `quick`: fewer rooms.
 nlohmann::json OutcomesSection(bool quick, const std::string& tmp);
 
