@@ -388,7 +388,9 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   // turning on short steps the feet move at most a step from where they are
   // before a stop takes effect: the stop looks that far (the swing's reach),
   // not stop_distance_m along a heading the robot is turning away from
-  const bool turning_on_short_steps = reach_stride_m > 0 && reach_stride_m <= kTurningStride_m;
+  // (the short steps are Pace's turning steps only when the gait's own stride is longer)
+  const bool turning_on_short_steps =
+      reach_stride_m > 0 && reach_stride_m <= kTurningStride_m && stride_m_ > kTurningStride_m;
   const double look_ahead_m = turning_on_short_steps ? reach_m : std::max(config_.stop_distance_m, reach_m);
   if (const auto p_W = PointInTheWay(observation, walking_W, look_ahead_m, own_width_m)) {
     robot.Stop();
