@@ -77,14 +77,17 @@ std::string Edited(const std::string& example, const std::vector<std::pair<std::
 }
 
 // Where each foot stood flat, in order: its link's positions held still over
-// two samples (x, z), a new one when it moved more than 1 mm.
+// two samples (x, z) with the foot level (a foot rising off a riser pauses in
+// the air, pitched), a new one when it moved more than 1 mm.
 std::vector<Vec3> Footholds(const Csv& poses, const std::string& foot) {
   std::vector<Vec3> held;
   Vec3 last = Vec3::Constant(NAN);
   for (const auto& row : poses.rows) {
     if (row.at("link") != foot) continue;
     const Vec3 p(std::stod(row.at("x")), std::stod(row.at("y")), std::stod(row.at("z")));
-    if ((p - last).cwiseAbs().maxCoeff() < 1e-9 && (held.empty() || (p - held.back()).norm() > 1e-3)) held.push_back(p);
+    const bool level = std::abs(std::stod(row.at("qy"))) < 1e-6;
+    if (level && (p - last).cwiseAbs().maxCoeff() < 1e-9 && (held.empty() || (p - held.back()).norm() > 1e-3))
+      held.push_back(p);
     last = p;
   }
   return held;

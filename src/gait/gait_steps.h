@@ -168,8 +168,10 @@ class StepPlanner {
   // Plans the foothold of a finished flat-floor plan on the terrain and makes
   // it a terrain step when it has to be; p_WP_strike: the pelvis at heel strike.
   void PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing, const Vec3& p_WP_strike) const;
-  // Makes `plan` a terrain step landing on `foothold`.
-  void FinishTerrain(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile,
+  // Makes `plan` a terrain step landing on `foothold`. Returns whether the
+  // swing's shank, not its sole, kept it from clearing the ground (a foothold
+  // further along the same tread may then clear it).
+  bool FinishTerrain(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile,
                      const Vec3& p_WP_strike) const;
   // A terrain step's stance leg at p: two-link IK from its pivot to the pelvis ramp.
   LegAnglesRad TerrainStanceAngles(const StepPlan& plan, double p) const;

@@ -9,8 +9,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "gait/gait_steps.h"
+#include "gait/shank_clearance.h"
 #include "gait/step_safety.h"
 
 namespace proxsim {
@@ -200,11 +202,21 @@ void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing
   const std::size_t to = profile.SegmentAt(foothold.s_heel_m + sole_m);
   const bool sweep_level = from == to && profile.segments()[from].z_m <= plan->floor_z_m + kSameLevel_m;
   if (plan->natural_landing && stance_from_natural_landing && sweep_level) return;
-  FinishTerrain(plan, Foothold{.found = true, .s_heel_m = foothold.s_heel_m, .z_m = z_landing, .segment = foothold.segment, .reason = {}},
-                profile, p_WP_strike);
+  const StepPlan unfinished = *plan;
+  Foothold landing{.found = true, .s_heel_m = foothold.s_heel_m, .z_m = z_landing, .segment = foothold.segment, .reason = {}};
+  if (!FinishTerrain(plan, landing, profile, p_WP_strike)) return;
+  // the shank would strike the edge of the tread the foot leaves (a foot landing
+  // just past that edge, its shank leaning back over it): the heel as far
+  // along its tread as the sole fits, if that is further
+  const double s_heel_last_m = profile.segments()[foothold.segment].s_end_m - limits_.margin_m - sole_m;
+  if (s_heel_last_m <= landing.s_heel_m) return;
+  StepPlan further = unfinished;
+  landing.s_heel_m = s_heel_last_m;
+  FinishTerrain(&further, landing, profile, p_WP_strike);
+  if (further.cannot_step.empty()) *plan = std::move(further);
 }
 
-void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile,
+bool StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile,
                                 const Vec3& p_WP_strike) const {
   const LegGeometry& sg = legs_.leg(plan->swing);
   plan->terrain = true;
@@ -237,7 +249,7 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
   if (std::abs(ds) >= natural_reach) {
     std::snprintf(text, sizeof text, "the foothold %.2f m ahead is beyond the legs' reach", foothold.s_heel_m);
     plan->cannot_step = text;
-    return;
+    return false;
   }
   double lower = std::min(0.0, foothold.z_m - plan->floor_z_m);
   lower = std::min(lower, ankle_land.y() + std::sqrt(natural_reach * natural_reach - ds * ds) - hip_H.y());
@@ -255,7 +267,7 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
                   "(at most %.0f deg)", rise >= 0 ? "up" : "down", std::abs(rise), foothold.s_heel_m, RadToDeg(knee),
                   RadToDeg(kMaxKneeFlexion_rad));
     plan->cannot_step = text;
-    return;
+    return false;
   }
 
   // the swing arc: from where the planted foot leaves it at toe-off to the landing
@@ -294,14 +306,15 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
     const auto [last_heel, last_toe] = SoleEnds(last_ankle, last_pitch, sole);
     return std::max(std::abs(heel.x() - last_heel.x()), std::abs(toe.x() - last_toe.x()));
   };
-  std::array<Pose, kSwingChecks> X_WP_at;
-  for (int j = 1; j < kSwingChecks; ++j) X_WP_at[j] = StancePelvis(*plan, phase(j), TerrainStanceAngles(*plan, phase(j)));
+  std::array<Pose, kSwingChecks + 1> X_WP_at;
+  for (int j = 1; j <= kSwingChecks; ++j) X_WP_at[j] = StancePelvis(*plan, phase(j), TerrainStanceAngles(*plan, phase(j)));
   // sizes the lift of an arc: on the arc itself, then on what the legs' IK
   // makes of it; returns the sole's worst deficit below its clearance and its
   // highest lowest point above the highest ground of the sweep (what
   // UnsafeStepReason caps at kMaxLiftAboveGround_m)
   struct Sized {
     double worst = 0, peak_above_m = 0;
+    double shank_worst = 0;  // the part of `worst` the shank's outline sets (gait/shank_clearance.h)
   };
   const auto size_lift = [&](SwingArc* arc) {
     plan->swing_arc = *arc;  // SwingPitch reads the plan's arc
@@ -327,16 +340,26 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
       last_ankle = arc->start;
       last_pitch = SwingPitch(*plan, phase(0));
       plan->swing_arc = *arc;  // ArcAnkle reads the plan's arc
-      for (int j = 1; j < kSwingChecks; ++j) {
+      // (the sole up to just before it lands on its own tread; the shank at the landing too)
+      for (int j = 1; j <= kSwingChecks; ++j) {
         const double u = static_cast<double>(j) / kSwingChecks;
         const LegAnglesRad a = legs_.PitchWithinAnkleLimits(
             plan->swing, legs_.SolveAnkle(plan->swing, ArcAnkle(*plan, phase(j), X_WP_at[j]), SwingPitch(*plan, phase(j))));
         const double pitch = a.pitch;  // the foot's pitch as Evaluate tilts it
         const Vec2xz a_P = legs_.Ankle(plan->swing, a);
         const Vec2 ankle_H = ToH(*plan, X_WP_at[j].translation()) + Vec2(a_P.x(), a_P.y());
-        const double deficit = SoleDeficit(profile, ankle_H, pitch, sole, kSwingClearance_m, own_from, own_to,
-                                           moved(ankle_H, pitch, last_ankle, last_pitch));
+        const double sole_deficit =
+            j == kSwingChecks ? -std::numeric_limits<double>::infinity()
+                              : SoleDeficit(profile, ankle_H, pitch, sole, kSwingClearance_m, own_from, own_to,
+                                            moved(ankle_H, pitch, last_ankle, last_pitch));
+        // the shank too: it leans back over the edge a descending foot has just passed
+        std::vector<Vec2> shank_H = legs_.ShankHull(plan->swing, a);
+        const Vec2 pelvis_H = ToH(*plan, X_WP_at[j].translation());
+        for (Vec2& p : shank_H) p += pelvis_H;
+        const double shank_deficit = ShankDeficit(profile, shank_H, kShankClearance_m);
+        const double deficit = std::max(sole_deficit, shank_deficit);
         sized.worst = std::max(sized.worst, deficit);
+        sized.shank_worst = std::max(sized.shank_worst, shank_deficit);
         const auto [heel, toe] = SoleEnds(ankle_H, pitch, sole);
         sized.peak_above_m = std::max(sized.peak_above_m, std::min(heel.y(), toe.y()) - plan->highest_ground_z_m);
         if (deficit > kClearanceSlack_m) more = std::max(more, deficit / std::max(SwingArc::LiftShape(u), kLiftShapeFloor));
@@ -371,10 +394,16 @@ void StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
   }
   plan->swing_arc = best;
   if (!clears(best_sized)) {
-    std::snprintf(text, sizeof text, "the swing foot cannot clear the ground on its way to the foothold %.2f m ahead "
-                  "(%.0f mm short)", foothold.s_heel_m, 1e3 * best_sized.worst);
+    if (best_sized.shank_worst >= best_sized.worst)
+      std::snprintf(text, sizeof text, "the swing shank cannot clear the ground on its way to the foothold %.2f m "
+                    "ahead (%.0f mm short): it would strike an edge", foothold.s_heel_m, 1e3 * best_sized.worst);
+    else
+      std::snprintf(text, sizeof text, "the swing foot cannot clear the ground on its way to the foothold %.2f m "
+                    "ahead (%.0f mm short)", foothold.s_heel_m, 1e3 * best_sized.worst);
     plan->cannot_step = text;
+    return best_sized.shank_worst >= best_sized.worst;
   }
+  return false;
 }
 
 double DefaultMaxStep_m(const BipedLegs& legs, double k) {

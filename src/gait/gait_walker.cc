@@ -174,7 +174,7 @@ std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s, const S
 void GaitWalker::NoteCannotStep(const std::string& reason) {
   if (reason == last_cannot_step_) return;
   last_cannot_step_ = reason;
-  events_.push_back({"cannot_step", reason});
+  events_.push_back({"cannot_step", reason, std::nullopt});
 }
 
 void GaitWalker::Start() {

@@ -9,6 +9,7 @@
 
 #include "core/input_error.h"
 #include "core/nearest_key.h"
+#include "gait/shank_clearance.h"
 #include "scene/shape_points.h"
 
 namespace proxsim {
@@ -196,6 +197,20 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
       problems.push_back(source + ": " + key + text);
     }
 
+    // the shank: the links below the knee joint and above the ankle joint,
+    // in its own frame (a rotation keeps the hull convex and counter-clockwise)
+    {
+      const std::vector<int> below_ankle = Subtree(m, m.joint(g.ankle_joint).child_link);
+      std::vector<Vec3> points_P;
+      for (const int link : Subtree(m, m.joint(g.knee_joint).child_link))
+        if (std::find(below_ankle.begin(), below_ankle.end(), link) == below_ankle.end())
+          AddLinkPoints_P(m, link, X_PL, &points_P);
+      std::vector<Vec2xz> points_S;
+      for (const Vec3& p : points_P)
+        points_S.push_back(RotateSagittal(-g.shank0_rad, Vec2xz(p.x() - p_P[1].x(), p.z() - p_P[1].z())));
+      g.shank_hull_S = ConvexHull2(std::move(points_S));
+    }
+
     // the sole: the lowest points of the foot and what hangs from it
     const std::vector<int> foot_links = Subtree(m, g.foot_link);
     feet_subtrees.insert(feet_subtrees.end(), foot_links.begin(), foot_links.end());
@@ -285,6 +300,15 @@ Vec2xz BipedLegs::Ankle(Side s, const LegAnglesRad& a) const {
   const LegGeometry& g = leg(s);
   const Vec2xz hip(g.p_PH.x(), g.p_PH.z());
   return hip + RotateSagittal(a.hip, {0, -g.thigh_m}) + RotateSagittal(a.hip - a.knee, {0, -g.shank_m});
+}
+
+std::vector<Vec2xz> BipedLegs::ShankHull(Side s, const LegAnglesRad& a) const {
+  const LegGeometry& g = leg(s);
+  const Vec2xz knee = Vec2xz(g.p_PH.x(), g.p_PH.z()) + RotateSagittal(a.hip, {0, -g.thigh_m});
+  std::vector<Vec2xz> hull;
+  hull.reserve(g.shank_hull_S.size());
+  for (const Vec2xz& p_S : g.shank_hull_S) hull.push_back(knee + RotateSagittal(a.hip - a.knee, p_S));
+  return hull;
 }
 
 Vec2xz BipedLegs::FootOffset(Side s, FootPoint which) const {

@@ -68,6 +68,11 @@ struct LegGeometry {
   /// +1: the knee's URDF limits let it flex (knee > 0, the lower end moving
   /// back, as a human knee); −1: they let it bend the other way only
   double knee_bend = 1;
+  /// The shank's links (from the knee joint down to the ankle joint) as one
+  /// convex outline in the sagittal plane, counter-clockwise, in the shank's
+  /// own frame: origin at the knee, the knee → ankle segment pointing down
+  /// (gait/shank_clearance.h).
+  std::vector<Vec2xz> shank_hull_S;
 };
 
 /// Where a foot touches: heel edge, sole point under the ankle, toe edge.
@@ -101,6 +106,8 @@ class BipedLegs {
   Vec2xz Ankle(Side s, const LegAnglesRad& a) const;
   /// A foot point in P (sagittal plane).
   Vec2xz Point(Side s, const LegAnglesRad& a, FootPoint which) const;
+  /// The shank's outline (LegGeometry::shank_hull_S) in P (sagittal plane).
+  std::vector<Vec2xz> ShankHull(Side s, const LegAnglesRad& a) const;
   /// Lowest z of the sole's heel and toe, in P.
   double LowestSoleZ(Side s, const LegAnglesRad& a) const;
   /// Hip and knee putting the ankle at p_PA with the given foot pitch, on the
