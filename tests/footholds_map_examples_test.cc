@@ -28,6 +28,8 @@ using testing::ReadFile;
 using testing::RunProxsim;
 
 constexpr double kFirstRiser_x_m = 1.0;  // builtin_scenes.cc: floor_stair_up_1 starts here
+constexpr double kGapNear_x_m = 6.5;     // the course's wide gap: x 6.5 .. 7.1
+constexpr double kToeAheadOfAnkle_m = 0.2;  // biped.urdf: the foot's box, 0.26 m from 0.07 m ahead of the ankle
 
 struct ExampleRun {
   std::string output;
@@ -141,6 +143,35 @@ TEST(FootholdsMapExamples, ThePapersSingleTibiaLaserWalksIntoTheFirstRiser) {
   EXPECT_NEAR(first["p_W"][0].get<double>(), kFirstRiser_x_m, 0.05);
   std::printf("[ measured ] the paper's tibia laser: %s at %.2f s: %s\n", run.robot["outcome"].get<std::string>().c_str(),
               run.robot["outcome_t_s"].get<double>(), run.robot["outcome_detail"].get<std::string>().c_str());
+}
+
+TEST(FootholdsMapExamples, SeeingTheWideGapItStandsBeforeItWhateverUnsafeStepsSays) {
+  // the same robot and sensors on the course past its small hole (from x =
+  // 5.4 m): the 0.6 m gap at x = 6.5 .. 7.1 is in its map before it gets
+  // there; its gait, planning on that map, finds no step across, and the robot
+  // stands — its own judgement from its readings, not a fall, though
+  // unsafe_steps is the default `fall`
+  const ExampleRun run =
+      RunFile(WriteScenario("footholds_gap", Edited("stairs_footholds_map", {{"xyz_m: [0, 0, 0]", "xyz_m: [5.4, 0, 0]"},
+                                                                             {"[[0, 0], [4.6, 0]]", "[[5.4, 0], [8.5, 0]]"},
+                                                                             {"duration_s: 18.0", "duration_s: 6.0"}})),
+              "footholds_gap");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.robot["outcome"], "stopped") << run.robot["outcome_detail"];
+  EXPECT_EQ(run.robot["stop_reason"], "own_map");
+  EXPECT_TRUE(run.robot["collisions"].empty());
+  EXPECT_TRUE(run.robot["fall"].is_null()) << run.robot["fall"].dump();
+  const std::string why = run.EventDetail("cannot_step");
+  EXPECT_NE(why.find("a gap of 0.59 m"), std::string::npos) << why;  // as its 12 mm cells place the edges
+  EXPECT_NE(run.output.find("standing before a step its own map shows it cannot take"), std::string::npos) << run.output;
+  for (const char* foot : {"left_foot", "right_foot"}) {
+    const std::vector<Vec3> held = Footholds(run.poses, foot);
+    ASSERT_FALSE(held.empty()) << foot;
+    EXPECT_LT(held.back().x() + kToeAheadOfAnkle_m, kGapNear_x_m) << foot;
+  }
+  std::printf("[ measured ] the map-fed robot before the wide gap: %s at %.2f s: %s\n",
+              run.robot["outcome"].get<std::string>().c_str(), run.robot["outcome_t_s"].get<double>(),
+              run.robot["outcome_detail"].get<std::string>().c_str());
 }
 
 TEST(FootholdsMapExamples, ABlindRobotFallsWhereTheGroundIsLowerThanItStepped) {

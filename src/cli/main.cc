@@ -173,6 +173,7 @@ int Run(const std::string& scenario_path, const std::string& out_dir, const std:
       std::snprintf(at, sizeof at, " at t = %.2f s", r["stop_t_s"].get<double>());
       motion = reason == "strategy"      ? std::string("stopped by its strategy") + at
                : reason == "cannot_step" ? std::string("standing before a step its legs cannot take (cannot_step") + at + ")"
+               : reason == "own_map"     ? std::string("standing before a step its own map shows it cannot take") + at
                                          : std::string("standing at the end of its path since ") + (at + 4);
     }
     std::printf("  robot: walked %.2f m, %s, min clearance %s m\n", r["distance_walked_m"].get<double>(), motion.c_str(),

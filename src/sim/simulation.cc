@@ -175,6 +175,7 @@ void Simulation::Reset(std::uint64_t seed) {
   stop_pending_ = false;
   walking_since_t_s_ = 0;
   cannot_step_t_s_ = -std::numeric_limits<double>::infinity();
+  cannot_step_detail_.clear();
   events_.clear();
   state_ = RobotState{};
   // (the map first: a gait planning on it plans its first step as it starts afresh)
@@ -227,13 +228,17 @@ const SampleFrame& Simulation::TakeSample() {
       }
       if (event.event == "cannot_step") {
         cannot_step_t_s_ = frame_.t_s;
-        unsafe_step = event.detail;
+        cannot_step_detail_ = event.detail;
         // under unsafe_steps: fall the step is taken, not refused: the fall is the event
-        if (scenario_.robot && scenario_.robot->unsafe_steps == UnsafeSteps::kFall) continue;
+        // (unless the gait plans on its own map: then the map said so, and the robot stands)
+        if (UnsafeStepsFall()) {
+          unsafe_step = event.detail;
+          continue;
+        }
       }
       event_log_->Log(std::move(event.event), std::move(event.detail));
     }
-    if (!unsafe_step.empty() && scenario_.robot && scenario_.robot->unsafe_steps == UnsafeSteps::kFall) Fall(unsafe_step);
+    if (!unsafe_step.empty()) Fall(unsafe_step);
     robot->Place(state_);
     world_->caster().Commit();
     frame_.robot = {.present = true,
@@ -396,9 +401,19 @@ Simulation::Outcome Simulation::outcome() const {
   if (outcome_.fell) return {"fell", outcome_.end_t_s, outcome_.end_detail};
   if (outcome_.reached_goal) return {"reached_goal", outcome_.reached_goal_t_s, "reached the path's last waypoint"};
   if (outcome_.stopped && outcome_.stop_reason == "strategy") return {"stopped", outcome_.stop_t_s, "stopped by its strategy, standing"};
+  if (outcome_.stopped && outcome_.stop_reason == "own_map") {
+    std::string detail = "standing before a step its own map shows it cannot take (footholds: map): ";
+    detail += cannot_step_detail_;
+    return {"stopped", outcome_.stop_t_s, detail};
+  }
   if (outcome_.stopped && outcome_.stop_reason == "cannot_step")
     return {"refused", outcome_.stop_t_s, "standing before a step its legs cannot take (unsafe_steps: refuse)"};
   return {"time_up", frame_.t_s, "the episode's time ran out"};
+}
+
+bool Simulation::UnsafeStepsFall() const {
+  return scenario_.robot && scenario_.robot->unsafe_steps == UnsafeSteps::kFall &&
+         scenario_.robot->footholds != Footholds::kMap;
 }
 
 void Simulation::UpdateStanding() {
@@ -411,8 +426,9 @@ void Simulation::UpdateStanding() {
   if (outcome_.stopped) return;  // standing since an earlier sample
   outcome_.stopped = true;
   outcome_.stop_t_s = frame_.t_s;
+  const bool own_map = scenario_.robot && scenario_.robot->footholds == Footholds::kMap;
   outcome_.stop_reason = stop_pending_                           ? "strategy"
-                         : cannot_step_t_s_ >= walking_since_t_s_ ? "cannot_step"
+                         : cannot_step_t_s_ >= walking_since_t_s_ ? (own_map ? "own_map" : "cannot_step")
                                                                   : "end_of_path";
   if (stop_pending_) {
     char detail[160];

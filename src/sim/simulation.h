@@ -111,8 +111,9 @@ class Simulation {
     double stop_request_t_s = 0;   ///< when a stop was first commanded
     /// Standing still at the last sample, and since when, and why: `strategy`
     /// (a stop command not resumed), `cannot_step` (the legs stood before a
-    /// step they cannot take) or `end_of_path` (the path or the trajectory
-    /// ended). At the end of an episode: standing still for good.
+    /// step they cannot take), `own_map` (the gait, planning on the robot's
+    /// own map, found no step it can take there) or `end_of_path` (the path
+    /// or the trajectory ended). At the end of an episode: standing still for good.
     bool stopped = false;
     double stop_t_s = 0;
     std::string stop_reason;
@@ -169,6 +170,11 @@ class Simulation {
   void UpdateContacts(const std::vector<Contact>& contacts);
   // an unsafe step under unsafe_steps: fall, or a landing that cannot stand
   void Fall(const std::string& reason, const std::optional<Vec3>& p_W = std::nullopt);
+  // Whether a step the gait refuses is taken, and the robot falls
+  // (unsafe_steps: fall), rather than stood before: never when the gait plans
+  // on the robot's own map (footholds: map) — the refusal is then the robot's
+  // own judgement of what it saw, and it stands.
+  bool UnsafeStepsFall() const;
   void FillObservation();
   StrategySetup MakeSetup() const;
   std::unique_ptr<TerrainMap> MakeTerrainMap() const;
@@ -206,6 +212,7 @@ class Simulation {
   bool stop_pending_ = false;         // a stop command not resumed since
   double walking_since_t_s_ = 0;      // when the robot last started walking
   double cannot_step_t_s_ = -std::numeric_limits<double>::infinity();  // the last cannot_step event
+  std::string cannot_step_detail_;                                      // and its reason
 };
 
 }  // namespace proxsim
