@@ -65,11 +65,14 @@ void TerrainArchive::AddTrackPoint(const TrackPoint& point) {
   track_tail_.clear();
 }
 
-std::vector<TrackPoint> TerrainArchive::Track() const {
-  std::vector<TrackPoint> track(track_file_.size() / sizeof(TrackPoint));
-  if (!track.empty()) track_file_.ReadAt(0, track.data(), track.size() * sizeof(TrackPoint));
-  track.insert(track.end(), track_tail_.begin(), track_tail_.end());
-  return track;
+void TerrainArchive::ForEachTrackPoint(const std::function<void(const TrackPoint&)>& visit) const {
+  // the file holds whole chunks of kTrackChunk points
+  std::vector<TrackPoint> chunk(kTrackChunk);
+  for (std::uint64_t at = 0; at < track_file_.size(); at += sizeof chunk[0] * kTrackChunk) {
+    track_file_.ReadAt(at, chunk.data(), sizeof chunk[0] * kTrackChunk);
+    for (const TrackPoint& point : chunk) visit(point);
+  }
+  for (const TrackPoint& point : track_tail_) visit(point);
 }
 
 std::vector<Hazard> TerrainArchive::Hazards() const {
