@@ -15,7 +15,6 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -75,8 +74,14 @@ class TerrainArchive : public TrackReader {
   CellBox retired_bounds_;
   std::size_t retired_tiles_ = 0;
   Vec2 octomap_rolled_at_W_ = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
-  // where each retired tile's cells are in tiles_, by tile row then column (built at the first ReadRow)
-  mutable std::map<std::int32_t, std::map<std::int32_t, std::uint64_t>> tile_index_;
+  // where each retired tile's last cells are in tiles_, sorted by tile row
+  // then column (built at the first ReadRow; 16 bytes a tile)
+  struct TileSlot {
+    std::int32_t ty = 0, tx = 0;
+    std::uint64_t at = 0;
+  };
+  mutable std::vector<TileSlot> tile_index_;
+  static bool TileOrder(const TileSlot& a, const TileSlot& b);
   mutable bool indexed_ = false;
 };
 
