@@ -25,10 +25,10 @@ measure() {
   rm -rf "$out"
   /usr/bin/time -v "$binary" run "$1" --out "$out" --no-report 2>"$log" >/dev/null &
   pid=$!
-  # /usr/bin/time's child is proxsim: its high-water mark until the walk's end
+  # /usr/bin/time's one child is proxsim: its high-water mark until the walk's end
   while kill -0 "$pid" 2>/dev/null; do
     local child
-    child="$(pgrep -P "$pid" -x proxsim || true)"
+    child="$(pgrep -P "$pid" | head -n 1 || true)"
     if [ -n "$child" ] && [ ! -e "$out/readings.csv" ]; then
       hwm="$(awk '/^VmHWM:/ {print $2}' "/proc/$child/status" 2>/dev/null || true)"
       [ -n "$hwm" ] && walk_kb="$hwm"
