@@ -314,9 +314,8 @@ TEST(TerrainScoreTest, CountsTheBoundsThatPutTheSurfaceLowerThanTheTruthByMoreTh
     box.Expand(CellIndex{key.first, key.second});
   }
   ASSERT_GT(below, 10u);
-  const std::vector<TrackPoint> track = archive.Track();
-  const Corridor corridor(track, map.last_position(), 0.02);
-  TerrainScorer scorer(map, track, archive.Hazards(), archive.truth_ceiling_z_m(), corridor);
+  const Corridor corridor(archive, map.last_position(), 0.02);
+  TerrainScorer scorer(map, archive, archive.Hazards(), archive.truth_ceiling_z_m(), corridor);
   // the truth: a flat surface at z = 0 under every cell
   const std::vector<float> flat(static_cast<std::size_t>(box.nx()), 0.0f);
   std::vector<const TerrainCell*> cells(flat.size());

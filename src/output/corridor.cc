@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace proxsim {
 
@@ -23,19 +24,22 @@ double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
 
 }  // namespace
 
-Corridor::Corridor(const std::vector<TrackPoint>& track, const TrackPoint& last, double resolution_m,
+Corridor::Corridor(const TrackReader& track, const TrackPoint& last, double resolution_m,
                    double half_width_m, double ahead_m)
     : resolution_m_(resolution_m), half_width_m_(half_width_m) {
-  if (track.empty()) return;
   // the path walked, in chords
-  Vec2 from = track.front().p_W_pelvis;
-  MarkSegment(from, from);
-  for (const TrackPoint& point : track) {
-    if ((point.p_W_pelvis - from).norm() < kChord_m) continue;
-    MarkSegment(from, point.p_W_pelvis);
+  std::optional<Vec2> from;
+  track.ForEachTrackPoint([&](const TrackPoint& point) {
+    if (!from) {
+      from = point.p_W_pelvis;
+      MarkSegment(*from, *from);
+    }
+    if ((point.p_W_pelvis - *from).norm() < kChord_m) return;
+    MarkSegment(*from, point.p_W_pelvis);
     from = point.p_W_pelvis;
-  }
-  MarkSegment(from, last.p_W_pelvis);
+  });
+  if (!from) return;  // no track
+  MarkSegment(*from, last.p_W_pelvis);
   // and the stretch ahead
   MarkSegment(last.p_W_pelvis, last.p_W_pelvis + ahead_m * last.heading_W);
 }

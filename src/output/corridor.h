@@ -14,6 +14,7 @@
 
 #include "knowledge/elevation_grid.h"
 #include "knowledge/terrain_map.h"
+#include "output/track_reader.h"
 
 namespace proxsim {
 
@@ -22,7 +23,8 @@ class Corridor {
   static constexpr double kHalfWidth_m = 0.3;  ///< the issue's ±0.3 m
   static constexpr double kAhead_m = 2.0;      ///< and 2 m ahead
 
-  Corridor(const std::vector<TrackPoint>& track, const TrackPoint& last, double resolution_m,
+  /// `track`: the path walked, streamed once; `last`: where the robot is at the end.
+  Corridor(const TrackReader& track, const TrackPoint& last, double resolution_m,
            double half_width_m = kHalfWidth_m, double ahead_m = kAhead_m);
 
   bool Contains(CellIndex c) const;

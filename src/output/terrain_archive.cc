@@ -65,12 +65,17 @@ void TerrainArchive::AddTrackPoint(const TrackPoint& point) {
   track_tail_.clear();
 }
 
-std::vector<TrackPoint> TerrainArchive::Track() const {
-  std::vector<TrackPoint> track(track_file_.size() / sizeof(TrackPoint));
-  if (!track.empty()) track_file_.ReadAt(0, track.data(), track.size() * sizeof(TrackPoint));
-  track.insert(track.end(), track_tail_.begin(), track_tail_.end());
-  return track;
+void TerrainArchive::ForEachTrackPoint(const std::function<void(const TrackPoint&)>& visit) const {
+  // the file holds whole chunks of kTrackChunk points
+  std::vector<TrackPoint> chunk(kTrackChunk);
+  for (std::uint64_t at = 0; at < track_file_.size(); at += sizeof chunk[0] * kTrackChunk) {
+    track_file_.ReadAt(at, chunk.data(), sizeof chunk[0] * kTrackChunk);
+    for (const TrackPoint& point : chunk) visit(point);
+  }
+  for (const TrackPoint& point : track_tail_) visit(point);
 }
+
+bool TerrainArchive::TileOrder(const TileSlot& a, const TileSlot& b) { return a.ty != b.ty ? a.ty < b.ty : a.tx < b.tx; }
 
 std::vector<Hazard> TerrainArchive::Hazards() const {
   std::vector<Hazard> hazards = retired_hazards_;
@@ -96,25 +101,31 @@ void TerrainArchive::ReadRow(std::int32_t iy, std::int32_t ix_min, std::size_t n
   for (std::size_t k = 0; k < n; ++k) cells[k] = grid.Find({ix_min + static_cast<std::int32_t>(k), iy});
   if (retired_tiles_ == 0) return;
   if (!indexed_) {
-    // the last record of a tile is its last state
+    // every record, then the last of each tile (its last state): the records are in the order written
     tile_index_.clear();
     for (std::uint64_t at = 0; at < tiles_.size(); at += kTileRecord) {
       TileHeader header;
       tiles_.ReadAt(at, &header, sizeof header);
-      tile_index_[header.ty][header.tx] = at;
+      tile_index_.push_back({header.ty, header.tx, at});
     }
+    std::stable_sort(tile_index_.begin(), tile_index_.end(), TileOrder);
+    const auto last_of_each = std::unique(tile_index_.rbegin(), tile_index_.rend(), [](const TileSlot& a, const TileSlot& b) {
+      return a.ty == b.ty && a.tx == b.tx;
+    });
+    tile_index_.erase(tile_index_.begin(), last_of_each.base());
+    tile_index_.shrink_to_fit();
     indexed_ = true;
   }
-  const auto band = tile_index_.find(TileCoord(iy));
-  if (band == tile_index_.end()) return;
   storage.resize(n);
   const std::int32_t ix_max = ix_min + static_cast<std::int32_t>(n) - 1;
   const int row_in_tile = iy & (ElevationGrid::kTileSide - 1);
   TerrainCell row[ElevationGrid::kTileSide];
-  for (auto it = band->second.lower_bound(TileCoord(ix_min)); it != band->second.end() && it->first <= TileCoord(ix_max); ++it) {
-    const std::int32_t x0 = it->first * ElevationGrid::kTileSide;
+  const TileSlot first{TileCoord(iy), TileCoord(ix_min), 0};
+  for (auto it = std::lower_bound(tile_index_.begin(), tile_index_.end(), first, TileOrder);
+       it != tile_index_.end() && it->ty == first.ty && it->tx <= TileCoord(ix_max); ++it) {
+    const std::int32_t x0 = it->tx * ElevationGrid::kTileSide;
     if (grid.Find({x0, iy}) != nullptr) continue;  // the map holds it again: its state now
-    tiles_.ReadAt(it->second + sizeof(TileHeader) + sizeof(TerrainCell) * ElevationGrid::kTileSide * row_in_tile, row,
+    tiles_.ReadAt(it->at + sizeof(TileHeader) + sizeof(TerrainCell) * ElevationGrid::kTileSide * row_in_tile, row,
                   sizeof row);
     for (int j = 0; j < ElevationGrid::kTileSide; ++j) {
       const std::int32_t ix = x0 + j;

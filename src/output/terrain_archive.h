@@ -5,26 +5,28 @@
 // and whenever the ground it stands on changes) to another, keeps the hazards
 // the map retired, and feeds the OctoMap tree the sample's rays, retiring its
 // subtrees with the map's window. At the end the files and the score read
-// the retired tiles back row by row (terrain_files.h), so that a walk of any
-// length is written and scored whole, in memory that does not grow with it
-// (the hazards aside, a few dozen bytes each).
+// the retired tiles back a piece of a row at a time (terrain_files.h) and
+// stream the track (track_reader.h), so that a walk of any length is written
+// and scored whole, in memory that hardly grows with it (the hazards, a few
+// dozen bytes each; the retired tiles' index and the corridor's bitmaps, a
+// few dozen bytes per tile: docs/trust.md).
 //
 // Frames: W world.
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "core/spill_file.h"
 #include "output/octomap_recorder.h"
+#include "output/track_reader.h"
 #include "knowledge/terrain_map.h"
 
 namespace proxsim {
 
-class TerrainArchive {
+class TerrainArchive : public TrackReader {
  public:
   /// The track keeps a point every this far walked ...
   static constexpr double kTrackStep_m = 0.01;
@@ -38,8 +40,8 @@ class TerrainArchive {
   void Add();
 
   const TerrainMap& map() const { return map_; }
-  /// The whole walk's track (read back from the scratch file).
-  std::vector<TrackPoint> Track() const;
+  /// The whole walk's track, read back from the scratch file a chunk at a time.
+  void ForEachTrackPoint(const std::function<void(const TrackPoint&)>& visit) const override;
   /// Every hazard: those retired, then those the map holds.
   std::vector<Hazard> Hazards() const;
   /// The cells of every tile the map held or retired.
@@ -72,8 +74,14 @@ class TerrainArchive {
   CellBox retired_bounds_;
   std::size_t retired_tiles_ = 0;
   Vec2 octomap_rolled_at_W_ = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
-  // where each retired tile's cells are in tiles_, by tile row then column (built at the first ReadRow)
-  mutable std::map<std::int32_t, std::map<std::int32_t, std::uint64_t>> tile_index_;
+  // where each retired tile's last cells are in tiles_, sorted by tile row
+  // then column (built at the first ReadRow; 16 bytes a tile)
+  struct TileSlot {
+    std::int32_t ty = 0, tx = 0;
+    std::uint64_t at = 0;
+  };
+  mutable std::vector<TileSlot> tile_index_;
+  static bool TileOrder(const TileSlot& a, const TileSlot& b);
   mutable bool indexed_ = false;
 };
 

@@ -21,6 +21,11 @@ namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 // The truth's hazards are found this far beyond the files' extent.
 constexpr double kTruthMargin_m = 1.0;
+// A row (as long as the walk, along a straight one) is read, cast, scored and
+// written this many cells at a time, so that the end's memory does not grow
+// with the walk; a multiple of the ray caster's packet (8 rays), so that the
+// truth's rays are cast in the same packets as a whole row's would be.
+constexpr std::size_t kRowChunkCells = 4096;
 
 // A 2-D .npy array (format 1.0, C order), written row after row.
 class NpyRows {
@@ -39,9 +44,10 @@ class NpyRows {
     header += static_cast<char>(dict.size() >> 8);
     file_.Write(header + dict);
   }
+  /// The next cells, in C order (a row may come in several pieces).
   template <class T>
-  void Row(const std::vector<T>& values) {
-    file_.Write(std::string_view(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T)));
+  void Cells(const std::vector<T>& values, std::size_t n) {
+    file_.Write(std::string_view(reinterpret_cast<const char*>(values.data()), n * sizeof(T)));
   }
   void Commit() { file_.Commit(); }
 
@@ -76,9 +82,8 @@ nlohmann::json RecordTerrain(TerrainArchive& archive, const RayCaster& caster, c
   const TerrainMap& map = archive.map();
   const double r = map.grid().resolution_m();
   const double ceiling_z_m = archive.truth_ceiling_z_m();
-  const std::vector<TrackPoint> track = archive.Track();
-  const Corridor corridor(track, map.last_position(), r);
-  TerrainScorer scorer(map, track, archive.Hazards(), ceiling_z_m, corridor);
+  const Corridor corridor(archive, map.last_position(), r);
+  TerrainScorer scorer(map, archive, archive.Hazards(), ceiling_z_m, corridor);
   CellBox extent = archive.Bounds();
   extent.Expand(corridor.Bounds());
   const std::int32_t nx = extent.nx(), ny = extent.ny();
@@ -104,43 +109,46 @@ nlohmann::json RecordTerrain(TerrainArchive& archive, const RayCaster& caster, c
     }
   }
 
-  // row by row: the map's cells, the truth under them, scored and written
-  const auto row_n = static_cast<std::size_t>(nx);
-  const auto scored_n = static_cast<std::size_t>(scored.nx());
-  const auto offset = static_cast<std::size_t>(extent.ix_min - scored.ix_min);
-  std::vector<const TerrainCell*> cells(scored_n);
+  // row by row, a chunk of a row at a time: the map's cells, the truth under them, scored and written
+  std::vector<const TerrainCell*> cells(kRowChunkCells);
   std::vector<TerrainCell> retired_cells;
-  std::vector<float> elevation(row_n), variance(row_n), upper_bound(row_n), first_t(row_n), last_t(row_n), truth(row_n);
-  std::vector<std::uint32_t> hits(row_n);
+  std::vector<float> elevation(kRowChunkCells), variance(kRowChunkCells), upper_bound(kRowChunkCells),
+      first_t(kRowChunkCells), last_t(kRowChunkCells), truth(kRowChunkCells);
+  std::vector<std::uint32_t> hits(kRowChunkCells);
   for (std::int32_t iy = scored.iy_min; iy <= scored.iy_max; ++iy) {
-    archive.ReadRow(iy, scored.ix_min, scored_n, cells, retired_cells);
-    const std::vector<float> scored_truth =
-        TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, ceiling_z_m);
-    // with moving objects: the heights with them where they are now, for the ghost cells
-    const std::vector<float> scored_now =
-        caster.has_moving()
-            ? TrueHeights(caster, CellBox{scored.ix_min, iy, scored.ix_max, iy}, r, ceiling_z_m, true)
-            : std::vector<float>{};
-    scorer.AddRow(iy, scored.ix_min, cells, scored_truth, scored_now);
-    if (arrays.empty() || iy < extent.iy_min || iy > extent.iy_max) continue;
-    for (std::size_t k = 0; k < row_n; ++k) {
-      const TerrainCell* cell = cells[offset + k];
-      truth[k] = scored_truth[offset + k];
-      const bool measured = cell != nullptr && cell->has_elevation();
-      elevation[k] = measured ? cell->elevation_m : kNaN;
-      variance[k] = measured ? cell->variance_m2 : kNaN;
-      upper_bound[k] = cell != nullptr && std::isfinite(cell->upper_bound_m) ? cell->upper_bound_m : kNaN;
-      hits[k] = cell != nullptr ? cell->hits : 0;
-      first_t[k] = cell != nullptr ? cell->first_t_s : kNaN;
-      last_t[k] = cell != nullptr ? cell->last_t_s : kNaN;
+    for (std::int32_t x0 = scored.ix_min; x0 <= scored.ix_max; x0 += static_cast<std::int32_t>(kRowChunkCells)) {
+      const std::int32_t x1 = std::min(scored.ix_max, x0 + static_cast<std::int32_t>(kRowChunkCells) - 1);
+      const auto chunk_n = static_cast<std::size_t>(x1 - x0 + 1);
+      archive.ReadRow(iy, x0, chunk_n, cells, retired_cells);
+      const std::vector<float> scored_truth = TrueHeights(caster, CellBox{x0, iy, x1, iy}, r, ceiling_z_m);
+      // with moving objects: the heights with them where they are now, for the ghost cells
+      const std::vector<float> scored_now =
+          caster.has_moving() ? TrueHeights(caster, CellBox{x0, iy, x1, iy}, r, ceiling_z_m, true) : std::vector<float>{};
+      scorer.AddRow(iy, x0, cells, scored_truth, scored_now);
+      // the files hold the extent's part of the chunk
+      const std::int32_t file_x0 = std::max(x0, extent.ix_min), file_x1 = std::min(x1, extent.ix_max);
+      if (arrays.empty() || iy < extent.iy_min || iy > extent.iy_max || file_x0 > file_x1) continue;
+      const auto n = static_cast<std::size_t>(file_x1 - file_x0 + 1);
+      const auto offset = static_cast<std::size_t>(file_x0 - x0);
+      for (std::size_t k = 0; k < n; ++k) {
+        const TerrainCell* cell = cells[offset + k];
+        truth[k] = scored_truth[offset + k];
+        const bool measured = cell != nullptr && cell->has_elevation();
+        elevation[k] = measured ? cell->elevation_m : kNaN;
+        variance[k] = measured ? cell->variance_m2 : kNaN;
+        upper_bound[k] = cell != nullptr && std::isfinite(cell->upper_bound_m) ? cell->upper_bound_m : kNaN;
+        hits[k] = cell != nullptr ? cell->hits : 0;
+        first_t[k] = cell != nullptr ? cell->first_t_s : kNaN;
+        last_t[k] = cell != nullptr ? cell->last_t_s : kNaN;
+      }
+      arrays[kElevation]->Cells(elevation, n);
+      arrays[kVariance]->Cells(variance, n);
+      arrays[kUpperBound]->Cells(upper_bound, n);
+      arrays[kTruth]->Cells(truth, n);
+      arrays[kHits]->Cells(hits, n);
+      arrays[kFirstT]->Cells(first_t, n);
+      arrays[kLastT]->Cells(last_t, n);
     }
-    arrays[kElevation]->Row(elevation);
-    arrays[kVariance]->Row(variance);
-    arrays[kUpperBound]->Row(upper_bound);
-    arrays[kTruth]->Row(truth);
-    arrays[kHits]->Row(hits);
-    arrays[kFirstT]->Row(first_t);
-    arrays[kLastT]->Row(last_t);
   }
   nlohmann::json score = scorer.Json();
   if (arrays.empty()) return score;

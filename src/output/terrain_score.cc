@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "output/truth_field.h"
 
@@ -31,24 +32,52 @@ bool Overlaps(const Hazard& map_hazard, const TrueHazard& truth) {
   return std::any_of(truth.cells.begin(), truth.cells.end(), [&](CellIndex c) { return box.Contains(c); });
 }
 
-// The track point at time t (the last one at or before it).
-const TrackPoint& PointAt(const std::vector<TrackPoint>& track, const TrackPoint& last, double t_s) {
-  const auto after = std::upper_bound(track.begin(), track.end(), t_s,
-                                      [](double t, const TrackPoint& p) { return t < p.t_s; });
-  if (after == track.begin()) return track.empty() ? last : track.front();
-  return *(after - 1);
+// The track point at each of the times (the last one at or before it; the
+// first one for a time before the track starts; `last` without a track), in
+// one pass over the track, whose times never decrease.
+std::vector<TrackPoint> PointsAt(const TrackReader& track, const TrackPoint& last, const std::vector<double>& times_s) {
+  if (times_s.empty()) return {};
+  std::vector<std::size_t> order(times_s.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  // by time, NaN last (no point comes after it: it gets the track's last point)
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return times_s[a] < times_s[b] || (!std::isnan(times_s[a]) && std::isnan(times_s[b]));
+  });
+  std::vector<TrackPoint> points(times_s.size(), last);
+  std::size_t next = 0;  // in `order`: the first time not yet placed
+  std::optional<TrackPoint> previous;
+  track.ForEachTrackPoint([&](const TrackPoint& point) {
+    for (; next < order.size() && times_s[order[next]] < point.t_s; ++next) points[order[next]] = previous.value_or(point);
+    previous = point;
+  });
+  for (; next < order.size(); ++next) points[order[next]] = previous.value_or(last);
+  return points;
+}
+
+// For each hazard, the ground the robot stood on when it came nearest to it
+// (`last`'s without a track), in one pass over the track.
+std::vector<double> NearestGrounds(const TrackReader& track, const TrackPoint& last, const std::vector<Hazard>& hazards) {
+  std::vector<double> nearest_m(hazards.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> grounds_m(hazards.size(), last.ground_z_m);
+  track.ForEachTrackPoint([&](const TrackPoint& point) {
+    for (std::size_t k = 0; k < hazards.size(); ++k) {
+      const double d = hazards[k].DistanceTo(point.p_W_pelvis);
+      if (d < nearest_m[k]) nearest_m[k] = d, grounds_m[k] = point.ground_z_m;
+    }
+  });
+  return grounds_m;
 }
 
 }  // namespace
 
-TerrainScorer::TerrainScorer(const TerrainMap& map, const std::vector<TrackPoint>& track, std::vector<Hazard> hazards,
+TerrainScorer::TerrainScorer(const TerrainMap& map, const TrackReader& track, std::vector<Hazard> hazards,
                              double truth_ceiling_z_m, const Corridor& corridor)
     : map_(map), track_(track), hazards_(std::move(hazards)), truth_ceiling_z_m_(truth_ceiling_z_m), corridor_(corridor) {
-  for (const TrackPoint& point : track) {
+  track.ForEachTrackPoint([&](const TrackPoint& point) {
     const bool known = std::any_of(levels_m_.begin(), levels_m_.end(),
                                    [&](double level) { return std::abs(level - point.ground_z_m) < kLevelStep_m; });
     if (!known) levels_m_.push_back(point.ground_z_m);
-  }
+  });
   if (levels_m_.empty()) levels_m_.push_back(map.last_position().ground_z_m);
 }
 
@@ -65,7 +94,7 @@ void TerrainScorer::AddRow(std::int32_t iy, std::int32_t ix_min, std::span<const
     if (measured) ++cells_measured_;
     if (measured && !std::isnan(truth)) {
       const double error_m = static_cast<double>(cell->elevation_m) - truth;
-      abs_errors_m_.push_back(static_cast<float>(std::abs(error_m)));
+      abs_errors_m_.Add(static_cast<float>(std::abs(error_m)));
       sum_squared_error_m2_ += error_m * error_m;
     }
     // a ghost: raised above the still scene, and above whatever stands there now
@@ -103,7 +132,6 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
   matched_ = true;
   const TerrainMapConfig& config = map_.config();
   const double r = map_.grid().resolution_m();
-  const std::vector<TrackPoint>& track = track_;
   std::vector<CellIndex> seeds;
   for (const auto& [key, surface] : off_ground_) {
     seeds.push_back({static_cast<std::int32_t>(key >> 32), static_cast<std::int32_t>(key & 0xFFFFFFFFu)});
@@ -113,15 +141,6 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
     const auto it = off_ground_.find(Key(c));
     return it == off_ground_.end() ? CellSurface{} : it->second;
   };
-  // the ground the robot stood on when it came nearest to a cluster
-  const auto nearest_ground = [&](const Hazard& hazard) {
-    double best = std::numeric_limits<double>::infinity(), ground = map_.last_position().ground_z_m;
-    for (const TrackPoint& point : track) {
-      const double d = hazard.DistanceTo(point.p_W_pelvis);
-      if (d < best) best = d, ground = point.ground_z_m;
-    }
-    return ground;
-  };
   for (double level : levels_m_) {
     const auto label_at = [&](CellIndex c) {
       const auto it = off_ground_.find(Key(c));
@@ -129,8 +148,11 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
     };
     std::vector<std::vector<CellIndex>> clusters;
     const std::vector<Hazard> found = FindHazards(seeds, label_at, surface_at, level, r, config, &clusters);
+    // on several levels, each cluster is the one relative to the ground the robot stood on when nearest to it
+    const std::vector<double> grounds_m =
+        levels_m_.size() > 1 ? NearestGrounds(track_, map_.last_position(), found) : std::vector<double>{};
     for (std::size_t k = 0; k < found.size(); ++k) {
-      if (levels_m_.size() > 1 && std::abs(nearest_ground(found[k]) - level) >= kLevelStep_m) continue;
+      if (!grounds_m.empty() && std::abs(grounds_m[k] - level) >= kLevelStep_m) continue;
       TrueHazard truth;
       truth.hazard = found[k];
       truth.cells = std::move(clusters[k]);
@@ -138,7 +160,7 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
       true_hazards_.push_back(std::move(truth));
     }
   }
-  // the map's first detection over each true hazard, and the toe's distance to it then
+  // the map's first detection over each true hazard ...
   for (TrueHazard& truth : true_hazards_) {
     for (const Hazard& mapped : hazards_) {
       if (!Overlaps(mapped, truth)) continue;
@@ -148,8 +170,17 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
         truth.hazard.first_detection_t_s = mapped.first_detection_t_s;
       }
     }
+  }
+  // ... and the leading toe's distance to it then
+  std::vector<double> detected_t_s;
+  for (const TrueHazard& truth : true_hazards_) {
+    if (truth.detected) detected_t_s.push_back(truth.hazard.first_detection_t_s);
+  }
+  const std::vector<TrackPoint> at_detection = PointsAt(track_, map_.last_position(), detected_t_s);
+  std::size_t detected = 0;
+  for (TrueHazard& truth : true_hazards_) {
     if (!truth.detected) continue;
-    const Vec2 toe = PointAt(track, map_.last_position(), truth.hazard.first_detection_t_s).p_W_front;
+    const Vec2 toe = at_detection[detected++].p_W_front;
     double lead_m = std::numeric_limits<double>::infinity();
     for (const CellIndex& c : truth.cells) {
       const Vec2 lo(c.ix * r, c.iy * r), hi = lo + Vec2(r, r);
@@ -165,19 +196,12 @@ const std::vector<TrueHazard>& TerrainScorer::FindTrueHazards() {
 
 nlohmann::json TerrainScorer::Json() {
   const std::vector<TrueHazard>& truths = FindTrueHazards();
-  nlohmann::json error = {{"cells", abs_errors_m_.size()}, {"rmse_m", nullptr}, {"p95_m", nullptr}, {"max_m", nullptr}};
-  if (!abs_errors_m_.empty()) {
-    const std::size_t n = abs_errors_m_.size();
-    std::vector<float> sorted = abs_errors_m_;
-    // the 95th percentile, linear between the two order statistics around it (numpy's default)
-    const double rank = 0.95 * static_cast<double>(n - 1);
-    const auto lo = static_cast<std::size_t>(std::floor(rank));
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(lo), sorted.end());
-    const double at_lo = sorted[lo];
-    const double at_hi = lo + 1 < n ? *std::min_element(sorted.begin() + static_cast<std::ptrdiff_t>(lo) + 1, sorted.end()) : at_lo;
+  const std::size_t n = abs_errors_m_.count();
+  nlohmann::json error = {{"cells", n}, {"rmse_m", nullptr}, {"p95_m", nullptr}, {"max_m", nullptr}};
+  if (n > 0) {
     error["rmse_m"] = std::sqrt(sum_squared_error_m2_ / static_cast<double>(n));
-    error["p95_m"] = at_lo + (rank - static_cast<double>(lo)) * (at_hi - at_lo);
-    error["max_m"] = *std::max_element(abs_errors_m_.begin(), abs_errors_m_.end());
+    error["p95_m"] = abs_errors_m_.Percentile(0.95);  // numpy's default: linear between the order statistics around it
+    error["max_m"] = abs_errors_m_.max();
   }
 
   // per class: the map's hazards that are right, the true ones (in the corridor) that were found

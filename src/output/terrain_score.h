@@ -1,5 +1,7 @@
 // How far the map is from the truth (summary.json `terrain`), computed row by
-// row over the output's extent so that a long walk needs no dense copy:
+// row over the output's extent, with the track streamed (track_reader.h) and
+// the errors' percentile taken from a scratch file (bounded_percentile.h), so
+// that a walk of any length is scored in memory that does not grow with it:
 //  - the elevation error |elevation − truth| over the cells the map measured
 //    (and whose column has a surface): its RMSE and 95th percentile;
 //  - the corridor's coverage: the share of the corridor's cells (corridor.h)
@@ -30,7 +32,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/bounded_percentile.h"
 #include "output/corridor.h"
+#include "output/track_reader.h"
 #include "knowledge/hazards.h"
 #include "knowledge/terrain_map.h"
 
@@ -49,8 +53,9 @@ struct TrueHazard {
 class TerrainScorer {
  public:
   /// `map`, `track` and `corridor` must outlive the scorer; `track` and
-  /// `hazards` are the whole walk's (terrain_archive.h), `truth_ceiling_z_m` the truth's ceiling.
-  TerrainScorer(const TerrainMap& map, const std::vector<TrackPoint>& track, std::vector<Hazard> hazards,
+  /// `hazards` are the whole walk's (terrain_archive.h; the track is streamed
+  /// once here and once per level in FindTrueHazards), `truth_ceiling_z_m` the truth's ceiling.
+  TerrainScorer(const TerrainMap& map, const TrackReader& track, std::vector<Hazard> hazards,
                 double truth_ceiling_z_m, const Corridor& corridor);
 
   /// Cells [ix_min, ix_min + n) of row iy: the map's (null: never touched)
@@ -68,12 +73,12 @@ class TerrainScorer {
 
  private:
   const TerrainMap& map_;
-  const std::vector<TrackPoint>& track_;
+  const TrackReader& track_;
   std::vector<Hazard> hazards_;
   double truth_ceiling_z_m_;
   const Corridor& corridor_;
   std::vector<double> levels_m_;    // the grounds the robot stood on (5 mm apart at least)
-  std::vector<float> abs_errors_m_;
+  BoundedPercentile abs_errors_m_{"the terrain score's elevation errors"};
   double sum_squared_error_m2_ = 0;
   std::size_t corridor_cells_ = 0, corridor_measured_ = 0, corridor_bounded_ = 0, cells_measured_ = 0;
   std::size_t cells_bounded_ = 0, bounds_below_truth_ = 0;  // cells with a bound and a true surface; bound too low
