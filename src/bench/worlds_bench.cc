@@ -73,19 +73,31 @@ nlohmann::json GenerationTimes(const std::string& generate) {
 nlohmann::json WorldsSection(bool quick, const BenchScene& scene_1m) {
   const BenchScene made = scene_1m.objects.empty() ? MakeBenchDiningRoom(1'000'000) : BenchScene{};
   const BenchScene& scene = scene_1m.objects.empty() ? made : scene_1m;
-  const int repeats = quick ? 2 : 7;
+  // pairs of walks interleaved, in the thread's CPU time (bench/step_timing.h):
+  // on a busy 2-core machine the best of a few wall-clock walks swung from −5 % to +55 %
+  const int pairs = quick ? 3 : 15;
   const Scenario still = PaperLikeIn(scene);
   Scenario moving = still;
   AddMovingBoxes(moving);
-  const double still_s = SecondsPerStep(still, repeats);
-  const double moving_s = SecondsPerStep(moving, repeats);
-  Progress("worlds: a paper-like sample in the %zu-triangle room %.1f µs, with %d moving objects %.1f µs (+%.1f %%)",
-           scene.triangle_count, 1e6 * still_s, kMovingObjects, 1e6 * moving_s, 100 * (moving_s / still_s - 1));
+  const StepComparison c = CompareSteps(still, moving, pairs);
+  Progress("worlds: a paper-like sample in the %zu-triangle room %.1f µs CPU, with %d moving objects %.1f µs: "
+           "%+.1f %% (median of %d interleaved pairs; quartiles %+.1f %% to %+.1f %%, all %+.1f %% to %+.1f %%; "
+           "load %.1f → %.1f)",
+           scene.triangle_count, 1e6 * c.base_s, kMovingObjects, 1e6 * c.other_s, 100 * c.extra_fraction, pairs,
+           100 * c.extra_fraction_lo, 100 * c.extra_fraction_hi, 100 * c.extra_fraction_min,
+           100 * c.extra_fraction_max, c.load_before, c.load_after);
   nlohmann::json section = {{"triangles", scene.triangle_count},
                             {"moving_objects", kMovingObjects},
-                            {"step_still_us", 1e6 * still_s},
-                            {"step_moving_us", 1e6 * moving_s},
-                            {"moving_extra_fraction", moving_s / still_s - 1},
+                            {"clock", "thread_cpu"},
+                            {"pairs", pairs},
+                            {"step_still_us", 1e6 * c.base_s},
+                            {"step_moving_us", 1e6 * c.other_s},
+                            {"step_still_wall_us", 1e6 * c.base_wall_s},
+                            {"step_moving_wall_us", 1e6 * c.other_wall_s},
+                            {"moving_extra_fraction", c.extra_fraction},
+                            {"moving_extra_fraction_quartiles", {c.extra_fraction_lo, c.extra_fraction_hi}},
+                            {"moving_extra_fraction_range", {c.extra_fraction_min, c.extra_fraction_max}},
+                            {"load_average_1min", {c.load_before, c.load_after}},
                             {"moving_target_fraction", 0.10}};
   section["course_20m"] = GenerationTimes("kind: course, length_m: 20");
   section["room_10x10m"] = GenerationTimes("kind: room, size_m: [10, 10]");
@@ -97,14 +109,18 @@ nlohmann::json WorldsSection(bool quick, const BenchScene& scene_1m) {
 
 std::string WorldsReport(const nlohmann::json& s) {
   std::ostringstream out;
-  char line[400];
+  char line[600];
   out << "\n## Worlds: moving objects and generated worlds\n\n";
+  const auto pair = [&](const char* key, int i) { return 100 * s.at(key).at(i).get<double>(); };
   std::snprintf(line, sizeof line,
-                "A paper-like sample in the %zu-triangle room: %.1f µs; with %d moving objects: %.1f µs, "
-                "**+%.1f %%** (target ≤ %.0f %%).\n\n",
+                "A paper-like sample in the %zu-triangle room: %.1f µs of CPU; with %d moving objects: %.1f µs, "
+                "**%+.1f %%** (target ≤ %.0f %%; median of %d interleaved pairs of walks, quartiles %+.1f %% to "
+                "%+.1f %%, load %.1f → %.1f).\n\n",
                 s.at("triangles").get<std::size_t>(), s.at("step_still_us").get<double>(), s.at("moving_objects").get<int>(),
                 s.at("step_moving_us").get<double>(), 100 * s.at("moving_extra_fraction").get<double>(),
-                100 * s.at("moving_target_fraction").get<double>());
+                100 * s.at("moving_target_fraction").get<double>(), s.at("pairs").get<int>(),
+                pair("moving_extra_fraction_quartiles", 0), pair("moving_extra_fraction_quartiles", 1),
+                s.at("load_average_1min").at(0).get<double>(), s.at("load_average_1min").at(1).get<double>());
   out << line;
   out << "| world (difficulty 1, slowest of 20 seeds) | generate | generate + write + read | objects |\n|---|---|---|---|\n";
   for (const auto& [key, name] : {std::pair{"course_20m", "20 m course"}, {"room_10x10m", "10 × 10 m room"}}) {

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 
 namespace proxsim {
 
@@ -49,7 +50,36 @@ struct CastScenes {
   int direct_body = -1;          ///< the body of `world` when it is direct, else -1 (hits carry the instance)
   RTCScene robot = nullptr;      ///< the robot's top-level scene; null when there is no robot
   RTCScene moving = nullptr;     ///< the moving objects' top-level scene; null when there are none
+  const std::vector<Eigen::Vector4d>* moving_spheres_W = nullptr;  ///< the moving bodies' bounding spheres
+  std::function<void()> commit_moving;  ///< commits `moving` if it moved (before a cast into it)
+  bool test_spheres = false;            ///< cast into `moving` only the packets with a ray that may meet one
 };
+
+// A batch tests its rays against the moving objects' spheres, rather than
+// have their scene committed, while it takes at most this many tests: a
+// commit of 50 instances costs about what 10 000 tests do.
+constexpr std::size_t kMaxSphereTests = 4096;
+
+// A ray that passes this far outside a moving body's bounding sphere cannot
+// meet it: Embree's float transforms and bounds err by microns, not this.
+constexpr double kSphereSlack_m = 1e-3;
+
+/// Whether `lane`'s ray, up to its nearest hit so far (tfar), passes within
+/// one of `spheres_W` (centre, radius; an infinite radius always).
+bool MayMeetSphere(const RTCRayHit8& packet, std::size_t lane, const std::vector<Eigen::Vector4d>& spheres_W) {
+  const Vec3 origin(packet.ray.org_x[lane], packet.ray.org_y[lane], packet.ray.org_z[lane]);
+  const Vec3 direction(packet.ray.dir_x[lane], packet.ray.dir_y[lane], packet.ray.dir_z[lane]);
+  const double reach = static_cast<double>(packet.ray.tfar[lane]) * (1 + 1e-6) + kSphereSlack_m;
+  const double dd = direction.squaredNorm();
+  for (const Eigen::Vector4d& sphere : spheres_W) {
+    const Vec3 to_centre = sphere.head<3>() - origin;
+    // the segment's point nearest the centre
+    const double t = std::clamp(to_centre.dot(direction) / dd, 0.0, reach);
+    const double within_m = sphere.w() + kSphereSlack_m;
+    if ((to_centre - t * direction).squaredNorm() <= within_m * within_m) return true;
+  }
+  return false;
+}
 
 /// Maps the hit of `lane` to the body and its shape; Ng from B to W, unit.
 void MapHit(const RTCRayHit8& packet, std::size_t lane, int direct_body,
@@ -132,7 +162,17 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
       }
     }
   };
-  if (scenes.moving) cast_instances(scenes.moving, &Ray::see_moving);
+  // the moving objects only when a ray may meet one of them (their scene is
+  // then committed, if they moved since: ray_caster_internal.h)
+  if (scenes.moving) {
+    bool may_meet = !scenes.test_spheres;
+    for (std::size_t lane = 0; lane < n && !may_meet; ++lane)
+      may_meet = rays[lane].see_moving && MayMeetSphere(packet, lane, *scenes.moving_spheres_W);
+    if (may_meet) {
+      scenes.commit_moving();
+      cast_instances(scenes.moving, &Ray::see_moving);
+    }
+  }
   if (scenes.robot) cast_instances(scenes.robot, &Ray::see_robot);
 }
 
@@ -146,7 +186,12 @@ void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
   const CastScenes scenes{.world = impl.world_direct ? impl.world_direct : impl.scene_world,
                           .direct_body = impl.world_direct ? impl.world_direct_body : -1,
                           .robot = impl.has_robot ? impl.scene_robot : nullptr,
-                          .moving = impl.has_moving ? impl.scene_moving : nullptr};
+                          .moving = impl.has_moving ? impl.scene_moving : nullptr,
+                          .moving_spheres_W = &impl.moving_spheres_W,
+                          .commit_moving = [impl = impl_.get()] { impl->CommitMovingIfMoved(); },
+                          // committed already this sample (then cast as always), or too many rays to test
+                          .test_spheres = impl.moving_uncommitted.load(std::memory_order_acquire) &&
+                                          rays.size() * impl.moving_spheres_W.size() <= kMaxSphereTests};
   const auto cast_packet = [&](std::ptrdiff_t p) {
     const std::size_t first = static_cast<std::size_t>(p) * kPacketRays;
     CastPacket(scenes, impl.bodies, rays.data() + first, hits.data() + first, std::min(kPacketRays, rays.size() - first));

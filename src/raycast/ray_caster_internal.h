@@ -21,9 +21,14 @@
 //     instance level — then, if it sees the robot, into `robot` up to the
 //     world hit: the nearer hit wins.
 // Moving a body only rewrites its instance transforms; Commit() then rebuilds
-// the top-level scene that changed (the robot's and the moving objects', each sample), whose only
-// primitives are the instances. The child scenes, and so the static world's
-// BVH, are built once in AddBody.
+// the top-level scene that changed (the robot's, each sample), whose only
+// primitives are the instances. The moving objects' top-level scene is
+// rebuilt only when a ray first may meet one of them after they moved (its
+// segment up to the world hit passes within a moving body's bounding sphere,
+// ray_caster_cast.cc): a commit of 50 instances costs ~40 µs, most samples'
+// rays pass far from every moving object, and a ray that passes outside
+// every sphere misses them all whether or not their scene is up to date.
+// The child scenes, and so the static world's BVH, are built once in AddBody.
 //
 // Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
 // triangle test, so a ray through a shared edge or vertex cannot slip between
@@ -99,6 +104,8 @@ struct Body {
   double bound_radius_m = std::numeric_limits<double>::infinity();
   Vec3 bound_center_W = Vec3::Zero();  ///< X_WB · bound_center_B, kept with X_WB
   int world_slot = -1;  ///< a kWorld body's index in Impl::world_bodies and world_spheres_W
+  int moving_slot = -1; ///< a kMoving body's index in Impl::moving_spheres_W
+  bool instance_stale = false;  ///< moved since its instance's transform was last set (Impl::stale_*)
   // point-query scenes of this body's meshes without some objects (the
   // ground, say), keyed by the sorted excluded object ids; built on first use
   std::mutex query_scenes_mutex;
@@ -123,6 +130,16 @@ struct RayCaster::Impl {
   // bodies without touching their records (50 moving boxes: 50 bodies a query)
   std::vector<int> world_bodies;
   std::vector<Eigen::Vector4d> world_spheres_W;
+  // each kMoving body's bounding sphere in W (as world_spheres_W), kept with its pose
+  std::vector<Eigen::Vector4d> moving_spheres_W;
+  // the moving objects' scene has moved since its last commit (see the top of
+  // the file); the first cast that may meet one of them commits it, once
+  std::atomic<bool> moving_uncommitted{false};
+  std::mutex moving_commit_mutex;
+  // the bodies moved since their instances' transforms were set: set at the
+  // commit of their scene (Commit, or CommitMovingIfMoved for kMoving bodies)
+  std::vector<int> stale_fixed;
+  std::vector<int> stale_moving;
   // the world body cast without its instance (see the top of the file), or null
   RTCScene world_direct = nullptr;
   int world_direct_body = -1;
@@ -151,6 +168,12 @@ struct RayCaster::Impl {
 
   /// A new scene, robust, at the given build quality.
   RTCScene NewScene(RTCBuildQuality quality);
+
+  /// Commits the moving objects' scene if they moved since its last commit
+  /// (thread-safe: the casts of a batch may ask at once).
+  void CommitMovingIfMoved();
+  /// Sets the instances' transforms of the bodies in `stale` from their poses, and empties it.
+  void PushTransforms(std::vector<int>& stale);
 
   // ray_caster.cc: a body's triangles (a box's or a mesh's) and its instance in a top-level scene
   void AttachTriangles(Body& body, std::unique_ptr<GeomRecord> record, const std::vector<Vec3>& vertices_B,
