@@ -79,6 +79,8 @@ StepComparison CompareSteps(const Scenario& base, const Scenario& other, int pai
     fractions.push_back(o.cpu_s / b.cpu_s - 1);
   }
   result.load_after = LoadAverage();
+  result.base_min_clearance_m = base_sim.robot_outcome().min_clearance_m;
+  result.other_min_clearance_m = other_sim.robot_outcome().min_clearance_m;
   result.base_s = Quantile(base_cpu, 0.5);
   result.other_s = Quantile(other_cpu, 0.5);
   result.base_wall_s = Quantile(base_wall, 0.5);

@@ -27,6 +27,8 @@ struct StepComparison {
   double extra_fraction_max = 0;
   double base_wall_s = 0;       ///< medians of the same walks' wall time per step
   double other_wall_s = 0;
+  double base_min_clearance_m = 0;   ///< the robot's least clearance in each walk (what caps its
+  double other_min_clearance_m = 0;  ///< clearance queries: a walk nearer things measures less far)
   double load_before = 0;       ///< the 1-minute load average around the measurement
   double load_after = 0;
   int pairs = 0;

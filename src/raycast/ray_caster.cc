@@ -224,20 +224,23 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
   body.bound_center_W = X_WB * body.bound_center_B;
   if (kind == BodyKind::kWorld) {
     body.world_slot = static_cast<int>(impl.world_bodies.size());
+    impl.world_has_mesh = impl.world_has_mesh || body.has_mesh;
     impl.world_bodies.push_back(body_index);
     impl.world_spheres_W.emplace_back(body.bound_center_W.x(), body.bound_center_W.y(), body.bound_center_W.z(),
                                       body.bound_radius_m);
-    body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body_index));
+    body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body.world_slot));
     impl.world_dirty = true;
   } else if (kind == BodyKind::kMoving) {
     body.moving_slot = static_cast<int>(impl.moving_spheres_W.size());
     impl.moving_spheres_W.emplace_back(body.bound_center_W.x(), body.bound_center_W.y(), body.bound_center_W.z(),
                                        body.bound_radius_m);
-    body.instance_moving = impl.NewInstance(impl.scene_moving, body, static_cast<unsigned int>(body_index));
+    body.instance_moving = impl.NewInstance(impl.scene_moving, body, static_cast<unsigned int>(body.moving_slot));
+    impl.moving_bodies.push_back(body_index);
     impl.moving_dirty = true;
     impl.has_moving = true;
   } else {
-    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(body_index));
+    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(impl.robot_bodies.size()));
+    impl.robot_bodies.push_back(body_index);
     impl.robot_dirty = true;
     impl.has_robot = true;
   }
@@ -328,5 +331,7 @@ void RayCaster::Impl::CommitMovingIfMoved() {
 std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }
 
 bool RayCaster::has_moving() const { return impl_->has_moving; }
+
+bool RayCaster::world_has_mesh() const { return impl_->world_has_mesh; }
 
 }  // namespace proxsim

@@ -13,9 +13,10 @@
 //     spheres, cylinders and planes as user geometry intersected exactly
 //     (analytic_shapes.h), never tessellated;
 //   - two top-level scenes instance the bodies (one level of instancing):
-//     `world` the kWorld bodies and `robot` the kRobot ones. The instance ID
-//     of a body is its index, so a hit maps straight back to (body, geometry)
-//     → object_id. A ray is cast into the world first — straight into the
+//     `world` the kWorld bodies, `robot` the kRobot ones and `moving` the
+//     kMoving ones. A body's instance ID is its index among its scene's
+//     bodies (Impl::world_bodies, robot_bodies, moving_bodies), so a hit maps
+//     back to (body, geometry) → object_id. A ray is cast into the world first — straight into the
 //     world body's own scene when there is one world body at the identity
 //     pose (the usual case), so the big static BVH is walked without an
 //     instance level — then, if it sees the robot, into `robot` up to the
@@ -124,11 +125,16 @@ struct RayCaster::Impl {
   RTCScene scene_world = nullptr;
   RTCScene scene_robot = nullptr;
   RTCScene scene_moving = nullptr;  ///< the kMoving bodies' instances
-  std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in the top-level scenes
+  std::vector<std::unique_ptr<Body>> bodies;
+  // each top-level scene's bodies by instance ID: IDs are dense within a
+  // scene (Embree's commit walks every ID up to the largest, so the robot's
+  // scene, committed every sample, must not start its IDs after 50 moving objects)
+  std::vector<int> robot_bodies;
+  std::vector<int> moving_bodies;
   // the kWorld bodies' indices and bounding spheres in W (centre x, y, z,
   // radius), side by side and kept with their poses: a distance query culls
   // bodies without touching their records (50 moving boxes: 50 bodies a query)
-  std::vector<int> world_bodies;
+  std::vector<int> world_bodies;  ///< also the world scene's bodies by instance ID
   std::vector<Eigen::Vector4d> world_spheres_W;
   // each kMoving body's bounding sphere in W (as world_spheres_W), kept with its pose
   std::vector<Eigen::Vector4d> moving_spheres_W;
@@ -145,6 +151,7 @@ struct RayCaster::Impl {
   int world_direct_body = -1;
   bool has_robot = false;
   bool has_moving = false;
+  bool world_has_mesh = false;  ///< a kWorld body holds a mesh
   std::size_t triangle_count = 0;
   std::unique_ptr<ParallelRunner> runner = std::make_unique<ParallelRunner>(1);  ///< for large batches
   bool committed = true;
