@@ -38,16 +38,17 @@ TEST(GeneratePaths, AWorldWrittenIntoAnotherFolderFindsItsFilesAndRunsTheSame) {
   std::filesystem::copy_file(std::filesystem::path(PROXSIM_TEST_DATA_DIR) / "meshes/cube.obj",
                              dir / "src/meshes/cube.obj");
   {
-    // a box walking across the robot's way, a mesh crate ahead of it
-    std::ofstream(dir / "src/walks/crossing.csv") << "t_s,x_m,y_m,z_m,yaw_deg\n0,1.2,-1.5,0.15,90\n2.5,1.2,1.5,0.15,90\n";
+    // a box walking across the robot's way, a mesh crate ahead of it (both 0.8 m high)
+    std::ofstream(dir / "src/walks/crossing.csv") << "t_s,x_m,y_m,z_m,yaw_deg\n0,1.0,-1.5,0.4,90\n2.5,1.0,1.5,0.4,90\n";
     std::ofstream(dir / "src/room.yaml")
         << "proxsim: 1\nduration_s: 2.5\nrate_hz: 50\n"
            "scene:\n  generate: {kind: room, seed: 5, difficulty: 0.3, size_m: [6, 6], people: [0, 0]}\n"
            "  objects:\n"
-           "    - {name: crate, mesh: {file: meshes/cube.obj, scale: 0.3}, pose: {xyz_m: [2.0, 0.1, 0.15]}}\n"
-           "    - {name: walker, box: {size_m: [0.3, 0.3, 0.3]}, motion: {trajectory: walks/crossing.csv}}\n"
+           "    - {name: crate, mesh: {file: meshes/cube.obj, scale: [0.3, 0.8, 0.8]}, pose: {xyz_m: [1.6, 0, 0.4]}}\n"
+           "    - {name: walker, box: {size_m: [0.3, 0.3, 0.8]}, motion: {trajectory: walks/crossing.csv}}\n"
            "robot: {model: builtin:biped, on_collision: continue}\n"
            "sensors:\n"
+           "  - {name: ideal, type: ideal, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.15]}}\n"
            "  - {name: us, type: ultrasonic, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.15]}}\n"
            "  - {name: laser, type: laser, link: right_tibia, pose: {xyz_m: [0.06, 0, -0.15]}}\n";
   }
