@@ -226,7 +226,7 @@ int Generate(const std::string& scenario_path, const std::string& out_path) {
   std::ifstream file(scenario_path, std::ios::binary);
   std::ostringstream text;
   text << file.rdbuf();
-  const std::string world = proxsim::GeneratedScenarioText(text.str(), scenario_path);
+  const std::string world = proxsim::GeneratedScenarioText(text.str(), scenario_path, out_path);
   const proxsim::Scenario scenario = proxsim::LoadScenarioText(world, out_path);
   const proxsim::Simulation simulation(scenario, 1);
   proxsim::WriteFileAtomically(out_path, world);

@@ -224,17 +224,23 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
   body.bound_center_W = X_WB * body.bound_center_B;
   if (kind == BodyKind::kWorld) {
     body.world_slot = static_cast<int>(impl.world_bodies.size());
+    impl.world_has_mesh = impl.world_has_mesh || body.has_mesh;
     impl.world_bodies.push_back(body_index);
     impl.world_spheres_W.emplace_back(body.bound_center_W.x(), body.bound_center_W.y(), body.bound_center_W.z(),
                                       body.bound_radius_m);
-    body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body_index));
+    body.instance_world = impl.NewInstance(impl.scene_world, body, static_cast<unsigned int>(body.world_slot));
     impl.world_dirty = true;
   } else if (kind == BodyKind::kMoving) {
-    body.instance_moving = impl.NewInstance(impl.scene_moving, body, static_cast<unsigned int>(body_index));
+    body.moving_slot = static_cast<int>(impl.moving_spheres_W.size());
+    impl.moving_spheres_W.emplace_back(body.bound_center_W.x(), body.bound_center_W.y(), body.bound_center_W.z(),
+                                       body.bound_radius_m);
+    body.instance_moving = impl.NewInstance(impl.scene_moving, body, static_cast<unsigned int>(body.moving_slot));
+    impl.moving_bodies.push_back(body_index);
     impl.moving_dirty = true;
     impl.has_moving = true;
   } else {
-    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(body_index));
+    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(impl.robot_bodies.size()));
+    impl.robot_bodies.push_back(body_index);
     impl.robot_dirty = true;
     impl.has_robot = true;
   }
@@ -250,18 +256,33 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   body.R_WB = X_WB.linear().cast<float>();
   body.bound_center_W = X_WB * body.bound_center_B;
   if (body.world_slot >= 0) impl_->world_spheres_W[body.world_slot].head<3>() = body.bound_center_W;
-  float xfm[12];
-  ToColumnMajor3x4(X_WB, xfm);
-  for (RTCGeometry instance : {body.instance_robot, body.instance_world, body.instance_moving}) {
-    if (!instance) continue;
-    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
-    rtcCommitGeometry(instance);
+  if (body.moving_slot >= 0) impl_->moving_spheres_W[body.moving_slot].head<3>() = body.bound_center_W;
+  // the instance's transform waits for the commit of its scene: a caster
+  // asked only for distances (World's moving caster), or moving objects no
+  // ray comes near, never pay for it
+  if (!body.instance_stale) {
+    body.instance_stale = true;
+    (body.kind == BodyKind::kMoving ? impl_->stale_moving : impl_->stale_fixed).push_back(body_index);
   }
   impl_->committed = false;
   (body.kind == BodyKind::kWorld ? impl_->world_dirty
    : body.kind == BodyKind::kMoving ? impl_->moving_dirty
                                      : impl_->robot_dirty) = true;
-  impl_->ThrowIfDeviceError("SetBodyPose");
+}
+
+void RayCaster::Impl::PushTransforms(std::vector<int>& stale) {
+  for (const int b : stale) {
+    Body& body = *bodies[b];
+    float xfm[12];
+    ToColumnMajor3x4(body.X_WB, xfm);
+    for (RTCGeometry instance : {body.instance_robot, body.instance_world, body.instance_moving}) {
+      if (!instance) continue;
+      rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+      rtcCommitGeometry(instance);
+    }
+    body.instance_stale = false;
+  }
+  stale.clear();
 }
 
 void RayCaster::Commit() {
@@ -286,18 +307,31 @@ void RayCaster::Commit() {
       impl.world_direct = impl.bodies[impl.world_direct_body]->scene;
     }
   }
+  impl.PushTransforms(impl.stale_fixed);
   impl.commit_arena.execute([&impl] {
     if (impl.robot_dirty) rtcCommitScene(impl.scene_robot);
     if (impl.world_dirty) rtcCommitScene(impl.scene_world);
-    if (impl.moving_dirty) rtcCommitScene(impl.scene_moving);
   });
+  // the moving objects' scene waits for a ray that may meet them (CommitMovingIfMoved)
+  if (impl.moving_dirty) impl.moving_uncommitted.store(true, std::memory_order_release);
   impl.robot_dirty = impl.world_dirty = impl.moving_dirty = false;
   impl_->committed = true;
   impl_->ThrowIfDeviceError("Commit");
 }
 
+void RayCaster::Impl::CommitMovingIfMoved() {
+  if (!moving_uncommitted.load(std::memory_order_acquire)) return;
+  std::lock_guard<std::mutex> lock(moving_commit_mutex);
+  if (!moving_uncommitted.load(std::memory_order_relaxed)) return;  // another cast committed it meanwhile
+  PushTransforms(stale_moving);
+  commit_arena.execute([this] { rtcCommitScene(scene_moving); });
+  moving_uncommitted.store(false, std::memory_order_release);
+}
+
 std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }
 
 bool RayCaster::has_moving() const { return impl_->has_moving; }
+
+bool RayCaster::world_has_mesh() const { return impl_->world_has_mesh; }
 
 }  // namespace proxsim

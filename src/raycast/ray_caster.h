@@ -94,6 +94,10 @@ class RayCaster {
   /// Whether any body is a kMoving one.
   bool has_moving() const;
 
+  /// Whether a world body holds a mesh: without one, every distance is a
+  /// closed form, whose cost does not grow with the distance asked for.
+  bool world_has_mesh() const;
+
   /// Number of triangles held (meshes and boxes), for reports.
   std::size_t triangle_count() const;
 

@@ -13,17 +13,23 @@
 //     spheres, cylinders and planes as user geometry intersected exactly
 //     (analytic_shapes.h), never tessellated;
 //   - two top-level scenes instance the bodies (one level of instancing):
-//     `world` the kWorld bodies and `robot` the kRobot ones. The instance ID
-//     of a body is its index, so a hit maps straight back to (body, geometry)
-//     → object_id. A ray is cast into the world first — straight into the
+//     `world` the kWorld bodies, `robot` the kRobot ones and `moving` the
+//     kMoving ones. A body's instance ID is its index among its scene's
+//     bodies (Impl::world_bodies, robot_bodies, moving_bodies), so a hit maps
+//     back to (body, geometry) → object_id. A ray is cast into the world first — straight into the
 //     world body's own scene when there is one world body at the identity
 //     pose (the usual case), so the big static BVH is walked without an
 //     instance level — then, if it sees the robot, into `robot` up to the
 //     world hit: the nearer hit wins.
 // Moving a body only rewrites its instance transforms; Commit() then rebuilds
-// the top-level scene that changed (the robot's and the moving objects', each sample), whose only
-// primitives are the instances. The child scenes, and so the static world's
-// BVH, are built once in AddBody.
+// the top-level scene that changed (the robot's, each sample), whose only
+// primitives are the instances. The moving objects' top-level scene is
+// rebuilt only when a ray first may meet one of them after they moved (its
+// segment up to the world hit passes within a moving body's bounding sphere,
+// ray_caster_cast.cc): a commit of 50 instances costs ~40 µs, most samples'
+// rays pass far from every moving object, and a ray that passes outside
+// every sphere misses them all whether or not their scene is up to date.
+// The child scenes, and so the static world's BVH, are built once in AddBody.
 //
 // Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
 // triangle test, so a ray through a shared edge or vertex cannot slip between
@@ -99,6 +105,8 @@ struct Body {
   double bound_radius_m = std::numeric_limits<double>::infinity();
   Vec3 bound_center_W = Vec3::Zero();  ///< X_WB · bound_center_B, kept with X_WB
   int world_slot = -1;  ///< a kWorld body's index in Impl::world_bodies and world_spheres_W
+  int moving_slot = -1; ///< a kMoving body's index in Impl::moving_spheres_W
+  bool instance_stale = false;  ///< moved since its instance's transform was last set (Impl::stale_*)
   // point-query scenes of this body's meshes without some objects (the
   // ground, say), keyed by the sorted excluded object ids; built on first use
   std::mutex query_scenes_mutex;
@@ -117,17 +125,33 @@ struct RayCaster::Impl {
   RTCScene scene_world = nullptr;
   RTCScene scene_robot = nullptr;
   RTCScene scene_moving = nullptr;  ///< the kMoving bodies' instances
-  std::vector<std::unique_ptr<Body>> bodies;  ///< index = instance ID in the top-level scenes
+  std::vector<std::unique_ptr<Body>> bodies;
+  // each top-level scene's bodies by instance ID: IDs are dense within a
+  // scene (Embree's commit walks every ID up to the largest, so the robot's
+  // scene, committed every sample, must not start its IDs after 50 moving objects)
+  std::vector<int> robot_bodies;
+  std::vector<int> moving_bodies;
   // the kWorld bodies' indices and bounding spheres in W (centre x, y, z,
   // radius), side by side and kept with their poses: a distance query culls
   // bodies without touching their records (50 moving boxes: 50 bodies a query)
-  std::vector<int> world_bodies;
+  std::vector<int> world_bodies;  ///< also the world scene's bodies by instance ID
   std::vector<Eigen::Vector4d> world_spheres_W;
+  // each kMoving body's bounding sphere in W (as world_spheres_W), kept with its pose
+  std::vector<Eigen::Vector4d> moving_spheres_W;
+  // the moving objects' scene has moved since its last commit (see the top of
+  // the file); the first cast that may meet one of them commits it, once
+  std::atomic<bool> moving_uncommitted{false};
+  std::mutex moving_commit_mutex;
+  // the bodies moved since their instances' transforms were set: set at the
+  // commit of their scene (Commit, or CommitMovingIfMoved for kMoving bodies)
+  std::vector<int> stale_fixed;
+  std::vector<int> stale_moving;
   // the world body cast without its instance (see the top of the file), or null
   RTCScene world_direct = nullptr;
   int world_direct_body = -1;
   bool has_robot = false;
   bool has_moving = false;
+  bool world_has_mesh = false;  ///< a kWorld body holds a mesh
   std::size_t triangle_count = 0;
   std::unique_ptr<ParallelRunner> runner = std::make_unique<ParallelRunner>(1);  ///< for large batches
   bool committed = true;
@@ -151,6 +175,12 @@ struct RayCaster::Impl {
 
   /// A new scene, robust, at the given build quality.
   RTCScene NewScene(RTCBuildQuality quality);
+
+  /// Commits the moving objects' scene if they moved since its last commit
+  /// (thread-safe: the casts of a batch may ask at once).
+  void CommitMovingIfMoved();
+  /// Sets the instances' transforms of the bodies in `stale` from their poses, and empties it.
+  void PushTransforms(std::vector<int>& stale);
 
   // ray_caster.cc: a body's triangles (a box's or a mesh's) and its instance in a top-level scene
   void AttachTriangles(Body& body, std::unique_ptr<GeomRecord> record, const std::vector<Vec3>& vertices_B,

@@ -17,7 +17,12 @@ bool HasGenerate(const YAML::Node& document);
 /// `proxsim generate` writes, and what a scenario with `generate` is read as.
 /// Throws InputError naming the fault (an unknown family, an impossible
 /// range, a person taller than the room) with `source` in every message.
-std::string GeneratedScenarioText(const std::string& yaml_text, const std::string& source);
+/// With `written_to` (the file the text is for, in another folder than
+/// `source`), the paths read relative to the scenario's folder (meshes,
+/// trajectories, the robot's model) are rewritten to name the same files from
+/// that file's folder (scenario/scenario_paths.h).
+std::string GeneratedScenarioText(const std::string& yaml_text, const std::string& source,
+                                  const std::string& written_to = {});
 
 /// The same on a parsed document (changed in place and returned), without
 /// writing it out: the text above is this node emitted. A closed-loop study

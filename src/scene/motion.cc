@@ -8,19 +8,32 @@ namespace proxsim {
 
 namespace {
 
-/// The waypoints walked in one period of the mode: loop closes the polygon,
+/// The waypoints walked in one period of the mode, without a copy (a moving
+/// object's pose is asked for every sample): loop closes the polygon,
 /// back_and_forth appends the way back, once is the polyline itself.
-std::vector<Vec2> PeriodPoints(const Motion& motion) {
-  std::vector<Vec2> points = motion.waypoints_m;
-  if (motion.mode == MotionMode::kLoop && (points.back() - points.front()).norm() > 0) points.push_back(points.front());
-  if (motion.mode == MotionMode::kBackAndForth) {
-    for (std::size_t i = motion.waypoints_m.size() - 1; i-- > 0;) points.push_back(motion.waypoints_m[i]);
+class PeriodPoints {
+ public:
+  explicit PeriodPoints(const Motion& motion) : points_(motion.waypoints_m) {
+    const std::size_t n = points_.size();
+    size_ = n;
+    if (motion.mode == MotionMode::kLoop && (points_.back() - points_.front()).norm() > 0) size_ = n + 1;
+    if (motion.mode == MotionMode::kBackAndForth) size_ = 2 * n - 1;
   }
-  return points;
-}
+  std::size_t size() const { return size_; }
+  const Vec2& front() const { return points_.front(); }
+  const Vec2& operator[](std::size_t i) const {
+    const std::size_t n = points_.size();
+    if (i < n) return points_[i];
+    return size_ == n + 1 ? points_.front() : points_[2 * n - 2 - i];  // the loop's closing point, or the way back
+  }
+
+ private:
+  const std::vector<Vec2>& points_;
+  std::size_t size_ = 0;
+};
 
 /// The point at arc length u along `points` and the direction of its segment.
-void PointAlong(const std::vector<Vec2>& points, double u, Vec2* p, Vec2* direction) {
+void PointAlong(const PeriodPoints& points, double u, Vec2* p, Vec2* direction) {
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const Vec2 segment = points[i + 1] - points[i];
     const double length_m = segment.norm();
@@ -37,7 +50,7 @@ void PointAlong(const std::vector<Vec2>& points, double u, Vec2* p, Vec2* direct
   *direction = Vec2::UnitX();
 }
 
-double PathLength_m(const std::vector<Vec2>& points) {
+double PathLength_m(const PeriodPoints& points) {
   double length_m = 0;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) length_m += (points[i + 1] - points[i]).norm();
   return length_m;
@@ -51,7 +64,7 @@ Pose FrameAt(const Vec3& p_WM, double yaw_rad) {
 }
 
 MotionFrame WaypointsFrame(const Motion& motion, double t_s) {
-  const std::vector<Vec2> points = PeriodPoints(motion);
+  const PeriodPoints points(motion);
   const double period_m = PathLength_m(points);
   const double s_m = motion.speed_m_s * std::max(0.0, t_s - motion.start_s);
   MotionFrame frame;

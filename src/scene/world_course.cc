@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/portable_trig.h"
 #include "scene/world_generator_internal.h"
 
 namespace proxsim::gen {
@@ -99,17 +100,18 @@ class CourseBuilder {
         constexpr double kRun_m = 1.5, kThickness_m = 0.2;
         const double slope_deg = std::round(10 * Draw(c_.ramp_slope_deg, d_, random)) / 10;
         const double sign = level_ <= 0 || random.Uniform() < 0.5 ? 1 : -1;
+        // sin, cos and sqrt of our own, not libm's (portable_trig.h): the same bits on every CPU;
+        // the slab is pitched by the drawn slope, its run's rise rounded to the millimetre
         const double s = DegToRad(slope_deg);
-        const double rise = Round_m(sign * kRun_m * std::tan(s));
+        const double rise = Round_m(sign * kRun_m * PortableSin(s) / PortableCos(s));
         GenObject ramp;
         ramp.name = name;
         ramp.kind = GenObject::Kind::kBox;
-        ramp.size_m = Vec3(Round_m(std::hypot(kRun_m, rise)), c_.width_m, kThickness_m);
-        // the top face's middle at (x + run/2, level + rise/2); its normal (−sin p', 0, cos p') for the climb
-        const double climb = std::atan2(rise, kRun_m);
-        ramp.rpy_deg = Vec3(0, std::round(-10 * RadToDeg(climb)) / 10, 0);
+        ramp.size_m = Vec3(Round_m(std::sqrt(kRun_m * kRun_m + rise * rise)), c_.width_m, kThickness_m);
+        // the top face's middle at (x + run/2, level + rise/2); its normal (sin p, 0, cos p) for the pitch p about y
+        ramp.rpy_deg = Vec3(0, -sign * slope_deg, 0);
         const double pitch = DegToRad(ramp.rpy_deg.y());
-        const Vec3 normal(std::sin(pitch), 0, std::cos(pitch));
+        const Vec3 normal(PortableSin(pitch), 0, PortableCos(pitch));
         const Vec3 centre = Vec3(x_ + 0.5 * kRun_m, 0, level_ + 0.5 * rise) - 0.5 * kThickness_m * normal;
         ramp.xyz_m = Vec3(Round_m(centre.x()), 0, Round_m(centre.z()));
         ramp.ground = true;

@@ -24,6 +24,15 @@ double Draw(const GenRange& range, double difficulty, KeyedRandom& random) {
   return range.easy + difficulty * (range.hard - range.easy) * random.Uniform();
 }
 
+Vec2 UniformDirection(KeyedRandom& random) {
+  for (;;) {
+    const double x = random.Uniform(-1, 1), y = random.Uniform(-1, 1);
+    const double r2 = x * x + y * y;
+    // inside the unit disc (uniform in angle), away from its centre (where rounding would bias it)
+    if (r2 <= 1 && r2 >= 1e-4) return Vec2(x / std::sqrt(r2), y / std::sqrt(r2));
+  }
+}
+
 GenObject Box(std::string name, const Vec3& min_W, const Vec3& max_W, bool ground, double albedo) {
   GenObject object;
   object.name = std::move(name);

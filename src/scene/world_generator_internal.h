@@ -18,6 +18,11 @@ double Round_m(double value);
 /// A value within `range` at `difficulty` (world_generator.h, GenRange).
 double Draw(const GenRange& range, double difficulty, KeyedRandom& random);
 
+/// A direction drawn uniformly on the circle by rejection from the square
+/// [−1, 1]², from arithmetic and sqrt alone (not libm's cos and sin of a drawn
+/// angle: their bits depend on the CPU, see portable_trig.h).
+Vec2 UniformDirection(KeyedRandom& random);
+
 /// An axis-aligned box from its corners, rounded to the millimetre.
 GenObject Box(std::string name, const Vec3& min_W, const Vec3& max_W, bool ground, double albedo);
 

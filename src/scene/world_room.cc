@@ -366,8 +366,8 @@ GeneratedWorld GenerateRoom(const GenerateConfig& config) {
       // a point of the robot's path, a direction, a walk of 2 to 6 m through it
       const std::size_t segment = static_cast<std::size_t>(random.Integer(0, static_cast<int>(world.path_m.size()) - 2));
       const Vec2 on = world.path_m[segment] + random.Uniform(0.2, 1.0) * (world.path_m[segment + 1] - world.path_m[segment]);
-      const double angle = random.Uniform(0, 2 * kPi), half = random.Uniform(1.0, 3.0);
-      const Vec2 dir(std::cos(angle), std::sin(angle));
+      const Vec2 dir = UniformDirection(random);
+      const double half = random.Uniform(1.0, 3.0);
       const Vec2 a(Round_m(on.x() - half * dir.x()), Round_m(on.y() - half * dir.y()));
       const Vec2 b(Round_m(on.x() + half * dir.x()), Round_m(on.y() + half * dir.y()));
       const bool inside = a.x() > room_min.x() + 0.4 && a.y() > room_min.y() + 0.4 && a.x() < room_max.x() - 0.4 &&

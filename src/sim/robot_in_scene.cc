@@ -17,6 +17,11 @@ constexpr double kClearanceSpacing_m = 0.02;
 // empty queries. On the bench's heavy scenario 2 to 10 cm cost the same;
 // without per-point bounds, 10 cm cost twice as much as 2 cm.
 constexpr double kBoundMargin_m = 0.05;
+// A world of closed forms only (the moving objects' caster) is measured this
+// far above the cap instead: its queries cost about the same whatever their
+// reach, and a bound of 5 cm is spent in a few samples by objects walking at
+// 1 m/s (their moves lower every bound: LowerClearanceBounds).
+constexpr double kClosedFormBoundMargin_m = 0.25;
 // A query asked only for what lies very near (the contacts' 0.1 mm) still
 // measures this far at least: a bound of a few centimetres would be spent by
 // a swinging foot in a sample or two, and every sample of the robot measured
@@ -105,13 +110,8 @@ void RobotInScene::LowerClearanceBounds(const RayCaster* against, double moved_m
     std::erase_if(bounds_slots_, [against](const BoundsSlot& slot) { return slot.against == against; });
     return;
   }
-  for (BoundsSlot& slot : bounds_slots_) {
-    if (slot.against != against) continue;
-    for (ClearanceBounds& bounds : slot.links) {
-      bounds.link_lower_m -= moved_m;
-      for (double& lower_m : bounds.point_lower_m) lower_m -= moved_m;
-    }
-  }
+  for (BoundsSlot& slot : bounds_slots_)
+    if (slot.against == against) slot.lowered_m += moved_m;
 }
 
 double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_ids, double below_m,
@@ -127,15 +127,23 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
 
     // no sample has moved farther than the link's travel since its bound was taken: skip it when it cannot win
     const double travel_m = MaxTravel_m(bounds.X_WL_ref, X_WL, samples.center_L, samples.radius_m);
-    if (bounds.link_lower_m - travel_m - kBoundSlack_m >= best_m) continue;
+    if (bounds.link_lower_m - slot.lowered_m - travel_m - kBoundSlack_m >= best_m) continue;
+    // the samples' queries below are capped here
+    const double cap_m =
+        std::max(best_m, kMinBoundReach_m) + (world.world_has_mesh() ? kBoundMargin_m : kClosedFormBoundMargin_m);
     // the link's bounding sphere first, one capped query, before its samples:
     // nothing may be remembered (a first query), or the bounds may have
-    // dropped because the world moved (an object turning on its path)
+    // dropped because the world moved (an object turning on its path). In a
+    // world of closed forms only (the moving objects' caster) it reaches the
+    // samples' cap: closed forms cost the same whatever the reach, and that
+    // bound lasts for samples, where a bound of best_m is spent by the next
+    // sample's move. Meshes' point queries grow with the reach.
     {
-      const double reach_m = samples.radius_m + best_m;
+      const double skip_m = samples.radius_m + best_m;
+      const double reach_m = world.world_has_mesh() ? skip_m : samples.radius_m + cap_m;
       const double centre_m = world.DistanceToWorld(X_WL * samples.center_L, exclude_object_ids, reach_m);
-      if (centre_m >= reach_m) {
-        bounds.link_lower_m = centre_m - samples.radius_m;
+      if (centre_m >= skip_m) {
+        bounds.link_lower_m = centre_m - samples.radius_m + slot.lowered_m;
         bounds.X_WL_ref = X_WL;
         continue;
       }
@@ -144,21 +152,20 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
     // else each sample the same way with its own bound and travel, and the
     // ones that could win measured with capped queries: a distance below the
     // cap is exact, and only those can lower best_m (the cap is above it)
-    const double cap_m = std::max(best_m, kMinBoundReach_m) + kBoundMargin_m;
     double link_lower_m = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < samples.points_L.size(); ++i) {
       if (mask != nullptr && !(*mask)[link][i]) continue;
       const Vec3 p_W = X_WL * samples.points_L[i];
-      double lower_m = bounds.point_lower_m[i] - (p_W - bounds.p_W_ref[i]).norm() - kBoundSlack_m;
+      double lower_m = bounds.point_lower_m[i] - slot.lowered_m - (p_W - bounds.p_W_ref[i]).norm() - kBoundSlack_m;
       if (lower_m < best_m) {
         lower_m = world.DistanceToWorld(p_W, exclude_object_ids, cap_m);
-        bounds.point_lower_m[i] = lower_m;
+        bounds.point_lower_m[i] = lower_m + slot.lowered_m;
         bounds.p_W_ref[i] = p_W;
         best_m = std::min(best_m, lower_m);
       }
       link_lower_m = std::min(link_lower_m, lower_m);
     }
-    bounds.link_lower_m = link_lower_m;
+    bounds.link_lower_m = link_lower_m + slot.lowered_m;
     bounds.X_WL_ref = X_WL;
   }
   return best_m;

@@ -103,6 +103,10 @@ class RobotInScene {
     std::vector<std::int32_t> exclude_ids;
     const SampleMask* mask = nullptr;
     const RayCaster* against = nullptr;
+    // how far the world has moved in all since the slot began
+    // (LowerClearanceBounds): every bound is stored plus this sum as it was
+    // then, so that lowering them all is one addition, not one per sample
+    double lowered_m = 0;
     std::vector<ClearanceBounds> links;
   };
   BoundsSlot& SlotFor(std::span<const std::int32_t> exclude_object_ids, const SampleMask* mask,

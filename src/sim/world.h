@@ -57,7 +57,7 @@ class World {
 
   /// Puts every moving object where it is at t_s (takes effect at the
   /// caster's next Commit()); returns how far any of their points moved at
-  /// most since the last call (a bound: translation plus turn × radius).
+  /// most since the last call (a bound: translation plus the turn's chord × radius).
   double MoveObjects(double t_s);
   /// Whether the scene has moving objects (they are bodies of their own in caster()).
   bool has_moving_objects() const { return !moving_.empty(); }
