@@ -195,7 +195,7 @@ YAML::Node GeneratedScenarioNode(YAML::Node document, const std::string& source)
     throw InputError(reader.Problems());
   }
   const Field scene_field{document["scene"], "scene", true};
-  const auto scene = reader.Map(scene_field, {"builtin", "objects", "generate"});
+  const auto scene = reader.Map(scene_field, {"builtin", "objects", "generate", "ambient_klux"});
   if (scene && scene->Has("builtin"))
     reader.Fail((*scene)["builtin"], "a generated world has no built-in scene; remove builtin or generate");
   const GenerateConfig config = ReadGenerate(reader, Field{document["scene"]["generate"], "scene.generate", true});
@@ -210,6 +210,8 @@ YAML::Node GeneratedScenarioNode(YAML::Node document, const std::string& source)
   }
   YAML::Node new_scene(YAML::NodeType::Map);
   new_scene["objects"] = objects;
+  // (the scene's other keys are the file's own: read where any scene's are)
+  if (const YAML::Node ambient = document["scene"]["ambient_klux"]; ambient) new_scene["ambient_klux"] = ambient;
   document["scene"] = new_scene;
 
   // the robot's path, unless the file gives its own
