@@ -109,18 +109,20 @@ sensors:
 // right half a wall at x = 2 m: two targets, nearest first, each the mean of
 // its rays' d = x·|(1, u, v)|. With one target only the nearer is reported; a
 // box 0.4 m before the wall (< ST's 600 mm) merges with it into one target.
-std::string BoxBeforeWall(double box_front_x_m, int targets) {
+// `sensor_extra`: more keys of the sensor; `box_material`: the box's, if any.
+std::string BoxBeforeWall(double box_front_x_m, int targets, const std::string& sensor_extra = "",
+                          const std::string& box_material = "") {
   return R"(proxsim: 1
 duration_s: 0.1
 rate_hz: 10
 scene:
   objects:
     - {name: wall, plane: {}, pose: {xyz_m: [2, 0, 0], rpy_deg: [0, -90, 0]}}
-    - {name: box, box: {size_m: [0.1, 2, 2]}, pose: {xyz_m: [)" +
+    - {name: box, box: {size_m: [0.1, 2, 2]}, )" + box_material + R"(pose: {xyz_m: [)" +
          std::to_string(box_front_x_m + 0.05) + R"(, 1, 1], rpy_deg: [0, 0, 0]}}
 sensors:
   - {name: zone, type: multizone, zones: [1, 1], fov_deg: [20, 20], zone_rays: 16, pose: {xyz_m: [0, 0, 1]}, targets: )" +
-         std::to_string(targets) + "}\n";
+         std::to_string(targets) + sensor_extra + "}\n";
 }
 
 double MeanDistance(double x_m, bool left) {
@@ -163,6 +165,37 @@ TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
   EXPECT_EQ(columns["sensors"]["zone"]["targets"], 2);
   EXPECT_EQ(columns["status_codes"]["5"], "range_valid");
   EXPECT_EQ(columns["status_codes"]["255"], "no_target_detected");
+}
+
+TEST(MultizoneTest, TheStrongestTargetOrderPutsTheTargetReturningMostSignalFirst) {
+  // half the zone's rays on the box (0.8 m), half on the wall (2 m); each
+  // ray an equal part, so a target's signal is its surface's IR albedo times
+  // its 8 rays: a dark box (0.1) before the wall (the default albedo) is the weaker
+  const std::string dark = "material: {ir_albedo: 0.1}, ";
+  const fs::path closest = RunScenarioYaml("multizone_closest", BoxBeforeWall(0.8, 2, "", dark));
+  const fs::path strongest =
+      RunScenarioYaml("multizone_strongest", BoxBeforeWall(0.8, 2, ", target_order: strongest", dark));
+  const NpyArray dc = LoadNpy(closest / "zones" / "zone" / "d_m.npy");
+  const NpyArray ds = LoadNpy(strongest / "zones" / "zone" / "d_m.npy");
+  ASSERT_EQ(ds.shape, (std::vector<long>{1, 1, 2}));
+  EXPECT_NEAR(dc.values[0], MeanDistance(0.8, true), 1e-5);   // closest: the box first
+  EXPECT_NEAR(ds.values[0], MeanDistance(2.0, false), 1e-5);  // strongest: the wall first
+  EXPECT_NEAR(ds.values[1], MeanDistance(0.8, true), 1e-5);
+  // one target reported: the strongest order keeps the wall, the closest the box
+  const fs::path one = RunScenarioYaml("multizone_strongest_one", BoxBeforeWall(0.8, 1, ", target_order: strongest", dark));
+  EXPECT_NEAR(LoadNpy(one / "zones" / "zone" / "d_m.npy").values[0], MeanDistance(2.0, false), 1e-5);
+  // a box as bright as the wall: equal signals, the nearer first in either order
+  const fs::path tie = RunScenarioYaml("multizone_strongest_tie",
+                                       BoxBeforeWall(0.8, 2, ", target_order: strongest", ""));
+  EXPECT_NEAR(LoadNpy(tie / "zones" / "zone" / "d_m.npy").values[0], MeanDistance(0.8, true), 1e-5);
+  // the summary echoes the order; a wrong one is refused naming both
+  EXPECT_EQ(nlohmann::json::parse(ReadFile(strongest / "summary.json"))["inputs"]["sensors"][0]["target_order"], "strongest");
+  const fs::path bad_dir = FreshDir("multizone_bad_order");
+  fs::create_directories(bad_dir);
+  std::ofstream(bad_dir / "bad.yaml") << BoxBeforeWall(0.8, 2, ", target_order: brightest");
+  const auto bad = RunProxsim("validate " + (bad_dir / "bad.yaml").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("expected closest or strongest"), std::string::npos) << bad.output;
 }
 
 TEST(MultizoneTest, APartsLimitsAreRefusedNamingTheLimitAndItsSource) {

@@ -158,10 +158,10 @@ void ReadAmbientTable(YamlReader& reader, const Field& field, const std::string&
   }
 }
 
-// zones: [nx, ny], fov_deg: [h, v], zone_rays, targets, target_separation_m (multizone.h)
+// zones: [nx, ny], fov_deg: [h, v], zone_rays, targets, target_separation_m, target_order (multizone.h)
 void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
   const bool given = map.Has("zones") || map.Has("fov_deg") || map.Has("zone_rays") || map.Has("targets") ||
-                     map.Has("target_separation_m");
+                     map.Has("target_separation_m") || map.Has("target_order");
   if (!given) return;
   ZoneSpec zones = spec.zones.value_or(ZoneSpec{});
   if (const auto grid = reader.Numbers(map["zones"], 2, PositiveNumber(""), "[nx, ny], whole numbers of zones")) {
@@ -178,6 +178,12 @@ void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
   if (const auto rays = reader.Count(map["zone_rays"])) zones.rays_per_zone = static_cast<int>(std::min<std::uint64_t>(*rays, 1000));
   if (const auto targets = reader.Count(map["targets"])) zones.targets = static_cast<int>(std::min<std::uint64_t>(*targets, 1000));
   zones.target_separation_m = reader.Number(map["target_separation_m"]).value_or(zones.target_separation_m);
+  if (const auto order = reader.String(map["target_order"])) {
+    if (*order == "closest" || *order == "strongest")
+      zones.strongest_first = *order == "strongest";
+    else
+      reader.Fail(map["target_order"], "expected closest or strongest (ST's target orders), got '" + *order + "'");
+  }
   spec.zones = zones;
 }
 

@@ -7,16 +7,6 @@
 
 namespace proxsim {
 
-namespace {
-
-// what one ray's echo returns: E of the physical model, or the surface's reflectivity
-double ReturnedEnergy(const SensorSpec& spec, const Echo& echo) {
-  if (spec.echo_model == EchoModel::kPhysical) return PhysicalEchoEnergy(spec, echo);
-  return spec.type == SensorType::kUltrasonic ? echo.acoustic_reflectivity : echo.ir_albedo;
-}
-
-}  // namespace
-
 std::vector<BeamEcho> BeamEchoes(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
                                  int max_echoes) {
   std::vector<RangedRay> heard;

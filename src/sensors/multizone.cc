@@ -101,7 +101,9 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
   out.targets.assign(static_cast<std::size_t>(zone_count * zones.targets), ZoneTarget{});
   out.target_count.assign(static_cast<std::size_t>(zone_count), 0);
   std::vector<RangedRay> counted;
-  std::vector<EchoGroup> groups;
+  std::vector<EchoGroup> groups, strongest;
+  std::vector<double> signal;
+  std::vector<std::size_t> order;
   counted.reserve(per_zone);
   for (int zone = 0; zone < zone_count; ++zone) {
     // the zone's rays whose echo counts, and whether a surface lay within range at all
@@ -119,7 +121,23 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
       continue;
     }
     // nearest first; a gap of the part's separation or more starts a new target
-    SplitEchoes(counted, zones.target_separation_m, zones.targets, groups);
+    SplitEchoes(counted, zones.target_separation_m, zones.strongest_first ? zone_count * per_zone : zones.targets,
+                groups);
+    if (zones.strongest_first) {
+      // ST's strongest order: the targets by the signal their rays return
+      // (each ray an equal part of the zone), a tie keeping the nearer first
+      signal.assign(groups.size(), 0.0);
+      for (std::size_t g = 0; g < groups.size(); ++g)
+        for (std::size_t k = groups[g].begin; k < groups[g].end; ++k)
+          signal[g] += ReturnedEnergy(spec, echoes[static_cast<std::size_t>(counted[k].ray)]);
+      order.resize(groups.size());
+      for (std::size_t g = 0; g < groups.size(); ++g) order[g] = g;
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return signal[a] > signal[b]; });
+      strongest.clear();
+      for (std::size_t g = 0; g < order.size() && g < static_cast<std::size_t>(zones.targets); ++g)
+        strongest.push_back(groups[order[g]]);
+      groups.swap(strongest);
+    }
     for (std::size_t found = 0; found < groups.size(); ++found) {
       const EchoGroup& group = groups[found];
       double sum_m = 0.0;

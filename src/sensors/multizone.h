@@ -1,7 +1,9 @@
 // A multi-zone time-of-flight sensor (ST's VL53L5CX, VL53L7CX, VL53L8CX, or a
 // generic `multizone` one): its square field of view is split into nx × ny
 // zones, each sampled by k × k rays, and each zone reports up to `targets`
-// targets, nearest first (ST's "closest" target order).
+// targets in one of ST's two target orders: nearest first ("closest", the
+// default here) or the most signal first ("strongest", the default of ST's
+// driver: `target_order`).
 //
 // Geometry. The zones are the cells of a grid on the image plane x = 1 of the
 // sensor frame S (the SPAD array behind the receiver lens): u = y/x across

@@ -48,7 +48,9 @@ nlohmann::json SensorSpecJson(const SensorSpec& spec) {
           {"fov_deg", spec.zones ? nlohmann::json{spec.zones->fov_h_deg, spec.zones->fov_v_deg} : nlohmann::json(nullptr)},
           {"zone_rays", spec.zones ? nlohmann::json(spec.zones->rays_per_zone) : nlohmann::json(nullptr)},
           {"targets", spec.zones ? nlohmann::json(spec.zones->targets) : nlohmann::json(nullptr)},
-          {"target_separation_m", spec.zones ? nlohmann::json(spec.zones->target_separation_m) : nlohmann::json(nullptr)}};
+          {"target_separation_m", spec.zones ? nlohmann::json(spec.zones->target_separation_m) : nlohmann::json(nullptr)},
+          {"target_order", spec.zones ? nlohmann::json(spec.zones->strongest_first ? "strongest" : "closest")
+                                      : nlohmann::json(nullptr)}};
 }
 
 }  // namespace proxsim

@@ -113,6 +113,11 @@ double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo) {
   return r * ((1.0 - s) * std::cos(alpha) + s * std::pow(lobe, spec.specular_exponent));
 }
 
+double ReturnedEnergy(const SensorSpec& spec, const Echo& echo) {
+  if (spec.echo_model == EchoModel::kPhysical) return PhysicalEchoEnergy(spec, echo);
+  return spec.type == SensorType::kUltrasonic ? echo.acoustic_reflectivity : echo.ir_albedo;
+}
+
 ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain) {
   // the range windows of §4.1
   if (!(echo.distance_m <= spec.max_range_m)) return ReadingStatus::kNoEcho;

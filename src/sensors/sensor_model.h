@@ -127,6 +127,11 @@ ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain);
 /// echo's incidence (see the top of this file); r per the sensor's modality.
 double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo);
 
+/// What one ray's echo returns, the measure of an echo's signal (several
+/// echoes, a zone's targets): E of the physical model, or else the
+/// surface's reflectivity per the sensor's modality.
+double ReturnedEnergy(const SensorSpec& spec, const Echo& echo);
+
 /// A lookup table's output at distance d: linear between rows, the first
 /// row's value before the table and the last row's beyond it (and on a miss).
 /// `noise_fraction` receives the interpolated noise fraction when not null.

@@ -77,7 +77,7 @@ void ValidateEchoes(const SensorSpec& spec, std::vector<std::string>& problems) 
                        spec.single_echo_source + ")" + got);
   } else if (spec.type == SensorType::kMultizone) {
     problems.push_back("echoes: expected first for a multizone sensor (its zones report up to `targets` targets "
-                       "each, nearest first, in zones/)" + got);
+                       "each, in zones/; `target_order: strongest` puts the strongest first)" + got);
   } else if (!IsTimeOfFlight(spec.type)) {
     problems.push_back("echoes: expected first for a " + std::string(SensorTypeName(spec.type)) +
                        " sensor (only time-of-flight beams hear several echoes)" + got);

@@ -92,6 +92,11 @@ struct ZoneSpec {
   int rays_per_zone = 4;       ///< rays sampling each zone: k² for k in [1, 4]
   int targets = 1;             ///< targets reported per zone, [1, 4]
   double target_separation_m = 0.6;  ///< surfaces closer in range than this merge into one target, > 0
+  /// The order of a zone's targets, as ST's ULD sets it (vl53l5cx_set_target_order):
+  /// false: closest first; true: strongest first (the most signal), which is
+  /// the ULD's own default — kept off here so that a zone reports what it
+  /// always did unless asked (docs/sensors.md#multi-zone-time-of-flight).
+  bool strongest_first = false;
 };
 
 /// Which echoes of a ping a time-of-flight beam reports (docs/sensors.md#several-echoes).
