@@ -2,11 +2,13 @@
 // paper's scenario without its stop rule collides with the obstacle where the
 // shapes first overlap (computed here from poses.csv and the URDF's boxes,
 // not by proxsim), never standing on it; a robot whose feet overlap collides
-// with itself; on_collision: continue logs every box of a row; bad values of
-// the new keys are refused naming them.
+// with itself; the circumvent example reaches its goal and its closing line
+// says so; on_collision: continue logs every box of a row; bad values of the
+// new keys are refused naming them.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -103,6 +105,20 @@ TEST(Consequences, WithoutItsStopRuleThePaperRobotCollidesWithTheObstacleWhereTh
   EXPECT_NEAR(last_t_s, collided_t_s, 1e-9);
   ASSERT_FALSE(std::isnan(first_overlap_t_s)) << "no overlap found by the test up to " << last_t_s;
   EXPECT_NEAR(collided_t_s, first_overlap_t_s, 0.01 + 1e-9) << "within one sample at 100 Hz";
+}
+
+TEST(Consequences, TheCircumventExampleReachesItsGoalAndItsClosingLineSaysSo) {
+  const auto out = FreshDir("circumvent_goal");
+  const auto run = RunProxsim("run " + std::string(PROXSIM_SOURCE_DIR) +
+                              "/data/scenarios/circumvent_obstacle.yaml --no-report --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto summary = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  fs::remove_all(out);
+  EXPECT_EQ(summary["robot"]["outcome"], "reached_goal");
+  EXPECT_TRUE(summary["robot"]["collisions"].empty());
+  char line[64];
+  std::snprintf(line, sizeof line, "reached its goal at t = %.2f s", summary["robot"]["outcome_t_s"].get<double>());
+  EXPECT_NE(run.output.find(line), std::string::npos) << run.output;
 }
 
 TEST(Consequences, FeetWiderThanTheGapBetweenThemCollideWithEachOther) {

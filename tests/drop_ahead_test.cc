@@ -105,8 +105,15 @@ TEST(DropAhead, TheFloorMissingWhereItWasExpected) {
   EXPECT_NEAR(sign->below_m, kMaxDrop_m, 1e-12);
   // a laser's floor at 45 degrees of incidence would not echo either (window 45, 3 degrees inside it) ...
   EXPECT_FALSE(SeeDropAhead(Output(45, 2.0, false), Info(2, 45), Self(0.15), Rule(), kMaxDrop_m));
-  // ... at 40 degrees it would: 50 degrees down
-  EXPECT_TRUE(SeeDropAhead(Output(50, 2.0, false), Info(2, 45), Self(0.05), Rule(), kMaxDrop_m));
+  // ... at 40 degrees (50 degrees down) the floor would, but a riser across
+  // the axis would be met at 50 degrees and echo nothing: silence proves nothing
+  EXPECT_FALSE(SeeDropAhead(Output(50, 2.0, false), Info(2, 45), Self(0.05), Rule(), kMaxDrop_m));
+  // with a 60-degree window both the floor (40) and a riser (50) would echo
+  EXPECT_TRUE(SeeDropAhead(Output(50, 2.0, false), Info(2, 60), Self(0.05), Rule(), kMaxDrop_m));
+  // 85 degrees down, the toe 0.2 m behind the sensor: the floor at 5 degrees
+  // would echo, a riser at 85 degrees would not with a 60-degree window
+  EXPECT_TRUE(SeeDropAhead(Output(85, 2.0, false), Info(2, 90), Self(-0.2), Rule(), kMaxDrop_m));
+  EXPECT_FALSE(SeeDropAhead(Output(85, 2.0, false), Info(2, 60), Self(-0.2), Rule(), kMaxDrop_m));
 }
 
 TEST(DropAhead, NothingReportedIsNoSignUnlessTheFreeSpaceIsDeepAndNear) {

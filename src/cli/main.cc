@@ -168,6 +168,8 @@ int Run(const std::string& scenario_path, const std::string& out_dir, const std:
       motion = "collided with " + with + " (" + first["link"].get<std::string>() + ")" + at;
     } else if (outcome == "fell") {
       motion = std::string("fell") + at + " (" + r["outcome_detail"].get<std::string>().substr(6) + ")";
+    } else if (outcome == "reached_goal") {
+      motion = std::string("reached its goal") + at;
     } else if (r["stopped"].get<bool>()) {
       const std::string reason = r["stop_reason"].get<std::string>();
       std::snprintf(at, sizeof at, " at t = %.2f s", r["stop_t_s"].get<double>());

@@ -56,7 +56,14 @@ std::optional<DropSign> SeeDropAhead(const SensorOutput& sensor, const SensorInf
   // where the axis crosses the ground's level, and whether the floor there would echo
   const double t_ground_m = (self.ground_z_m - sensor.p_WS.z()) / sensor.dir_W.z();
   const double incidence_deg = RadToDeg(std::acos(std::clamp(-sensor.dir_W.z(), 0.0, 1.0)));
-  if (t_ground_m <= info.min_range_m || incidence_deg > info.max_incidence_deg - kIncidenceMargin_deg) {
+  // A vertical face across the axis (a riser, a wall, a hole's far side) is
+  // met at the complement of the floor's incidence. Where that is outside the
+  // window, such a face would echo nothing too: silence could be a riser met
+  // at a grazing angle as well as free space, and proves nothing.
+  const double vertical_face_incidence_deg = 90.0 - incidence_deg;
+  const double echoing_incidence_deg = info.max_incidence_deg - kIncidenceMargin_deg;
+  if (t_ground_m <= info.min_range_m || incidence_deg > echoing_incidence_deg ||
+      vertical_face_incidence_deg > echoing_incidence_deg) {
     return std::nullopt;
   }
   const Vec3 p_W_ground = MeasuredPoint_W(sensor.p_WS, sensor.dir_W, t_ground_m);

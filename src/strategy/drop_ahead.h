@@ -9,7 +9,9 @@
 //    that distance would be that deep);
 //  - the floor missing where it was expected: the axis crosses the ground's
 //    level at an incidence the device echoes from (3 degrees inside its
-//    window, so that a lower floor parallel to it would echo too), yet the
+//    window, so that a lower floor parallel to it would echo too), and so
+//    would a vertical face across it (a riser or a wall: else silence may be
+//    a riser met at a grazing angle), yet the
 //    device reports nothing at all (its maximum range): the space along the
 //    axis is free to the end of the range. Where that free space (on a beam's
 //    highest ray) passes max_drop_m below the ground, the surface under it
