@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace proxsim {
 
@@ -12,9 +13,9 @@ double AngleDeg(const Vec3& a, const Vec3& b) { return RadToDeg(std::acos(std::c
 
 }  // namespace
 
-std::vector<EchoSource> EchoSources(const SensorSpec& emitter_spec, const PingRays& emitter) {
-  std::vector<EchoSource> sources;
-  if (!emitter_spec.beam) return sources;
+void EchoSourcesInto(const SensorSpec& emitter_spec, const PingRays& emitter, std::vector<EchoSource>& sources) {
+  sources.clear();
+  if (!emitter_spec.beam) return;
   for (std::size_t r = 0; r < emitter.hits.size(); ++r) {
     const Hit& hit = emitter.hits[r];
     const BeamRay& ray = emitter.beam_rays[r];
@@ -26,18 +27,21 @@ std::vector<EchoSource> EchoSources(const SensorSpec& emitter_spec, const PingRa
     const Vec3 n = hit.normal_W.cast<double>().normalized();
     sources.push_back({out_m, emitter.p_WS + out_m * d, d - 2.0 * d.dot(n) * n});
   }
-  return sources;
 }
 
-std::vector<CrossEchoPath> CrossEchoPaths(std::span<const EchoSource> sources, const SensorSpec& listener_spec,
-                                          const ListeningSensor& listener) {
-  std::vector<CrossEchoPath> paths;
-  if (!listener_spec.beam) return paths;
+MirrorWindow::MirrorWindow(const SensorSpec& listener_spec)
+    : window_deg(2.0 * listener_spec.max_incidence_deg), cos_window(std::cos(DegToRad(std::min(window_deg, 180.0)))) {}
+
+void CrossEchoPathsInto(std::span<const EchoSource> sources, const SensorSpec& listener_spec,
+                        const MirrorWindow& window, const ListeningSensor& listener,
+                        std::vector<CrossEchoPath>& paths) {
+  paths.clear();
+  if (!listener_spec.beam) return;
   // the mirror test by its cosine first: only a direction within 1e-9 of the
   // window's edge takes the exact angle (acos), so each decision is the
   // angle's, bit for bit, at a dot product's cost
-  const double window_deg = 2.0 * listener_spec.max_incidence_deg;
-  const double cos_window = std::cos(DegToRad(std::min(window_deg, 180.0)));
+  const double window_deg = window.window_deg;
+  const double cos_window = window.cos_window;
   for (const EchoSource& source : sources) {
     const Vec3 to_listener = listener.p_WS - source.p_WH;
     const double back_m = to_listener.norm();
@@ -50,13 +54,16 @@ std::vector<CrossEchoPath> CrossEchoPaths(std::span<const EchoSource> sources, c
     paths.push_back({source.out_m + back_m, source.p_WH});
   }
   std::sort(paths.begin(), paths.end(), [](const CrossEchoPath& a, const CrossEchoPath& b) { return a.path_m < b.path_m; });
-  return paths;
 }
 
-std::vector<CrossEchoPath> CrossEchoPaths(const SensorSpec& emitter_spec, const PingRays& emitter,
-                                          const SensorSpec& listener_spec, const ListeningSensor& listener) {
-  if (!emitter_spec.beam || !listener_spec.beam) return {};
-  return CrossEchoPaths(EchoSources(emitter_spec, emitter), listener_spec, listener);
+double ShortestCrossEchoPath_m(std::span<const EchoSource> sources, const Vec3& p_W_emitter,
+                               const Vec3& p_W_listener) {
+  // a path E -> H -> L with |EH| = out is at least |EL| (E, H, L a triangle)
+  // and at least 2 out - |EL| (|HL| >= |EH| - |EL|)
+  double nearest_out_m = std::numeric_limits<double>::infinity();
+  for (const EchoSource& source : sources) nearest_out_m = std::min(nearest_out_m, source.out_m);
+  const double apart_m = (p_W_listener - p_W_emitter).norm();
+  return std::max(apart_m, 2.0 * nearest_out_m - apart_m) - 1e-9;
 }
 
 }  // namespace proxsim

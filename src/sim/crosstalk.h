@@ -44,11 +44,6 @@ struct CrossEchoPath {
   Vec3 p_WH = Vec3::Zero();
 };
 
-/// Every way the emitter's ping reaches the listener after one reflection,
-/// shortest first; empty when either has no beam.
-std::vector<CrossEchoPath> CrossEchoPaths(const SensorSpec& emitter_spec, const PingRays& emitter,
-                                          const SensorSpec& listener_spec, const ListeningSensor& listener);
-
 /// What of an emitter's ping does not depend on who listens: each ray that
 /// counts, its distance out, its hit point H and the mirror direction there,
 /// in ray order. n sonars hear each other in n(n − 1) pairs: these are
@@ -59,10 +54,31 @@ struct EchoSource {
   Vec3 p_WH = Vec3::Zero();
   Vec3 mirror_W = Vec3::UnitX();
 };
-std::vector<EchoSource> EchoSources(const SensorSpec& emitter_spec, const PingRays& emitter);
 
-/// CrossEchoPaths from the emitter's EchoSources (the same paths).
-std::vector<CrossEchoPath> CrossEchoPaths(std::span<const EchoSource> sources, const SensorSpec& listener_spec,
-                                          const ListeningSensor& listener);
+/// The emitter's echo sources into `sources` (cleared first; its capacity is
+/// kept, so a caller that reuses it allocates nothing once warm).
+void EchoSourcesInto(const SensorSpec& emitter_spec, const PingRays& emitter, std::vector<EchoSource>& sources);
+
+/// The listener's mirror window — twice its incidence window — and that
+/// angle's cosine, found once per listener rather than once per emitter.
+struct MirrorWindow {
+  explicit MirrorWindow(const SensorSpec& listener_spec);
+  double window_deg = 0.0;
+  double cos_window = 0.0;
+};
+
+/// Every way the emitter's ping (its echo sources) reaches the listener after
+/// one reflection, shortest first, into `paths` (cleared first); none when the
+/// listener has no beam.
+void CrossEchoPathsInto(std::span<const EchoSource> sources, const SensorSpec& listener_spec,
+                        const MirrorWindow& window, const ListeningSensor& listener,
+                        std::vector<CrossEchoPath>& paths);
+
+/// The shortest any of those paths can be, from where the emitter and the
+/// listener are and the nearest source alone (the triangle inequality, less
+/// 1 nm for rounding): no path is shorter, so a caller can skip an emitter
+/// whose every path would arrive too late without finding them.
+double ShortestCrossEchoPath_m(std::span<const EchoSource> sources, const Vec3& p_W_emitter,
+                               const Vec3& p_W_listener);
 
 }  // namespace proxsim

@@ -1,5 +1,7 @@
 #include "sim/sensor_reader.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 
@@ -64,18 +66,19 @@ double SensorReader::ListeningWindow_s(std::size_t sensor) const {
   return config.rate_hz > 0 ? 1.0 / config.rate_hz : 1.0 / scenario_.rate_hz;  // until its next ping
 }
 
-std::vector<double> SensorReader::PingOffsets_s(std::size_t emitter, std::size_t listener, std::int64_t sample) const {
+SensorReader::PingOffsets SensorReader::PingOffsets_s(std::size_t emitter, std::size_t listener,
+                                                     std::int64_t sample) const {
   // relative to the listener's ping at this sample: the emitter's last ping
   // (this sample's included) and its next one, when within the listening window
-  std::vector<double> offsets;
+  PingOffsets offsets;
   const double t_s = static_cast<double>(sample) / scenario_.rate_hz;
   const double window_s = ListeningWindow_s(listener);
   if (std::isfinite(last_ping_t_s_[emitter]) && t_s - last_ping_t_s_[emitter] < window_s) {
-    offsets.push_back(last_ping_t_s_[emitter] - t_s);
+    offsets.s[offsets.count++] = last_ping_t_s_[emitter] - t_s;
   }
   for (std::int64_t k = sample + 1; static_cast<double>(k - sample) / scenario_.rate_hz <= window_s; ++k) {
     if (IsSensorSample(emitter, k)) {
-      offsets.push_back(static_cast<double>(k - sample) / scenario_.rate_hz);
+      offsets.s[offsets.count++] = static_cast<double>(k - sample) / scenario_.rate_hz;
       break;
     }
   }
@@ -98,18 +101,30 @@ void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
                                : std::numeric_limits<double>::infinity();
     bool heard_another = false;
     const ListeningSensor ear{out.p_WS, out.dir_W};
+    const MirrorWindow mirror_window(config.spec);
     for (const std::size_t emitter : sonars_) {
       if (emitter == listener) continue;
-      const std::vector<double> offsets_s = PingOffsets_s(emitter, listener, frame.sample);
-      if (offsets_s.empty()) continue;
+      const PingOffsets offsets_s = PingOffsets_s(emitter, listener, frame.sample);
+      if (offsets_s.count == 0) continue;
       if (!echo_sources_found_[emitter]) {
         const std::size_t begin = world_.ray_begin(emitter), count = world_.ray_begin(emitter + 1) - begin;
         const PingRays ping{frame.sensors[emitter].p_WS, std::span(ray_dir_W_).subspan(begin, count),
                             std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
-        echo_sources_[emitter] = EchoSources(scenario_.sensors[emitter].spec, ping);
+        EchoSourcesInto(scenario_.sensors[emitter].spec, ping, echo_sources_[emitter]);
         echo_sources_found_[emitter] = true;
       }
-      for (const CrossEchoPath& path : CrossEchoPaths(echo_sources_[emitter], config.spec, ear)) {
+      // no path of this ping can arrive in the window before the first echo
+      // heard so far: its paths need not be found (an exact cut: each path is
+      // at least the shortest bound, and arrives no sooner)
+      const double shortest_m =
+          ShortestCrossEchoPath_m(echo_sources_[emitter], frame.sensors[emitter].p_WS, out.p_WS);
+      const bool too_late = std::all_of(offsets_s.begin(), offsets_s.end(), [&](double offset_s) {
+        const double earliest_s = offset_s + shortest_m / c_m_s;
+        return earliest_s > window_s || earliest_s >= first_s;
+      });
+      if (too_late) continue;
+      CrossEchoPathsInto(echo_sources_[emitter], config.spec, mirror_window, ear, cross_paths_);
+      for (const CrossEchoPath& path : cross_paths_) {
         double arrival_s = std::numeric_limits<double>::infinity();
         for (const double offset_s : offsets_s) {
           const double a_s = offset_s + path.path_m / c_m_s;

@@ -16,6 +16,8 @@
 // Frames: W world, L the link a sensor is fixed on, S a sensor.
 #pragma once
 
+#include <array>
+
 #include <vector>
 
 #include "core/parallel.h"
@@ -50,8 +52,16 @@ class SensorReader {
   bool IsSensorSample(std::size_t sensor, std::int64_t sample) const;
   // the listeners' readings replaced by an earlier echo of another sensor's ping
   void ApplyCrosstalk(SampleFrame& frame);
-  // the emitter's pings within the listener's window around its ping at this sample, s from it
-  std::vector<double> PingOffsets_s(std::size_t emitter, std::size_t listener, std::int64_t sample) const;
+  // the emitter's pings within the listener's window around its ping at this
+  // sample, s from it: its last ping and its next one, at most (no heap: it is
+  // asked for every pair of sonars every sample)
+  struct PingOffsets {
+    std::array<double, 2> s{};
+    std::size_t count = 0;
+    const double* begin() const { return s.data(); }
+    const double* end() const { return s.data() + count; }
+  };
+  PingOffsets PingOffsets_s(std::size_t emitter, std::size_t listener, std::int64_t sample) const;
   // how long `sensor` listens after its ping, s
   double ListeningWindow_s(std::size_t sensor) const;
   // below this many rays a sample is read on one thread (a fork costs more)
@@ -72,6 +82,7 @@ class SensorReader {
   // each found once per sample, on first use (buffers kept across samples)
   std::vector<std::vector<EchoSource>> echo_sources_;
   std::vector<bool> echo_sources_found_;
+  std::vector<CrossEchoPath> cross_paths_;  // one pair's paths, the buffer reused
   std::vector<double> last_ping_t_s_;  // each sensor's last ping, s (NaN before the first)
 };
 
