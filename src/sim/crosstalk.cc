@@ -56,14 +56,17 @@ void CrossEchoPathsInto(std::span<const EchoSource> sources, const SensorSpec& l
   std::sort(paths.begin(), paths.end(), [](const CrossEchoPath& a, const CrossEchoPath& b) { return a.path_m < b.path_m; });
 }
 
-double ShortestCrossEchoPath_m(std::span<const EchoSource> sources, const Vec3& p_W_emitter,
-                               const Vec3& p_W_listener) {
+double NearestEchoSource_m(std::span<const EchoSource> sources) {
+  double nearest_m = std::numeric_limits<double>::infinity();
+  for (const EchoSource& source : sources) nearest_m = std::min(nearest_m, source.out_m);
+  return nearest_m;
+}
+
+double ShortestCrossEchoPath_m(double nearest_source_m, const Vec3& p_W_emitter, const Vec3& p_W_listener) {
   // a path E -> H -> L with |EH| = out is at least |EL| (E, H, L a triangle)
   // and at least 2 out - |EL| (|HL| >= |EH| - |EL|)
-  double nearest_out_m = std::numeric_limits<double>::infinity();
-  for (const EchoSource& source : sources) nearest_out_m = std::min(nearest_out_m, source.out_m);
   const double apart_m = (p_W_listener - p_W_emitter).norm();
-  return std::max(apart_m, 2.0 * nearest_out_m - apart_m) - 1e-9;
+  return std::max(apart_m, 2.0 * nearest_source_m - apart_m) - 1e-9;
 }
 
 }  // namespace proxsim

@@ -74,11 +74,13 @@ void CrossEchoPathsInto(std::span<const EchoSource> sources, const SensorSpec& l
                         const MirrorWindow& window, const ListeningSensor& listener,
                         std::vector<CrossEchoPath>& paths);
 
+/// The distance out to the nearest of an emitter's echo sources (+inf for none).
+double NearestEchoSource_m(std::span<const EchoSource> sources);
+
 /// The shortest any of those paths can be, from where the emitter and the
-/// listener are and the nearest source alone (the triangle inequality, less
-/// 1 nm for rounding): no path is shorter, so a caller can skip an emitter
-/// whose every path would arrive too late without finding them.
-double ShortestCrossEchoPath_m(std::span<const EchoSource> sources, const Vec3& p_W_emitter,
-                               const Vec3& p_W_listener);
+/// listener are and the nearest source's distance alone (the triangle
+/// inequality, less 1 nm for rounding): no path is shorter, so a caller can
+/// skip an emitter whose every path would arrive too late without finding them.
+double ShortestCrossEchoPath_m(double nearest_source_m, const Vec3& p_W_emitter, const Vec3& p_W_listener);
 
 }  // namespace proxsim

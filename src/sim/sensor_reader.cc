@@ -66,28 +66,39 @@ double SensorReader::ListeningWindow_s(std::size_t sensor) const {
   return config.rate_hz > 0 ? 1.0 / config.rate_hz : 1.0 / scenario_.rate_hz;  // until its next ping
 }
 
-SensorReader::PingOffsets SensorReader::PingOffsets_s(std::size_t emitter, std::size_t listener,
-                                                     std::int64_t sample) const {
-  // relative to the listener's ping at this sample: the emitter's last ping
-  // (this sample's included) and its next one, when within the listening window
-  PingOffsets offsets;
-  const double t_s = static_cast<double>(sample) / scenario_.rate_hz;
-  const double window_s = ListeningWindow_s(listener);
-  if (std::isfinite(last_ping_t_s_[emitter]) && t_s - last_ping_t_s_[emitter] < window_s) {
-    offsets.s[offsets.count++] = last_ping_t_s_[emitter] - t_s;
-  }
-  for (std::int64_t k = sample + 1; static_cast<double>(k - sample) / scenario_.rate_hz <= window_s; ++k) {
-    if (IsSensorSample(emitter, k)) {
-      offsets.s[offsets.count++] = static_cast<double>(k - sample) / scenario_.rate_hz;
-      break;
+void SensorReader::FindNextPings(std::int64_t sample) {
+  next_ping_offset_s_.assign(scenario_.sensors.size(), std::numeric_limits<double>::infinity());
+  for (const std::size_t emitter : sonars_) {
+    for (std::int64_t k = sample + 1; static_cast<double>(k - sample) / scenario_.rate_hz <= longest_window_s_; ++k) {
+      if (IsSensorSample(emitter, k)) {
+        next_ping_offset_s_[emitter] = static_cast<double>(k - sample) / scenario_.rate_hz;
+        break;
+      }
     }
   }
+}
+
+SensorReader::PingOffsets SensorReader::PingOffsets_s(std::size_t emitter, double listener_window_s,
+                                                     double t_s) const {
+  // relative to the listener's ping at this sample: the emitter's last ping
+  // (this sample's included) and its next one, when within the listening
+  // window (the first after this sample: a later one is never nearer)
+  PingOffsets offsets;
+  if (std::isfinite(last_ping_t_s_[emitter]) && t_s - last_ping_t_s_[emitter] < listener_window_s) {
+    offsets.s[offsets.count++] = last_ping_t_s_[emitter] - t_s;
+  }
+  if (next_ping_offset_s_[emitter] <= listener_window_s) offsets.s[offsets.count++] = next_ping_offset_s_[emitter];
   return offsets;
 }
 
 void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
   echo_sources_.resize(scenario_.sensors.size());
   echo_sources_found_.assign(scenario_.sensors.size(), false);
+  nearest_source_m_.resize(scenario_.sensors.size());
+  longest_window_s_ = 0.0;
+  for (const std::size_t sonar : sonars_) longest_window_s_ = std::max(longest_window_s_, ListeningWindow_s(sonar));
+  FindNextPings(frame.sample);
+  const double t_s = static_cast<double>(frame.sample) / scenario_.rate_hz;
   for (const std::size_t listener : sonars_) {
     const SensorConfig& config = scenario_.sensors[listener];
     SensorSample& out = frame.sensors[listener];
@@ -104,20 +115,21 @@ void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
     const MirrorWindow mirror_window(config.spec);
     for (const std::size_t emitter : sonars_) {
       if (emitter == listener) continue;
-      const PingOffsets offsets_s = PingOffsets_s(emitter, listener, frame.sample);
+      const PingOffsets offsets_s = PingOffsets_s(emitter, window_s, t_s);
       if (offsets_s.count == 0) continue;
       if (!echo_sources_found_[emitter]) {
         const std::size_t begin = world_.ray_begin(emitter), count = world_.ray_begin(emitter + 1) - begin;
         const PingRays ping{frame.sensors[emitter].p_WS, std::span(ray_dir_W_).subspan(begin, count),
                             std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
         EchoSourcesInto(scenario_.sensors[emitter].spec, ping, echo_sources_[emitter]);
+        nearest_source_m_[emitter] = NearestEchoSource_m(echo_sources_[emitter]);
         echo_sources_found_[emitter] = true;
       }
       // no path of this ping can arrive in the window before the first echo
       // heard so far: its paths need not be found (an exact cut: each path is
       // at least the shortest bound, and arrives no sooner)
       const double shortest_m =
-          ShortestCrossEchoPath_m(echo_sources_[emitter], frame.sensors[emitter].p_WS, out.p_WS);
+          ShortestCrossEchoPath_m(nearest_source_m_[emitter], frame.sensors[emitter].p_WS, out.p_WS);
       const bool too_late = std::all_of(offsets_s.begin(), offsets_s.end(), [&](double offset_s) {
         const double earliest_s = offset_s + shortest_m / c_m_s;
         return earliest_s > window_s || earliest_s >= first_s;

@@ -61,7 +61,10 @@ class SensorReader {
     const double* begin() const { return s.data(); }
     const double* end() const { return s.data() + count; }
   };
-  PingOffsets PingOffsets_s(std::size_t emitter, std::size_t listener, std::int64_t sample) const;
+  PingOffsets PingOffsets_s(std::size_t emitter, double listener_window_s, double t_s) const;
+  // each emitter's first ping after this sample, s from it, when within the
+  // longest listening window (else +inf): found once per sample, not per pair
+  void FindNextPings(std::int64_t sample);
   // how long `sensor` listens after its ping, s
   double ListeningWindow_s(std::size_t sensor) const;
   // below this many rays a sample is read on one thread (a fork costs more)
@@ -83,6 +86,9 @@ class SensorReader {
   std::vector<std::vector<EchoSource>> echo_sources_;
   std::vector<bool> echo_sources_found_;
   std::vector<CrossEchoPath> cross_paths_;  // one pair's paths, the buffer reused
+  std::vector<double> nearest_source_m_;     // each emitter's NearestEchoSource_m, found with its sources
+  std::vector<double> next_ping_offset_s_;   // FindNextPings' answer, by sensor
+  double longest_window_s_ = 0.0;            // the longest listening window of any sonar
   std::vector<double> last_ping_t_s_;  // each sensor's last ping, s (NaN before the first)
 };
 
