@@ -107,11 +107,11 @@ void TerrainMap::Update(const Observation& observation) {
     // a multi-zone sensor: every zone's nearest target (or its silence) along the zone's axis
     SensorOutput zone_output = output;
     zone_output.zones.clear();
-    for (const ZoneOutput& zone : output.zones) {
-      zone_output.detected = zone.detected;
-      zone_output.d_m = zone.d_m;
-      zone_output.dir_W = zone.dir_W;
-      AddEvidence(InterpretReading(specs_[i], zone_output), observation);
+    for (std::size_t zone = 0; zone < output.zones.size(); ++zone) {
+      zone_output.detected = output.zones[zone].detected;
+      zone_output.d_m = output.zones[zone].d_m;
+      zone_output.dir_W = output.zones[zone].dir_W;
+      AddEvidence(InterpretReading(specs_[i], zone_output, static_cast<int>(zone)), observation);
     }
   }
   if (observation.robot == nullptr) return;
