@@ -327,4 +327,19 @@ Scenario HeavyScenario(const BenchScene& scene, int mounts, int rays_per_mount, 
   return scenario;
 }
 
+Scenario ZonedPaperScenario(double rate_hz) {
+  const Scenario paper = LoadBuiltinScenario("paper");
+  Scenario zoned = paper;
+  zoned.sensors.clear();
+  for (const char* leg : {"left_tibia", "right_tibia"}) {
+    SensorConfig sensor = paper.sensors.front();
+    sensor.name = std::string("tof_") + leg;
+    sensor.link = leg;
+    sensor.spec = *SensorSpec::PartPreset("vl53l5cx");
+    sensor.rate_hz = rate_hz;
+    zoned.sensors.push_back(sensor);
+  }
+  return zoned;
+}
+
 }  // namespace proxsim::bench

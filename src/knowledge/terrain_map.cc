@@ -141,7 +141,7 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
   Vec3 a = evidence.free_begin_W(), b = evidence.free_end_W();
   if (evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m && ClipBelow(a, b, ceiling_z_m)) {
     const Vec3 ab = b - a;
-    const double ab_xy2 = ab.head<2>().squaredNorm();
+    const double ab_xy2 = ab.head<2>().squaredNorm(), ab_xy = std::sqrt(ab_xy2);
     TraverseColumns(a, b, r, [&](CellIndex cell, double t0, double t1) {
       const double z_lo = std::min(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
       const TerrainCell* known = grid_.Find(cell);
@@ -163,7 +163,7 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
         double t = ab_xy2 > 0 ? (centre - a.head<2>()).dot(ab.head<2>()) / ab_xy2 : t0;
         t = std::clamp(t, t0, t1);
         const Vec3 p = a + t * ab;
-        const double crossing_m = std::sqrt(ab_xy2) * (t1 - t0);
+        const double crossing_m = ab_xy * (t1 - t0);
         const double z_hi = std::max(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
         if ((p.head<2>() - centre).norm() <= 0.25 * r) {
           grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);

@@ -96,6 +96,24 @@ std::vector<BeamRay> MakeSensorRays(const SensorSpec& spec) {
   return spec.zones ? MakeZoneRays(*spec.zones) : MakeBeamRays(spec.beam);
 }
 
+namespace {
+
+// a target's longest range in the inner and in the corner zones (the corner's: the inner's without a corner table)
+struct ZoneRangeEnds {
+  double inner_m = 0.0, corner_m = 0.0;
+  double At(double corner_weight) const {
+    return corner_weight <= 0 ? inner_m : inner_m + corner_weight * (corner_m - inner_m);
+  }
+};
+
+ZoneRangeEnds ZoneRangeEndsFor(const SensorSpec& spec, double reflectance) {
+  const double inner_m = ReflectanceMaxRange_m(spec, reflectance);
+  if (spec.corner_range_table.empty()) return {inner_m, inner_m};
+  return {inner_m, std::min(TableMaxRange_m(spec.corner_range_table, spec.ambient_klux, reflectance), spec.max_range_m)};
+}
+
+}  // namespace
+
 void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out) {
   const ZoneSpec& zones = *spec.zones;
   const int zone_count = ZoneCount(zones);
@@ -108,6 +126,9 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
   std::vector<std::size_t> order;
   counted.reserve(per_zone);
   const bool by_target = !spec.range_table.empty() || !spec.corner_range_table.empty();
+  // the floor and walls repeat one reflectance: its ranges are found once
+  double ends_reflectance = std::numeric_limits<double>::quiet_NaN();
+  ZoneRangeEnds ends;
   for (int zone = 0; zone < zone_count; ++zone) {
     // the zone's rays whose echo counts, and whether a surface lay within range at all
     counted.clear();
@@ -116,9 +137,11 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
     const double corner_weight = by_target ? ZoneCornerWeight(zones, zone) : 0.0;
     for (int i = zone * per_zone; i < (zone + 1) * per_zone; ++i) {
       const Echo& echo = echoes[static_cast<std::size_t>(i)];
-      const double target_range_m = by_target && echo.distance_m <= spec.max_range_m
-                                        ? ZoneMaxRange_m(spec, corner_weight, echo.ir_albedo)
-                                        : std::numeric_limits<double>::infinity();
+      double target_range_m = std::numeric_limits<double>::infinity();
+      if (by_target && echo.distance_m <= spec.max_range_m) {
+        if (!(echo.ir_albedo == ends_reflectance)) ends = ZoneRangeEndsFor(spec, ends_reflectance = echo.ir_albedo);
+        target_range_m = ends.At(corner_weight);
+      }
       const ReadingStatus status = EchoStatusWithin(spec, echo, 1.0, target_range_m);
       if (echo.distance_m <= spec.max_range_m && !echo.from_robot) surface_in_range = true;
       if (status == ReadingStatus::kOk) counted.push_back({echo.distance_m + echo.flight_shift_m, i});
@@ -244,21 +267,32 @@ void ApplyMultizonePartTables(SensorSpec& spec) {
 }
 
 double ZoneCornerWeight(const ZoneSpec& zones, int zone) {
-  // the centre-most zones (the middle 2x2 of an even grid, the middle one of
-  // an odd one) and the corners, by their distance from the grid's centre
-  const double r = ZoneOffset(zones, zone % zones.nx, zone / zones.nx).norm();
-  const double r_in = ZoneOffset(zones, (zones.nx - 1) / 2, (zones.ny - 1) / 2).norm();
-  const double r_corner = ZoneOffset(zones, 0, 0).norm();
-  if (!(r_corner > r_in)) return 0.0;
-  return std::clamp((r - r_in) / (r_corner - r_in), 0.0, 1.0);
+  // the weights of the grid last asked for on this thread: a sensor asks for
+  // its zones' at every read (its targets' ranges, its silences' reach)
+  thread_local std::array<double, 4> grid = {0, 0, 0, 0};
+  thread_local std::vector<double> weights;
+  const std::array<double, 4> asked = {static_cast<double>(zones.nx), static_cast<double>(zones.ny), zones.fov_h_deg,
+                                       zones.fov_v_deg};
+  if (asked != grid || weights.empty()) {
+    grid = asked;
+    // the centre-most zones (the middle 2x2 of an even grid, the middle one of
+    // an odd one) and the corners, by their distance from the grid's centre
+    const Vec2 cell(2.0 * HalfTan(zones.fov_h_deg) / zones.nx, 2.0 * HalfTan(zones.fov_v_deg) / zones.ny);
+    const auto radius = [&](int column, int row) {
+      return Vec2((column + 0.5 - 0.5 * zones.nx) * cell.x(), (row + 0.5 - 0.5 * zones.ny) * cell.y()).norm();
+    };
+    const double r_in = radius((zones.nx - 1) / 2, (zones.ny - 1) / 2), r_corner = radius(0, 0);
+    weights.assign(static_cast<std::size_t>(ZoneCount(zones)), 0.0);
+    for (int z = 0; z < ZoneCount(zones) && r_corner > r_in; ++z) {
+      weights[static_cast<std::size_t>(z)] =
+          std::clamp((radius(z % zones.nx, z / zones.nx) - r_in) / (r_corner - r_in), 0.0, 1.0);
+    }
+  }
+  return weights[static_cast<std::size_t>(zone)];
 }
 
 double ZoneMaxRange_m(const SensorSpec& spec, double corner_weight, double reflectance) {
-  const double inner_m = ReflectanceMaxRange_m(spec, reflectance);
-  if (spec.corner_range_table.empty() || corner_weight <= 0) return inner_m;
-  const double corner_m =
-      std::min(TableMaxRange_m(spec.corner_range_table, spec.ambient_klux, reflectance), spec.max_range_m);
-  return inner_m + corner_weight * (corner_m - inner_m);
+  return ZoneRangeEndsFor(spec, reflectance).At(corner_weight);
 }
 
 double ZoneSilenceRange_m(const SensorSpec& spec, int zone) {
