@@ -340,6 +340,8 @@ TEST(MultizoneTest, VL53L5CXsOnTheShinsFeedTheMapAndTheStopRule) {
   const std::string detail = summary["robot"]["events"][0]["detail"];
   EXPECT_EQ(summary["robot"]["events"][0]["event"], "obstacle_ahead");
   EXPECT_EQ(detail.rfind("tof_", 0), 0u) << detail;
+  // before the obstacle (x = 2.5 m), not on the floor's noise near the start
+  EXPECT_GT(summary["robot"]["events"][0]["t_s"].get<double>(), 3.0) << detail;
   EXPECT_GT(summary["terrain"]["cells_measured"].get<int>(), 1000);
   EXPECT_NE(std::find(summary["outputs"].begin(), summary["outputs"].end(), "zones/"), summary["outputs"].end());
 }

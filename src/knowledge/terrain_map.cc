@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "sensors/measured_point.h"
 
@@ -268,10 +269,31 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
       FindHazards(seeds, label_at, surface_at, labelled_ground_z_m_, grid_.resolution_m(), config_);
 
   // each hazard found keeps the earliest detection of the hazards it overlaps
+  // (the old hazards that may overlap one are those sharing a tile with its
+  // box grown by a cell: an index of them by tile, in ascending order, so the
+  // scan below meets the same hazards in the same order as a scan of all)
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> by_tile;
+  const auto for_each_tile = [](const CellBox& box, auto&& f) {
+    for (std::int32_t ty = TileCoord(box.iy_min - 1); ty <= TileCoord(box.iy_max + 1); ++ty) {
+      for (std::int32_t tx = TileCoord(box.ix_min - 1); tx <= TileCoord(box.ix_max + 1); ++tx) {
+        f((static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty));
+      }
+    }
+  };
+  for (std::size_t k = 0; k < hazards_.size(); ++k) {
+    for_each_tile(hazards_[k].cells, [&](std::uint64_t key) { by_tile[key].push_back(k); });
+  }
   std::vector<bool> matched(hazards_.size(), false);
+  std::vector<std::size_t> near;
   const Vec2 front = robot.p_W_front.head<2>();
   for (Hazard& hazard : found) {
-    for (std::size_t k = 0; k < hazards_.size(); ++k) {
+    near.clear();
+    for_each_tile(hazard.cells, [&](std::uint64_t key) {
+      if (const auto it = by_tile.find(key); it != by_tile.end()) near.insert(near.end(), it->second.begin(), it->second.end());
+    });
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (const std::size_t k : near) {
       const Hazard& before = hazards_[k];
       if (before.raised() != hazard.raised() || !before.cells.Overlaps(hazard.cells, 1)) continue;
       matched[k] = true;
