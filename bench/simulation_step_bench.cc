@@ -68,6 +68,17 @@ void BM_SimulationStep(benchmark::State& state) {
 }
 BENCHMARK(BM_SimulationStep)->Args({0, 1})->Args({1, 1})->Args({1, 2})->UseRealTime();
 
+// The paper's walk with a VL53L5CX on each shin, read at every sample (the
+// `multizone` line of `proxsim bench --only e2e`): the whole 5 s walk.
+void BM_MultizoneWalk(benchmark::State& state) {
+  const Scenario scenario = proxsim::bench::ZonedPaperScenario(static_cast<double>(state.range(0)));
+  for (auto _ : state) {
+    proxsim::Simulation simulation(scenario, 1);
+    while (!simulation.done()) simulation.Step();
+  }
+}
+BENCHMARK(BM_MultizoneWalk)->Arg(0)->Arg(15)->Unit(benchmark::kMillisecond);
+
 // The heavy scenario of `proxsim bench`: 64 beams of 32 rays in the 1M-triangle room.
 void BM_HeavyStep1M(benchmark::State& state) {
   static const proxsim::bench::BenchScene scene = proxsim::bench::MakeBenchDiningRoom(1'000'000);

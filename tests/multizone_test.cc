@@ -15,6 +15,9 @@
 
 #include "cli_helpers.h"
 #include "npy_read.h"
+#include "sensors/multizone.h"
+#include "sensors/noise_table.h"
+#include "sensors/sensor_spec.h"
 
 namespace proxsim {
 namespace {
@@ -226,6 +229,96 @@ TEST(MultizoneTest, APartsLimitsAreRefusedNamingTheLimitAndItsSource) {
   EXPECT_NE(elsewhere.output.find("zones: expected only with type multizone"), std::string::npos) << elsewhere.output;
 }
 
+// A VL53L5CX (8x8, noise off) facing a 17 % grey wall 1 m away in the dark:
+// ST's Table 18 gives 1.3 m for the inner zones and 1.1 m for the corner
+// ones. Each zone's range, written here: its cell centre's distance r from
+// the grid's centre on the image plane, t = (r − r_centre)/(r_corner −
+// r_centre), range = 1.3 + t·(1.1 − 1.3); its rays meet the wall at
+// 1 m·|(1, u, v)|, 1.00–1.02 m in the centre zones and 1.11–1.14 m in the
+// corners: the centre zones read it (5), the corners report ST's 8, "signal
+// rate too low for the current target", and every zone as the closed form says.
+TEST(MultizoneTest, TheCornerZonesSeeLessFarThanTheCentreOnesAsTheDatasheetTabulates) {
+  const fs::path out = RunScenarioYaml("multizone_corners", R"(proxsim: 1
+duration_s: 0.1
+rate_hz: 10
+scene:
+  objects:
+    - {name: wall, plane: {}, pose: {xyz_m: [1, 0, 0], rpy_deg: [0, -90, 0]}, material: {albedo: 0.17}}
+sensors:
+  - {name: grid, type: vl53l5cx, noise: {sigma: 0, resolution_m: 0}, pose: {xyz_m: [0, 0, 1]}}
+)");
+  const NpyArray d = LoadNpy(out / "zones" / "grid" / "d_m.npy");
+  const NpyArray status = LoadNpy(out / "zones" / "grid" / "status.npy");
+  ASSERT_EQ(d.shape, (std::vector<long>{1, 64, 1}));
+  const double t22 = std::tan(22.5 * kPi / 180), cell = 2 * t22 / 8;
+  const auto radius = [&](int column, int row) { return std::hypot((column - 3.5) * cell, (row - 3.5) * cell); };
+  const double r_centre = radius(3, 3), r_corner = radius(0, 0);
+  for (int zone = 0; zone < 64; ++zone) {
+    const double t = (radius(zone % 8, zone / 8) - r_centre) / (r_corner - r_centre);
+    const double range_m = 1.3 + t * (1.1 - 1.3);
+    double sum_m = 0;
+    int counted = 0;
+    for (int b = 0; b < 2; ++b) {
+      for (int a = 0; a < 2; ++a) {
+        const Dir r = ZoneRay(8, 8, 45, 45, 2, zone % 8, zone / 8, a, b);
+        if (1.0 / r.x > range_m) continue;
+        sum_m += 1.0 / r.x;
+        ++counted;
+      }
+    }
+    if (counted > 0) {
+      EXPECT_EQ(status.values[zone], 5) << "zone " << zone;
+      EXPECT_NEAR(d.values[zone], sum_m / counted, 1e-6) << "zone " << zone;
+    } else {
+      EXPECT_EQ(status.values[zone], 8) << "zone " << zone;
+    }
+  }
+  for (int centre : {27, 28, 35, 36}) EXPECT_EQ(status.values[centre], 5) << centre;
+  for (int corner : {0, 7, 56, 63}) EXPECT_EQ(status.values[corner], 8) << corner;
+}
+
+// ST's tables for the three parts at both resolutions come back at their
+// points: inner zones (range_table), corner zones (corner_range_table) and
+// the ranging accuracy (noise.sigma_table, "± x %" as σ).
+TEST(MultizoneTest, EachPartsDatasheetTablesComeBackAtTheirPoints) {
+  const auto part = [](const char* name, int zones, double ambient_klux) {
+    SensorSpec spec = *SensorSpec::PartPreset(name);
+    spec.zones->nx = spec.zones->ny = zones;
+    ApplyMultizonePartTables(spec);
+    spec.ambient_klux = ambient_klux;
+    return spec;
+  };
+  // VL53L5CX DS13754 Table 18 (8x8): grey 17 % inner 1.3 / corner 1.1 m dark, 0.8 / 0.65 m at 5 klux
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l5cx", 8, 0), 0.0, 0.17), 1.3, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l5cx", 8, 0), 1.0, 0.17), 1.1, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l5cx", 8, 5), 1.0, 0.17), 0.65, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l5cx", 8, 5), 0.5, 0.17), 0.725, 1e-12);
+  // Table 17 (4x4): white corner 1.4 m at 5 klux; accuracy Table 19: 8x8 grey 11 % at 5 klux
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l5cx", 4, 5), 1.0, 0.88), 1.4, 1e-12);
+  EXPECT_NEAR(SigmaAt(part("vl53l5cx", 8, 5), 0.17), 0.11, 1e-15);
+  EXPECT_NEAR(SigmaAt(part("vl53l5cx", 4, 0), 0.88), 0.04, 1e-15);
+  // VL53L7CX DS13865 Table 18 (8x8): grey 17 % inner 0.35 / corner 0.25 m at 5 klux; Table 17 (4x4) white 3.5 m dark
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l7cx", 8, 5), 0.0, 0.17), 0.35, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l7cx", 8, 5), 1.0, 0.17), 0.25, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l7cx", 4, 0), 1.0, 0.88), 3.5, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l7cx", 8, 0), 1.0, 0.54), 1.6, 1e-12);
+  // VL53L8CX DS14161 Table 17 (8x8): grey 17 % inner 2.45 / corner 1.95 m dark; accuracy Table 18: grey 17 % 8 % at 5 klux
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l8cx", 8, 0), 0.0, 0.17), 2.45, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l8cx", 8, 0), 1.0, 0.17), 1.95, 1e-12);
+  EXPECT_NEAR(ZoneMaxRange_m(part("vl53l8cx", 4, 5), 1.0, 0.54), 2.5, 1e-12);
+  EXPECT_NEAR(SigmaAt(part("vl53l8cx", 8, 5), 0.17), 0.08, 1e-15);
+  EXPECT_NEAR(SigmaAt(part("vl53l8cx", 4, 0), 0.88), 0.03, 1e-15);
+  // where a zone lies: the centre 2x2 at 0, the corners at 1, an edge's middle at 2/3
+  const ZoneSpec grid = *SensorSpec::PartPreset("vl53l5cx")->zones;
+  EXPECT_NEAR(ZoneCornerWeight(grid, 27), 0.0, 1e-12);
+  EXPECT_NEAR(ZoneCornerWeight(grid, 63), 1.0, 1e-12);
+  EXPECT_NEAR(ZoneCornerWeight(grid, 3), (std::hypot(0.5, 3.5) - std::hypot(0.5, 0.5)) / (std::hypot(3.5, 3.5) - std::hypot(0.5, 0.5)), 1e-12);
+  // a corner table is a multizone sensor's only
+  testing::ExpectRefused("multizone_corner_laser",
+                         "proxsim: 1\nsensors:\n  - {name: a, type: laser, corner_range_table: [[0.5, 0, 1.0]]}\n",
+                         {"sensors[0].corner_range_table: expected only for a multizone sensor"});
+}
+
 // The shipped scenario: a VL53L5CX on each shin, at the part's 15 Hz; the
 // zones reach the map (far more cells than the paper's single rays) and the
 // stop rule stops the robot before the obstacle on a zone's point.
@@ -247,6 +340,8 @@ TEST(MultizoneTest, VL53L5CXsOnTheShinsFeedTheMapAndTheStopRule) {
   const std::string detail = summary["robot"]["events"][0]["detail"];
   EXPECT_EQ(summary["robot"]["events"][0]["event"], "obstacle_ahead");
   EXPECT_EQ(detail.rfind("tof_", 0), 0u) << detail;
+  // before the obstacle (x = 2.5 m), not on the floor's noise near the start
+  EXPECT_GT(summary["robot"]["events"][0]["t_s"].get<double>(), 3.0) << detail;
   EXPECT_GT(summary["terrain"]["cells_measured"].get<int>(), 1000);
   EXPECT_NE(std::find(summary["outputs"].begin(), summary["outputs"].end(), "zones/"), summary["outputs"].end());
 }

@@ -117,7 +117,13 @@ sensors:
   - name: ranged
     type: vl53l1x
     distance_mode: short
+    roi: [8, 12]
+    timing_budget_ms: 50
     noise: {sigma_table: [[0.5, 0, 0.01], [0.9, 2, 0.02]]}
+  - name: cornered
+    type: vl53l5cx
+    zones: [4, 4]
+    corner_range_table: [[0.5, 0, 1.2], [0.9, 0, 2.0]]
   - name: reflect
     type: reflectance
     use_material: true

@@ -327,4 +327,25 @@ Scenario HeavyScenario(const BenchScene& scene, int mounts, int rays_per_mount, 
   return scenario;
 }
 
+Scenario ZonedPaperScenario(double rate_hz) {
+  const Scenario paper = LoadBuiltinScenario("paper");
+  Scenario zoned = paper;
+  zoned.sensors.clear();
+  for (const char* leg : {"left_tibia", "right_tibia"}) {
+    SensorConfig sensor = paper.sensors.front();
+    sensor.name = std::string("tof_") + leg;
+    sensor.link = leg;
+    sensor.spec = *SensorSpec::PartPreset("vl53l5cx");
+    sensor.rate_hz = rate_hz;
+    zoned.sensors.push_back(sensor);
+  }
+  // the stop rule's floor margin of data/scenarios/multizone_shins.yaml (5σ of
+  // the part's floor noise): with the default 0.03 m the robot stops on the
+  // floor's noise at 0.14 s, and the walk would be measured standing
+  if (zoned.robot && zoned.robot->strategy && std::holds_alternative<StopConfig>(*zoned.robot->strategy)) {
+    std::get<StopConfig>(*zoned.robot->strategy).min_height_m = 0.05;
+  }
+  return zoned;
+}
+
 }  // namespace proxsim::bench

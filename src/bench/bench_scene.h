@@ -55,4 +55,9 @@ std::vector<Ray> FanRays(std::size_t count, std::size_t fan_rays, std::uint64_t 
 /// 25° cone (BeamSpec: the rays share the sensor's origin).
 Scenario HeavyScenario(const BenchScene& scene, int mounts, int rays_per_mount, double duration_s);
 
+/// The paper's walk with a VL53L5CX (8x8 zones of 4 rays) on each shin
+/// instead of its four single-ray sensors, read at `rate_hz` (0: every sample),
+/// with the stop rule's floor margin of data/scenarios/multizone_shins.yaml.
+Scenario ZonedPaperScenario(double rate_hz);
+
 }  // namespace proxsim::bench

@@ -148,18 +148,7 @@ void EmbreeOnOwnRays(const BenchScene& scene_1m, const std::vector<Ray>& rays, i
 /// the part's limit) shows the zones' own cost per read.
 json MultizoneSteps(int repeats) {
   const Scenario paper = LoadBuiltinScenario("paper");
-  Scenario zoned = paper;
-  zoned.sensors.clear();
-  for (const char* leg : {"left_tibia", "right_tibia"}) {
-    SensorConfig sensor = paper.sensors.front();
-    sensor.name = std::string("tof_") + leg;
-    sensor.link = leg;
-    sensor.spec = *SensorSpec::PartPreset("vl53l5cx");
-    sensor.rate_hz = 15.0;
-    zoned.sensors.push_back(sensor);
-  }
-  Scenario every_sample = zoned;
-  for (SensorConfig& sensor : every_sample.sensors) sensor.rate_hz = 0.0;
+  const Scenario zoned = ZonedPaperScenario(15.0), every_sample = ZonedPaperScenario(0.0);
   const auto per_sample_s = [&](const Scenario& scenario) {
     double best = std::numeric_limits<double>::infinity();
     for (int r = 0; r < repeats; ++r) {

@@ -56,13 +56,21 @@ TerrainCell& ElevationGrid::At(CellIndex c) {
 }
 
 ElevationGrid::Tile* ElevationGrid::FindTile(CellIndex c) {
+  if (last_tile_ != nullptr && last_tile_->tx == TileCoord(c.ix) && last_tile_->ty == TileCoord(c.iy)) return last_tile_;
   const auto it = tiles_.find(TileKey(TileCoord(c.ix), TileCoord(c.iy)));
-  return it == tiles_.end() ? nullptr : it->second.get();
+  if (it == tiles_.end()) return nullptr;
+  last_tile_ = it->second.get();
+  return last_tile_;
 }
 
 const TerrainCell* ElevationGrid::Find(CellIndex c) const {
-  const auto it = tiles_.find(TileKey(TileCoord(c.ix), TileCoord(c.iy)));
-  return it == tiles_.end() ? nullptr : &it->second->cells[CellInTile(c)];
+  // rays walk cell to cell: most lookups stay in the tile of the last access
+  const std::int32_t tx = TileCoord(c.ix), ty = TileCoord(c.iy);
+  if (last_tile_ != nullptr && last_tile_->tx == tx && last_tile_->ty == ty) return &last_tile_->cells[CellInTile(c)];
+  const auto it = tiles_.find(TileKey(tx, ty));
+  if (it == tiles_.end()) return nullptr;
+  last_tile_ = it->second.get();
+  return &last_tile_->cells[CellInTile(c)];
 }
 
 double ElevationGrid::Gate_m(double variance_a_m2, double variance_b_m2) {

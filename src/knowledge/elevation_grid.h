@@ -147,7 +147,9 @@ class ElevationGrid {
 
   double resolution_m_;
   std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
-  Tile* last_tile_ = nullptr;  // the tile of the last access: rays walk cell to cell
+  // the tile of the last access, a cache that lookups of either constness
+  // refresh: rays and flood fills walk cell to cell
+  mutable Tile* last_tile_ = nullptr;
   CellBox bounds_;
 };
 

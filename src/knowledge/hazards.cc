@@ -110,6 +110,7 @@ std::vector<Hazard> FindHazards(const std::vector<CellIndex>& seeds,
                                 std::vector<std::vector<CellIndex>>* cluster_cells) {
   std::vector<Hazard> hazards;
   std::unordered_set<std::uint64_t> visited;
+  visited.reserve(2 * seeds.size());  // (no rehash as the fill grows: the same cells, found faster)
   std::vector<CellIndex> stack, cluster;
   for (const CellIndex& seed : seeds) {
     const CellLabel label = label_at(seed);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sensors/multizone.h"
 #include "sensors/range_inverse.h"
 #include "sensors/range_table.h"
 
@@ -16,7 +17,7 @@ constexpr double kFreeMargin_m = 0.001;
 
 }  // namespace
 
-RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output) {
+RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output, int zone) {
   RayEvidence evidence;
   evidence.p_WS = output.p_WS;
   evidence.dir_W = output.dir_W.normalized();
@@ -38,7 +39,8 @@ RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output)
   evidence.d_m = output.d_m;
   evidence.free_begin_m = spec.min_range_m;
   // a part whose range depends on the target vouches only for its darkest target's range
-  evidence.free_end_m = std::min(output.d_m, SilenceRange_m(spec));
+  // (a multi-zone sensor's corner zones see less far than its centre ones)
+  evidence.free_end_m = std::min(output.d_m, zone >= 0 ? ZoneSilenceRange_m(spec, zone) : SilenceRange_m(spec));
   const double max_incidence_deg = EchoIncidenceLimitDeg(spec);
   const bool floor_would_echo = std::abs(dir_z) >= std::cos(DegToRad(max_incidence_deg)) - 1e-12;
   evidence.bounds_height = floor_would_echo && spec.noise.dropout == 0 && evidence.free_end_m > evidence.free_begin_m;

@@ -48,7 +48,8 @@ struct RayEvidence {
   Vec3 free_end_W() const { return MeasuredPoint_W(p_WS, dir_W, free_end_m); }
 };
 
-/// What a fresh reading says (the output must be fresh).
-RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output);
+/// What a fresh reading says (the output must be fresh); `zone`: the
+/// multi-zone sensor's zone it is the reading of (-1: the sensor's own).
+RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output, int zone = -1);
 
 }  // namespace proxsim

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "sensors/measured_point.h"
 
@@ -107,11 +108,11 @@ void TerrainMap::Update(const Observation& observation) {
     // a multi-zone sensor: every zone's nearest target (or its silence) along the zone's axis
     SensorOutput zone_output = output;
     zone_output.zones.clear();
-    for (const ZoneOutput& zone : output.zones) {
-      zone_output.detected = zone.detected;
-      zone_output.d_m = zone.d_m;
-      zone_output.dir_W = zone.dir_W;
-      AddEvidence(InterpretReading(specs_[i], zone_output), observation);
+    for (std::size_t zone = 0; zone < output.zones.size(); ++zone) {
+      zone_output.detected = output.zones[zone].detected;
+      zone_output.d_m = output.zones[zone].d_m;
+      zone_output.dir_W = output.zones[zone].dir_W;
+      AddEvidence(InterpretReading(specs_[i], zone_output, static_cast<int>(zone)), observation);
     }
   }
   if (observation.robot == nullptr) return;
@@ -141,7 +142,7 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
   Vec3 a = evidence.free_begin_W(), b = evidence.free_end_W();
   if (evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m && ClipBelow(a, b, ceiling_z_m)) {
     const Vec3 ab = b - a;
-    const double ab_xy2 = ab.head<2>().squaredNorm();
+    const double ab_xy2 = ab.head<2>().squaredNorm(), ab_xy = std::sqrt(ab_xy2);
     TraverseColumns(a, b, r, [&](CellIndex cell, double t0, double t1) {
       const double z_lo = std::min(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
       const TerrainCell* known = grid_.Find(cell);
@@ -163,7 +164,7 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
         double t = ab_xy2 > 0 ? (centre - a.head<2>()).dot(ab.head<2>()) / ab_xy2 : t0;
         t = std::clamp(t, t0, t1);
         const Vec3 p = a + t * ab;
-        const double crossing_m = std::sqrt(ab_xy2) * (t1 - t0);
+        const double crossing_m = ab_xy * (t1 - t0);
         const double z_hi = std::max(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
         if ((p.head<2>() - centre).norm() <= 0.25 * r) {
           grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
@@ -268,10 +269,31 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
       FindHazards(seeds, label_at, surface_at, labelled_ground_z_m_, grid_.resolution_m(), config_);
 
   // each hazard found keeps the earliest detection of the hazards it overlaps
+  // (the old hazards that may overlap one are those sharing a tile with its
+  // box grown by a cell: an index of them by tile, in ascending order, so the
+  // scan below meets the same hazards in the same order as a scan of all)
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> by_tile;
+  const auto for_each_tile = [](const CellBox& box, auto&& f) {
+    for (std::int32_t ty = TileCoord(box.iy_min - 1); ty <= TileCoord(box.iy_max + 1); ++ty) {
+      for (std::int32_t tx = TileCoord(box.ix_min - 1); tx <= TileCoord(box.ix_max + 1); ++tx) {
+        f((static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty));
+      }
+    }
+  };
+  for (std::size_t k = 0; k < hazards_.size(); ++k) {
+    for_each_tile(hazards_[k].cells, [&](std::uint64_t key) { by_tile[key].push_back(k); });
+  }
   std::vector<bool> matched(hazards_.size(), false);
+  std::vector<std::size_t> near;
   const Vec2 front = robot.p_W_front.head<2>();
   for (Hazard& hazard : found) {
-    for (std::size_t k = 0; k < hazards_.size(); ++k) {
+    near.clear();
+    for_each_tile(hazard.cells, [&](std::uint64_t key) {
+      if (const auto it = by_tile.find(key); it != by_tile.end()) near.insert(near.end(), it->second.begin(), it->second.end());
+    });
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (const std::size_t k : near) {
       const Hazard& before = hazards_[k];
       if (before.raised() != hazard.raised() || !before.cells.Overlaps(hazard.cells, 1)) continue;
       matched[k] = true;

@@ -7,6 +7,7 @@
 // timing keys (rate_hz, latency_s, flight_time, wave_speed_m_s) belong to the
 // SensorConfig.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -187,6 +188,21 @@ void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
   spec.zones = zones;
 }
 
+// roi: [w, h] SPADs and timing_budget_ms (the VL53L1X's; checked by SensorSpec::Validate)
+void ReadRoiAndBudget(YamlReader& reader, const MapView& map, SensorSpec& spec) {
+  if (const auto roi = reader.Numbers(map["roi"], 2, AnyNumber(), "[w, h], SPADs of the receiver's array")) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double spads = (*roi)[static_cast<std::size_t>(axis)];
+      if (spads != std::floor(spads) || !(std::abs(spads) < 1e6)) {
+        reader.Fail(map["roi"], "expected whole numbers of SPADs [w, h], got " + DescribeNode(map["roi"].node));
+        return;
+      }
+      spec.roi_spads[static_cast<std::size_t>(axis)] = static_cast<int>(spads);
+    }
+  }
+  spec.timing_budget_ms = reader.Number(map["timing_budget_ms"]).value_or(spec.timing_budget_ms);
+}
+
 // what a rate above the part's limit breaks, naming the limit and its source
 std::string RateLimitProblem(const SensorSpec& spec, const RateLimit& limit, double rate_hz) {
   if (rate_hz <= limit.max_hz) return "";
@@ -298,12 +314,15 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
     }
   }
 
-  // a part's distance mode presets its range and its tables (distance_modes.h)
+  // a part's distance mode presets its range and its tables (distance_modes.h),
+  // scaled by its region of interest and timing budget (vl53l1x_settings.h)
+  ReadRoiAndBudget(reader, map, sensor.spec);
+  const DistanceMode* mode_found = FindDistanceMode(sensor.spec.part, sensor.spec.distance_mode);
   if (const Field mode = map["distance_mode"]; mode) {
     if (const auto name = reader.String(mode)) {
       const std::string part = sensor.spec.part.empty() ? SensorTypeName(sensor.spec.type) : sensor.spec.part;
       if (const DistanceMode* found = FindDistanceMode(sensor.spec.part, *name)) {
-        ApplyDistanceMode(*found, sensor.spec);
+        mode_found = found;
       } else if (DistanceModeNames(sensor.spec.part).empty()) {
         reader.Fail(mode, "expected no distance_mode for a " + part + " (only the vl53l1x has distance modes: " +
                               DistanceModeNames("vl53l1x") + ", " + kDistanceModeSource + "), got '" + *name + "'");
@@ -313,6 +332,10 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
       }
     }
   }
+  if (mode_found != nullptr) ApplyDistanceMode(*mode_found, sensor.spec);
+  // a multi-zone part's grid, and its datasheet's tables at that resolution
+  ReadZones(reader, map, sensor.spec);
+  if (map.Has("zones")) ApplyMultizonePartTables(sensor.spec);
 
   // overrides of the preset
   const bool range_valid = ReadRange(reader, map["range_m"], sensor.spec);
@@ -347,11 +370,10 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
     }
   }
   ReadLookupTable(reader, map["lookup_table"], sensor.spec);
-  ReadZones(reader, map, sensor.spec);
-  // a multi-zone part's range table is its datasheet's at the resolution read
-  if (map.Has("zones")) sensor.spec.range_table = MultizonePartRangeTable(sensor.spec);
-  // range_table: [[reflectance, ambient_klux, max_range_m], ...] ([] turns a part's off)
+  // range_table, corner_range_table: [[reflectance, ambient_klux, max_range_m], ...] ([] turns a part's off)
   ReadAmbientTable(reader, map["range_table"], "[reflectance, ambient_klux, max_range_m]", sensor.spec.range_table);
+  ReadAmbientTable(reader, map["corner_range_table"], "[reflectance, ambient_klux, max_range_m]",
+                   sensor.spec.corner_range_table);
   // echoes: first | strongest | all, and how far apart two echoes must be
   if (const auto echoes = reader.String(map["echoes"])) {
     if (const auto selection = EchoSelectionFromName(*echoes)) {

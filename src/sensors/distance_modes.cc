@@ -1,5 +1,10 @@
 #include "sensors/distance_modes.h"
 
+#include <algorithm>
+#include <sstream>
+
+#include "sensors/vl53l1x_settings.h"
+
 namespace proxsim {
 
 namespace {
@@ -65,9 +70,26 @@ std::string DefaultDistanceMode(const std::string& part) { return part == "vl53l
 
 void ApplyDistanceMode(const DistanceMode& mode, SensorSpec& spec) {
   spec.distance_mode = mode.name;
-  spec.max_range_m = mode.max_range_m;
-  spec.range_table = mode.range_table;
   spec.sigma_table = mode.sigma_table;
+  // the region of interest and the timing budget scale the mode's ranges (vl53l1x_settings.h)
+  const std::array<int, 2> roi = spec.roi_spads[0] > 0 ? spec.roi_spads : std::array<int, 2>{kVl53l1xFullRoi, kVl53l1xFullRoi};
+  const double budget_ms = spec.timing_budget_ms > 0 ? spec.timing_budget_ms : kVl53l1xDefaultBudget_ms;
+  const double budget_factor = TimingBudgetRangeFactor(mode.name, budget_ms);
+  const double ceiling_m = ModeCeiling_m(mode.name, mode.max_range_m);
+  spec.range_table = mode.range_table;
+  spec.max_range_m = 0.0;
+  for (auto& [rho, klux, range_m] : spec.range_table) {
+    range_m = std::min(range_m * RoiRangeFraction(roi, rho) * budget_factor, ceiling_m);
+    spec.max_range_m = std::max(spec.max_range_m, range_m);
+  }
+  if (spec.range_table.empty()) spec.max_range_m = mode.max_range_m;
+  if (spec.beam) spec.beam->aperture_deg = RoiFieldOfView_deg(roi);
+  // one ranging per timing budget
+  spec.max_rate_hz = 1000.0 / budget_ms;
+  std::ostringstream source;
+  source << "one ranging per timing budget of " << budget_ms
+         << " ms (ST's VL53L1X ULD: \"Intermeasurement period must be >/= timing budget\")";
+  spec.max_rate_source = source.str();
 }
 
 }  // namespace proxsim

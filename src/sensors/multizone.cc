@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sensors/echo_groups.h"
 #include "sensors/noise_table.h"
+#include "sensors/range_table.h"
 
 namespace proxsim {
 
@@ -94,6 +96,24 @@ std::vector<BeamRay> MakeSensorRays(const SensorSpec& spec) {
   return spec.zones ? MakeZoneRays(*spec.zones) : MakeBeamRays(spec.beam);
 }
 
+namespace {
+
+// a target's longest range in the inner and in the corner zones (the corner's: the inner's without a corner table)
+struct ZoneRangeEnds {
+  double inner_m = 0.0, corner_m = 0.0;
+  double At(double corner_weight) const {
+    return corner_weight <= 0 ? inner_m : inner_m + corner_weight * (corner_m - inner_m);
+  }
+};
+
+ZoneRangeEnds ZoneRangeEndsFor(const SensorSpec& spec, double reflectance) {
+  const double inner_m = ReflectanceMaxRange_m(spec, reflectance);
+  if (spec.corner_range_table.empty()) return {inner_m, inner_m};
+  return {inner_m, std::min(TableMaxRange_m(spec.corner_range_table, spec.ambient_klux, reflectance), spec.max_range_m)};
+}
+
+}  // namespace
+
 void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out) {
   const ZoneSpec& zones = *spec.zones;
   const int zone_count = ZoneCount(zones);
@@ -105,13 +125,24 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
   std::vector<double> signal;
   std::vector<std::size_t> order;
   counted.reserve(per_zone);
+  const bool by_target = !spec.range_table.empty() || !spec.corner_range_table.empty();
+  // the floor and walls repeat one reflectance: its ranges are found once
+  double ends_reflectance = std::numeric_limits<double>::quiet_NaN();
+  ZoneRangeEnds ends;
   for (int zone = 0; zone < zone_count; ++zone) {
     // the zone's rays whose echo counts, and whether a surface lay within range at all
     counted.clear();
     bool surface_in_range = false;
+    // the zone's longest range by the target, between the inner and the corner zones' by its place
+    const double corner_weight = by_target ? ZoneCornerWeight(zones, zone) : 0.0;
     for (int i = zone * per_zone; i < (zone + 1) * per_zone; ++i) {
       const Echo& echo = echoes[static_cast<std::size_t>(i)];
-      const ReadingStatus status = EchoStatus(spec, echo, 1.0);
+      double target_range_m = std::numeric_limits<double>::infinity();
+      if (by_target && echo.distance_m <= spec.max_range_m) {
+        if (!(echo.ir_albedo == ends_reflectance)) ends = ZoneRangeEndsFor(spec, ends_reflectance = echo.ir_albedo);
+        target_range_m = ends.At(corner_weight);
+      }
+      const ReadingStatus status = EchoStatusWithin(spec, echo, 1.0, target_range_m);
       if (echo.distance_m <= spec.max_range_m && !echo.from_robot) surface_in_range = true;
       if (status == ReadingStatus::kOk) counted.push_back({echo.distance_m + echo.flight_shift_m, i});
     }
@@ -151,16 +182,125 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
   }
 }
 
-std::vector<std::array<double, 3>> MultizonePartRangeTable(const SensorSpec& spec) {
-  if (spec.part != "vl53l5cx" || !spec.zones) return {};
-  // ST VL53L5CX datasheet DS13754 Rev 5: maximum ranging distance at a 90 %
-  // detection rate, target filling the field of view, inner zones, typical;
-  // "5 klux" is ST's 2 W/m² of 940 nm irradiance on the target. Table 17
-  // (4x4, 30 Hz): white 88 % 4000 mm dark, 1700 mm at 5 klux; grey 17 %
-  // 2400 and 1000 mm. Table 18 (8x8, 15 Hz): white 3500 and 1100 mm; grey
-  // 1300 and 800 mm. The corner zones' shorter figures are not modelled.
-  if (spec.zones->nx == 4) return {{0.88, 0.0, 4.0}, {0.17, 0.0, 2.4}, {0.88, 5.0, 1.7}, {0.17, 5.0, 1.0}};
-  return {{0.88, 0.0, 3.5}, {0.17, 0.0, 1.3}, {0.88, 5.0, 1.1}, {0.17, 5.0, 0.8}};
+namespace {
+
+using Rows = std::vector<std::array<double, 3>>;
+
+// ST's datasheets' maximum ranging distance (typical, 90 % detection rate,
+// target filling the field of view; "5 klux" is ST's 2 W/m² of 940 nm on
+// the target), inner and corner zones apart, and their ranging accuracy
+// ("±x %" of the distance from 200 to 4000 mm, taken as σ as the VL53L1X's
+// "± 20 mm" is). Rows [reflectance, ambient_klux, value]. Every figure as
+// the datasheets' text is quoted in a public research note on ST's
+// multi-zone parts (2026-09; docs/sensors.md cites each table).
+struct PartTables {
+  const char* part;
+  int zones_across;  // 4 or 8
+  Rows inner, corner, sigma;
+};
+
+const std::vector<PartTables>& AllPartTables() {
+  static const std::vector<PartTables> tables = {
+      // VL53L5CX, DS13754 Rev 5: Table 17 (4x4, 30 Hz), Table 18 (8x8, 15 Hz);
+      // accuracy Table 19 (201-4000 mm): 4x4 white 4 % dark / 7 % at 5 klux,
+      // grey 5 % / 8 %; 8x8 white 5 % / 8 %, grey 5 % / 11 %
+      {"vl53l5cx", 4,
+       {{0.88, 0, 4.0}, {0.17, 0, 2.4}, {0.88, 5, 1.7}, {0.17, 5, 1.0}},
+       {{0.88, 0, 4.0}, {0.17, 0, 2.2}, {0.88, 5, 1.4}, {0.17, 5, 0.95}},
+       {{0.88, 0, 0.04}, {0.17, 0, 0.05}, {0.88, 5, 0.07}, {0.17, 5, 0.08}}},
+      {"vl53l5cx", 8,
+       {{0.88, 0, 3.5}, {0.17, 0, 1.3}, {0.88, 5, 1.1}, {0.17, 5, 0.8}},
+       {{0.88, 0, 3.1}, {0.17, 0, 1.1}, {0.88, 5, 1.0}, {0.17, 5, 0.65}},
+       {{0.88, 0, 0.05}, {0.17, 0, 0.05}, {0.88, 5, 0.08}, {0.17, 5, 0.11}}},
+      // VL53L7CX, DS13865 Rev 6: Table 17 (4x4, 30 Hz), Table 18 (8x8, 15 Hz);
+      // no accuracy table found: the VL53L5CX's (the part it is pin-to-pin
+      // and driver compatible with), an assumption
+      {"vl53l7cx", 4,
+       {{0.88, 0, 3.5}, {0.54, 0, 2.8}, {0.17, 0, 1.4}, {0.88, 5, 0.65}, {0.54, 5, 0.6}, {0.17, 5, 0.55}},
+       {{0.88, 0, 3.5}, {0.54, 0, 2.8}, {0.17, 0, 1.4}, {0.88, 5, 0.6}, {0.54, 5, 0.6}, {0.17, 5, 0.5}},
+       {{0.88, 0, 0.04}, {0.17, 0, 0.05}, {0.88, 5, 0.07}, {0.17, 5, 0.08}}},
+      {"vl53l7cx", 8,
+       {{0.88, 0, 2.0}, {0.54, 0, 1.6}, {0.17, 0, 0.8}, {0.88, 5, 0.5}, {0.54, 5, 0.4}, {0.17, 5, 0.35}},
+       {{0.88, 0, 1.9}, {0.54, 0, 1.6}, {0.17, 0, 0.75}, {0.88, 5, 0.5}, {0.54, 5, 0.4}, {0.17, 5, 0.25}},
+       {{0.88, 0, 0.05}, {0.17, 0, 0.05}, {0.88, 5, 0.08}, {0.17, 5, 0.11}}},
+      // VL53L8CX, DS14161 Rev 2: Table 16 (4x4, 30 Hz), Table 17 (8x8, 15 Hz);
+      // accuracy Table 18 (200-4000 mm): 4x4 white 3 / 4 %, grey 54 % 4 / 6 %,
+      // grey 17 % 4 / 7 %; 8x8 white 5 / 5 %, grey 54 % 5 / 6 %, grey 17 % 5 / 8 %
+      {"vl53l8cx", 4,
+       {{0.88, 0, 4.0}, {0.54, 0, 4.0}, {0.17, 0, 4.0}, {0.88, 5, 2.85}, {0.54, 5, 2.6}, {0.17, 5, 1.65}},
+       {{0.88, 0, 4.0}, {0.54, 0, 4.0}, {0.17, 0, 3.95}, {0.88, 5, 2.85}, {0.54, 5, 2.5}, {0.17, 5, 1.55}},
+       {{0.88, 0, 0.03}, {0.54, 0, 0.04}, {0.17, 0, 0.04}, {0.88, 5, 0.04}, {0.54, 5, 0.06}, {0.17, 5, 0.07}}},
+      {"vl53l8cx", 8,
+       {{0.88, 0, 4.0}, {0.54, 0, 3.3}, {0.17, 0, 2.45}, {0.88, 5, 1.55}, {0.54, 5, 1.4}, {0.17, 5, 1.15}},
+       {{0.88, 0, 3.95}, {0.54, 0, 3.1}, {0.17, 0, 1.95}, {0.88, 5, 1.4}, {0.54, 5, 1.25}, {0.17, 5, 0.95}},
+       {{0.88, 0, 0.05}, {0.54, 0, 0.05}, {0.17, 0, 0.05}, {0.88, 5, 0.05}, {0.54, 5, 0.06}, {0.17, 5, 0.08}}},
+  };
+  return tables;
+}
+
+const PartTables* FindPartTables(const SensorSpec& spec) {
+  if (!spec.zones) return nullptr;
+  for (const PartTables& t : AllPartTables()) {
+    if (spec.part == t.part && spec.zones->nx == t.zones_across && spec.zones->ny == t.zones_across) return &t;
+  }
+  return nullptr;
+}
+
+// a zone's cell centre on the image plane, off the grid's centre, in tan units
+Vec2 ZoneOffset(const ZoneSpec& zones, double column, double row) {
+  const double cell_u = 2.0 * HalfTan(zones.fov_h_deg) / zones.nx, cell_v = 2.0 * HalfTan(zones.fov_v_deg) / zones.ny;
+  return Vec2((column + 0.5 - 0.5 * zones.nx) * cell_u, (row + 0.5 - 0.5 * zones.ny) * cell_v);
+}
+
+}  // namespace
+
+void ApplyMultizonePartTables(SensorSpec& spec) {
+  if (const PartTables* t = FindPartTables(spec)) {
+    spec.range_table = t->inner;
+    spec.corner_range_table = t->corner;
+    spec.sigma_table = t->sigma;
+  } else if (FindMultizonePart(spec.part) != nullptr) {
+    spec.range_table.clear();
+    spec.corner_range_table.clear();
+    spec.sigma_table.clear();
+  }
+}
+
+double ZoneCornerWeight(const ZoneSpec& zones, int zone) {
+  // the weights of the grid last asked for on this thread: a sensor asks for
+  // its zones' at every read (its targets' ranges, its silences' reach)
+  thread_local std::array<double, 4> grid = {0, 0, 0, 0};
+  thread_local std::vector<double> weights;
+  const std::array<double, 4> asked = {static_cast<double>(zones.nx), static_cast<double>(zones.ny), zones.fov_h_deg,
+                                       zones.fov_v_deg};
+  if (asked != grid || weights.empty()) {
+    grid = asked;
+    // the centre-most zones (the middle 2x2 of an even grid, the middle one of
+    // an odd one) and the corners, by their distance from the grid's centre
+    const Vec2 cell(2.0 * HalfTan(zones.fov_h_deg) / zones.nx, 2.0 * HalfTan(zones.fov_v_deg) / zones.ny);
+    const auto radius = [&](int column, int row) {
+      return Vec2((column + 0.5 - 0.5 * zones.nx) * cell.x(), (row + 0.5 - 0.5 * zones.ny) * cell.y()).norm();
+    };
+    const double r_in = radius((zones.nx - 1) / 2, (zones.ny - 1) / 2), r_corner = radius(0, 0);
+    weights.assign(static_cast<std::size_t>(ZoneCount(zones)), 0.0);
+    for (int z = 0; z < ZoneCount(zones) && r_corner > r_in; ++z) {
+      weights[static_cast<std::size_t>(z)] =
+          std::clamp((radius(z % zones.nx, z / zones.nx) - r_in) / (r_corner - r_in), 0.0, 1.0);
+    }
+  }
+  return weights[static_cast<std::size_t>(zone)];
+}
+
+double ZoneMaxRange_m(const SensorSpec& spec, double corner_weight, double reflectance) {
+  return ZoneRangeEndsFor(spec, reflectance).At(corner_weight);
+}
+
+double ZoneSilenceRange_m(const SensorSpec& spec, int zone) {
+  if (spec.corner_range_table.empty() || !spec.zones) return SilenceRange_m(spec);
+  double darkest = std::numeric_limits<double>::infinity();
+  for (const auto& row : spec.range_table) darkest = std::min(darkest, row[0]);
+  for (const auto& row : spec.corner_range_table) darkest = std::min(darkest, row[0]);
+  return ZoneMaxRange_m(spec, ZoneCornerWeight(*spec.zones, zone), darkest);
 }
 
 double MultizoneMaxRate_hz(const SensorSpec& spec) {

@@ -101,10 +101,26 @@ std::vector<BeamRay> MakeSensorRays(const SensorSpec& spec);
 /// sensor's ray i); `draw` gives ray i's noise draws. Writes `out`, sized here.
 void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out);
 
-/// The part's range table at the sensor's resolution, [reflectance,
-/// ambient_klux, max_range_m] rows (the VL53L5CX's DS13754 Tables 17 and 18);
-/// empty for a part whose tables were not found, or a generic grid.
-std::vector<std::array<double, 3>> MultizonePartRangeTable(const SensorSpec& spec);
+/// Sets a named part's tables at the sensor's resolution from its datasheet:
+/// range_table (the inner zones' longest range), corner_range_table (the
+/// corner zones') and noise.sigma_table (its ranging accuracy); see
+/// docs/sensors.md for each part's tables. No-op for a generic grid.
+void ApplyMultizonePartTables(SensorSpec& spec);
+
+/// Where a zone lies between the grid's centre zones (0: the middle 2x2 of
+/// an even grid, the middle zone of an odd one) and its four corners (1):
+/// its cell centre's distance from the grid's centre on the image plane,
+/// linear between the two (the datasheets tabulate only those two ends).
+double ZoneCornerWeight(const ZoneSpec& zones, int zone);
+
+/// A zone's longest range for a target of reflectance ρ: range_table's,
+/// moved toward corner_range_table's by the zone's corner weight; capped at
+/// max_range_m.
+double ZoneMaxRange_m(const SensorSpec& spec, double corner_weight, double reflectance);
+
+/// How far a zone's silence says nothing is: its range for the darkest
+/// target its tables hold (SilenceRange_m without a corner table).
+double ZoneSilenceRange_m(const SensorSpec& spec, int zone);
 
 /// The fastest ranging rate of the sensor's part at its resolution, Hz (0: no limit).
 double MultizoneMaxRate_hz(const SensorSpec& spec);

@@ -8,29 +8,36 @@ namespace proxsim {
 
 namespace {
 
-// σ at reflectance ρ among one level's [ρ, σ] rows (ρ ascending): linear between rows, held beyond
-double SigmaAtLevel(const std::vector<std::array<double, 2>>& rows, double rho) {
-  if (rho <= rows.front()[0]) return rows.front()[1];
-  if (rho >= rows.back()[0]) return rows.back()[1];
-  const auto upper = std::upper_bound(rows.begin(), rows.end(), rho,
-                                      [](double r, const std::array<double, 2>& row) { return r < row[0]; });
-  const auto& a = *(upper - 1);
-  const auto& b = *upper;
-  return a[1] + (rho - a[0]) / (b[0] - a[0]) * (b[1] - a[1]);
+// σ at reflectance ρ among one level's rows: linear between the rows around
+// it, the end row's beyond them (a scan, no allocation: it runs per echo)
+double SigmaAtLevel(const std::vector<std::array<double, 3>>& table, double level, double rho) {
+  const std::array<double, 3>*front = nullptr, *back = nullptr, *a = nullptr, *b = nullptr;
+  for (const auto& row : table) {
+    if (row[1] != level) continue;
+    if (front == nullptr || row[0] < (*front)[0]) front = &row;
+    if (back == nullptr || row[0] > (*back)[0]) back = &row;
+    if (row[0] <= rho && (a == nullptr || row[0] > (*a)[0])) a = &row;
+    if (row[0] > rho && (b == nullptr || row[0] < (*b)[0])) b = &row;
+  }
+  if (rho <= (*front)[0]) return (*front)[2];
+  if (rho >= (*back)[0]) return (*back)[2];
+  return (*a)[2] + (rho - (*a)[0]) / ((*b)[0] - (*a)[0]) * ((*b)[2] - (*a)[2]);
 }
 
 }  // namespace
 
 double SigmaAt(const SensorSpec& spec, double reflectance) {
   if (spec.sigma_table.empty()) return spec.noise.sigma;
-  const AmbientLevels levels = RowsByAmbient(spec.sigma_table);
-  const double a = std::max(spec.ambient_klux, 0.0);
-  const auto above = levels.lower_bound(a);
-  if (above == levels.begin()) return SigmaAtLevel(above->second, reflectance);
-  if (above == levels.end()) return SigmaAtLevel(levels.rbegin()->second, reflectance);
-  const auto below = std::prev(above);
-  const double u = (a - below->first) / (above->first - below->first);
-  return (1 - u) * SigmaAtLevel(below->second, reflectance) + u * SigmaAtLevel(above->second, reflectance);
+  const AmbientBracket bracket = BracketAmbient(spec.sigma_table, spec.ambient_klux);
+  switch (bracket.kind) {
+    case AmbientBracket::kAtLevel:
+    case AmbientBracket::kBrighter:  // beyond the brightest level: its σ
+      return SigmaAtLevel(spec.sigma_table, bracket.level, reflectance);
+    case AmbientBracket::kBetween:
+      return (1 - bracket.u) * SigmaAtLevel(spec.sigma_table, bracket.below, reflectance) +
+             bracket.u * SigmaAtLevel(spec.sigma_table, bracket.level, reflectance);
+  }
+  return spec.noise.sigma;
 }
 
 NoiseSpec NoiseAt(const SensorSpec& spec, double reflectance) {

@@ -10,50 +10,92 @@ namespace proxsim {
 
 namespace {
 
-// the range at reflectance ρ among the rows of one ambient level (ρ ascending)
-double RangeAtLevel(const std::vector<std::array<double, 2>>& rows, double rho) {
-  if (rows.size() == 1 || rho <= rows.front()[0]) {
-    const auto& row = rows.front();
-    return row[1] * std::sqrt(std::max(rho, 0.0) / row[0]);
+// The rows of one ambient level around reflectance ρ, found by a scan (no
+// allocation: this runs for every ray's echo): the level's darkest and
+// brightest rows, the brightest below ρ and the darkest at or above it.
+struct LevelRows {
+  const std::array<double, 3>* front = nullptr;
+  const std::array<double, 3>* back = nullptr;
+  const std::array<double, 3>* below = nullptr;
+  const std::array<double, 3>* at_or_above = nullptr;
+};
+
+LevelRows RowsAround(const std::vector<std::array<double, 3>>& table, double level, double rho) {
+  LevelRows rows;
+  for (const auto& row : table) {
+    if (row[1] != level) continue;
+    if (rows.front == nullptr || row[0] < (*rows.front)[0]) rows.front = &row;
+    if (rows.back == nullptr || row[0] > (*rows.back)[0]) rows.back = &row;
+    if (row[0] < rho && (rows.below == nullptr || row[0] > (*rows.below)[0])) rows.below = &row;
+    if (row[0] >= rho && (rows.at_or_above == nullptr || row[0] < (*rows.at_or_above)[0])) rows.at_or_above = &row;
   }
-  if (rho >= rows.back()[0]) return rows.back()[1] * std::sqrt(rho / rows.back()[0]);
-  for (std::size_t i = 1; i < rows.size(); ++i) {
-    if (rho > rows[i][0]) continue;
-    const auto& a = rows[i - 1];
-    const auto& b = rows[i];
-    const double u = (rho - a[0]) / (b[0] - a[0]);
-    return std::sqrt(std::max(0.0, a[1] * a[1] + u * (b[1] * b[1] - a[1] * a[1])));
+  return rows;
+}
+
+// the range at reflectance ρ among the rows of one ambient level
+double RangeAtLevel(const std::vector<std::array<double, 3>>& table, double level, double rho) {
+  const LevelRows rows = RowsAround(table, level, rho);
+  if (rows.front == rows.back || rho <= (*rows.front)[0]) {
+    const auto& row = *rows.front;
+    return row[2] * std::sqrt(std::max(rho, 0.0) / row[0]);
   }
-  return rows.back()[1];
+  if (rho >= (*rows.back)[0]) return (*rows.back)[2] * std::sqrt(rho / (*rows.back)[0]);
+  // d² linear in ρ between the two rows around it
+  const auto& a = *rows.below;
+  const auto& b = *rows.at_or_above;
+  const double u = (rho - a[0]) / (b[0] - a[0]);
+  return std::sqrt(std::max(0.0, a[2] * a[2] + u * (b[2] * b[2] - a[2] * a[2])));
 }
 
 }  // namespace
 
-AmbientLevels RowsByAmbient(const std::vector<std::array<double, 3>>& table) {
-  AmbientLevels levels;
-  for (const auto& [rho, klux, value] : table) levels[klux].push_back({rho, value});
-  for (auto& [klux, rows] : levels) std::sort(rows.begin(), rows.end());
-  return levels;
+AmbientBracket BracketAmbient(const std::vector<std::array<double, 3>>& table, double ambient_klux) {
+  const double a = std::max(ambient_klux, 0.0);
+  AmbientBracket bracket;
+  bool any_below = false, any_at_or_above = false;
+  double below = 0, at_or_above = 0, top = 0;
+  for (const auto& row : table) {
+    const double level = row[1];
+    top = std::max(top, level);
+    if (level < a && (!any_below || level > below)) below = level, any_below = true;
+    if (level >= a && (!any_at_or_above || level < at_or_above)) at_or_above = level, any_at_or_above = true;
+  }
+  if (!any_at_or_above) {
+    bracket.kind = AmbientBracket::kBrighter;
+    bracket.level = top;
+  } else if (!any_below) {
+    bracket.kind = AmbientBracket::kAtLevel;  // at or below the lowest level: that level's
+    bracket.level = at_or_above;
+  } else {
+    bracket.kind = AmbientBracket::kBetween;
+    bracket.below = below;
+    bracket.level = at_or_above;
+    bracket.u = (a - below) / (at_or_above - below);
+  }
+  return bracket;
+}
+
+double TableMaxRange_m(const std::vector<std::array<double, 3>>& table, double ambient_klux, double reflectance) {
+  const AmbientBracket bracket = BracketAmbient(table, ambient_klux);
+  switch (bracket.kind) {
+    case AmbientBracket::kAtLevel:
+      return RangeAtLevel(table, bracket.level, reflectance);
+    case AmbientBracket::kBrighter: {
+      // brighter than the table: background-limited, d ∝ A^(−1/4)
+      const double a = std::max(ambient_klux, 0.0);
+      const double top_klux = bracket.level;
+      return RangeAtLevel(table, top_klux, reflectance) * (top_klux > 0 ? std::pow(top_klux / a, 0.25) : 1.0);
+    }
+    case AmbientBracket::kBetween:
+      return (1 - bracket.u) * RangeAtLevel(table, bracket.below, reflectance) +
+             bracket.u * RangeAtLevel(table, bracket.level, reflectance);
+  }
+  return 0.0;
 }
 
 double ReflectanceMaxRange_m(const SensorSpec& spec, double reflectance) {
   if (spec.range_table.empty()) return spec.max_range_m;
-  const auto levels = RowsByAmbient(spec.range_table);
-  const double a = std::max(spec.ambient_klux, 0.0);
-  double d_m = 0;
-  const auto above = levels.lower_bound(a);
-  if (above == levels.begin()) {
-    d_m = RangeAtLevel(above->second, reflectance);  // at or below the lowest level: its range
-  } else if (above == levels.end()) {
-    // brighter than the table: background-limited, d ∝ A^(−1/4)
-    const auto& [top_klux, rows] = *levels.rbegin();
-    d_m = RangeAtLevel(rows, reflectance) * (top_klux > 0 ? std::pow(top_klux / a, 0.25) : 1.0);
-  } else {
-    const auto below = std::prev(above);
-    const double u = (a - below->first) / (above->first - below->first);
-    d_m = (1 - u) * RangeAtLevel(below->second, reflectance) + u * RangeAtLevel(above->second, reflectance);
-  }
-  return std::min(d_m, spec.max_range_m);
+  return std::min(TableMaxRange_m(spec.range_table, spec.ambient_klux, reflectance), spec.max_range_m);
 }
 
 double SilenceRange_m(const SensorSpec& spec) {
@@ -82,13 +124,18 @@ void ValidateAmbientTable(const std::string& key, const std::vector<std::array<d
 }
 
 void ValidateRangeTable(const SensorSpec& spec, std::vector<std::string>& problems) {
-  if (spec.range_table.empty()) return;
-  if (!(spec.type == SensorType::kLaser || spec.type == SensorType::kMultizone)) {
+  if (!spec.range_table.empty() && !(spec.type == SensorType::kLaser || spec.type == SensorType::kMultizone)) {
     problems.push_back(std::string("range_table: expected only for an optical time-of-flight sensor (laser, "
                                    "multizone), got a table for a ") +
                        SensorTypeName(spec.type) + " sensor");
   }
   ValidateAmbientTable("range_table", spec.range_table, "a range > 0 m", false, problems);
+  if (!spec.corner_range_table.empty() && spec.type != SensorType::kMultizone) {
+    problems.push_back(std::string("corner_range_table: expected only for a multizone sensor (its corner zones' "
+                                   "range), got a table for a ") +
+                       SensorTypeName(spec.type) + " sensor");
+  }
+  ValidateAmbientTable("corner_range_table", spec.corner_range_table, "a range > 0 m", false, problems);
 }
 
 }  // namespace proxsim

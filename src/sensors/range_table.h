@@ -19,7 +19,6 @@
 #pragma once
 
 #include <array>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -27,10 +26,22 @@
 
 namespace proxsim {
 
-/// A datasheet table's rows [reflectance, ambient_klux, value] by ambient
-/// level: level -> [reflectance, value] rows by ascending reflectance.
-using AmbientLevels = std::map<double, std::vector<std::array<double, 2>>>;
-AmbientLevels RowsByAmbient(const std::vector<std::array<double, 3>>& table);
+/// Where an ambient light falls among a [reflectance, ambient_klux, value]
+/// table's levels: at or below its lowest level (that level's rows), between
+/// two levels (`below` and `level`, weight u of the upper), or brighter than
+/// its brightest (`level`). Found by a scan, without allocating: it runs for
+/// every ray's echo.
+struct AmbientBracket {
+  enum Kind { kAtLevel, kBetween, kBrighter } kind = kAtLevel;
+  double level = 0.0;
+  double below = 0.0;
+  double u = 0.0;
+};
+AmbientBracket BracketAmbient(const std::vector<std::array<double, 3>>& table, double ambient_klux);
+
+/// The longest range a [reflectance, ambient_klux, max_range_m] table gives
+/// for a target of reflectance ρ in `ambient_klux`, by the laws above (uncapped).
+double TableMaxRange_m(const std::vector<std::array<double, 3>>& table, double ambient_klux, double reflectance);
 
 /// The longest range for a target of reflectance ρ in the spec's ambient
 /// light, m, never beyond max_range_m (+inf... max_range_m without a table).

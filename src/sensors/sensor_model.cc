@@ -119,12 +119,16 @@ double ReturnedEnergy(const SensorSpec& spec, const Echo& echo) {
 }
 
 ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain) {
+  // an optical part's range shrinks with a darker target and brighter light (range_table.h)
+  const bool by_target = !spec.range_table.empty() && echo.distance_m <= spec.max_range_m;
+  return EchoStatusWithin(spec, echo, gain,
+                          by_target ? ReflectanceMaxRange_m(spec, echo.ir_albedo) : std::numeric_limits<double>::infinity());
+}
+
+ReadingStatus EchoStatusWithin(const SensorSpec& spec, const Echo& echo, double gain, double target_range_m) {
   // the range windows of §4.1
   if (!(echo.distance_m <= spec.max_range_m)) return ReadingStatus::kNoEcho;
-  // an optical part's range shrinks with a darker target and brighter light (range_table.h)
-  if (!spec.range_table.empty() && !(echo.distance_m <= ReflectanceMaxRange_m(spec, echo.ir_albedo))) {
-    return ReadingStatus::kNoEcho;
-  }
+  if (!(echo.distance_m <= target_range_m)) return ReadingStatus::kNoEcho;
   if (echo.distance_m < spec.min_range_m) return ReadingStatus::kTooClose;
   // the returned energy, or the paper's incidence window of §4.2 and the beam's threshold
   if (spec.echo_model == EchoModel::kPhysical && IsTimeOfFlight(spec.type)) {

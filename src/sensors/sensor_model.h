@@ -122,6 +122,9 @@ double TimeOfFlightReading_m(const NoiseSpec& noise, double d, double gaussian_g
 /// when it does, otherwise why not (range, dead zone, incidence window or,
 /// in the physical model or below echo_threshold, kGrazing / kNoEcho).
 ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain);
+/// As EchoStatus, with the longest range for this echo's target given (a
+/// multi-zone zone's, which depends on its place in the grid; +inf: none).
+ReadingStatus EchoStatusWithin(const SensorSpec& spec, const Echo& echo, double gain, double target_range_m);
 
 /// Returned energy E of the physical echo model for a surface hit at the
 /// echo's incidence (see the top of this file); r per the sensor's modality.

@@ -9,6 +9,7 @@
 #include "sensors/noise_table.h"
 #include "sensors/range_table.h"
 #include "sensors/sensor_types.h"
+#include "sensors/vl53l1x_settings.h"
 #include "sensors/wave_speed.h"
 
 namespace proxsim {
@@ -291,25 +292,27 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     // degrees" (diagonal; the full 16x16 SPAD array, taken here as a 27°
     // cone), minimum ranging distance 4 cm, millimetre output. Its three
     // distance modes carry the range and error tables (distance_modes.cc);
-    // long is the default. The tables hold at a 100 ms timing budget, which
-    // is not modelled otherwise: the part ranges at most every 100 ms (10 Hz).
+    // long is the default. Its region of interest (16x16 SPADs, the full
+    // array) and timing budget (100 ms, at which the tables hold) narrow the
+    // cone, scale the ranges and bound the rate (vl53l1x_settings.h).
     SensorSpec spec = Preset(SensorType::kLaser);
     spec.part = "vl53l1x";
     spec.min_range_m = 0.04;
     spec.noise = {.sigma = 0.020, .mean = 0.0, .model = NoiseModel::kAdditive, .resolution_m = 0.001};
     spec.beam = BeamSpec{.aperture_deg = 27.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    spec.roi_spads = {kVl53l1xFullRoi, kVl53l1xFullRoi};
+    spec.timing_budget_ms = kVl53l1xDefaultBudget_ms;
     ApplyDistanceMode(*FindDistanceMode("vl53l1x", DefaultDistanceMode("vl53l1x")), spec);
-    spec.max_rate_hz = 10.0;
-    spec.max_rate_source = std::string(kDistanceModeSource) + ": its ranges hold at one ranging per 100 ms";
     spec.single_echo_source = "VL53L1X datasheet DocID031281: one ranging result per measurement";
     return spec;
   }
   if (const MultizonePart* part = FindMultizonePart(std::string(name))) {
     // ST's multi-zone parts (multizone.cc cites the figures): 8x8 zones over
-    // the part's square field of view, ranging from 2 cm to its longest range.
-    // ST's documents give no ranging noise that we could verify: σ = 3 % of
-    // the distance, as the vl53l0x preset, and 1 mm steps (the ULD reports
-    // millimetres) are assumptions.
+    // the part's square field of view, ranging from 2 cm to its longest range,
+    // with its datasheet's range tables (inner and corner zones) and ranging
+    // accuracy at its resolution. σ = 3 % of the distance stays the σ a
+    // scenario's own noise.sigma replaces; 1 mm steps (the ULD reports
+    // millimetres) are an assumption.
     SensorSpec spec = Preset(SensorType::kMultizone);
     spec.part = part->name;
     spec.min_range_m = 0.02;
@@ -317,7 +320,7 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.noise = {.sigma = 0.03, .mean = 0.0, .model = NoiseModel::kMultiplicative, .resolution_m = 0.001};
     spec.zones = ZoneSpec{.nx = 8, .ny = 8, .fov_h_deg = part->fov_deg, .fov_v_deg = part->fov_deg,
                           .rays_per_zone = 4, .targets = 1, .target_separation_m = 0.6};
-    spec.range_table = MultizonePartRangeTable(spec);
+    ApplyMultizonePartTables(spec);
     return spec;
   }
   return std::nullopt;
@@ -427,6 +430,7 @@ std::vector<std::string> SensorSpec::Validate() const {
   ValidateZones(*this, problems);
   ValidateRangeTable(*this, problems);
   ValidateSigmaTable(*this, problems);
+  ValidateVl53l1xSettings(*this, problems);
   return problems;
 }
 

@@ -138,6 +138,11 @@ struct SensorSpec {
   /// rows [reflectance in (0, 1], ambient_klux >= 0, max_range_m > 0]
   /// (range_table.h); empty: the range does not depend on them.
   std::vector<std::array<double, 3>> range_table;
+  /// A multi-zone sensor's corner zones' longest range, rows as range_table's
+  /// (its datasheet tabulates the inner and the corner zones apart); a zone
+  /// between them reads between the two by its place in the grid
+  /// (multizone.h ZoneCornerWeight). Empty: every zone reads range_table.
+  std::vector<std::array<double, 3>> corner_range_table;
   /// The scene's ambient light, klux (scene.ambient_klux, set when the scenario loads).
   double ambient_klux = 0.0;
   /// A part's shortest measurement cycle as a rate, Hz (0: none), and where it
@@ -160,6 +165,11 @@ struct SensorSpec {
   std::string single_echo_source;
   /// A part's distance mode ("short", "medium", "long" for the VL53L1X), "" for none.
   std::string distance_mode;
+  /// The VL53L1X's region of interest on its 16x16 SPAD array, [width, height]
+  /// in SPADs (each in [4, 16]), and its timing budget, ms; both 0 for a part
+  /// without them (vl53l1x_settings.h says what they change).
+  std::array<int, 2> roi_spads = {0, 0};
+  double timing_budget_ms = 0.0;
   /// The ranging error by target and light, as the datasheet tabulates it:
   /// rows [reflectance in (0, 1], ambient_klux >= 0, sigma >= 0], σ in the
   /// noise model's unit; interpolated as range_table's rows (noise_table.h).

@@ -1,7 +1,6 @@
 #include "sim/sensor_reader.h"
 
 #include <algorithm>
-
 #include <cmath>
 #include <limits>
 
@@ -27,6 +26,12 @@ SensorReader::SensorReader(const Scenario& scenario, World& world) : scenario_(s
     }
     if (scenario.sensors[i].spec.type == SensorType::kUltrasonic && scenario.sensors[i].spec.beam) sonars_.push_back(i);
   }
+  zone_axes_S_.resize(scenario.sensors.size());
+  for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
+    if (const auto& zones = scenario.sensors[i].spec.zones) {
+      for (int zone = 0; zone < ZoneCount(*zones); ++zone) zone_axes_S_[i].push_back(ZoneAxis_S(*zones, zone));
+    }
+  }
   Reset();
 }
 
@@ -46,8 +51,10 @@ void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
   const auto read = [this, &frame](std::size_t begin_sensor, std::size_t end_sensor) {
     for (std::size_t sensor = begin_sensor; sensor < end_sensor; ++sensor) {
       const std::size_t begin = world_.ray_begin(sensor), count = world_.ray_begin(sensor + 1) - begin;
-      PlaceSensor(sensor, frame);
-      world_.caster().Cast(std::span(rays_).subspan(begin, count), std::span(hits_).subspan(begin, count));
+      // between its own samples a sensor reads nothing: its rays are not cast
+      const bool cast = CastsAt(sensor, frame.sample);
+      PlaceSensor(sensor, frame, cast);
+      if (cast) world_.caster().Cast(std::span(rays_).subspan(begin, count), std::span(hits_).subspan(begin, count));
       MeasureSensor(sensor, frame);
     }
   };
@@ -210,17 +217,22 @@ void SensorReader::MeasureZonesInto(std::size_t i, SensorSample& out, const Draw
   out.ray = -1;
 }
 
-void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame) {
+bool SensorReader::CastsAt(std::size_t sensor, std::int64_t sample) const {
+  if (IsSensorSample(sensor, sample)) return true;
+  return sonars_.size() > 1 && std::find(sonars_.begin(), sonars_.end(), sensor) != sonars_.end();
+}
+
+void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame, bool rays) {
   const Pose& X_LS = scenario_.sensors[i].X_LS;
   const int link = world_.sensor_link(i);
   const Pose X_WS = link < 0 ? X_LS : world_.robot()->X_WL(link) * X_LS;
   SensorSample& out = frame.sensors[i];
   out.p_WS = X_WS.translation();
   out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
-  if (const auto& zones = scenario_.sensors[i].spec.zones) {
-    out.zone_dir_W.resize(static_cast<std::size_t>(ZoneCount(*zones)));
-    for (int zone = 0; zone < ZoneCount(*zones); ++zone) out.zone_dir_W[zone] = X_WS.linear() * ZoneAxis_S(*zones, zone);
-  }
+  if (!rays) return;
+  const std::vector<Vec3>& zone_axes_S = zone_axes_S_[i];
+  out.zone_dir_W.resize(zone_axes_S.size());
+  for (std::size_t zone = 0; zone < zone_axes_S.size(); ++zone) out.zone_dir_W[zone] = X_WS.linear() * zone_axes_S[zone];
   for (std::size_t r = world_.ray_begin(i); r < world_.ray_begin(i + 1); ++r) {
     rays_[r].origin_W = out.p_WS.cast<float>();
     ray_dir_W_[r] = BeamRayDir_W(X_WS, world_.beam_rays()[r]);

@@ -42,8 +42,11 @@ class SensorReader {
   void Reset();
 
  private:
-  // place a sensor where its link is and fill its rays
-  void PlaceSensor(std::size_t sensor, SampleFrame& frame);
+  // place a sensor where its link is and, with `rays`, fill its rays and zone axes
+  void PlaceSensor(std::size_t sensor, SampleFrame& frame, bool rays);
+  // whether the sensor's rays are cast at this sample: at its own samples,
+  // and always for a sonar that others may hear (crosstalk reads its rays then)
+  bool CastsAt(std::size_t sensor, std::int64_t sample) const;
   // one sensor's hits into its reading
   void MeasureSensor(std::size_t sensor, SampleFrame& frame);
   // a multizone sensor's zones, and its own reading from them
@@ -81,6 +84,7 @@ class SensorReader {
   std::vector<Echo> echoes_;
   std::vector<Vec3> p_WS_previous_;  // each sensor's origin at the previous sample, for flight_time
   std::vector<std::size_t> sonars_;    // ultrasonic sensors with a beam: they ping and hear each other
+  std::vector<std::vector<Vec3>> zone_axes_S_;  // each multizone sensor's zone axes in its frame (multizone.h)
   // ApplyCrosstalk's per-emitter echo sources (sim/crosstalk.h), by sensor;
   // each found once per sample, on first use (buffers kept across samples)
   std::vector<std::vector<EchoSource>> echo_sources_;
