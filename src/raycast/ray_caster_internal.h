@@ -69,6 +69,11 @@ namespace raycast_internal {
 
 enum class GeomKind { kBox, kMesh, kSphere, kCylinder, kPlane };
 
+// A robot body's box is grown by this much: Embree's float transforms and
+// bounds err by microns, not this (a ray that passes outside the grown box
+// cannot meet the body).
+inline constexpr double kRobotBoxSlack_m = 1e-3;
+
 /// One Embree geometry of a body: what the callbacks and hit mapping need.
 struct GeomRecord {
   GeomKind kind = GeomKind::kBox;
@@ -104,6 +109,11 @@ struct Body {
   Vec3 bound_center_B = Vec3::Zero();
   double bound_radius_m = std::numeric_limits<double>::infinity();
   Vec3 bound_center_W = Vec3::Zero();  ///< X_WB · bound_center_B, kept with X_WB
+  Pose X_BW = Pose::Identity();  ///< X_WB.inverse(), kept with X_WB (distance queries, the robot's box test)
+  // a kRobot body's box in B (Embree's bounds of its scene, grown by a
+  // slack): a ray that misses the box misses the body (Impl::robot_uncommitted)
+  Vec3 box_lo_B = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  Vec3 box_hi_B = Vec3::Constant(std::numeric_limits<double>::infinity());
   int world_slot = -1;  ///< a kWorld body's index in Impl::world_bodies and world_spheres_W
   int moving_slot = -1; ///< a kMoving body's index in Impl::moving_spheres_W
   bool instance_stale = false;  ///< moved since its instance's transform was last set (Impl::stale_*)
@@ -146,6 +156,13 @@ struct RayCaster::Impl {
   // commit of their scene (Commit, or CommitMovingIfMoved for kMoving bodies)
   std::vector<int> stale_fixed;
   std::vector<int> stale_moving;
+  std::vector<int> stale_robot;
+  // the robot's scene has moved since its last commit: as the moving
+  // objects' (above), it is committed by the first cast whose segment up to
+  // its world hit passes through one of the robot's body boxes (a shin
+  // sensor's rays that point away from both legs never do), once
+  std::atomic<bool> robot_uncommitted{false};
+  std::mutex robot_commit_mutex;
   // the world body cast without its instance (see the top of the file), or null
   RTCScene world_direct = nullptr;
   int world_direct_body = -1;
@@ -179,6 +196,8 @@ struct RayCaster::Impl {
   /// Commits the moving objects' scene if they moved since its last commit
   /// (thread-safe: the casts of a batch may ask at once).
   void CommitMovingIfMoved();
+  /// Commits the robot's scene if it moved since its last commit (thread-safe, as CommitMovingIfMoved).
+  void CommitRobotIfMoved();
   /// Sets the instances' transforms of the bodies in `stale` from their poses, and empties it.
   void PushTransforms(std::vector<int>& stale);
 

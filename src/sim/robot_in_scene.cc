@@ -138,10 +138,11 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
     // samples' cap: closed forms cost the same whatever the reach, and that
     // bound lasts for samples, where a bound of best_m is spent by the next
     // sample's move. Meshes' point queries grow with the reach.
+    const Vec3 center_W = X_WL * samples.center_L;
     {
       const double skip_m = samples.radius_m + best_m;
       const double reach_m = world.world_has_mesh() ? skip_m : samples.radius_m + cap_m;
-      const double centre_m = world.DistanceToWorld(X_WL * samples.center_L, exclude_object_ids, reach_m);
+      const double centre_m = world.DistanceToWorld(center_W, exclude_object_ids, reach_m);
       if (centre_m >= skip_m) {
         bounds.link_lower_m = centre_m - samples.radius_m + slot.lowered_m;
         bounds.X_WL_ref = X_WL;
@@ -151,14 +152,20 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
 
     // else each sample the same way with its own bound and travel, and the
     // ones that could win measured with capped queries: a distance below the
-    // cap is exact, and only those can lower best_m (the cap is above it)
+    // cap is exact, and only those can lower best_m (the cap is above it).
+    // The queries walk only the shapes within the cap of the link's sphere.
+    bool nearby_found = false;
     double link_lower_m = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < samples.points_L.size(); ++i) {
       if (mask != nullptr && !(*mask)[link][i]) continue;
       const Vec3 p_W = X_WL * samples.points_L[i];
       double lower_m = bounds.point_lower_m[i] - slot.lowered_m - (p_W - bounds.p_W_ref[i]).norm() - kBoundSlack_m;
       if (lower_m < best_m) {
-        lower_m = world.DistanceToWorld(p_W, exclude_object_ids, cap_m);
+        if (!nearby_found) {
+          world.FindNearby(center_W, samples.radius_m, cap_m, &nearby_);
+          nearby_found = true;
+        }
+        lower_m = world.DistanceToWorld(p_W, exclude_object_ids, cap_m, &nearby_);
         bounds.point_lower_m[i] = lower_m + slot.lowered_m;
         bounds.p_W_ref[i] = p_W;
         best_m = std::min(best_m, lower_m);

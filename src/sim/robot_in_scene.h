@@ -118,6 +118,7 @@ class RobotInScene {
   std::vector<LinkSamples> link_samples_;
   std::vector<BoundsSlot> bounds_slots_;  // the most recently used last
   std::vector<Pose> X_WL_;
+  RayCaster::Nearby nearby_;  // ClearanceTo's scratch: the world's shapes near the link it measures
 };
 
 }  // namespace proxsim
