@@ -207,6 +207,25 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
       radius_m = std::hypot(cylinder->radius_m, 0.5 * cylinder->length_m);
     const Vec3 center_B = geom->X_BO.translation();
     body.closed_form_spheres_B.emplace_back(center_B.x(), center_B.y(), center_B.z(), radius_m);
+    // and its box in B, the corners of its box in O moved to B (far tighter
+    // than the sphere for a room's long walls; unbounded for a plane)
+    raycast_internal::ShapeBox box_B;
+    Vec3 half_O = Vec3::Constant(std::numeric_limits<double>::infinity());
+    if (const auto* box = std::get_if<Box>(&geom->shape)) half_O = 0.5 * box->size_m;
+    if (const auto* sphere = std::get_if<Sphere>(&geom->shape)) half_O = Vec3::Constant(sphere->radius_m);
+    if (const auto* cylinder = std::get_if<Cylinder>(&geom->shape))
+      half_O = Vec3(cylinder->radius_m, cylinder->radius_m, 0.5 * cylinder->length_m);
+    if (half_O.allFinite()) {
+      box_B.lo_B = Vec3::Constant(std::numeric_limits<double>::infinity());
+      box_B.hi_B = -box_B.lo_B;
+      for (int c = 0; c < 8; ++c) {
+        const Vec3 sign((c & 1) ? 1 : -1, (c & 2) ? 1 : -1, (c & 4) ? 1 : -1);
+        const Vec3 corner_B = geom->X_BO * half_O.cwiseProduct(sign);
+        box_B.lo_B = box_B.lo_B.cwiseMin(corner_B);
+        box_B.hi_B = box_B.hi_B.cwiseMax(corner_B);
+      }
+    }
+    body.closed_form_boxes_B.push_back(box_B);
   }
 
   // the body's BVH, built once; then its instance in the top-level scenes

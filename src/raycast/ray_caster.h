@@ -105,7 +105,10 @@ class RayCaster {
     std::vector<std::uint32_t> geom_begin;  ///< per listed body, its first entry in `geoms` (and one past the last)
     std::vector<std::uint32_t> geoms;       ///< closed-form shapes' indices within their body, ascending
   };
-  void FindNearby(const Vec3& center_W, double radius_m, double reach_m, Nearby* nearby) const;
+  /// `within`: a Nearby whose ball holds this one's and whose reach is no
+  /// less: only its lists are looked through (otherwise every shape).
+  void FindNearby(const Vec3& center_W, double radius_m, double reach_m, Nearby* nearby,
+                  const Nearby* within = nullptr) const;
   /// NearestToWorld and DistanceToWorld from a point in `nearby`'s ball, capped
   /// at most at its reach (otherwise `nearby` is not used: every shape is looked at).
   NearestSurface NearestToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids, double below_m,

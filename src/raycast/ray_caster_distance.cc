@@ -61,6 +61,19 @@ bool MeshPointQueryCallback(RTCPointQueryFunctionArguments* args) {
   return true;
 }
 
+// 0, 1, ..., n − 1 without storing them
+struct AllIndices {
+  std::size_t n = 0;
+  struct Iterator {
+    std::size_t i;
+    std::size_t operator*() const { return i; }
+    Iterator& operator++() { ++i; return *this; }
+    bool operator!=(const Iterator& o) const { return i != o.i; }
+  };
+  Iterator begin() const { return {0}; }
+  Iterator end() const { return {n}; }
+};
+
 }  // namespace
 
 /// The scene a point query of `body` walks: the body's own when none of its
@@ -132,31 +145,48 @@ RayCaster::NearestSurface RayCaster::NearestToWorld(const Vec3& p_W, std::span<c
 // (the robot's samples moved into W), far above it.
 constexpr double kNearbySlack_m = 1e-6;
 
-void RayCaster::FindNearby(const Vec3& center_W, double radius_m, double reach_m, Nearby* nearby) const {
+void RayCaster::FindNearby(const Vec3& center_W, double radius_m, double reach_m, Nearby* nearby,
+                           const Nearby* within) const {
   nearby->center_W = center_W;
   nearby->radius_m = radius_m;
   nearby->reach_m = reach_m;
   nearby->bodies.clear();
   nearby->geom_begin.clear();
   nearby->geoms.clear();
-  // a shape is left out when its bounding sphere lies beyond the ball by more
-  // than the reach: from any point of the ball it is then farther than any
-  // query's best (at most the reach), and the query's own test skips it
+  // only a ball inside `within`'s, with no farther reach, can take its lists
+  if (within != nullptr && !(reach_m <= within->reach_m &&
+                             (center_W - within->center_W).norm() + radius_m <= within->radius_m)) {
+    within = nullptr;
+  }
+  // a shape is left out when its bounding sphere or box lies beyond the ball
+  // by more than the reach: from any point of the ball it is then farther
+  // than any query's best (at most the reach), and the query's own tests skip it
   const double beyond_m = radius_m + kNearbySlack_m + reach_m + 1e-9;
-  for (std::size_t w = 0; w < impl_->world_bodies.size(); ++w) {
+  const auto add_body = [&](std::size_t w, const auto& geoms) {
     const Eigen::Vector4d& sphere_W = impl_->world_spheres_W[w];
     const double within_m = sphere_W.w() + beyond_m;
-    if ((center_W - sphere_W.head<3>()).squaredNorm() > within_m * within_m) continue;
+    if ((center_W - sphere_W.head<3>()).squaredNorm() > within_m * within_m) return;
     const Body& body = *impl_->bodies[impl_->world_bodies[w]];
     const Vec3 center_B = body.X_BW * center_W;
     nearby->bodies.push_back(static_cast<int>(w));
     nearby->geom_begin.push_back(static_cast<std::uint32_t>(nearby->geoms.size()));
-    for (std::size_t g = 0; g < body.closed_form_geoms.size(); ++g) {
+    for (const std::size_t g : geoms) {
       const Eigen::Vector4d& sphere_B = body.closed_form_spheres_B[g];
       const double within_g_m = sphere_B.w() + beyond_m;
       if ((center_B - sphere_B.head<3>()).squaredNorm() > within_g_m * within_g_m) continue;
+      if (body.closed_form_boxes_B[g].SquaredDistance(center_B) > beyond_m * beyond_m) continue;
       nearby->geoms.push_back(static_cast<std::uint32_t>(g));
     }
+  };
+  if (within != nullptr) {
+    for (std::size_t k = 0; k < within->bodies.size(); ++k) {
+      add_body(static_cast<std::size_t>(within->bodies[k]),
+               std::span<const std::uint32_t>(within->geoms.data() + within->geom_begin[k],
+                                              within->geom_begin[k + 1] - within->geom_begin[k]));
+    }
+  } else {
+    for (std::size_t w = 0; w < impl_->world_bodies.size(); ++w)
+      add_body(w, AllIndices{impl_->bodies[impl_->world_bodies[w]]->closed_form_geoms.size()});
   }
   nearby->geom_begin.push_back(static_cast<std::uint32_t>(nearby->geoms.size()));
 }
@@ -179,6 +209,8 @@ void MeasureBody(CasterImpl& impl, const Body& body, const Vec3& p_B,
     const Eigen::Vector4d& sphere_B = body.closed_form_spheres_B[g];
     const double reach_m = sphere_B.w() + best_m + 1e-9;
     if ((p_B - sphere_B.head<3>()).squaredNorm() > reach_m * reach_m) continue;
+    // and the same by its box (a long wall's sphere reaches the whole room)
+    if (body.closed_form_boxes_B[g].SquaredDistance(p_B) > (best_m + 1e-9) * (best_m + 1e-9)) continue;
     const GeomRecord& geom = *body.closed_form_geoms[g];
     if (IsExcluded(geom.object_id, exclude_object_ids)) continue;
     const Vec3 p_O = geom.X_OB * p_B;
@@ -235,19 +267,6 @@ void MeasureBody(CasterImpl& impl, const Body& body, const Vec3& p_B,
     nearest.depth_m = 0;
   }
 }
-
-// 0, 1, ..., n − 1 without storing them
-struct AllIndices {
-  std::size_t n = 0;
-  struct Iterator {
-    std::size_t i;
-    std::size_t operator*() const { return i; }
-    Iterator& operator++() { ++i; return *this; }
-    bool operator!=(const Iterator& o) const { return i != o.i; }
-  };
-  Iterator begin() const { return {0}; }
-  Iterator end() const { return {n}; }
-};
 
 }  // namespace
 

@@ -74,6 +74,16 @@ enum class GeomKind { kBox, kMesh, kSphere, kCylinder, kPlane };
 // cannot meet the body).
 inline constexpr double kRobotBoxSlack_m = 1e-3;
 
+/// An axis-aligned box in a body's frame B holding a shape (unbounded: every point is in it).
+struct ShapeBox {
+  Vec3 lo_B = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  Vec3 hi_B = Vec3::Constant(std::numeric_limits<double>::infinity());
+  /// The squared distance from p_B to the box (0 inside).
+  double SquaredDistance(const Vec3& p_B) const {
+    return (lo_B - p_B).cwiseMax(p_B - hi_B).cwiseMax(0.0).squaredNorm();
+  }
+};
+
 /// One Embree geometry of a body: what the callbacks and hit mapping need.
 struct GeomRecord {
   GeomKind kind = GeomKind::kBox;
@@ -104,6 +114,7 @@ struct Body {
   // touching the geom's record or moving the point into O, every shape
   // farther than its best so far (most of a room's furniture from any point)
   std::vector<Eigen::Vector4d> closed_form_spheres_B;
+  std::vector<ShapeBox> closed_form_boxes_B;  ///< and their boxes in B, tighter: tested after the spheres
   // a sphere holding every geom (from the body's bounds in B; infinite with a
   // plane), so that a distance query skips a body farther than its best so far
   Vec3 bound_center_B = Vec3::Zero();
