@@ -22,13 +22,16 @@
 //     instance level — then, if it sees the robot, into `robot` up to the
 //     world hit: the nearer hit wins.
 // Moving a body only rewrites its instance transforms; Commit() then rebuilds
-// the top-level scene that changed (the robot's, each sample), whose only
-// primitives are the instances. The moving objects' top-level scene is
-// rebuilt only when a ray first may meet one of them after they moved (its
-// segment up to the world hit passes within a moving body's bounding sphere,
-// ray_caster_cast.cc): a commit of 50 instances costs ~40 µs, most samples'
-// rays pass far from every moving object, and a ray that passes outside
-// every sphere misses them all whether or not their scene is up to date.
+// the world's top-level scene if it changed, whose only primitives are the
+// instances. The moving objects' top-level scene is rebuilt only when a ray
+// first may meet one of them after they moved (its segment up to the world
+// hit passes within a moving body's bounding sphere, ray_caster_cast.cc): a
+// commit of 50 instances costs ~40 µs, most samples' rays pass far from every
+// moving object, and a ray that passes outside every sphere misses them all
+// whether or not their scene is up to date. The robot's (moved every sample)
+// likewise, when a ray's segment first passes through one of its bodies'
+// boxes (Body::box_lo_B, box_hi_B: a box fits a link far better than a sphere
+// around it, and a shin sensor's rays start beside their own link).
 // The child scenes, and so the static world's BVH, are built once in AddBody.
 //
 // Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
