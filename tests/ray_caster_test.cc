@@ -824,3 +824,105 @@ TEST(RayCasterTest, TriangleCountCountsBoxesAndMeshesOnly) {
 
 }  // namespace
 }  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// The robot's scene is committed only when a ray may meet one of its bodies
+// (ray_caster_internal.h): however many moves no ray came near, the first
+// ray that does sees the body where it is now, never where it was committed
+// last, and a ray through a place it left sees what lies behind.
+TEST(RayCasterTest, RobotMovedWhileNoRayCameNearIsSeenWhereItIs) {
+  RayCaster caster;
+  caster.AddBody({BodyShape{Box{Vec3(0.2, 40, 4)}, Translation(10, 0, 0), 0}}, BodyKind::kWorld);
+  const int link = caster.AddBody({BodyShape{Sphere{0.2}, Pose::Identity(), 1}}, BodyKind::kRobot, Translation(2, 0, 0));
+  caster.Commit();
+  const Ray along_x = MakeRay(Vec3::Zero(), Vec3::UnitX(), 20, /*see_robot=*/true);
+  EXPECT_NEAR(CastOne(caster, along_x).distance_m, 1.8, 1e-6);
+  // moved three times, each committed, with only rays far from it cast meanwhile
+  const Ray far_away = MakeRay(Vec3(0, -5, 0), Vec3::UnitX(), 20, /*see_robot=*/true);
+  for (const double y : {1.0, 2.0, 3.0}) {
+    caster.SetBodyPose(link, Translation(4, y, 0));
+    caster.Commit();
+    const Hit hit = CastOne(caster, far_away);
+    EXPECT_EQ(hit.object_id, 0);
+    EXPECT_NEAR(hit.distance_m, 9.9, 1e-6);
+  }
+  // the place it was committed at is empty: the wall behind
+  const Hit behind = CastOne(caster, along_x);
+  EXPECT_EQ(behind.object_id, 0);
+  EXPECT_NEAR(behind.distance_m, 9.9, 1e-6);
+  // where it is now: at (4, 3, 0)
+  const Hit seen = CastOne(caster, MakeRay(Vec3(0, 3, 0), Vec3::UnitX(), 20, /*see_robot=*/true));
+  EXPECT_EQ(seen.object_id, 1);
+  EXPECT_NEAR(seen.distance_m, 3.8, 1e-6);
+  // and a ray that only grazes its box (inside the box's corner, outside the sphere) misses it
+  const double corner = 0.19;  // the box's half side is 0.2: (0.19, 0.19) is in the box, 0.27 from the centre
+  const Hit grazing = CastOne(caster, MakeRay(Vec3(0, 3 + corner, corner), Vec3::UnitX(), 20, /*see_robot=*/true));
+  EXPECT_EQ(grazing.object_id, 0);
+}
+
+// RayCaster::Nearby: queries from a ball walk only the shapes near it; their
+// answers (distance, object, depth) are those over every shape, bit for bit,
+// for every point of the ball and every cap up to the reach, and for a list
+// narrowed from a larger ball's; a point outside the ball, or a cap beyond the
+// reach, is answered over every shape.
+TEST(RayCasterTest, NearbyShapesGiveTheAnswersOfEveryShape) {
+  RayCaster caster;
+  // a room: long walls (their spheres reach everything), furniture of every
+  // closed form, a box turned about two axes, a mesh panel, in two bodies
+  caster.AddBody({BodyShape{Plane{}, Pose::Identity(), 0},
+                  BodyShape{Box{Vec3(0.1, 10, 2.5)}, Translation(-1, 0, 1.25), 1},
+                  BodyShape{Box{Vec3(10, 0.1, 2.5)}, Translation(4, 5, 1.25), 2},
+                  BodyShape{Box{Vec3(0.6, 0.8, 0.04)}, XyzRpyDeg(1.5, 0.4, 0.7, 0, 0, 20), 3},
+                  BodyShape{Cylinder{0.03, 0.7}, Translation(1.3, 0.1, 0.35), 4},
+                  BodyShape{Sphere{0.2}, Translation(2.2, -0.5, 0.4), 5},
+                  BodyShape{Box{Vec3(0.3, 0.2, 0.5)}, XyzRpyDeg(0.8, -0.6, 0.4, 30, 0, 45), 6}},
+                 BodyKind::kWorld);
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_O = {Vec3f(0, 0, 0), Vec3f(1, 0, 0), Vec3f(1, 0, 1), Vec3f(0, 0, 1)};
+  mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
+  Mesh panel;
+  panel.data = mesh;
+  caster.AddBody({BodyShape{panel, Pose::Identity(), 7}, BodyShape{Box{Vec3(0.2, 0.2, 0.2)}, Translation(0.5, 0.5, 0.5), 8}},
+                 BodyKind::kWorld, XyzRpyDeg(2.5, 0.6, 0, 0, 0, 15));
+  caster.Commit();
+  const std::vector<std::int32_t> exclude{0};
+  int near_something = 0;
+  for (int ball = 0; ball < 40; ++ball) {
+    // balls along and across the room, 0.05–0.3 m across, reaching 0.1–0.8 m
+    const Vec3 center_W(0.1 * ball - 0.5, 0.03 * (ball % 17) - 0.3, 0.05 + 0.02 * (ball % 30));
+    const double radius_m = 0.05 + 0.25 * (ball % 5) / 4, reach_m = 0.1 + 0.7 * (ball % 7) / 6;
+    RayCaster::Nearby nearby, narrowed;
+    caster.FindNearby(center_W, radius_m, reach_m, &nearby);
+    caster.FindNearby(center_W + Vec3(0.3 * radius_m, 0, 0), 0.5 * radius_m, 0.8 * reach_m, &narrowed, &nearby);
+    for (int k = 0; k < 30; ++k) {
+      // points over the ball (its edge included), and a few just outside
+      const double u = (k % 10) / 9.0, theta = 0.7 * k, phi = 0.3 * k;
+      const double r_m = (k < 27 ? u : 1.2) * radius_m;
+      const Vec3 p_W = center_W + r_m * Vec3(std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi));
+      for (const double cap_m : {0.5 * reach_m, reach_m, 2 * reach_m, std::numeric_limits<double>::infinity()}) {
+        for (const auto* list : {&nearby, &narrowed}) {
+          const RayCaster::NearestSurface every = caster.NearestToWorld(p_W, exclude, cap_m);
+          const RayCaster::NearestSurface near = caster.NearestToWorld(p_W, exclude, cap_m, list);
+          ASSERT_EQ(near.distance_m, every.distance_m) << "ball " << ball << " point " << k << " cap " << cap_m;
+          ASSERT_EQ(near.object_id, every.object_id) << "ball " << ball << " point " << k << " cap " << cap_m;
+          ASSERT_EQ(near.depth_m, every.depth_m) << "ball " << ball << " point " << k << " cap " << cap_m;
+          ASSERT_EQ(caster.DistanceToWorld(p_W, exclude, cap_m, list), every.distance_m);
+          near_something += every.object_id >= 0 ? 1 : 0;
+        }
+      }
+    }
+    // the lists leave the far walls out of a ball in the room's middle
+    if (center_W.x() > 1.5) {
+      for (std::size_t body = 0; body < nearby.bodies.size(); ++body)
+        for (std::uint32_t g = nearby.geom_begin[body]; g < nearby.geom_begin[body + 1]; ++g)
+          if (nearby.bodies[body] == 0) EXPECT_NE(nearby.geoms[g], 1u) << "the west wall, 2.5 m away, in ball " << ball;
+    }
+  }
+  // the points must meet shapes within their caps, or nothing was compared
+  EXPECT_GT(near_something, 1000);
+}
+
+}  // namespace
+}  // namespace proxsim

@@ -209,3 +209,35 @@ TEST(RobotInSceneTest, ClearanceStartsAfreshWhenTheExcludeListChanges) {
 
 }  // namespace
 }  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// A built-in model is parsed once per process and options and then copied
+// (sim/make_locomotion.cc): each load equals a fresh parse with its own options,
+// whatever was loaded before.
+TEST(LoadRobotModelTest, BuiltinModelLoadsEqualFreshParsesWhateverCameBefore) {
+  for (const LinkGeometryKind geometry :
+       {LinkGeometryKind::kVisual, LinkGeometryKind::kCollision, LinkGeometryKind::kVisual}) {
+    RobotConfig config;
+    config.model = "builtin:biped";
+    config.geometry = geometry;
+    const RobotModel loaded = LoadRobotModel(config);
+    const RobotModel fresh = RobotModel::Builtin("biped", UrdfOptions{.geometry = geometry});
+    ASSERT_EQ(loaded.link_count(), fresh.link_count());
+    for (int link = 0; link < fresh.link_count(); ++link) {
+      EXPECT_EQ(loaded.link_name(link), fresh.link_name(link));
+      EXPECT_EQ(loaded.link(link).shapes_kind, fresh.link(link).shapes_kind) << "the options of another load";
+      const auto& a = loaded.link(link).shapes;
+      const auto& b = fresh.link(link).shapes;
+      ASSERT_EQ(a.size(), b.size()) << loaded.link_name(link);
+      for (std::size_t s = 0; s < a.size(); ++s) {
+        EXPECT_EQ(a[s].shape.index(), b[s].shape.index());
+        EXPECT_TRUE(a[s].X_LO.matrix() == b[s].X_LO.matrix());
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace proxsim

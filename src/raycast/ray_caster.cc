@@ -207,6 +207,25 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
       radius_m = std::hypot(cylinder->radius_m, 0.5 * cylinder->length_m);
     const Vec3 center_B = geom->X_BO.translation();
     body.closed_form_spheres_B.emplace_back(center_B.x(), center_B.y(), center_B.z(), radius_m);
+    // and its box in B, the corners of its box in O moved to B (far tighter
+    // than the sphere for a room's long walls; unbounded for a plane)
+    raycast_internal::ShapeBox box_B;
+    Vec3 half_O = Vec3::Constant(std::numeric_limits<double>::infinity());
+    if (const auto* box = std::get_if<Box>(&geom->shape)) half_O = 0.5 * box->size_m;
+    if (const auto* sphere = std::get_if<Sphere>(&geom->shape)) half_O = Vec3::Constant(sphere->radius_m);
+    if (const auto* cylinder = std::get_if<Cylinder>(&geom->shape))
+      half_O = Vec3(cylinder->radius_m, cylinder->radius_m, 0.5 * cylinder->length_m);
+    if (half_O.allFinite()) {
+      box_B.lo_B = Vec3::Constant(std::numeric_limits<double>::infinity());
+      box_B.hi_B = -box_B.lo_B;
+      for (int c = 0; c < 8; ++c) {
+        const Vec3 sign((c & 1) ? 1 : -1, (c & 2) ? 1 : -1, (c & 4) ? 1 : -1);
+        const Vec3 corner_B = geom->X_BO * half_O.cwiseProduct(sign);
+        box_B.lo_B = box_B.lo_B.cwiseMin(corner_B);
+        box_B.hi_B = box_B.hi_B.cwiseMax(corner_B);
+      }
+    }
+    body.closed_form_boxes_B.push_back(box_B);
   }
 
   // the body's BVH, built once; then its instance in the top-level scenes
@@ -222,6 +241,11 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
     body.bound_radius_m = 0.5 * (upper_B - lower_B).norm();
   }
   body.bound_center_W = X_WB * body.bound_center_B;
+  body.X_BW = X_WB.inverse();
+  if (kind == BodyKind::kRobot && lower_B.allFinite() && upper_B.allFinite() && (upper_B - lower_B).minCoeff() >= 0) {
+    body.box_lo_B = lower_B.array() - raycast_internal::kRobotBoxSlack_m;
+    body.box_hi_B = upper_B.array() + raycast_internal::kRobotBoxSlack_m;
+  }
   if (kind == BodyKind::kWorld) {
     body.world_slot = static_cast<int>(impl.world_bodies.size());
     impl.world_has_mesh = impl.world_has_mesh || body.has_mesh;
@@ -257,12 +281,16 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   body.bound_center_W = X_WB * body.bound_center_B;
   if (body.world_slot >= 0) impl_->world_spheres_W[body.world_slot].head<3>() = body.bound_center_W;
   if (body.moving_slot >= 0) impl_->moving_spheres_W[body.moving_slot].head<3>() = body.bound_center_W;
+  body.X_BW = X_WB.inverse();
   // the instance's transform waits for the commit of its scene: a caster
   // asked only for distances (World's moving caster), or moving objects no
   // ray comes near, never pay for it
   if (!body.instance_stale) {
     body.instance_stale = true;
-    (body.kind == BodyKind::kMoving ? impl_->stale_moving : impl_->stale_fixed).push_back(body_index);
+    (body.kind == BodyKind::kMoving  ? impl_->stale_moving
+     : body.kind == BodyKind::kRobot ? impl_->stale_robot
+                                     : impl_->stale_fixed)
+        .push_back(body_index);
   }
   impl_->committed = false;
   (body.kind == BodyKind::kWorld ? impl_->world_dirty
@@ -308,12 +336,11 @@ void RayCaster::Commit() {
     }
   }
   impl.PushTransforms(impl.stale_fixed);
-  impl.commit_arena.execute([&impl] {
-    if (impl.robot_dirty) rtcCommitScene(impl.scene_robot);
-    if (impl.world_dirty) rtcCommitScene(impl.scene_world);
-  });
-  // the moving objects' scene waits for a ray that may meet them (CommitMovingIfMoved)
+  if (impl.world_dirty) impl.commit_arena.execute([&impl] { rtcCommitScene(impl.scene_world); });
+  // the moving objects' and the robot's scenes wait for a ray that may meet
+  // them (CommitMovingIfMoved, CommitRobotIfMoved)
   if (impl.moving_dirty) impl.moving_uncommitted.store(true, std::memory_order_release);
+  if (impl.robot_dirty) impl.robot_uncommitted.store(true, std::memory_order_release);
   impl.robot_dirty = impl.world_dirty = impl.moving_dirty = false;
   impl_->committed = true;
   impl_->ThrowIfDeviceError("Commit");
@@ -326,6 +353,15 @@ void RayCaster::Impl::CommitMovingIfMoved() {
   PushTransforms(stale_moving);
   commit_arena.execute([this] { rtcCommitScene(scene_moving); });
   moving_uncommitted.store(false, std::memory_order_release);
+}
+
+void RayCaster::Impl::CommitRobotIfMoved() {
+  if (!robot_uncommitted.load(std::memory_order_acquire)) return;
+  std::lock_guard<std::mutex> lock(robot_commit_mutex);
+  if (!robot_uncommitted.load(std::memory_order_relaxed)) return;  // another cast committed it meanwhile
+  PushTransforms(stale_robot);
+  commit_arena.execute([this] { rtcCommitScene(scene_robot); });
+  robot_uncommitted.store(false, std::memory_order_release);
 }
 
 std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }

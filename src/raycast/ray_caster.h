@@ -91,6 +91,31 @@ class RayCaster {
   NearestSurface NearestToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids,
                                 double below_m = std::numeric_limits<double>::infinity()) const;
 
+  /// The world's bodies and closed-form shapes that a distance query from
+  /// within a ball may have to measure: those whose bounding sphere comes
+  /// within reach_m of it. Many queries from the same ball (a robot link's
+  /// surface samples) then walk these lists instead of every shape of the
+  /// world; their answers are the same (what is left out is what each query
+  /// would skip by its own bounding-sphere tests). Valid until a world body moves.
+  struct Nearby {
+    Vec3 center_W = Vec3::Zero();
+    double radius_m = 0;
+    double reach_m = 0;
+    std::vector<int> bodies;                ///< world slots, ascending
+    std::vector<std::uint32_t> geom_begin;  ///< per listed body, its first entry in `geoms` (and one past the last)
+    std::vector<std::uint32_t> geoms;       ///< closed-form shapes' indices within their body, ascending
+  };
+  /// `within`: a Nearby whose ball holds this one's and whose reach is no
+  /// less: only its lists are looked through (otherwise every shape).
+  void FindNearby(const Vec3& center_W, double radius_m, double reach_m, Nearby* nearby,
+                  const Nearby* within = nullptr) const;
+  /// NearestToWorld and DistanceToWorld from a point in `nearby`'s ball, capped
+  /// at most at its reach (otherwise `nearby` is not used: every shape is looked at).
+  NearestSurface NearestToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids, double below_m,
+                                const Nearby* nearby) const;
+  double DistanceToWorld(const Vec3& p_W, std::span<const std::int32_t> exclude_object_ids, double below_m,
+                         const Nearby* nearby) const;
+
   /// Whether any body is a kMoving one.
   bool has_moving() const;
 

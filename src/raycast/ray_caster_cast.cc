@@ -49,6 +49,8 @@ struct CastScenes {
   RTCScene world = nullptr;      ///< the world's top-level scene, or the world body's own (direct)
   int direct_body = -1;          ///< the body of `world` when it is direct, else -1 (hits carry the instance)
   RTCScene robot = nullptr;      ///< the robot's top-level scene; null when there is no robot
+  std::function<void()> commit_robot;  ///< commits `robot` if it moved (before a cast into it)
+  bool test_robot_boxes = false;       ///< cast into `robot` only the packets with a ray that may meet one of its boxes
   RTCScene moving = nullptr;     ///< the moving objects' top-level scene; null when there are none
   // each scene's bodies by instance ID
   const std::vector<int>* world_bodies = nullptr;
@@ -82,6 +84,37 @@ bool MayMeetSphere(const RTCRayHit8& packet, std::size_t lane, const std::vector
     const double t = std::clamp(to_centre.dot(direction) / dd, 0.0, reach);
     const double within_m = sphere.w() + kSphereSlack_m;
     if ((to_centre - t * direction).squaredNorm() <= within_m * within_m) return true;
+  }
+  return false;
+}
+
+/// Whether `lane`'s ray, up to its nearest hit so far (tfar), passes through
+/// the box of one of the robot's `robot_bodies` (in its body frame B: the
+/// slab test, a segment lengthened by the box's slack).
+bool MayMeetRobotBox(const RTCRayHit8& packet, std::size_t lane, const std::vector<int>& robot_bodies,
+                     const std::vector<std::unique_ptr<Body>>& bodies) {
+  const Vec3 origin_W(packet.ray.org_x[lane], packet.ray.org_y[lane], packet.ray.org_z[lane]);
+  const Vec3 direction_W(packet.ray.dir_x[lane], packet.ray.dir_y[lane], packet.ray.dir_z[lane]);
+  const double length = direction_W.norm();
+  if (!(length > 0)) return true;
+  const double reach = static_cast<double>(packet.ray.tfar[lane]) * (1 + 1e-6) + raycast_internal::kRobotBoxSlack_m / length;
+  for (const int b : robot_bodies) {
+    const Body& body = *bodies[static_cast<std::size_t>(b)];
+    const Vec3 origin_B = body.X_BW * origin_W;
+    const Vec3 direction_B = body.X_BW.linear() * direction_W;
+    double t_in = 0, t_out = reach;
+    for (int k = 0; k < 3 && t_in <= t_out; ++k) {
+      if (direction_B[k] == 0) {
+        if (origin_B[k] < body.box_lo_B[k] || origin_B[k] > body.box_hi_B[k]) t_in = reach + 1;  // parallel, outside
+        continue;
+      }
+      double t0 = (body.box_lo_B[k] - origin_B[k]) / direction_B[k], t1 = (body.box_hi_B[k] - origin_B[k]) / direction_B[k];
+      if (t0 > t1) std::swap(t0, t1);
+      t_in = std::max(t_in, t0);
+      t_out = std::min(t_out, t1);
+    }
+    // (a NaN in the comparisons is a meeting: the cast decides)
+    if (!(t_in > t_out)) return true;
   }
   return false;
 }
@@ -180,7 +213,18 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
       cast_instances(scenes.moving, *scenes.moving_bodies, &Ray::see_moving);
     }
   }
-  if (scenes.robot) cast_instances(scenes.robot, *scenes.robot_bodies, &Ray::see_robot);
+  // the robot's links only when a ray may meet one of their boxes (the
+  // robot's scene is then committed, if it moved since: ray_caster_internal.h)
+  if (scenes.robot) {
+    bool may_meet = !scenes.test_robot_boxes;
+    for (std::size_t lane = 0; lane < n && !may_meet; ++lane)
+      may_meet = rays[lane].see_robot && RayEmbreeCanTake(rays[lane]) &&
+                 MayMeetRobotBox(packet, lane, *scenes.robot_bodies, bodies);
+    if (may_meet) {
+      scenes.commit_robot();
+      cast_instances(scenes.robot, *scenes.robot_bodies, &Ray::see_robot);
+    }
+  }
 }
 
 }  // namespace
@@ -193,6 +237,8 @@ void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
   const CastScenes scenes{.world = impl.world_direct ? impl.world_direct : impl.scene_world,
                           .direct_body = impl.world_direct ? impl.world_direct_body : -1,
                           .robot = impl.has_robot ? impl.scene_robot : nullptr,
+                          .commit_robot = [impl = impl_.get()] { impl->CommitRobotIfMoved(); },
+                          .test_robot_boxes = impl.robot_uncommitted.load(std::memory_order_acquire),
                           .moving = impl.has_moving ? impl.scene_moving : nullptr,
                           .world_bodies = &impl.world_bodies,
                           .robot_bodies = &impl.robot_bodies,

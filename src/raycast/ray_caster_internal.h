@@ -22,13 +22,16 @@
 //     instance level — then, if it sees the robot, into `robot` up to the
 //     world hit: the nearer hit wins.
 // Moving a body only rewrites its instance transforms; Commit() then rebuilds
-// the top-level scene that changed (the robot's, each sample), whose only
-// primitives are the instances. The moving objects' top-level scene is
-// rebuilt only when a ray first may meet one of them after they moved (its
-// segment up to the world hit passes within a moving body's bounding sphere,
-// ray_caster_cast.cc): a commit of 50 instances costs ~40 µs, most samples'
-// rays pass far from every moving object, and a ray that passes outside
-// every sphere misses them all whether or not their scene is up to date.
+// the world's top-level scene if it changed, whose only primitives are the
+// instances. The moving objects' top-level scene is rebuilt only when a ray
+// first may meet one of them after they moved (its segment up to the world
+// hit passes within a moving body's bounding sphere, ray_caster_cast.cc): a
+// commit of 50 instances costs ~40 µs, most samples' rays pass far from every
+// moving object, and a ray that passes outside every sphere misses them all
+// whether or not their scene is up to date. The robot's (moved every sample)
+// likewise, when a ray's segment first passes through one of its bodies'
+// boxes (Body::box_lo_B, box_hi_B: a box fits a link far better than a sphere
+// around it, and a shin sensor's rays start beside their own link).
 // The child scenes, and so the static world's BVH, are built once in AddBody.
 //
 // Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
@@ -69,6 +72,21 @@ namespace raycast_internal {
 
 enum class GeomKind { kBox, kMesh, kSphere, kCylinder, kPlane };
 
+// A robot body's box is grown by this much: Embree's float transforms and
+// bounds err by microns, not this (a ray that passes outside the grown box
+// cannot meet the body).
+inline constexpr double kRobotBoxSlack_m = 1e-3;
+
+/// An axis-aligned box in a body's frame B holding a shape (unbounded: every point is in it).
+struct ShapeBox {
+  Vec3 lo_B = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  Vec3 hi_B = Vec3::Constant(std::numeric_limits<double>::infinity());
+  /// The squared distance from p_B to the box (0 inside).
+  double SquaredDistance(const Vec3& p_B) const {
+    return (lo_B - p_B).cwiseMax(p_B - hi_B).cwiseMax(0.0).squaredNorm();
+  }
+};
+
 /// One Embree geometry of a body: what the callbacks and hit mapping need.
 struct GeomRecord {
   GeomKind kind = GeomKind::kBox;
@@ -99,11 +117,17 @@ struct Body {
   // touching the geom's record or moving the point into O, every shape
   // farther than its best so far (most of a room's furniture from any point)
   std::vector<Eigen::Vector4d> closed_form_spheres_B;
+  std::vector<ShapeBox> closed_form_boxes_B;  ///< and their boxes in B, tighter: tested after the spheres
   // a sphere holding every geom (from the body's bounds in B; infinite with a
   // plane), so that a distance query skips a body farther than its best so far
   Vec3 bound_center_B = Vec3::Zero();
   double bound_radius_m = std::numeric_limits<double>::infinity();
   Vec3 bound_center_W = Vec3::Zero();  ///< X_WB · bound_center_B, kept with X_WB
+  Pose X_BW = Pose::Identity();  ///< X_WB.inverse(), kept with X_WB (distance queries, the robot's box test)
+  // a kRobot body's box in B (Embree's bounds of its scene, grown by a
+  // slack): a ray that misses the box misses the body (Impl::robot_uncommitted)
+  Vec3 box_lo_B = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  Vec3 box_hi_B = Vec3::Constant(std::numeric_limits<double>::infinity());
   int world_slot = -1;  ///< a kWorld body's index in Impl::world_bodies and world_spheres_W
   int moving_slot = -1; ///< a kMoving body's index in Impl::moving_spheres_W
   bool instance_stale = false;  ///< moved since its instance's transform was last set (Impl::stale_*)
@@ -146,6 +170,13 @@ struct RayCaster::Impl {
   // commit of their scene (Commit, or CommitMovingIfMoved for kMoving bodies)
   std::vector<int> stale_fixed;
   std::vector<int> stale_moving;
+  std::vector<int> stale_robot;
+  // the robot's scene has moved since its last commit: as the moving
+  // objects' (above), it is committed by the first cast whose segment up to
+  // its world hit passes through one of the robot's body boxes (a shin
+  // sensor's rays that point away from both legs never do), once
+  std::atomic<bool> robot_uncommitted{false};
+  std::mutex robot_commit_mutex;
   // the world body cast without its instance (see the top of the file), or null
   RTCScene world_direct = nullptr;
   int world_direct_body = -1;
@@ -179,6 +210,8 @@ struct RayCaster::Impl {
   /// Commits the moving objects' scene if they moved since its last commit
   /// (thread-safe: the casts of a batch may ask at once).
   void CommitMovingIfMoved();
+  /// Commits the robot's scene if it moved since its last commit (thread-safe, as CommitMovingIfMoved).
+  void CommitRobotIfMoved();
   /// Sets the instances' transforms of the bodies in `stale` from their poses, and empties it.
   void PushTransforms(std::vector<int>& stale);
 

@@ -1,5 +1,9 @@
 #include "sim/make_locomotion.h"
 
+#include <map>
+#include <mutex>
+#include <string>
+
 #include "gait/external_drive.h"
 #include "gait/gait_walker.h"
 #include "gait/trajectory_player.h"
@@ -15,8 +19,23 @@ constexpr const char* kBuiltinPrefix = "builtin:";
 RobotModel LoadRobotModel(const RobotConfig& config) {
   const UrdfOptions options{
       .geometry = config.geometry, .package_paths = config.package_paths, .geom_group = config.geom_group};
-  if (config.model.starts_with(kBuiltinPrefix))
-    return RobotModel::Builtin(config.model.substr(std::string(kBuiltinPrefix).size()), options);
+  if (config.model.starts_with(kBuiltinPrefix)) {
+    // a built-in model's text is part of the program: parsed once per
+    // process and options (a study builds one per episode), then copied
+    static std::mutex mutex;
+    static std::map<std::string, RobotModel> parsed;
+    std::string key = config.model + '\n' + std::to_string(static_cast<int>(options.geometry)) + '\n' +
+                      std::to_string(options.geom_group);
+    for (const std::string& path : options.package_paths) key += '\n' + path;
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (const auto found = parsed.find(key); found != parsed.end()) return found->second;
+    }
+    RobotModel model = RobotModel::Builtin(config.model.substr(std::string(kBuiltinPrefix).size()), options);
+    const std::lock_guard<std::mutex> lock(mutex);
+    parsed.emplace(key, model);
+    return model;
+  }
   return RobotModel::FromFile(config.model, options);
 }
 

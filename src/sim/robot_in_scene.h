@@ -84,10 +84,18 @@ class RobotInScene {
   std::vector<LinkShapes> LinkGeometry() const;
 
  private:
+  // a run of consecutive samples of a link (neighbours on its surface, as
+  // they are sampled) with the sphere that holds them
+  struct Chunk {
+    std::size_t begin = 0, end = 0;
+    Vec3 center_L = Vec3::Zero();
+    double radius_m = 0;
+  };
   struct LinkSamples {
     std::vector<Vec3> points_L;  // surface samples in the link frame
     Vec3 center_L = Vec3::Zero();
     double radius_m = 0;         // bounding sphere of the samples
+    std::vector<Chunk> chunks;   // the samples in runs, in order
   };
   // ClearanceTo's memory of a link: lower bounds of its samples' clearance,
   // each with the pose (or point) at which it holds
@@ -96,6 +104,9 @@ class RobotInScene {
     Pose X_WL_ref = Pose::Identity();
     std::vector<double> point_lower_m;  // sample i no nearer than this when it was at p_W_ref[i]
     std::vector<Vec3> p_W_ref;
+    // as link_lower_m, for each chunk: its samples no nearer, with the link at chunk_X_WL_ref
+    std::vector<double> chunk_lower_m;
+    std::vector<Pose> chunk_X_WL_ref;
   };
 
   // ClearanceTo's memory for one (exclude list, mask): bounds per link
@@ -118,6 +129,7 @@ class RobotInScene {
   std::vector<LinkSamples> link_samples_;
   std::vector<BoundsSlot> bounds_slots_;  // the most recently used last
   std::vector<Pose> X_WL_;
+  RayCaster::Nearby nearby_;  // ClearanceTo's scratch: the world's shapes near the link it measures
 };
 
 }  // namespace proxsim
