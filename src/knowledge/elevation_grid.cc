@@ -7,10 +7,6 @@ namespace proxsim {
 
 namespace {
 
-std::uint64_t TileKey(std::int32_t tx, std::int32_t ty) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty);
-}
-
 }  // namespace
 
 static_assert(ElevationGrid::kTileSide == 16, "TileCoord shifts by 4, TileBox multiplies by 16");

@@ -159,5 +159,9 @@ inline int CellInTile(CellIndex c) {
   return ly * ElevationGrid::kTileSide + lx;
 }
 inline std::int32_t TileCoord(std::int32_t i) { return i >> 4; }  // floor(i / 16), also for negative i
+/// One key for a tile's two coordinates (a hash map's key).
+inline std::uint64_t TileKey(std::int32_t tx, std::int32_t ty) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty);
+}
 
 }  // namespace proxsim

@@ -276,7 +276,7 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
   const auto for_each_tile = [](const CellBox& box, auto&& f) {
     for (std::int32_t ty = TileCoord(box.iy_min - 1); ty <= TileCoord(box.iy_max + 1); ++ty) {
       for (std::int32_t tx = TileCoord(box.ix_min - 1); tx <= TileCoord(box.ix_max + 1); ++tx) {
-        f((static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty));
+        f(TileKey(tx, ty));
       }
     }
   };

@@ -11,10 +11,6 @@ namespace {
 // The track is followed in chords this long: the pelvis's path bends slowly.
 constexpr double kChord_m = 0.1;
 
-std::uint64_t TileKey(std::int32_t tx, std::int32_t ty) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty);
-}
-
 double DistanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double length2 = ab.squaredNorm();

@@ -346,22 +346,22 @@ void RayCaster::Commit() {
   impl_->ThrowIfDeviceError("Commit");
 }
 
+void RayCaster::Impl::CommitIfMoved(std::atomic<bool>& uncommitted, std::mutex& mutex, std::vector<int>& stale,
+                                    RTCScene scene) {
+  if (!uncommitted.load(std::memory_order_acquire)) return;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (!uncommitted.load(std::memory_order_relaxed)) return;  // another cast committed it meanwhile
+  PushTransforms(stale);
+  commit_arena.execute([scene] { rtcCommitScene(scene); });
+  uncommitted.store(false, std::memory_order_release);
+}
+
 void RayCaster::Impl::CommitMovingIfMoved() {
-  if (!moving_uncommitted.load(std::memory_order_acquire)) return;
-  std::lock_guard<std::mutex> lock(moving_commit_mutex);
-  if (!moving_uncommitted.load(std::memory_order_relaxed)) return;  // another cast committed it meanwhile
-  PushTransforms(stale_moving);
-  commit_arena.execute([this] { rtcCommitScene(scene_moving); });
-  moving_uncommitted.store(false, std::memory_order_release);
+  CommitIfMoved(moving_uncommitted, moving_commit_mutex, stale_moving, scene_moving);
 }
 
 void RayCaster::Impl::CommitRobotIfMoved() {
-  if (!robot_uncommitted.load(std::memory_order_acquire)) return;
-  std::lock_guard<std::mutex> lock(robot_commit_mutex);
-  if (!robot_uncommitted.load(std::memory_order_relaxed)) return;  // another cast committed it meanwhile
-  PushTransforms(stale_robot);
-  commit_arena.execute([this] { rtcCommitScene(scene_robot); });
-  robot_uncommitted.store(false, std::memory_order_release);
+  CommitIfMoved(robot_uncommitted, robot_commit_mutex, stale_robot, scene_robot);
 }
 
 std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }

@@ -212,6 +212,9 @@ struct RayCaster::Impl {
   void CommitMovingIfMoved();
   /// Commits the robot's scene if it moved since its last commit (thread-safe, as CommitMovingIfMoved).
   void CommitRobotIfMoved();
+  /// The two above: the scene's transforms pushed and the scene committed,
+  /// once, by the first cast that finds `uncommitted` set.
+  void CommitIfMoved(std::atomic<bool>& uncommitted, std::mutex& mutex, std::vector<int>& stale, RTCScene scene);
   /// Sets the instances' transforms of the bodies in `stale` from their poses, and empties it.
   void PushTransforms(std::vector<int>& stale);
 

@@ -11,17 +11,13 @@ namespace {
 // σ at reflectance ρ among one level's rows: linear between the rows around
 // it, the end row's beyond them (a scan, no allocation: it runs per echo)
 double SigmaAtLevel(const std::vector<std::array<double, 3>>& table, double level, double rho) {
-  const std::array<double, 3>*front = nullptr, *back = nullptr, *a = nullptr, *b = nullptr;
-  for (const auto& row : table) {
-    if (row[1] != level) continue;
-    if (front == nullptr || row[0] < (*front)[0]) front = &row;
-    if (back == nullptr || row[0] > (*back)[0]) back = &row;
-    if (row[0] <= rho && (a == nullptr || row[0] > (*a)[0])) a = &row;
-    if (row[0] > rho && (b == nullptr || row[0] < (*b)[0])) b = &row;
-  }
-  if (rho <= (*front)[0]) return (*front)[2];
-  if (rho >= (*back)[0]) return (*back)[2];
-  return (*a)[2] + (rho - (*a)[0]) / ((*b)[0] - (*a)[0]) * ((*b)[2] - (*a)[2]);
+  const LevelRows rows = RowsAround(table, level, rho);
+  if (rho <= (*rows.front)[0]) return (*rows.front)[2];
+  if (rho >= (*rows.back)[0]) return (*rows.back)[2];
+  const auto& a = *rows.below;
+  const auto& b = *rows.at_or_above;
+  if (b[0] == rho) return b[2];  // on a row: its σ
+  return a[2] + (rho - a[0]) / (b[0] - a[0]) * (b[2] - a[2]);
 }
 
 }  // namespace

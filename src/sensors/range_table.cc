@@ -10,28 +10,6 @@ namespace proxsim {
 
 namespace {
 
-// The rows of one ambient level around reflectance ρ, found by a scan (no
-// allocation: this runs for every ray's echo): the level's darkest and
-// brightest rows, the brightest below ρ and the darkest at or above it.
-struct LevelRows {
-  const std::array<double, 3>* front = nullptr;
-  const std::array<double, 3>* back = nullptr;
-  const std::array<double, 3>* below = nullptr;
-  const std::array<double, 3>* at_or_above = nullptr;
-};
-
-LevelRows RowsAround(const std::vector<std::array<double, 3>>& table, double level, double rho) {
-  LevelRows rows;
-  for (const auto& row : table) {
-    if (row[1] != level) continue;
-    if (rows.front == nullptr || row[0] < (*rows.front)[0]) rows.front = &row;
-    if (rows.back == nullptr || row[0] > (*rows.back)[0]) rows.back = &row;
-    if (row[0] < rho && (rows.below == nullptr || row[0] > (*rows.below)[0])) rows.below = &row;
-    if (row[0] >= rho && (rows.at_or_above == nullptr || row[0] < (*rows.at_or_above)[0])) rows.at_or_above = &row;
-  }
-  return rows;
-}
-
 // the range at reflectance ρ among the rows of one ambient level
 double RangeAtLevel(const std::vector<std::array<double, 3>>& table, double level, double rho) {
   const LevelRows rows = RowsAround(table, level, rho);
@@ -48,6 +26,18 @@ double RangeAtLevel(const std::vector<std::array<double, 3>>& table, double leve
 }
 
 }  // namespace
+
+LevelRows RowsAround(const std::vector<std::array<double, 3>>& table, double level, double rho) {
+  LevelRows rows;
+  for (const auto& row : table) {
+    if (row[1] != level) continue;
+    if (rows.front == nullptr || row[0] < (*rows.front)[0]) rows.front = &row;
+    if (rows.back == nullptr || row[0] > (*rows.back)[0]) rows.back = &row;
+    if (row[0] < rho && (rows.below == nullptr || row[0] > (*rows.below)[0])) rows.below = &row;
+    if (row[0] >= rho && (rows.at_or_above == nullptr || row[0] < (*rows.at_or_above)[0])) rows.at_or_above = &row;
+  }
+  return rows;
+}
 
 AmbientBracket BracketAmbient(const std::vector<std::array<double, 3>>& table, double ambient_klux) {
   const double a = std::max(ambient_klux, 0.0);

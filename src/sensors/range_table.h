@@ -39,6 +39,18 @@ struct AmbientBracket {
 };
 AmbientBracket BracketAmbient(const std::vector<std::array<double, 3>>& table, double ambient_klux);
 
+/// The rows of one ambient level of such a table around reflectance ρ,
+/// found by a scan (no allocation: this runs for every ray's echo): the
+/// level's darkest and brightest rows, the brightest below ρ and the darkest
+/// at or above it.
+struct LevelRows {
+  const std::array<double, 3>* front = nullptr;
+  const std::array<double, 3>* back = nullptr;
+  const std::array<double, 3>* below = nullptr;
+  const std::array<double, 3>* at_or_above = nullptr;
+};
+LevelRows RowsAround(const std::vector<std::array<double, 3>>& table, double level, double rho);
+
 /// The longest range a [reflectance, ambient_klux, max_range_m] table gives
 /// for a target of reflectance ρ in `ambient_klux`, by the laws above (uncapped).
 double TableMaxRange_m(const std::vector<std::array<double, 3>>& table, double ambient_klux, double reflectance);

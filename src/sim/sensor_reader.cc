@@ -26,6 +26,12 @@ SensorReader::SensorReader(const Scenario& scenario, World& world) : scenario_(s
     }
     if (scenario.sensors[i].spec.type == SensorType::kUltrasonic && scenario.sensors[i].spec.beam) sonars_.push_back(i);
   }
+  // crosstalk: the longest listening window, and the sonars others may hear (cast at every sample)
+  heard_by_others_.assign(scenario.sensors.size(), false);
+  for (const std::size_t sonar : sonars_) {
+    longest_window_s_ = std::max(longest_window_s_, ListeningWindow_s(sonar));
+    heard_by_others_[sonar] = sonars_.size() > 1;
+  }
   zone_axes_S_.resize(scenario.sensors.size());
   for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
     if (const auto& zones = scenario.sensors[i].spec.zones) {
@@ -102,8 +108,6 @@ void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
   echo_sources_.resize(scenario_.sensors.size());
   echo_sources_found_.assign(scenario_.sensors.size(), false);
   nearest_source_m_.resize(scenario_.sensors.size());
-  longest_window_s_ = 0.0;
-  for (const std::size_t sonar : sonars_) longest_window_s_ = std::max(longest_window_s_, ListeningWindow_s(sonar));
   FindNextPings(frame.sample);
   const double t_s = static_cast<double>(frame.sample) / scenario_.rate_hz;
   for (const std::size_t listener : sonars_) {
@@ -218,8 +222,7 @@ void SensorReader::MeasureZonesInto(std::size_t i, SensorSample& out, const Draw
 }
 
 bool SensorReader::CastsAt(std::size_t sensor, std::int64_t sample) const {
-  if (IsSensorSample(sensor, sample)) return true;
-  return sonars_.size() > 1 && std::find(sonars_.begin(), sonars_.end(), sensor) != sonars_.end();
+  return heard_by_others_[sensor] || IsSensorSample(sensor, sample);
 }
 
 void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame, bool rays) {

@@ -93,6 +93,7 @@ class SensorReader {
   std::vector<double> nearest_source_m_;     // each emitter's NearestEchoSource_m, found with its sources
   std::vector<double> next_ping_offset_s_;   // FindNextPings' answer, by sensor
   double longest_window_s_ = 0.0;            // the longest listening window of any sonar
+  std::vector<bool> heard_by_others_;        // by sensor: a sonar that another sonar may hear
   std::vector<double> last_ping_t_s_;  // each sensor's last ping, s (NaN before the first)
 };
 
