@@ -5,11 +5,7 @@
 
 namespace proxsim {
 
-namespace {
-
-}  // namespace
-
-static_assert(ElevationGrid::kTileSide == 16, "TileCoord shifts by 4, TileBox multiplies by 16");
+static_assert(ElevationGrid::kTileSide == 16, "TileCoord shifts by 4, CellInTile masks by 15, TileBox multiplies by 16");
 
 void CellBox::Expand(const CellBox& other) {
   if (other.empty()) return;
@@ -31,10 +27,8 @@ bool CellBox::Overlaps(const CellBox& other, int margin) const {
 
 ElevationGrid::ElevationGrid(double resolution_m) : resolution_m_(resolution_m) {}
 
-ElevationGrid::Tile& ElevationGrid::TileOf(CellIndex c, int* cell_in_tile) {
-  *cell_in_tile = CellInTile(c);
+ElevationGrid::Tile& ElevationGrid::TileOfSlow(CellIndex c) {
   const std::int32_t tx = TileCoord(c.ix), ty = TileCoord(c.iy);
-  if (last_tile_ != nullptr && last_tile_->tx == tx && last_tile_->ty == ty) return *last_tile_;
   auto& slot = tiles_[TileKey(tx, ty)];
   if (!slot) {
     slot = std::make_unique<Tile>();
@@ -59,18 +53,12 @@ ElevationGrid::Tile* ElevationGrid::FindTile(CellIndex c) {
   return last_tile_;
 }
 
-const TerrainCell* ElevationGrid::Find(CellIndex c) const {
-  // rays walk cell to cell: most lookups stay in the tile of the last access
+const TerrainCell* ElevationGrid::FindSlow(CellIndex c) const {
   const std::int32_t tx = TileCoord(c.ix), ty = TileCoord(c.iy);
-  if (last_tile_ != nullptr && last_tile_->tx == tx && last_tile_->ty == ty) return &last_tile_->cells[CellInTile(c)];
   const auto it = tiles_.find(TileKey(tx, ty));
   if (it == tiles_.end()) return nullptr;
   last_tile_ = it->second.get();
   return &last_tile_->cells[CellInTile(c)];
-}
-
-double ElevationGrid::Gate_m(double variance_a_m2, double variance_b_m2) {
-  return 3.0 * std::sqrt(variance_a_m2 + variance_b_m2) + kGateFloor_m;
 }
 
 void ElevationGrid::FusePoint(CellIndex c, double z_m, double variance_m2, double t_s) {
@@ -99,28 +87,6 @@ void ElevationGrid::FusePoint(CellIndex c, double z_m, double variance_m2, doubl
     cell.variance_m2 = static_cast<float>(v * variance_m2 / (v + variance_m2));
   }
   // below the gate: the lower part of a face or of the cell; the height stays
-}
-
-void ElevationGrid::BoundFromFreeSpace(CellIndex c, double z_m, bool proves_empty, double t_s) {
-  int i = 0;
-  Tile& tile = TileOf(c, &i);
-  TerrainCell& cell = tile.cells[i];
-  const auto z = static_cast<float>(z_m);
-  bool changed = false;
-  if (z < cell.upper_bound_m) {
-    cell.upper_bound_m = z;
-    changed = true;
-  }
-  if (proves_empty && cell.has_elevation() && z_m < cell.elevation_m - Gate_m(cell.variance_m2, 0.0)) {
-    // the ray went through where the height said a surface was
-    cell.elevation_m = cell.variance_m2 = std::numeric_limits<float>::quiet_NaN();
-    cell.hits = 0;
-    changed = true;
-  }
-  if (changed) {
-    ++tile.version;
-    cell.last_t_s = static_cast<float>(t_s);
-  }
 }
 
 std::size_t ElevationGrid::memory_bytes() const {

@@ -24,6 +24,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -66,6 +67,14 @@ inline CellBox TileBox(std::int32_t tx, std::int32_t ty) {
   return {tx * n, ty * n, tx * n + n - 1, ty * n + n - 1};
 }
 
+/// Index of cell c within its tile (16 cells a side: ElevationGrid::kTileSide), and the tile's index.
+inline int CellInTile(CellIndex c) { return (c.iy & 15) * 16 + (c.ix & 15); }
+inline std::int32_t TileCoord(std::int32_t i) { return i >> 4; }  // floor(i / 16), also for negative i
+/// One key for a tile's two coordinates (a hash map's key).
+inline std::uint64_t TileKey(std::int32_t tx, std::int32_t ty) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty);
+}
+
 class ElevationGrid {
  public:
   static constexpr int kTileSide = 16;  ///< cells per tile side
@@ -92,13 +101,51 @@ class ElevationGrid {
   /// The cell, its tile made if it had none.
   TerrainCell& At(CellIndex c);
   /// The cell, or null when its tile was never touched.
-  const TerrainCell* Find(CellIndex c) const;
+  const TerrainCell* Find(CellIndex c) const {
+    // rays walk cell to cell: most lookups stay in the tile of the last access
+    if (last_tile_ != nullptr && last_tile_->tx == TileCoord(c.ix) && last_tile_->ty == TileCoord(c.iy)) {
+      return &last_tile_->cells[CellInTile(c)];
+    }
+    return FindSlow(c);
+  }
+  /// The tile holding cell c, made if it had none, and the cell's index in it
+  /// (a ray's walk reads and bounds a cell through one lookup).
+  Tile& TileOf(CellIndex c, int* cell_in_tile) {
+    *cell_in_tile = CellInTile(c);
+    if (last_tile_ != nullptr && last_tile_->tx == TileCoord(c.ix) && last_tile_->ty == TileCoord(c.iy)) {
+      return *last_tile_;
+    }
+    return TileOfSlow(c);
+  }
 
   /// Fuses a measured height (variance > 0) at time t into the cell (rules above).
   void FusePoint(CellIndex c, double z_m, double variance_m2, double t_s);
   /// A ray known empty crossed the cell's column down to z_m: lowers the
   /// upper bound; with `proves_empty`, a height above z_m beyond the gate is forgotten.
-  void BoundFromFreeSpace(CellIndex c, double z_m, bool proves_empty, double t_s);
+  void BoundFromFreeSpace(CellIndex c, double z_m, bool proves_empty, double t_s) {
+    int i = 0;
+    BoundFromFreeSpace(TileOf(c, &i), i, z_m, proves_empty, t_s);
+  }
+  /// The same, for cell i of a tile of this grid.
+  void BoundFromFreeSpace(Tile& tile, int i, double z_m, bool proves_empty, double t_s) {
+    TerrainCell& cell = tile.cells[i];
+    const auto z = static_cast<float>(z_m);
+    bool changed = false;
+    if (z < cell.upper_bound_m) {
+      cell.upper_bound_m = z;
+      changed = true;
+    }
+    if (proves_empty && cell.has_elevation() && z_m < cell.elevation_m - Gate_m(cell.variance_m2, 0.0)) {
+      // the ray went through where the height said a surface was
+      cell.elevation_m = cell.variance_m2 = std::numeric_limits<float>::quiet_NaN();
+      cell.hits = 0;
+      changed = true;
+    }
+    if (changed) {
+      ++tile.version;
+      cell.last_t_s = static_cast<float>(t_s);
+    }
+  }
 
   /// Every tile, in no particular order.
   template <class F>
@@ -140,10 +187,14 @@ class ElevationGrid {
   void Clear();
 
   /// The gate within which two heights of variances va, vb agree.
-  static double Gate_m(double variance_a_m2, double variance_b_m2);
+  static double Gate_m(double variance_a_m2, double variance_b_m2) {
+    return 3.0 * std::sqrt(variance_a_m2 + variance_b_m2) + kGateFloor_m;
+  }
 
  private:
-  Tile& TileOf(CellIndex c, int* cell_in_tile);
+  // the lookups past the last tile's cache
+  const TerrainCell* FindSlow(CellIndex c) const;
+  Tile& TileOfSlow(CellIndex c);
 
   double resolution_m_;
   std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;
@@ -152,16 +203,5 @@ class ElevationGrid {
   mutable Tile* last_tile_ = nullptr;
   CellBox bounds_;
 };
-
-/// Index of cell c within its tile, and the tile's index.
-inline int CellInTile(CellIndex c) {
-  const int lx = c.ix & (ElevationGrid::kTileSide - 1), ly = c.iy & (ElevationGrid::kTileSide - 1);
-  return ly * ElevationGrid::kTileSide + lx;
-}
-inline std::int32_t TileCoord(std::int32_t i) { return i >> 4; }  // floor(i / 16), also for negative i
-/// One key for a tile's two coordinates (a hash map's key).
-inline std::uint64_t TileKey(std::int32_t tx, std::int32_t ty) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty);
-}
 
 }  // namespace proxsim

@@ -56,13 +56,21 @@ void TraverseColumns(const Vec3& p0, const Vec3& p1, double resolution_m, Visit&
   const auto end_x = static_cast<std::int64_t>(std::floor(ax + dx)), end_y = static_cast<std::int64_t>(std::floor(ay + dy));
   std::int64_t budget = std::llabs(end_x - cell.ix) + std::llabs(end_y - cell.iy) + 2;
   double t = 0.0;
+  // each exit is a function of its own index: found again only when that index moved
+  double tx = exit_x(), ty = exit_y();
   while (budget-- > 0) {
-    const double tx = exit_x(), ty = exit_y();
     const double t_next = std::min({tx, ty, 1.0});
     if (!visit(cell, t, t_next) || t_next >= 1.0) return;
     // leave across x, across y, or through the corner (both at once)
-    if (tx <= ty) cell.ix += step_x;
-    if (ty <= tx) cell.iy += step_y;
+    const bool across_x = tx <= ty, across_y = ty <= tx;
+    if (across_x) {
+      cell.ix += step_x;
+      tx = exit_x();
+    }
+    if (across_y) {
+      cell.iy += step_y;
+      ty = exit_y();
+    }
     t = t_next;
   }
 }

@@ -145,12 +145,16 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
     const double ab_xy2 = ab.head<2>().squaredNorm(), ab_xy = std::sqrt(ab_xy2);
     TraverseColumns(a, b, r, [&](CellIndex cell, double t0, double t1) {
       const double z_lo = std::min(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
-      const TerrainCell* known = grid_.Find(cell);
-      const bool measured = known != nullptr && known->has_elevation();
+      // one lookup for the cell's read and its bounds (the tile is made now
+      // if it had none, as the bound below would make it)
+      int i = 0;
+      ElevationGrid::Tile& tile = grid_.TileOf(cell, &i);
+      const TerrainCell& known = tile.cells[i];
+      const bool measured = known.has_elevation();
       // a silent ray stops at the first surface the map knows it would
       // cross: it met it at a grazing angle, and says nothing beyond
       if (!evidence.proves_empty && measured &&
-          z_lo < known->elevation_m - ElevationGrid::Gate_m(known->variance_m2, 0.0)) {
+          z_lo < known.elevation_m - ElevationGrid::Gate_m(known.variance_m2, 0.0)) {
         return false;
       }
       // a detection's ray overrides a height only where it passes near the
@@ -167,17 +171,17 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
         const double crossing_m = ab_xy * (t1 - t0);
         const double z_hi = std::max(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
         if ((p.head<2>() - centre).norm() <= 0.25 * r) {
-          grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
-          grid_.BoundFromFreeSpace(cell, p.z(), true, t_s);
+          grid_.BoundFromFreeSpace(tile, i, z_lo, false, t_s);
+          grid_.BoundFromFreeSpace(tile, i, p.z(), true, t_s);
           return true;
         }
         if (crossing_m >= 0.5 * r) {
-          grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
-          grid_.BoundFromFreeSpace(cell, z_hi, true, t_s);
+          grid_.BoundFromFreeSpace(tile, i, z_lo, false, t_s);
+          grid_.BoundFromFreeSpace(tile, i, z_hi, true, t_s);
           return true;
         }
       }
-      grid_.BoundFromFreeSpace(cell, z_lo, false, t_s);
+      grid_.BoundFromFreeSpace(tile, i, z_lo, false, t_s);
       return true;
     });
   }
