@@ -2,7 +2,8 @@
 // from the rays: moving the robot's link bodies and rebuilding the top-level
 // scene (RayCaster::Commit), and one whole Simulation::Step of the paper's
 // scenario, of a 64-beam one, and of the bench's heavy scenario in the
-// 1M-triangle room. Run: build/release/proxsim_microbench
+// 1M-triangle room, and the paper's walk whole with and without a multi-zone
+// sensor on each shin. Run: build/release/proxsim_microbench
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -85,6 +86,16 @@ void BM_MultizoneWalk(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_MultizoneWalk)->Arg(0)->Arg(15)->Unit(benchmark::kMillisecond);
+
+// The paper's own walk, the same way: what the `multizone` line compares against.
+void BM_PaperWalk(benchmark::State& state) {
+  const Scenario scenario = proxsim::LoadBuiltinScenario("paper");
+  for (auto _ : state) {
+    proxsim::Simulation simulation(scenario, 1);
+    while (!simulation.done()) simulation.Step();
+  }
+}
+BENCHMARK(BM_PaperWalk)->Unit(benchmark::kMillisecond);
 
 // The heavy scenario of `proxsim bench`: 64 beams of 32 rays in the 1M-triangle room.
 void BM_HeavyStep1M(benchmark::State& state) {

@@ -45,8 +45,7 @@ TerrainCell& ElevationGrid::At(CellIndex c) {
   return TileOf(c, &i).cells[i];
 }
 
-ElevationGrid::Tile* ElevationGrid::FindTile(CellIndex c) {
-  if (last_tile_ != nullptr && last_tile_->tx == TileCoord(c.ix) && last_tile_->ty == TileCoord(c.iy)) return last_tile_;
+ElevationGrid::Tile* ElevationGrid::FindTileSlow(CellIndex c) {
   const auto it = tiles_.find(TileKey(TileCoord(c.ix), TileCoord(c.iy)));
   if (it == tiles_.end()) return nullptr;
   last_tile_ = it->second.get();

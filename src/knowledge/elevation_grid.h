@@ -157,7 +157,10 @@ class ElevationGrid {
     for (auto& [key, tile] : tiles_) f(*tile);
   }
   /// The tile holding cell c, or null.
-  Tile* FindTile(CellIndex c);
+  Tile* FindTile(CellIndex c) {
+    if (last_tile_ != nullptr && last_tile_->tx == TileCoord(c.ix) && last_tile_->ty == TileCoord(c.iy)) return last_tile_;
+    return FindTileSlow(c);
+  }
 
   /// The cells of every tile held (empty when none).
   CellBox Bounds() const { return bounds_; }
@@ -195,6 +198,7 @@ class ElevationGrid {
   // the lookups past the last tile's cache
   const TerrainCell* FindSlow(CellIndex c) const;
   Tile& TileOfSlow(CellIndex c);
+  Tile* FindTileSlow(CellIndex c);
 
   double resolution_m_;
   std::unordered_map<std::uint64_t, std::unique_ptr<Tile>> tiles_;

@@ -12,10 +12,12 @@ std::uint64_t Key(CellIndex c) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.ix)) << 32) | static_cast<std::uint32_t>(c.iy);
 }
 
-// One cluster's cells into a classified hazard.
-Hazard Classify(const std::vector<CellIndex>& cells, CellLabel label,
-                const std::function<CellSurface(CellIndex)>& surface_at, double ground_z_m, double r,
-                const TerrainMapConfig& config) {
+}  // namespace
+
+namespace hazards_internal {
+
+Hazard Classify(const std::vector<CellIndex>& cells, const std::vector<CellSurface>& surfaces, CellLabel label,
+                double ground_z_m, double r, const TerrainMapConfig& config) {
   Hazard hazard;
   hazard.ground_z_m = ground_z_m;
   hazard.cell_count = static_cast<int>(cells.size());
@@ -23,10 +25,11 @@ Hazard Classify(const std::vector<CellIndex>& cells, CellLabel label,
   double top_m = -std::numeric_limits<double>::infinity();
   double least_bound_m = -std::numeric_limits<double>::infinity();  // of the never-measured cells
   std::vector<double> floors_m;                                       // measured heights of a dropped cluster
-  for (const CellIndex& c : cells) {
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const CellIndex& c = cells[k];
     hazard.cells.Expand(c);
     sum += Vec2((c.ix + 0.5) * r, (c.iy + 0.5) * r);
-    const CellSurface s = surface_at(c);
+    const CellSurface& s = surfaces[k];
     if (!std::isnan(s.height_m)) {
       top_m = std::max(top_m, static_cast<double>(s.height_m));
       floors_m.push_back(s.height_m);
@@ -59,7 +62,6 @@ Hazard Classify(const std::vector<CellIndex>& cells, CellLabel label,
   return hazard;
 }
 
-// Whether two cells of one label hold one surface (see hazards.h).
 bool Continuous(const CellSurface& a, const CellSurface& b, CellLabel label, const TerrainMapConfig& config) {
   const bool a_measured = !std::isnan(a.height_m), b_measured = !std::isnan(b.height_m);
   if (label == CellLabel::kRaised) {
@@ -74,7 +76,7 @@ bool Continuous(const CellSurface& a, const CellSurface& b, CellLabel label, con
   return true;
 }
 
-}  // namespace
+}  // namespace hazards_internal
 
 const char* HazardClassName(HazardClass hazard_class) {
   switch (hazard_class) {
@@ -108,38 +110,19 @@ std::vector<Hazard> FindHazards(const std::vector<CellIndex>& seeds,
                                 const std::function<CellSurface(CellIndex)>& surface_at, double ground_z_m,
                                 double resolution_m, const TerrainMapConfig& config,
                                 std::vector<std::vector<CellIndex>>* cluster_cells) {
+  // the visited cells: a hash set, for storages without marks of their own
+  struct VisitedSet {
+    std::unordered_set<std::uint64_t> keys;
+    bool Test(CellIndex c) const { return keys.contains(Key(c)); }
+    void Mark(CellIndex c) { keys.insert(Key(c)); }
+  } visited;
+  visited.keys.reserve(2 * seeds.size());  // (no rehash as the fill grows: the same cells, found faster)
   std::vector<Hazard> hazards;
-  std::unordered_set<std::uint64_t> visited;
-  visited.reserve(2 * seeds.size());  // (no rehash as the fill grows: the same cells, found faster)
-  std::vector<CellIndex> stack, cluster;
-  for (const CellIndex& seed : seeds) {
-    const CellLabel label = label_at(seed);
-    if (label == CellLabel::kNone || !visited.insert(Key(seed)).second) continue;
-    // flood fill over the cells of the same label up to two cells away whose
-    // surfaces continue each other: a cluster holds across one unknown cell
-    // (a sparse scan leaves such gaps), and stops at a riser
-    cluster.clear();
-    stack.assign(1, seed);
-    while (!stack.empty()) {
-      const CellIndex c = stack.back();
-      stack.pop_back();
-      cluster.push_back(c);
-      const CellSurface here = surface_at(c);
-      for (int dy = -2; dy <= 2; ++dy) {
-        for (int dx = -2; dx <= 2; ++dx) {
-          const CellIndex n{c.ix + dx, c.iy + dy};
-          if ((dx == 0 && dy == 0) || label_at(n) != label || visited.contains(Key(n)) ||
-              !Continuous(here, surface_at(n), label, config)) {
-            continue;
-          }
-          visited.insert(Key(n));
-          stack.push_back(n);
-        }
-      }
-    }
-    hazards.push_back(Classify(cluster, label, surface_at, ground_z_m, resolution_m, config));
-    if (cluster_cells != nullptr) cluster_cells->push_back(cluster);
-  }
+  FillClusters(seeds, label_at, surface_at, visited, config,
+               [&](CellLabel label, const std::vector<CellIndex>& cells, const std::vector<CellSurface>& surfaces) {
+                 hazards.push_back(hazards_internal::Classify(cells, surfaces, label, ground_z_m, resolution_m, config));
+                 if (cluster_cells != nullptr) cluster_cells->push_back(cells);
+               });
   return hazards;
 }
 

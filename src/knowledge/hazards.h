@@ -79,6 +79,59 @@ struct Hazard {
   double DistanceTo(const Vec2& p_W) const;
 };
 
+namespace hazards_internal {
+// Whether two cells of one label hold one surface (the clusters' rule above).
+bool Continuous(const CellSurface& a, const CellSurface& b, CellLabel label, const TerrainMapConfig& config);
+// One cluster's cells, and their surfaces in the same order, into a classified hazard.
+Hazard Classify(const std::vector<CellIndex>& cells, const std::vector<CellSurface>& surfaces, CellLabel label,
+                double ground_z_m, double resolution_m, const TerrainMapConfig& config);
+}  // namespace hazards_internal
+
+/// The flood fill behind FindHazards, over any storage of labels and marks:
+/// for each seed in order not yet visited, the cluster it starts (same label,
+/// cells at most two apart, surfaces continuing each other), depth first.
+/// label_at(c), surface_at(c) as for FindHazards; visited.Test(c) and
+/// visited.Mark(c) the fill's set of visited cells (marks persist between
+/// calls: cells already marked are neither seeds nor reached);
+/// on_cluster(label, cells, surfaces) receives each cluster, its cells in the
+/// order visited (the first is its seed) and their surfaces.
+template <class LabelAt, class SurfaceAt, class Visited, class OnCluster>
+void FillClusters(const std::vector<CellIndex>& seeds, LabelAt&& label_at, SurfaceAt&& surface_at, Visited& visited,
+                  const TerrainMapConfig& config, OnCluster&& on_cluster) {
+  std::vector<CellIndex> stack, cluster;
+  std::vector<CellSurface> surfaces;
+  for (const CellIndex& seed : seeds) {
+    const CellLabel label = label_at(seed);
+    if (label == CellLabel::kNone || visited.Test(seed)) continue;
+    visited.Mark(seed);
+    // flood fill over the cells of the same label up to two cells away whose
+    // surfaces continue each other: a cluster holds across one unknown cell
+    // (a sparse scan leaves such gaps), and stops at a riser
+    cluster.clear();
+    surfaces.clear();
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const CellIndex c = stack.back();
+      stack.pop_back();
+      const CellSurface here = surface_at(c);
+      cluster.push_back(c);
+      surfaces.push_back(here);
+      for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
+          const CellIndex n{c.ix + dx, c.iy + dy};
+          if ((dx == 0 && dy == 0) || label_at(n) != label || visited.Test(n) ||
+              !hazards_internal::Continuous(here, surface_at(n), label, config)) {
+            continue;
+          }
+          visited.Mark(n);
+          stack.push_back(n);
+        }
+      }
+    }
+    on_cluster(label, cluster, surfaces);
+  }
+}
+
 /// Every cluster of labelled cells reachable from `seeds` (one label per
 /// cluster, cells at most two apart), classified. label_at(c) gives a cell's label (kNone
 /// outside what is known), surface_at(c) its surface. `cluster_cells`, when

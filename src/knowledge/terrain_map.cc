@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <unordered_map>
 
 #include "sensors/measured_point.h"
@@ -19,6 +20,9 @@ constexpr double kRelabelShift_m = 0.005;
 // robot's own foot (a 0.26 × 0.10 × 0.06 m box on the biped), at an angle
 // that sent no echo back: it says nothing beyond.
 constexpr double kFootRadius_m = 0.08;
+// A hazard pass's flood fill marks the cells it visited in this bit of their
+// label (CellLabel takes the low bits), and clears it when done.
+constexpr std::uint8_t kFilledBit = 0x80;
 
 // The smallest distance between segments p0-p1 and q0-q1.
 double SegmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
@@ -92,6 +96,10 @@ void TerrainMap::Reset() {
   labelled_ground_z_m_ = 0.0;
   labels_changed_ = false;
   next_pass_t_s_ = 0.0;
+  clusters_.clear();
+  clustered_ground_z_m_ = std::numeric_limits<double>::quiet_NaN();
+  retired_since_pass_ = false;
+  changed_tiles_.clear();
 }
 
 void TerrainMap::Update(const Observation& observation) {
@@ -228,6 +236,7 @@ void TerrainMap::RollWindow() {
     return tile.Overlaps(keep) || std::any_of(hazards_.begin(), gone, [&](const Hazard& h) { return tiles_of(h.cells).Overlaps(tile); });
   });
   hazards_.erase(gone, hazards_.end());
+  if (!retired_tiles_.empty()) retired_since_pass_ = true;
 }
 
 bool TerrainMap::Relabel(double ground_z_m) {
@@ -235,6 +244,7 @@ bool TerrainMap::Relabel(double ground_z_m) {
   if (everywhere) labelled_ground_z_m_ = ground_z_m;
   bool changed = everywhere;
   grid_.ForEachTile([&](ElevationGrid::Tile& tile) {
+    if (tile.labelled_version != tile.version) changed_tiles_.push_back(TileKey(tile.tx, tile.ty));
     if (!everywhere && tile.labelled_version == tile.version) return;
     tile.labelled_version = tile.version;
     int count = 0;
@@ -246,31 +256,98 @@ bool TerrainMap::Relabel(double ground_z_m) {
     }
     tile.labelled_count = count;
   });
+  // (kept to the tiles' count while no label changes, however long that lasts)
+  if (changed_tiles_.size() > 2 * grid_.tile_count() + 64) {
+    std::sort(changed_tiles_.begin(), changed_tiles_.end());
+    changed_tiles_.erase(std::unique(changed_tiles_.begin(), changed_tiles_.end()), changed_tiles_.end());
+  }
   return changed;
 }
 
 void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
-  // every labelled cell seeds the search, in a fixed order
+  // The clusters are the connected components of the labelled cells (an edge
+  // joins two cells of one label at most two apart whose surfaces continue
+  // each other), each found depth first from its least cell in row order. A
+  // cluster of the last pass none of whose cells, nor any cell within two of
+  // them, changed since (no tile under its box grown by two changed) is still
+  // a component, found the same way: it is kept. The others are found again
+  // from their cells and from every labelled cell of a tile that changed (a
+  // cell labelled now and in no cluster before is in one). Every cluster is
+  // found again when the ground moved or tiles left the window.
+  const bool all_again = retired_since_pass_ || !(clustered_ground_z_m_ == labelled_ground_z_m_);
+  std::sort(changed_tiles_.begin(), changed_tiles_.end());
+  changed_tiles_.erase(std::unique(changed_tiles_.begin(), changed_tiles_.end()), changed_tiles_.end());
+  const auto changed = [this](std::int32_t tx, std::int32_t ty) {
+    return std::binary_search(changed_tiles_.begin(), changed_tiles_.end(), TileKey(tx, ty));
+  };
+  // the fill's visited cells: a bit of their label, cleared below
+  const auto label_at = [this](CellIndex c) {
+    ElevationGrid::Tile* tile = grid_.FindTile(c);
+    return tile ? static_cast<CellLabel>(tile->labels[CellInTile(c)] & ~kFilledBit) : CellLabel::kNone;
+  };
+  struct Marks {
+    ElevationGrid& grid;
+    bool Test(CellIndex c) const {
+      const ElevationGrid::Tile* tile = grid.FindTile(c);
+      return tile != nullptr && (tile->labels[CellInTile(c)] & kFilledBit) != 0;
+    }
+    void Mark(CellIndex c) const {
+      if (ElevationGrid::Tile* tile = grid.FindTile(c)) tile->labels[CellInTile(c)] |= kFilledBit;
+    }
+  } marks{grid_};
+  std::vector<Cluster> kept;
   std::vector<CellIndex> seeds;
+  for (Cluster& cluster : clusters_) {
+    const CellBox& box = cluster.hazard.cells;
+    bool keep = !all_again;
+    for (std::int32_t ty = TileCoord(box.iy_min - 2); keep && ty <= TileCoord(box.iy_max + 2); ++ty) {
+      for (std::int32_t tx = TileCoord(box.ix_min - 2); keep && tx <= TileCoord(box.ix_max + 2); ++tx) {
+        keep = !changed(tx, ty);
+      }
+    }
+    if (keep) {
+      for (const CellIndex c : cluster.cells) marks.Mark(c);
+      kept.push_back(std::move(cluster));
+    } else {
+      seeds.insert(seeds.end(), cluster.cells.begin(), cluster.cells.end());
+    }
+  }
   grid_.ForEachTile([&](const ElevationGrid::Tile& tile) {
-    if (tile.labelled_count == 0) return;
+    if (tile.labelled_count == 0 || !(all_again || changed(tile.tx, tile.ty))) return;
     for (int i = 0; i < ElevationGrid::kTileCells; ++i) {
       if (tile.labels[i] == 0) continue;
       seeds.push_back({tile.tx * ElevationGrid::kTileSide + i % ElevationGrid::kTileSide,
                        tile.ty * ElevationGrid::kTileSide + i / ElevationGrid::kTileSide});
     }
   });
-  std::sort(seeds.begin(), seeds.end(), [](CellIndex a, CellIndex b) { return a.iy != b.iy ? a.iy < b.iy : a.ix < b.ix; });
-  const auto label_at = [this](CellIndex c) {
-    ElevationGrid::Tile* tile = grid_.FindTile(c);
-    return tile ? static_cast<CellLabel>(tile->labels[CellInTile(c)]) : CellLabel::kNone;
-  };
+  const auto row_order = [](CellIndex a, CellIndex b) { return a.iy != b.iy ? a.iy < b.iy : a.ix < b.ix; };
+  std::sort(seeds.begin(), seeds.end(), row_order);
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
   const auto surface_at = [this](CellIndex c) {
     const TerrainCell* cell = grid_.Find(c);
     return cell ? SurfaceOf(*cell) : CellSurface{};
   };
-  std::vector<Hazard> found =
-      FindHazards(seeds, label_at, surface_at, labelled_ground_z_m_, grid_.resolution_m(), config_);
+  std::vector<Cluster> fresh;
+  FillClusters(seeds, label_at, surface_at, marks, config_,
+               [&](CellLabel label, const std::vector<CellIndex>& cells, const std::vector<CellSurface>& surfaces) {
+                 fresh.push_back({cells, hazards_internal::Classify(cells, surfaces, label, labelled_ground_z_m_,
+                                                                    grid_.resolution_m(), config_)});
+               });
+  // in the order a fill from every labelled cell would find them: by their least cell
+  clusters_.clear();
+  std::merge(std::make_move_iterator(kept.begin()), std::make_move_iterator(kept.end()),
+             std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()), std::back_inserter(clusters_),
+             [&](const Cluster& a, const Cluster& b) { return row_order(a.cells.front(), b.cells.front()); });
+  // every cell visited is in a cluster
+  for (const Cluster& cluster : clusters_) {
+    for (const CellIndex c : cluster.cells) grid_.FindTile(c)->labels[CellInTile(c)] &= ~kFilledBit;
+  }
+  changed_tiles_.clear();
+  clustered_ground_z_m_ = labelled_ground_z_m_;
+  retired_since_pass_ = false;
+  std::vector<Hazard> found;
+  found.reserve(clusters_.size());
+  for (const Cluster& cluster : clusters_) found.push_back(cluster.hazard);
 
   // each hazard found keeps the earliest detection of the hazards it overlaps
   // (the old hazards that may overlap one are those sharing a tile with its

@@ -89,6 +89,14 @@ class TerrainMap {
   bool Relabel(double ground_z_m);
   void FindHazardsAgain(double t_s, const RobotKnowledge& robot);
 
+  // a cluster of labelled cells found by a hazard pass: its cells in the
+  // order the fill visited them (the first is its least in row order) and
+  // its hazard as classified, before matching with the hazards known
+  struct Cluster {
+    std::vector<CellIndex> cells;
+    Hazard hazard;
+  };
+
   TerrainMapConfig config_;
   std::vector<SensorSpec> specs_;
   std::vector<bool> feeds_map_;
@@ -100,6 +108,13 @@ class TerrainMap {
   TrackPoint last_;
   Vec2 rolled_at_W_ = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());  // where the window last rolled
   double labelled_ground_z_m_ = 0.0;
+  // the last hazard pass's clusters, the ground they were found against, and
+  // whether tiles left the window since (then every cluster is found again)
+  std::vector<Cluster> clusters_;
+  double clustered_ground_z_m_ = std::numeric_limits<double>::quiet_NaN();
+  bool retired_since_pass_ = false;
+  // the tiles relabelled since the last hazard pass (TileKey; repeats allowed)
+  std::vector<std::uint64_t> changed_tiles_;
   bool labels_changed_ = false;
   double next_pass_t_s_ = 0.0;
 };
