@@ -7,24 +7,6 @@ namespace proxsim {
 
 static_assert(ElevationGrid::kTileSide == 16, "TileCoord shifts by 4, CellInTile masks by 15, TileBox multiplies by 16");
 
-void CellBox::Expand(const CellBox& other) {
-  if (other.empty()) return;
-  if (empty()) {
-    *this = other;
-    return;
-  }
-  ix_min = std::min(ix_min, other.ix_min);
-  iy_min = std::min(iy_min, other.iy_min);
-  ix_max = std::max(ix_max, other.ix_max);
-  iy_max = std::max(iy_max, other.iy_max);
-}
-
-bool CellBox::Overlaps(const CellBox& other, int margin) const {
-  if (empty() || other.empty()) return false;
-  return other.ix_min <= ix_max + margin && other.ix_max >= ix_min - margin && other.iy_min <= iy_max + margin &&
-         other.iy_max >= iy_min - margin;
-}
-
 ElevationGrid::ElevationGrid(double resolution_m) : resolution_m_(resolution_m) {}
 
 ElevationGrid::Tile& ElevationGrid::TileOfSlow(CellIndex c) {

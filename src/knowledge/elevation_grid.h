@@ -23,6 +23,7 @@
 // Frames: W world.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -55,10 +56,24 @@ struct CellBox {
   std::int32_t ny() const { return empty() ? 0 : iy_max - iy_min + 1; }
   bool Contains(CellIndex c) const { return c.ix >= ix_min && c.ix <= ix_max && c.iy >= iy_min && c.iy <= iy_max; }
   /// The smallest box holding both.
-  void Expand(const CellBox& other);
+  void Expand(const CellBox& other) {
+    if (other.empty()) return;
+    if (empty()) {
+      *this = other;
+      return;
+    }
+    ix_min = std::min(ix_min, other.ix_min);
+    iy_min = std::min(iy_min, other.iy_min);
+    ix_max = std::max(ix_max, other.ix_max);
+    iy_max = std::max(iy_max, other.iy_max);
+  }
   void Expand(CellIndex c) { Expand(CellBox{c.ix, c.iy, c.ix, c.iy}); }
   /// Whether the boxes share a cell once this one is grown by `margin` cells.
-  bool Overlaps(const CellBox& other, int margin = 0) const;
+  bool Overlaps(const CellBox& other, int margin = 0) const {
+    if (empty() || other.empty()) return false;
+    return other.ix_min <= ix_max + margin && other.ix_max >= ix_min - margin && other.iy_min <= iy_max + margin &&
+           other.iy_max >= iy_min - margin;
+  }
 };
 
 /// The cells of tile (tx, ty) (16 cells a side: ElevationGrid::kTileSide).

@@ -88,17 +88,6 @@ const char* HazardClassName(HazardClass hazard_class) {
   return "?";
 }
 
-CellLabel LabelCell(const CellSurface& surface, double ground_z_m, const TerrainMapConfig& config) {
-  if (!std::isnan(surface.height_m)) {
-    if (surface.height_m > ground_z_m + config.obstacle_min_m) return CellLabel::kRaised;
-    if (surface.height_m < ground_z_m - config.drop_min_m) return CellLabel::kDropped;
-    return CellLabel::kNone;
-  }
-  // never measured: only free space speaks, and it can only say "lower than"
-  if (surface.upper_bound_m < ground_z_m - config.drop_min_m) return CellLabel::kDropped;
-  return CellLabel::kNone;
-}
-
 double Hazard::DistanceTo(const Vec2& p_W) const {
   const double dx = std::max({min_W.x() - p_W.x(), 0.0, p_W.x() - max_W.x()});
   const double dy = std::max({min_W.y() - p_W.y(), 0.0, p_W.y() - max_W.y()});

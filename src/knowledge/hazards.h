@@ -23,6 +23,7 @@
 // Frames: W world.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -56,8 +57,18 @@ inline CellSurface SurfaceOf(const TerrainCell& cell) {
           cell.upper_bound_m};
 }
 
-/// The label of one cell relative to the ground height.
-CellLabel LabelCell(const CellSurface& surface, double ground_z_m, const TerrainMapConfig& config);
+/// The label of one cell relative to the ground height (inline: the map
+/// relabels every cell of a changed tile at each hazard pass).
+inline CellLabel LabelCell(const CellSurface& surface, double ground_z_m, const TerrainMapConfig& config) {
+  if (!std::isnan(surface.height_m)) {
+    if (surface.height_m > ground_z_m + config.obstacle_min_m) return CellLabel::kRaised;
+    if (surface.height_m < ground_z_m - config.drop_min_m) return CellLabel::kDropped;
+    return CellLabel::kNone;
+  }
+  // never measured: only free space speaks, and it can only say "lower than"
+  if (surface.upper_bound_m < ground_z_m - config.drop_min_m) return CellLabel::kDropped;
+  return CellLabel::kNone;
+}
 
 /// A classified cluster of cells.
 struct Hazard {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <unordered_map>
 
 #include "sensors/measured_point.h"
 
@@ -151,6 +150,12 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
   if (evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m && ClipBelow(a, b, ceiling_z_m)) {
     const Vec3 ab = b - a;
     const double ab_xy2 = ab.head<2>().squaredNorm(), ab_xy = std::sqrt(ab_xy2);
+    // "near the centre": within a quarter of a cell's side; its square with a
+    // relative margin of 1e-6 either side, far beyond the rounding of the
+    // distances compared with it (so the comparisons below decide as a
+    // comparison of the distance itself would)
+    const double near_m = 0.25 * r;
+    const double near2_lo = near_m * near_m * (1 - 1e-6), near2_hi = near_m * near_m * (1 + 1e-6);
     TraverseColumns(a, b, r, [&](CellIndex cell, double t0, double t1) {
       const double z_lo = std::min(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
       // one lookup for the cell's read and its bounds (the tile is made now
@@ -173,16 +178,25 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
       // must still be able to clear what a person walking by left behind.)
       if (evidence.proves_empty && measured) {
         const Vec2 centre = grid_.CellCentre(cell);
-        double t = ab_xy2 > 0 ? (centre - a.head<2>()).dot(ab.head<2>()) / ab_xy2 : t0;
-        t = std::clamp(t, t0, t1);
-        const Vec3 p = a + t * ab;
+        // the ray's nearest point to the centre within the cell; skipped when
+        // the ray's whole line is certainly farther (its distance, by the
+        // cross product, beyond the margin that rounding could bridge)
+        const Vec2 ac = centre - a.head<2>();
+        const double cross = ac.x() * ab.y() - ac.y() * ab.x();
+        if (!(cross * cross > near2_hi * ab_xy2)) {
+          double t = ab_xy2 > 0 ? ac.dot(ab.head<2>()) / ab_xy2 : t0;
+          t = std::clamp(t, t0, t1);
+          const Vec3 p = a + t * ab;
+          // |p − centre| <= near_m, by its square away from the boundary
+          const double d2 = (p.head<2>() - centre).squaredNorm();
+          if (d2 < near2_lo || (d2 <= near2_hi && std::sqrt(d2) <= near_m)) {
+            grid_.BoundFromFreeSpace(tile, i, z_lo, false, t_s);
+            grid_.BoundFromFreeSpace(tile, i, p.z(), true, t_s);
+            return true;
+          }
+        }
         const double crossing_m = ab_xy * (t1 - t0);
         const double z_hi = std::max(a.z() + t0 * ab.z(), a.z() + t1 * ab.z());
-        if ((p.head<2>() - centre).norm() <= 0.25 * r) {
-          grid_.BoundFromFreeSpace(tile, i, z_lo, false, t_s);
-          grid_.BoundFromFreeSpace(tile, i, p.z(), true, t_s);
-          return true;
-        }
         if (crossing_m >= 0.5 * r) {
           grid_.BoundFromFreeSpace(tile, i, z_lo, false, t_s);
           grid_.BoundFromFreeSpace(tile, i, z_hi, true, t_s);
@@ -351,9 +365,9 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
 
   // each hazard found keeps the earliest detection of the hazards it overlaps
   // (the old hazards that may overlap one are those sharing a tile with its
-  // box grown by a cell: an index of them by tile, in ascending order, so the
-  // scan below meets the same hazards in the same order as a scan of all)
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> by_tile;
+  // box grown by a cell: an index of them by tile, sorted, so the scan below
+  // meets the same hazards in the same order as a scan of all)
+  by_tile_.clear();
   const auto for_each_tile = [](const CellBox& box, auto&& f) {
     for (std::int32_t ty = TileCoord(box.iy_min - 1); ty <= TileCoord(box.iy_max + 1); ++ty) {
       for (std::int32_t tx = TileCoord(box.ix_min - 1); tx <= TileCoord(box.ix_max + 1); ++tx) {
@@ -362,15 +376,17 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
     }
   };
   for (std::size_t k = 0; k < hazards_.size(); ++k) {
-    for_each_tile(hazards_[k].cells, [&](std::uint64_t key) { by_tile[key].push_back(k); });
+    for_each_tile(hazards_[k].cells, [&](std::uint64_t key) { by_tile_.emplace_back(key, k); });
   }
+  std::sort(by_tile_.begin(), by_tile_.end());
   std::vector<bool> matched(hazards_.size(), false);
-  std::vector<std::size_t> near;
+  std::vector<std::size_t>& near = near_;
   const Vec2 front = robot.p_W_front.head<2>();
   for (Hazard& hazard : found) {
     near.clear();
     for_each_tile(hazard.cells, [&](std::uint64_t key) {
-      if (const auto it = by_tile.find(key); it != by_tile.end()) near.insert(near.end(), it->second.begin(), it->second.end());
+      auto it = std::lower_bound(by_tile_.begin(), by_tile_.end(), std::pair<std::uint64_t, std::size_t>(key, 0));
+      for (; it != by_tile_.end() && it->first == key; ++it) near.push_back(it->second);
     });
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());

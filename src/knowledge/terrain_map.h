@@ -24,6 +24,7 @@
 #include <limits>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "sensors/sensor_spec.h"
@@ -115,6 +116,9 @@ class TerrainMap {
   bool retired_since_pass_ = false;
   // the tiles relabelled since the last hazard pass (TileKey; repeats allowed)
   std::vector<std::uint64_t> changed_tiles_;
+  // the hazard pass's scratch: the known hazards by tile (TileKey, index), those near one found
+  std::vector<std::pair<std::uint64_t, std::size_t>> by_tile_;
+  std::vector<std::size_t> near_;
   bool labels_changed_ = false;
   double next_pass_t_s_ = 0.0;
 };
