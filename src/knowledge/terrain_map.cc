@@ -1,6 +1,7 @@
 #include "knowledge/terrain_map.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <iterator>
 
@@ -98,7 +99,7 @@ void TerrainMap::Reset() {
   clusters_.clear();
   clustered_ground_z_m_ = std::numeric_limits<double>::quiet_NaN();
   retired_since_pass_ = false;
-  changed_tiles_.clear();
+  relabelled_.clear();
 }
 
 void TerrainMap::Update(const Observation& observation) {
@@ -258,47 +259,70 @@ bool TerrainMap::Relabel(double ground_z_m) {
   if (everywhere) labelled_ground_z_m_ = ground_z_m;
   bool changed = everywhere;
   grid_.ForEachTile([&](ElevationGrid::Tile& tile) {
-    if (tile.labelled_version != tile.version) changed_tiles_.push_back(TileKey(tile.tx, tile.ty));
     if (!everywhere && tile.labelled_version == tile.version) return;
     tile.labelled_version = tile.version;
     int count = 0;
     for (int i = 0; i < ElevationGrid::kTileCells; ++i) {
       const auto label = static_cast<std::uint8_t>(LabelCell(SurfaceOf(tile.cells[i]), labelled_ground_z_m_, config_));
-      changed |= label != tile.labels[i];
+      if (label != tile.labels[i]) {
+        changed = true;
+        // (everywhere: every cluster is found again, no cell need be named)
+        if (!everywhere) {
+          relabelled_.push_back({tile.tx * ElevationGrid::kTileSide + i % ElevationGrid::kTileSide,
+                                 tile.ty * ElevationGrid::kTileSide + i / ElevationGrid::kTileSide});
+        }
+      }
       tile.labels[i] = label;
       count += label != 0 ? 1 : 0;
     }
     tile.labelled_count = count;
   });
-  // (kept to the tiles' count while no label changes, however long that lasts)
-  if (changed_tiles_.size() > 2 * grid_.tile_count() + 64) {
-    std::sort(changed_tiles_.begin(), changed_tiles_.end());
-    changed_tiles_.erase(std::unique(changed_tiles_.begin(), changed_tiles_.end()), changed_tiles_.end());
-  }
   return changed;
 }
 
 void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
   // The clusters are the connected components of the labelled cells (an edge
   // joins two cells of one label at most two apart whose surfaces continue
-  // each other), each found depth first from its least cell in row order. A
-  // cluster of the last pass none of whose cells, nor any cell within two of
-  // them, changed since (no tile under its box grown by two changed) is still
-  // a component, found the same way: it is kept. The others are found again
-  // from their cells and from every labelled cell of a tile that changed (a
-  // cell labelled now and in no cluster before is in one). Every cluster is
-  // found again when the ground moved or tiles left the window.
+  // each other), each found depth first from its least cell in row order. An
+  // edge reads only its two cells' labels and, when labelled, their
+  // surfaces. So a cluster of the last pass is still a component, found the
+  // same way, when no cell within two of its cells changed since: none was
+  // relabelled (Relabel names them) and no labelled cell's surface changed
+  // (every labelled cell was in a cluster, which holds its surfaces then).
+  // Such clusters are kept; the others are found again from their cells and
+  // from the cells relabelled (a cell labelled now and in no cluster before
+  // was relabelled). Every cluster is found again when the ground moved or
+  // tiles left the window.
   const bool all_again = retired_since_pass_ || !(clustered_ground_z_m_ == labelled_ground_z_m_);
-  std::sort(changed_tiles_.begin(), changed_tiles_.end());
-  changed_tiles_.erase(std::unique(changed_tiles_.begin(), changed_tiles_.end()), changed_tiles_.end());
-  const auto changed = [this](std::int32_t tx, std::int32_t ty) {
-    return std::binary_search(changed_tiles_.begin(), changed_tiles_.end(), TileKey(tx, ty));
+  const auto surface_at = [this](CellIndex c) {
+    const TerrainCell* cell = grid_.Find(c);
+    return cell ? SurfaceOf(*cell) : CellSurface{};
+  };
+  const auto same = [](const CellSurface& a, const CellSurface& b) {
+    return std::bit_cast<std::uint32_t>(a.height_m) == std::bit_cast<std::uint32_t>(b.height_m) &&
+           std::bit_cast<std::uint32_t>(a.upper_bound_m) == std::bit_cast<std::uint32_t>(b.upper_bound_m);
+  };
+  std::vector<CellIndex>& changed = relabelled_;  // and, below, the labelled cells whose surface changed
+  std::vector<bool> moved(clusters_.size(), false);
+  for (std::size_t k = 0; k < clusters_.size() && !all_again; ++k) {
+    const Cluster& cluster = clusters_[k];
+    for (std::size_t m = 0; m < cluster.cells.size(); ++m) {
+      if (same(surface_at(cluster.cells[m]), cluster.surfaces[m])) continue;
+      changed.push_back(cluster.cells[m]);
+      moved[k] = true;
+    }
+  }
+  const auto row_order = [](CellIndex a, CellIndex b) { return a.iy != b.iy ? a.iy < b.iy : a.ix < b.ix; };
+  std::sort(changed.begin(), changed.end(), row_order);
+  // whether a changed cell lies in the box
+  const auto changed_in = [&](const CellBox& box) {
+    for (std::int32_t iy = box.iy_min; iy <= box.iy_max; ++iy) {
+      const auto it = std::lower_bound(changed.begin(), changed.end(), CellIndex{box.ix_min, iy}, row_order);
+      if (it != changed.end() && it->iy == iy && it->ix <= box.ix_max) return true;
+    }
+    return false;
   };
   // the fill's visited cells: a bit of their label, cleared below
-  const auto label_at = [this](CellIndex c) {
-    ElevationGrid::Tile* tile = grid_.FindTile(c);
-    return tile ? static_cast<CellLabel>(tile->labels[CellInTile(c)] & ~kFilledBit) : CellLabel::kNone;
-  };
   struct Marks {
     ElevationGrid& grid;
     bool Test(CellIndex c) const {
@@ -311,40 +335,38 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
   } marks{grid_};
   std::vector<Cluster> kept;
   std::vector<CellIndex> seeds;
-  for (Cluster& cluster : clusters_) {
+  for (std::size_t k = 0; k < clusters_.size(); ++k) {
+    Cluster& cluster = clusters_[k];
     const CellBox& box = cluster.hazard.cells;
-    bool keep = !all_again;
-    for (std::int32_t ty = TileCoord(box.iy_min - 2); keep && ty <= TileCoord(box.iy_max + 2); ++ty) {
-      for (std::int32_t tx = TileCoord(box.ix_min - 2); keep && tx <= TileCoord(box.ix_max + 2); ++tx) {
-        keep = !changed(tx, ty);
-      }
-    }
-    if (keep) {
+    if (!all_again && !moved[k] && !changed_in({box.ix_min - 2, box.iy_min - 2, box.ix_max + 2, box.iy_max + 2})) {
       for (const CellIndex c : cluster.cells) marks.Mark(c);
       kept.push_back(std::move(cluster));
     } else {
       seeds.insert(seeds.end(), cluster.cells.begin(), cluster.cells.end());
     }
   }
-  grid_.ForEachTile([&](const ElevationGrid::Tile& tile) {
-    if (tile.labelled_count == 0 || !(all_again || changed(tile.tx, tile.ty))) return;
-    for (int i = 0; i < ElevationGrid::kTileCells; ++i) {
-      if (tile.labels[i] == 0) continue;
-      seeds.push_back({tile.tx * ElevationGrid::kTileSide + i % ElevationGrid::kTileSide,
-                       tile.ty * ElevationGrid::kTileSide + i / ElevationGrid::kTileSide});
-    }
-  });
-  const auto row_order = [](CellIndex a, CellIndex b) { return a.iy != b.iy ? a.iy < b.iy : a.ix < b.ix; };
+  if (all_again) {
+    grid_.ForEachTile([&](const ElevationGrid::Tile& tile) {
+      if (tile.labelled_count == 0) return;
+      for (int i = 0; i < ElevationGrid::kTileCells; ++i) {
+        if (tile.labels[i] == 0) continue;
+        seeds.push_back({tile.tx * ElevationGrid::kTileSide + i % ElevationGrid::kTileSide,
+                         tile.ty * ElevationGrid::kTileSide + i / ElevationGrid::kTileSide});
+      }
+    });
+  } else {
+    seeds.insert(seeds.end(), changed.begin(), changed.end());  // (the fill skips those unlabelled now)
+  }
   std::sort(seeds.begin(), seeds.end(), row_order);
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  const auto surface_at = [this](CellIndex c) {
-    const TerrainCell* cell = grid_.Find(c);
-    return cell ? SurfaceOf(*cell) : CellSurface{};
+  const auto label_at = [this](CellIndex c) {
+    ElevationGrid::Tile* tile = grid_.FindTile(c);
+    return tile ? static_cast<CellLabel>(tile->labels[CellInTile(c)] & ~kFilledBit) : CellLabel::kNone;
   };
   std::vector<Cluster> fresh;
   FillClusters(seeds, label_at, surface_at, marks, config_,
                [&](CellLabel label, const std::vector<CellIndex>& cells, const std::vector<CellSurface>& surfaces) {
-                 fresh.push_back({cells, hazards_internal::Classify(cells, surfaces, label, labelled_ground_z_m_,
+                 fresh.push_back({cells, surfaces, hazards_internal::Classify(cells, surfaces, label, labelled_ground_z_m_,
                                                                     grid_.resolution_m(), config_)});
                });
   // in the order a fill from every labelled cell would find them: by their least cell
@@ -356,7 +378,7 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
   for (const Cluster& cluster : clusters_) {
     for (const CellIndex c : cluster.cells) grid_.FindTile(c)->labels[CellInTile(c)] &= ~kFilledBit;
   }
-  changed_tiles_.clear();
+  relabelled_.clear();
   clustered_ground_z_m_ = labelled_ground_z_m_;
   retired_since_pass_ = false;
   std::vector<Hazard> found;

@@ -91,10 +91,12 @@ class TerrainMap {
   void FindHazardsAgain(double t_s, const RobotKnowledge& robot);
 
   // a cluster of labelled cells found by a hazard pass: its cells in the
-  // order the fill visited them (the first is its least in row order) and
-  // its hazard as classified, before matching with the hazards known
+  // order the fill visited them (the first is its least in row order), their
+  // surfaces then, and its hazard as classified, before matching with the
+  // hazards known
   struct Cluster {
     std::vector<CellIndex> cells;
+    std::vector<CellSurface> surfaces;
     Hazard hazard;
   };
 
@@ -114,8 +116,8 @@ class TerrainMap {
   std::vector<Cluster> clusters_;
   double clustered_ground_z_m_ = std::numeric_limits<double>::quiet_NaN();
   bool retired_since_pass_ = false;
-  // the tiles relabelled since the last hazard pass (TileKey; repeats allowed)
-  std::vector<std::uint64_t> changed_tiles_;
+  // the cells relabelled since the last hazard pass
+  std::vector<CellIndex> relabelled_;
   // the hazard pass's scratch: the known hazards by tile (TileKey, index), those near one found
   std::vector<std::pair<std::uint64_t, std::size_t>> by_tile_;
   std::vector<std::size_t> near_;
