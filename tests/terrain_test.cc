@@ -551,5 +551,68 @@ TEST(TerrainConfigTest, ValidateListsEveryProblem) {
   EXPECT_EQ(problems[0], "step_max_m: expected at least obstacle_min_m (0.04) and drop_min_m (0.1), got 0.05");
 }
 
+
+TEST(TerrainMapTest, TheHazardPassKeepingUnchangedClustersFindsWhatAFillOfEveryLabelledCellFinds) {
+  // noisy points over a floor with a raised patch and a pit, and silent rays,
+  // read in bursts: each hazard pass keeps the clusters no change came near
+  // and fills the rest again; its hazards must be those of a fill from every
+  // labelled cell of the grid, in the same order, to the last bit
+  constexpr int kReadings = 41;
+  const TerrainMapConfig config;
+  TerrainMap map(config, std::vector<SensorSpec>(kReadings, SensorSpec::Preset(SensorType::kIdeal)),
+                 std::vector<bool>(kReadings, true));
+  const RobotKnowledge robot = Standing({0, 0});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 0.025);
+  int passes_with_hazards = 0;
+  for (int step = 0; step < 60; ++step) {
+    std::vector<SensorOutput> readings;
+    for (int k = 0; k + 1 < kReadings; ++k) {
+      // each burst looks at a part of the field, as a walking robot's sensors would
+      const double x = 0.3 * (step % 5) + 0.4 * u(rng), y = 0.6 * u(rng);
+      double z = noise(rng);
+      if (Inside(x, y, 0.4, 0.6, 0.1, 0.3)) z += 0.1;   // a raised patch
+      if (Inside(x, y, 0.9, 1.1, 0.3, 0.5)) z -= 0.12;  // a pit
+      const Vec3 p_WS(x, y, 0.5);
+      readings.push_back(k % 7 == 0 ? Reading(p_WS, Vec3(0.3, 0.1, -1), false, 0.45)
+                                    : Reading(p_WS, -Vec3::UnitZ(), true, p_WS.z() - z));
+    }
+    // a new raised cell far off: a label changes, so that this sample has a hazard pass
+    readings.push_back(Reading(Vec3(3 + 0.1 * step, 3, 0.5), -Vec3::UnitZ(), true, 0.4));
+    map.Update(Observation{.t_s = 0.02 * step, .sensors = readings, .robot = &robot});
+    // the whole fill, from the grid's labels as the map computes them
+    std::vector<CellIndex> seeds;
+    map.grid().ForEachTile([&](const ElevationGrid::Tile& tile) {
+      for (int i = 0; i < ElevationGrid::kTileCells; ++i) {
+        if (LabelCell(SurfaceOf(tile.cells[i]), 0.0, config) != CellLabel::kNone) {
+          seeds.push_back({tile.tx * 16 + i % 16, tile.ty * 16 + i / 16});
+        }
+      }
+    });
+    std::sort(seeds.begin(), seeds.end(), [](CellIndex a, CellIndex b) { return a.iy != b.iy ? a.iy < b.iy : a.ix < b.ix; });
+    const auto surface_at = [&](CellIndex c) {
+      const TerrainCell* cell = map.grid().Find(c);
+      return cell ? SurfaceOf(*cell) : CellSurface{};
+    };
+    const auto label_at = [&](CellIndex c) { return LabelCell(surface_at(c), 0.0, config); };
+    const std::vector<Hazard> full = FindHazards(seeds, label_at, surface_at, 0.0, 0.02, config);
+    const std::vector<Hazard>& kept = map.hazards();
+    ASSERT_EQ(kept.size(), full.size()) << "step " << step;
+    for (std::size_t k = 0; k < full.size(); ++k) {
+      EXPECT_EQ(kept[k].hazard_class, full[k].hazard_class);
+      EXPECT_EQ(kept[k].cell_count, full[k].cell_count);
+      EXPECT_EQ(kept[k].cells.ix_min, full[k].cells.ix_min);
+      EXPECT_EQ(kept[k].cells.iy_min, full[k].cells.iy_min);
+      EXPECT_EQ(kept[k].cells.ix_max, full[k].cells.ix_max);
+      EXPECT_EQ(kept[k].cells.iy_max, full[k].cells.iy_max);
+      EXPECT_EQ(kept[k].centroid_W, full[k].centroid_W);  // the same cells summed in the same order
+      EXPECT_EQ(kept[k].height_m, full[k].height_m);
+    }
+    passes_with_hazards += full.empty() ? 0 : 1;
+  }
+  EXPECT_GT(passes_with_hazards, 30);
+}
+
 }  // namespace
 }  // namespace proxsim
