@@ -17,7 +17,24 @@ constexpr double kFreeMargin_m = 0.001;
 
 }  // namespace
 
+EvidenceModel::EvidenceModel(const SensorSpec& spec, bool with_zones)
+    : tan_half_aperture(std::tan(SpreadHalfAngleRad(spec))),
+      floor_echo_min_dir_z(std::cos(DegToRad(EchoIncidenceLimitDeg(spec))) - 1e-12),
+      silence_range_m(SilenceRange_m(spec)) {
+  if (!spec.zones || !with_zones) return;
+  // a part whose range depends on the target vouches only for its darkest target's range
+  // (a multi-zone sensor's corner zones see less far than its centre ones)
+  for (int zone = 0; zone < spec.zones->nx * spec.zones->ny; ++zone) {
+    zone_silence_range_m.push_back(ZoneSilenceRange_m(spec, zone));
+  }
+}
+
 RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output, int zone) {
+  return InterpretReading(spec, EvidenceModel(spec, false), output, zone);
+}
+
+RayEvidence InterpretReading(const SensorSpec& spec, const EvidenceModel& model, const SensorOutput& output,
+                             int zone) {
   RayEvidence evidence;
   evidence.p_WS = output.p_WS;
   evidence.dir_W = output.dir_W.normalized();
@@ -26,8 +43,7 @@ RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output,
   if (output.detected) {
     const double d_m = UnbiasedDistance_m(spec, output.d_m);
     const double sigma_d = RangeSigma_m(spec, d_m);
-    const double half_aperture_rad = SpreadHalfAngleRad(spec);
-    const double sigma_lat = d_m * std::tan(half_aperture_rad) / 2;
+    const double sigma_lat = d_m * model.tan_half_aperture / 2;
     evidence.d_m = d_m;
     evidence.variance_z_m2 = sigma_d * sigma_d * dir_z * dir_z + sigma_lat * sigma_lat * (1 - dir_z * dir_z);
     evidence.free_begin_m = 0.0;
@@ -38,11 +54,10 @@ RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output,
   // no echo over [d_min, d_m]; meaningful for the height only where a flat floor would have answered
   evidence.d_m = output.d_m;
   evidence.free_begin_m = spec.min_range_m;
-  // a part whose range depends on the target vouches only for its darkest target's range
-  // (a multi-zone sensor's corner zones see less far than its centre ones)
-  evidence.free_end_m = std::min(output.d_m, zone >= 0 ? ZoneSilenceRange_m(spec, zone) : SilenceRange_m(spec));
-  const double max_incidence_deg = EchoIncidenceLimitDeg(spec);
-  const bool floor_would_echo = std::abs(dir_z) >= std::cos(DegToRad(max_incidence_deg)) - 1e-12;
+  const bool zoned = zone >= 0 && static_cast<std::size_t>(zone) < model.zone_silence_range_m.size();
+  evidence.free_end_m = std::min(output.d_m, zoned ? model.zone_silence_range_m[zone]
+                                                   : (zone >= 0 ? ZoneSilenceRange_m(spec, zone) : model.silence_range_m));
+  const bool floor_would_echo = std::abs(dir_z) >= model.floor_echo_min_dir_z;
   evidence.bounds_height = floor_would_echo && spec.noise.dropout == 0 && evidence.free_end_m > evidence.free_begin_m;
   evidence.proves_empty = false;
   return evidence;

@@ -24,6 +24,8 @@
 // Frames: W world, S the sensor.
 #pragma once
 
+#include <vector>
+
 #include "core/geometry.h"
 #include "sensors/measured_point.h"
 #include "sensors/range_inverse.h"
@@ -48,8 +50,22 @@ struct RayEvidence {
   Vec3 free_end_W() const { return MeasuredPoint_W(p_WS, dir_W, free_end_m); }
 };
 
+/// What InterpretReading reads of a datasheet that does not depend on the
+/// reading, found once per sensor (the map reads 128 zones a read).
+struct EvidenceModel {
+  /// `with_zones` false: no zone's range found (InterpretReading finds the one it needs)
+  explicit EvidenceModel(const SensorSpec& spec, bool with_zones = true);
+  double tan_half_aperture = 0.0;      ///< of the spread of an echo across the beam
+  double floor_echo_min_dir_z = 0.0;   ///< |dir_z| from which a flat floor would echo
+  double silence_range_m = 0.0;        ///< the range the sensor's silence vouches for
+  std::vector<double> zone_silence_range_m;  ///< the same per zone of a multi-zone sensor
+};
+
 /// What a fresh reading says (the output must be fresh); `zone`: the
 /// multi-zone sensor's zone it is the reading of (-1: the sensor's own).
 RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output, int zone = -1);
+/// The same, with the sensor's model found once (`model` made from `spec`).
+RayEvidence InterpretReading(const SensorSpec& spec, const EvidenceModel& model, const SensorOutput& output,
+                             int zone = -1);
 
 }  // namespace proxsim

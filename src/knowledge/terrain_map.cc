@@ -83,6 +83,7 @@ bool ClipBelow(Vec3& a, Vec3& b, double h) {
 TerrainMap::TerrainMap(const TerrainMapConfig& config, std::vector<SensorSpec> specs, std::vector<bool> feeds_map)
     : config_(config), specs_(std::move(specs)), feeds_map_(std::move(feeds_map)), grid_(config.resolution_m) {
   feeds_map_.resize(specs_.size(), false);
+  for (const SensorSpec& spec : specs_) models_.emplace_back(spec);
 }
 
 void TerrainMap::Reset() {
@@ -110,7 +111,7 @@ void TerrainMap::Update(const Observation& observation) {
     if (!feeds_map_[i] || !observation.sensors[i].fresh) continue;
     const SensorOutput& output = observation.sensors[i];
     if (output.zones.empty()) {
-      AddEvidence(InterpretReading(specs_[i], output), observation);
+      AddEvidence(InterpretReading(specs_[i], models_[i], output), observation);
       continue;
     }
     // a multi-zone sensor: every zone's nearest target (or its silence) along the zone's axis
@@ -120,7 +121,7 @@ void TerrainMap::Update(const Observation& observation) {
       zone_output.detected = output.zones[zone].detected;
       zone_output.d_m = output.zones[zone].d_m;
       zone_output.dir_W = output.zones[zone].dir_W;
-      AddEvidence(InterpretReading(specs_[i], zone_output, static_cast<int>(zone)), observation);
+      AddEvidence(InterpretReading(specs_[i], models_[i], zone_output, static_cast<int>(zone)), observation);
     }
   }
   if (observation.robot == nullptr) return;

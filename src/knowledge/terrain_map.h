@@ -103,6 +103,7 @@ class TerrainMap {
   TerrainMapConfig config_;
   std::vector<SensorSpec> specs_;
   std::vector<bool> feeds_map_;
+  std::vector<EvidenceModel> models_;  // specs_[i]'s, found once
   ElevationGrid grid_;
   std::vector<RayEvidence> evidence_;
   std::vector<Hazard> hazards_;
