@@ -65,9 +65,17 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
   return PelvisPose(p_W_pivot - R * p_P_pivot, plan.yaw_to);
 }
 
+LegAnglesRad StepPlanner::SwingCurve(const StepPlan& plan, double p) const {
+  return CurveLegAngles(p + 0.5, Amplitude(plan, p));
+}
+
 double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
+  return SwingPitch(plan, p, SwingCurve(plan, p));
+}
+
+double StepPlanner::SwingPitch(const StepPlan& plan, double p, const LegAnglesRad& curve) const {
   const double s = Smoothstep(std::clamp(p / 0.5, 0.0, 1.0));
-  const double pitch = CurveLegAngles(p + 0.5, Amplitude(plan, p)).pitch + plan.swing_start_pitch * (1 - s);
+  const double pitch = curve.pitch + plan.swing_start_pitch * (1 - s);
   // over uneven ground the foot is carried level (the toe up, off the edges), as the arc lifts it
   if (!plan.terrain) return pitch;
   const double u = SwingProgress(p);
@@ -80,19 +88,24 @@ double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
 }
 
 Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {
+  return PlantedAnkle(plan, X_WP, SwingPitch(plan, p));
+}
+
+Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, const Pose& X_WP, double swing_pitch) const {
   // the latched toe in the pelvis frame, the ankle behind it at the foot's pitch
   const Vec3 p_P_toe = X_WP.inverse() * plan.p_W_trailing_toe;
-  const Vec2xz toe_from_ankle = RotateSagittal(SwingPitch(plan, p), legs_.FootOffset(plan.swing, FootPoint::kToe));
+  const Vec2xz toe_from_ankle = RotateSagittal(swing_pitch, legs_.FootOffset(plan.swing, FootPoint::kToe));
   Vec2xz p_PA(p_P_toe.x(), p_P_toe.z());
   p_PA -= toe_from_ankle;
   return p_PA;
 }
 
-Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p) const {
+Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p) const { return SwingAnkle(plan, p, SwingCurve(plan, p)); }
+
+Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p, const LegAnglesRad& curve) const {
   const double u = SwingProgress(p);
   // cubic Hermite from (delta, rate) at toe-off to (end delta, 0) at heel strike
   const double h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u, h01 = 3 * u * u - 2 * u * u * u;
-  const LegAnglesRad curve = CurveLegAngles(p + 0.5, Amplitude(plan, p));
   const double bump = std::pow(std::sin(kPi * u), 2);
   return legs_.Ankle(plan.swing, curve) + plan.swing_toe_off_delta * h00 + plan.swing_toe_off_rate * h10 +
          plan.swing_end_delta * h01 + Vec2xz(0, plan.clearance_bump_m * bump);
@@ -102,17 +115,19 @@ StepPose StepPlanner::Evaluate(const StepPlan& plan, double p) const {
   StepPose pose;
   pose.stance = plan.terrain ? TerrainStanceAngles(plan, p) : StanceAngles(plan, p);
   pose.X_WP = StancePelvis(plan, p, pose.stance);
-  const double pitch = SwingPitch(plan, p);
+  // the swing leg's curves at p, evaluated once for its pitch and its ankle
+  const LegAnglesRad swing_curve = SwingCurve(plan, p);
+  const double pitch = SwingPitch(plan, p, swing_curve);
   Vec2xz p_PA = Vec2xz::Zero();
   if (p < kDoubleSupportEnd) {
     // double support: the trailing foot stays planted on its toe
-    p_PA = PlantedAnkle(plan, p, pose.X_WP);
+    p_PA = PlantedAnkle(plan, pose.X_WP, pitch);
   } else if (plan.terrain) {
     // swing over uneven ground: the arc, sized against the ground when planned
     p_PA = ArcAnkle(plan, p, pose.X_WP);
   } else {
     // swing, with a floor guard: lift the foot if its lowest sole point would be below the floor
-    p_PA = SwingAnkle(plan, p);
+    p_PA = SwingAnkle(plan, p, swing_curve);
     const double deficit =
         plan.floor_z_m - (pose.X_WP.translation().z() + p_PA.y() + LowestSoleBelowAnkle(legs_, plan.swing, pitch));
     if (deficit > 0) p_PA.y() += deficit;
