@@ -15,9 +15,12 @@ double Smoothstep(double x) {
   return x * x * (3 - 2 * x);
 }
 
-Pose PelvisPose(const Vec3& p_WP, double yaw) {
+Rotation Heading(double yaw) { return Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix(); }
+
+// The pelvis at p_WP, turned by R_WP (Heading of its yaw).
+Pose PelvisPose(const Vec3& p_WP, const Rotation& R_WP) {
   Pose X = Pose::Identity();
-  X.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
+  X.linear() = R_WP;
   X.translation() = p_WP;
   return X;
 }
@@ -50,9 +53,9 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
   // heel rocker: pivot on the latched heel while the heading turns
   if (p < FootFlatPhase() || !plan.flat_latched) {
     const double yaw = plan.yaw_from + (plan.yaw_to - plan.yaw_from) * Smoothstep(p / FootFlatPhase());
-    const Rotation R = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
+    const Rotation R = Heading(yaw);
     const Vec3 p_P_heel = legs_.Point3(plan.stance, stance, FootPoint::kHeel);
-    return PelvisPose(plan.p_W_heel - R * p_P_heel, yaw);
+    return PelvisPose(plan.p_W_heel - R * p_P_heel, R);
   }
   // flat foot, then toe rocker: pivot on a point of the latched foot frame F
   // (a flat foot is exactly level, pitch 0; one whose heel rose early to keep
@@ -60,9 +63,9 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
   // TerrainStanceAngles)
   const FootPoint which = p <= HeelOffPhase() && stance.pitch >= 0 ? FootPoint::kMid : FootPoint::kToe;
   const Vec3 p_W_pivot = plan.X_WF * legs_.FootPoint_L(plan.stance, which);
-  const Rotation R = Eigen::AngleAxisd(plan.yaw_to, Vec3::UnitZ()).toRotationMatrix();
+  const Rotation R = Heading(plan.yaw_to);
   const Vec3 p_P_pivot = legs_.Point3(plan.stance, stance, which);
-  return PelvisPose(p_W_pivot - R * p_P_pivot, plan.yaw_to);
+  return PelvisPose(p_W_pivot - R * p_P_pivot, R);
 }
 
 LegAnglesRad StepPlanner::SwingCurve(const StepPlan& plan, double p) const {
@@ -192,8 +195,9 @@ void StepPlanner::Finish(StepPlan* plan) const {
       const double u = 0.15 + 0.7 * i / 40.0;
       const double p = kDoubleSupportEnd + u * (0.5 - kDoubleSupportEnd);
       const double pelvis_z = StancePelvis(*plan, p, StanceAngles(*plan, p)).translation().z();
-      const double z = pelvis_z + SwingAnkle(*plan, p).y() + LowestSoleBelowAnkle(legs_, plan->swing, SwingPitch(*plan, p)) -
-                       plan->floor_z_m;
+      const LegAnglesRad swing_curve = SwingCurve(*plan, p);
+      const double z = pelvis_z + SwingAnkle(*plan, p, swing_curve).y() +
+                       LowestSoleBelowAnkle(legs_, plan->swing, SwingPitch(*plan, p, swing_curve)) - plan->floor_z_m;
       const double b = std::pow(std::sin(kPi * u), 2);
       c = std::max(c, kSwingClearance_m - z / b);
     }
@@ -210,7 +214,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   plan.yaw_from = plan.yaw_to = yaw_rad;
   plan.floor_z_m = plan.landing_z_m = plan.highest_ground_z_m = p_W_start.z();
   const LegAnglesRad stance = CurveLegAngles(0.0, k);
-  const Rotation R = Eigen::AngleAxisd(yaw_rad, Vec3::UnitZ()).toRotationMatrix();
+  const Rotation R = Heading(yaw_rad);
   const Vec3 p_P_heel = legs_.Point3(Side::kLeft, stance, FootPoint::kHeel);
   const Vec3 p_WP(p_W_start.x(), p_W_start.y(), p_W_start.z() - p_P_heel.z());
   plan.p_W_heel = p_WP + R * p_P_heel;
@@ -219,7 +223,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   LegAnglesRad trailing = CurveLegAngles(0.5, k);
   const double below = p_W_start.z() - (p_WP.z() + legs_.LowestSoleZ(Side::kRight, trailing));
   if (below > 0) trailing = legs_.SolveAnkle(Side::kRight, legs_.Ankle(Side::kRight, trailing) + Vec2xz(0, below), trailing.pitch);
-  plan.p_W_trailing_toe = PelvisPose(p_WP, yaw_rad) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
+  plan.p_W_trailing_toe = PelvisPose(p_WP, R) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
   Finish(&plan);
   if (terrain_ != nullptr) PlanOnTerrain(&plan, /*stance_from_natural_landing=*/true, p_WP);
   return plan;
