@@ -20,6 +20,11 @@ std::map<std::string, AmplitudeStride>& Memo() {
   return memo;
 }
 
+std::map<std::string, double>& MaxStepMemo() {
+  static std::map<std::string, double> memo;
+  return memo;
+}
+
 // A step's checks: its duration, and its refusal at each duration asked
 struct StepChecks {
   std::optional<double> duration_s;
@@ -119,6 +124,19 @@ void RememberGait(const std::string& key, const AmplitudeStride& walked) {
   std::lock_guard<std::mutex> lock(MemoMutex());
   if (Memo().size() >= kMaxRememberedGaits) Memo().clear();
   Memo().emplace(key, walked);
+}
+
+std::optional<double> RememberedMaxStep(const std::string& key) {
+  std::lock_guard<std::mutex> lock(MemoMutex());
+  const auto found = MaxStepMemo().find(key);
+  if (found == MaxStepMemo().end()) return std::nullopt;
+  return found->second;
+}
+
+void RememberMaxStep(const std::string& key, double max_step_m) {
+  std::lock_guard<std::mutex> lock(MemoMutex());
+  if (MaxStepMemo().size() >= kMaxRememberedGaits) MaxStepMemo().clear();
+  MaxStepMemo().emplace(key, max_step_m);
 }
 
 std::string GaitSearchKey(const std::string& legs_fingerprint, double stride_m, double period_s) {

@@ -10,6 +10,8 @@
 // for bit): a walker built from the same legs gets the very amplitude the
 // search would compute, so results do not change. Only a gait that passed
 // its check is remembered (a refused one is recomputed to name its fault).
+// So is the legs' default highest step (DefaultMaxStep_m at that amplitude:
+// four steady steps and a bisection, a function of the same key).
 //
 // Also remembered: each planned step's checks (its speed-limited duration and
 // whether it is unsafe at a duration, gait/step_safety.h), keyed by the same
@@ -37,6 +39,11 @@ std::optional<AmplitudeStride> RememberedGait(const std::string& key);
 void RememberGait(const std::string& key, const AmplitudeStride& walked);
 
 constexpr std::size_t kMaxRememberedGaits = 64;
+
+/// The legs' default highest step (DefaultMaxStep_m at the searched
+/// amplitude) remembered under the same key, if any. Thread-safe.
+std::optional<double> RememberedMaxStep(const std::string& key);
+void RememberMaxStep(const std::string& key, double max_step_m);
 
 /// Every field of `plan`, bit for bit (a step check's key; see above).
 std::string StepPlanBytes(const StepPlan& plan);

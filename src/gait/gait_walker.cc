@@ -72,7 +72,15 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   }
   initial_k_ = loaded.k;
   initial_achieved_stride_m_ = loaded.stride_m;
-  max_step_m_ = config.gait.max_step_m > 0 ? config.gait.max_step_m : DefaultMaxStep_m(*legs_, initial_k_);
+  // (the default, like the amplitude it is found at, a function of the search key)
+  if (config.gait.max_step_m > 0) {
+    max_step_m_ = config.gait.max_step_m;
+  } else if (const std::optional<double> known = RememberedMaxStep(memo_key)) {
+    max_step_m_ = *known;
+  } else {
+    max_step_m_ = DefaultMaxStep_m(*legs_, initial_k_);
+    RememberMaxStep(memo_key, max_step_m_);
+  }
   Start();
 }
 
