@@ -11,6 +11,9 @@ namespace proxsim {
 namespace {
 
 double Wrap01(double p) {
+  // (a phase already in [0, 1) is its own remainder: fmod would return it
+  // unchanged, bit for bit, at ~20 instructions a call)
+  if (p >= 0.0 && p < 1.0) return p;
   p = std::fmod(p, 1.0);
   return p < 0 ? p + 1.0 : p;
 }
@@ -20,10 +23,13 @@ double Smoothstep(double x) {
   return x * x * (3 - 2 * x);
 }
 
-// The curves' own toe-up foot pitch, degrees: (hip − tilt) − knee + ankle.
+// The curves' own toe-up foot pitch, degrees: (hip − tilt) − knee + ankle,
+// from the three curves' values at one phase.
+double RawPitchDeg(double hip_deg, double knee_deg, double ankle_deg) {
+  return hip_deg - kPelvicTiltDeg - knee_deg + ankle_deg;
+}
 double RawPitchDeg(double p) {
-  return NormativeHipFlexionDeg()(p) - kPelvicTiltDeg - NormativeKneeFlexionDeg()(p) +
-         NormativeAnkleDorsiflexionDeg()(p);
+  return RawPitchDeg(NormativeHipFlexionDeg()(p), NormativeKneeFlexionDeg()(p), NormativeAnkleDorsiflexionDeg()(p));
 }
 
 // Zero crossing of RawPitchDeg between a and b (sign change assumed), by bisection.
@@ -118,10 +124,12 @@ double HeelOffPhase() { return Window().heel_off; }
 
 LegAnglesRad CurveLegAngles(double phase, double amplitude, double push_off_gain) {
   const double p = Wrap01(phase);
+  // each curve evaluated once (the pitch reads the hip and knee again)
+  const double hip_deg = NormativeHipFlexionDeg()(p), knee_deg = NormativeKneeFlexionDeg()(p);
   LegAnglesRad a;
-  a.hip = amplitude * DegToRad(NormativeHipFlexionDeg()(p) - kPelvicTiltDeg);
-  a.knee = amplitude * DegToRad(NormativeKneeFlexionDeg()(p));
-  double pitch = amplitude * DegToRad(RawPitchDeg(p));
+  a.hip = amplitude * DegToRad(hip_deg - kPelvicTiltDeg);
+  a.knee = amplitude * DegToRad(knee_deg);
+  double pitch = amplitude * DegToRad(RawPitchDeg(hip_deg, knee_deg, NormativeAnkleDorsiflexionDeg()(p)));
   if (p <= 0.5) {
     // Flatten the stance foot between foot-flat and heel-off (C1 ramps outside).
     const FlatWindow& w = Window();

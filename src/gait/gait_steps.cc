@@ -15,9 +15,12 @@ double Smoothstep(double x) {
   return x * x * (3 - 2 * x);
 }
 
-Pose PelvisPose(const Vec3& p_WP, double yaw) {
+Rotation Heading(double yaw) { return Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix(); }
+
+// The pelvis at p_WP, turned by R_WP (Heading of its yaw).
+Pose PelvisPose(const Vec3& p_WP, const Rotation& R_WP) {
   Pose X = Pose::Identity();
-  X.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
+  X.linear() = R_WP;
   X.translation() = p_WP;
   return X;
 }
@@ -50,9 +53,9 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
   // heel rocker: pivot on the latched heel while the heading turns
   if (p < FootFlatPhase() || !plan.flat_latched) {
     const double yaw = plan.yaw_from + (plan.yaw_to - plan.yaw_from) * Smoothstep(p / FootFlatPhase());
-    const Rotation R = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
+    const Rotation R = Heading(yaw);
     const Vec3 p_P_heel = legs_.Point3(plan.stance, stance, FootPoint::kHeel);
-    return PelvisPose(plan.p_W_heel - R * p_P_heel, yaw);
+    return PelvisPose(plan.p_W_heel - R * p_P_heel, R);
   }
   // flat foot, then toe rocker: pivot on a point of the latched foot frame F
   // (a flat foot is exactly level, pitch 0; one whose heel rose early to keep
@@ -60,14 +63,22 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
   // TerrainStanceAngles)
   const FootPoint which = p <= HeelOffPhase() && stance.pitch >= 0 ? FootPoint::kMid : FootPoint::kToe;
   const Vec3 p_W_pivot = plan.X_WF * legs_.FootPoint_L(plan.stance, which);
-  const Rotation R = Eigen::AngleAxisd(plan.yaw_to, Vec3::UnitZ()).toRotationMatrix();
+  const Rotation R = Heading(plan.yaw_to);
   const Vec3 p_P_pivot = legs_.Point3(plan.stance, stance, which);
-  return PelvisPose(p_W_pivot - R * p_P_pivot, plan.yaw_to);
+  return PelvisPose(p_W_pivot - R * p_P_pivot, R);
+}
+
+LegAnglesRad StepPlanner::SwingCurve(const StepPlan& plan, double p) const {
+  return CurveLegAngles(p + 0.5, Amplitude(plan, p));
 }
 
 double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
+  return SwingPitch(plan, p, SwingCurve(plan, p));
+}
+
+double StepPlanner::SwingPitch(const StepPlan& plan, double p, const LegAnglesRad& curve) const {
   const double s = Smoothstep(std::clamp(p / 0.5, 0.0, 1.0));
-  const double pitch = CurveLegAngles(p + 0.5, Amplitude(plan, p)).pitch + plan.swing_start_pitch * (1 - s);
+  const double pitch = curve.pitch + plan.swing_start_pitch * (1 - s);
   // over uneven ground the foot is carried level (the toe up, off the edges), as the arc lifts it
   if (!plan.terrain) return pitch;
   const double u = SwingProgress(p);
@@ -80,19 +91,24 @@ double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
 }
 
 Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const {
+  return PlantedAnkle(plan, X_WP, SwingPitch(plan, p));
+}
+
+Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, const Pose& X_WP, double swing_pitch) const {
   // the latched toe in the pelvis frame, the ankle behind it at the foot's pitch
   const Vec3 p_P_toe = X_WP.inverse() * plan.p_W_trailing_toe;
-  const Vec2xz toe_from_ankle = RotateSagittal(SwingPitch(plan, p), legs_.FootOffset(plan.swing, FootPoint::kToe));
+  const Vec2xz toe_from_ankle = RotateSagittal(swing_pitch, legs_.FootOffset(plan.swing, FootPoint::kToe));
   Vec2xz p_PA(p_P_toe.x(), p_P_toe.z());
   p_PA -= toe_from_ankle;
   return p_PA;
 }
 
-Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p) const {
+Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p) const { return SwingAnkle(plan, p, SwingCurve(plan, p)); }
+
+Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p, const LegAnglesRad& curve) const {
   const double u = SwingProgress(p);
   // cubic Hermite from (delta, rate) at toe-off to (end delta, 0) at heel strike
   const double h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u, h01 = 3 * u * u - 2 * u * u * u;
-  const LegAnglesRad curve = CurveLegAngles(p + 0.5, Amplitude(plan, p));
   const double bump = std::pow(std::sin(kPi * u), 2);
   return legs_.Ankle(plan.swing, curve) + plan.swing_toe_off_delta * h00 + plan.swing_toe_off_rate * h10 +
          plan.swing_end_delta * h01 + Vec2xz(0, plan.clearance_bump_m * bump);
@@ -102,17 +118,19 @@ StepPose StepPlanner::Evaluate(const StepPlan& plan, double p) const {
   StepPose pose;
   pose.stance = plan.terrain ? TerrainStanceAngles(plan, p) : StanceAngles(plan, p);
   pose.X_WP = StancePelvis(plan, p, pose.stance);
-  const double pitch = SwingPitch(plan, p);
+  // the swing leg's curves at p, evaluated once for its pitch and its ankle
+  const LegAnglesRad swing_curve = SwingCurve(plan, p);
+  const double pitch = SwingPitch(plan, p, swing_curve);
   Vec2xz p_PA = Vec2xz::Zero();
   if (p < kDoubleSupportEnd) {
     // double support: the trailing foot stays planted on its toe
-    p_PA = PlantedAnkle(plan, p, pose.X_WP);
+    p_PA = PlantedAnkle(plan, pose.X_WP, pitch);
   } else if (plan.terrain) {
     // swing over uneven ground: the arc, sized against the ground when planned
     p_PA = ArcAnkle(plan, p, pose.X_WP);
   } else {
     // swing, with a floor guard: lift the foot if its lowest sole point would be below the floor
-    p_PA = SwingAnkle(plan, p);
+    p_PA = SwingAnkle(plan, p, swing_curve);
     const double deficit =
         plan.floor_z_m - (pose.X_WP.translation().z() + p_PA.y() + LowestSoleBelowAnkle(legs_, plan.swing, pitch));
     if (deficit > 0) p_PA.y() += deficit;
@@ -177,8 +195,9 @@ void StepPlanner::Finish(StepPlan* plan) const {
       const double u = 0.15 + 0.7 * i / 40.0;
       const double p = kDoubleSupportEnd + u * (0.5 - kDoubleSupportEnd);
       const double pelvis_z = StancePelvis(*plan, p, StanceAngles(*plan, p)).translation().z();
-      const double z = pelvis_z + SwingAnkle(*plan, p).y() + LowestSoleBelowAnkle(legs_, plan->swing, SwingPitch(*plan, p)) -
-                       plan->floor_z_m;
+      const LegAnglesRad swing_curve = SwingCurve(*plan, p);
+      const double z = pelvis_z + SwingAnkle(*plan, p, swing_curve).y() +
+                       LowestSoleBelowAnkle(legs_, plan->swing, SwingPitch(*plan, p, swing_curve)) - plan->floor_z_m;
       const double b = std::pow(std::sin(kPi * u), 2);
       c = std::max(c, kSwingClearance_m - z / b);
     }
@@ -195,7 +214,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   plan.yaw_from = plan.yaw_to = yaw_rad;
   plan.floor_z_m = plan.landing_z_m = plan.highest_ground_z_m = p_W_start.z();
   const LegAnglesRad stance = CurveLegAngles(0.0, k);
-  const Rotation R = Eigen::AngleAxisd(yaw_rad, Vec3::UnitZ()).toRotationMatrix();
+  const Rotation R = Heading(yaw_rad);
   const Vec3 p_P_heel = legs_.Point3(Side::kLeft, stance, FootPoint::kHeel);
   const Vec3 p_WP(p_W_start.x(), p_W_start.y(), p_W_start.z() - p_P_heel.z());
   plan.p_W_heel = p_WP + R * p_P_heel;
@@ -204,7 +223,7 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   LegAnglesRad trailing = CurveLegAngles(0.5, k);
   const double below = p_W_start.z() - (p_WP.z() + legs_.LowestSoleZ(Side::kRight, trailing));
   if (below > 0) trailing = legs_.SolveAnkle(Side::kRight, legs_.Ankle(Side::kRight, trailing) + Vec2xz(0, below), trailing.pitch);
-  plan.p_W_trailing_toe = PelvisPose(p_WP, yaw_rad) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
+  plan.p_W_trailing_toe = PelvisPose(p_WP, R) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
   Finish(&plan);
   if (terrain_ != nullptr) PlanOnTerrain(&plan, /*stance_from_natural_landing=*/true, p_WP);
   return plan;

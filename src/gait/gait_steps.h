@@ -155,12 +155,19 @@ class StepPlanner {
   double Amplitude(const StepPlan& plan, double p) const;
   LegAnglesRad StanceAngles(const StepPlan& plan, double p) const;
   Pose StancePelvis(const StepPlan& plan, double p, const LegAnglesRad& stance) const;
-  // The swing foot's pitch at p.
+  // The curves' swing-leg angles at p (half a cycle on from the stance's).
+  LegAnglesRad SwingCurve(const StepPlan& plan, double p) const;
+  // The swing foot's pitch at p (given SwingCurve(plan, p): the same answer).
   double SwingPitch(const StepPlan& plan, double p) const;
-  // The ankle (P) that keeps the planted trailing toe at its latched point, pelvis at X_WP.
+  double SwingPitch(const StepPlan& plan, double p, const LegAnglesRad& swing_curve) const;
+  // The ankle (P) that keeps the planted trailing toe at its latched point,
+  // pelvis at X_WP (given the swing pitch at p: the same answer).
   Vec2xz PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const;
-  // The swing ankle target (P) from toe-off on, before the floor guard.
+  Vec2xz PlantedAnkle(const StepPlan& plan, const Pose& X_WP, double swing_pitch) const;
+  // The swing ankle target (P) from toe-off on, before the floor guard
+  // (given SwingCurve(plan, p): the same answer).
   Vec2xz SwingAnkle(const StepPlan& plan, double p) const;
+  Vec2xz SwingAnkle(const StepPlan& plan, double p, const LegAnglesRad& swing_curve) const;
   // Latches X_WF, the landing correction and the clearance bump.
   void Finish(StepPlan* plan) const;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <string>
 
@@ -61,6 +62,7 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   // answer, and so does the next walker built from the same legs and gait in
   // this process (a study's episodes: gait/gait_memo.h)
   const std::string memo_key = GaitSearchKey(legs_->Fingerprint(), initial_.gait.stride_m, initial_.gait.period_s);
+  step_memo_key_ = memo_key;
   const std::optional<AmplitudeStride> remembered = RememberedGait(memo_key);
   const AmplitudeStride loaded = remembered ? *remembered : BisectAmplitude(*planner_, initial_.gait.stride_m);
   stride_table_.AddExact(initial_.gait.stride_m, loaded);
@@ -70,7 +72,15 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   }
   initial_k_ = loaded.k;
   initial_achieved_stride_m_ = loaded.stride_m;
-  max_step_m_ = config.gait.max_step_m > 0 ? config.gait.max_step_m : DefaultMaxStep_m(*legs_, initial_k_);
+  // (the default, like the amplitude it is found at, a function of the search key)
+  if (config.gait.max_step_m > 0) {
+    max_step_m_ = config.gait.max_step_m;
+  } else if (const std::optional<double> known = RememberedMaxStep(memo_key)) {
+    max_step_m_ = *known;
+  } else {
+    max_step_m_ = DefaultMaxStep_m(*legs_, initial_k_);
+    RememberMaxStep(memo_key, max_step_m_);
+  }
   Start();
 }
 
@@ -166,6 +176,29 @@ double GaitWalker::StrikeLimitedDuration_s(const StepPlan& next, double duration
   return duration_s;
 }
 
+std::string GaitWalker::StepKey(const StepPlan& plan) const {
+  // (the period Duration_s reads, though the search key holds the same)
+  return GaitSearchKey(step_memo_key_, gait_.period_s, gait_.period_s) + StepPlanBytes(plan);
+}
+
+double GaitWalker::CheckedDuration_s(const std::string& key, const StepPlan& plan, StepWindows* sampled) const {
+  if (const std::optional<double> known = RememberedStepDuration(key)) {
+    sampled->duration_s = std::numeric_limits<double>::quiet_NaN();
+    return *known;
+  }
+  const double duration_s = Duration_s(plan, sampled);
+  RememberStepDuration(key, duration_s);
+  return duration_s;
+}
+
+std::string GaitWalker::CheckedRefusal(const std::string& key, const StepPlan& plan, double duration_s,
+                                       const StepWindows* sampled) const {
+  if (std::optional<std::string> known = RememberedStepRefusal(key, duration_s)) return std::move(*known);
+  std::string refusal = Refusal(plan, duration_s, sampled);
+  RememberStepRefusal(key, duration_s, refusal);
+  return refusal;
+}
+
 std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s, const StepWindows* sampled) const {
   if (!plan.cannot_step.empty()) return plan.cannot_step;
   return UnsafeStepReason(*planner_, *limits_, plan, duration_s, sampled);
@@ -215,7 +248,8 @@ void GaitWalker::Start() {
   }
   planner_->set_terrain(on_map ? felt_.get() : terrain, Limits());
   plan_ = planner_->FirstStep(start, initial_.start_yaw_rad, k_target_);
-  step_duration_s_ = Duration_s(plan_, &windows_);
+  const std::string first_key = StepKey(plan_);
+  step_duration_s_ = CheckedDuration_s(first_key, plan_, &windows_);
   step_start_clock_s_ = 0;
   clock_s_ = 0;
   step_phase_ = 0;
@@ -230,7 +264,7 @@ void GaitWalker::Start() {
   last_p_WP_ = Vec3::Zero();
   has_last_p_WP_ = false;
   // no foothold for the first step, or an unsafe one: stand where it starts
-  if (const std::string refusal = Refusal(plan_, step_duration_s_, &windows_); !refusal.empty()) {
+  if (const std::string refusal = CheckedRefusal(first_key, plan_, step_duration_s_, &windows_); !refusal.empty()) {
     stopped_ = true;
     NoteCannotStep(refusal);
   }
@@ -327,8 +361,9 @@ RobotState GaitWalker::Advance(double t_s) {
           const double yaw = plan_.yaw_to + turn_share * WrapAngle(yaw_to - plan_.yaw_to);
           next = planner_->NextStep(plan_, k_target_ * k_share, yaw);
           // (the step's poses sampled once for its duration and its safety)
-          next_duration_s = StrikeLimitedDuration_s(next, Duration_s(next, &windows_));
-          refusal = Refusal(next, next_duration_s, &windows_);
+          const std::string key = StepKey(next);
+          next_duration_s = StrikeLimitedDuration_s(next, CheckedDuration_s(key, next, &windows_));
+          refusal = CheckedRefusal(key, next, next_duration_s, &windows_);
           // (no foothold within reach: a gentler step finds none either)
           if (refusal.empty() || !next.cannot_step.empty()) break;
         }

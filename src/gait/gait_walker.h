@@ -128,6 +128,14 @@ class GaitWalker : public Locomotion {
   // must rise or fall slowly, or for any step whose joints would move too fast (step_safety.h).
   // `sampled` receives the step's speed windows, for Refusal to reuse.
   double Duration_s(const StepPlan& plan, StepWindows* sampled = nullptr) const;
+  // Duration_s and Refusal, remembered across walkers of the same legs and
+  // gait under `key` (StepKey; gait/gait_memo.h): a remembered duration
+  // leaves `sampled` empty (NaN), for Refusal not to read another step's windows.
+  double CheckedDuration_s(const std::string& key, const StepPlan& plan, StepWindows* sampled) const;
+  std::string CheckedRefusal(const std::string& key, const StepPlan& plan, double duration_s,
+                             const StepWindows* sampled) const;
+  // The step checks' key of `plan`: step_memo_key_ and every field of the plan.
+  std::string StepKey(const StepPlan& plan) const;
   // Why `plan` is not to be taken ("" if it is): no foothold (the planner's
   // reason) or a step beyond the legs' limits (UnsafeStepReason, the one place
   // that decides; today it is refused like the other, see gait.unsafe_steps).
@@ -152,6 +160,7 @@ class GaitWalker : public Locomotion {
   double initial_achieved_stride_m_ = 0;
   void Start();
   StrideTable stride_table_;
+  std::string step_memo_key_;  // the legs and gait, for the step checks' memo (StepKey)
   StepWindows windows_;  // a step's sampled poses, kept to reuse their buffer
 
   std::unique_ptr<RobotModel> model_;  // stable address: legs_ and planner_ refer into it

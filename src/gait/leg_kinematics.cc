@@ -325,8 +325,17 @@ Vec2xz BipedLegs::Point(Side s, const LegAnglesRad& a, FootPoint which) const {
   return Ankle(s, a) + RotateSagittal(a.pitch, FootOffset(s, which));
 }
 
+std::array<Vec2xz, 2> BipedLegs::HeelAndToe(Side s, const LegAnglesRad& a) const {
+  const Vec2xz ankle = Ankle(s, a);
+  // RotateSagittal's arithmetic, its cosine and sine taken once
+  const double c = std::cos(a.pitch), sn = std::sin(a.pitch);
+  const auto rotate = [c, sn](const Vec2xz& v) { return Vec2xz(v.x() * c - v.y() * sn, v.x() * sn + v.y() * c); };
+  return {ankle + rotate(FootOffset(s, FootPoint::kHeel)), ankle + rotate(FootOffset(s, FootPoint::kToe))};
+}
+
 double BipedLegs::LowestSoleZ(Side s, const LegAnglesRad& a) const {
-  return std::min(Point(s, a, FootPoint::kHeel).y(), Point(s, a, FootPoint::kToe).y());
+  const std::array<Vec2xz, 2> heel_toe = HeelAndToe(s, a);
+  return std::min(heel_toe[0].y(), heel_toe[1].y());
 }
 
 LegAnglesRad BipedLegs::SolveAnkle(Side s, const Vec2xz& p_PA, double pitch) const {

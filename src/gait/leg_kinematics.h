@@ -108,6 +108,9 @@ class BipedLegs {
   Vec2xz Point(Side s, const LegAnglesRad& a, FootPoint which) const;
   /// The shank's outline (LegGeometry::shank_hull_S) in P (sagittal plane).
   std::vector<Vec2xz> ShankHull(Side s, const LegAnglesRad& a) const;
+  /// Point(s, a, kHeel) and Point(s, a, kToe), the same values, the ankle
+  /// and the pitch's rotation found once for both.
+  std::array<Vec2xz, 2> HeelAndToe(Side s, const LegAnglesRad& a) const;
   /// Lowest z of the sole's heel and toe, in P.
   double LowestSoleZ(Side s, const LegAnglesRad& a) const;
   /// Hip and knee putting the ankle at p_PA with the given foot pitch, on the

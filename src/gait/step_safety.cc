@@ -14,12 +14,12 @@ constexpr int kSlowingRounds = 12;
 
 const char* SideName(Side s) { return s == Side::kLeft ? "left" : "right"; }
 
-// Highest sole point (heel or toe) minus the knee, in the pelvis's upright
-// sagittal plane (its z is the world's): ≥ 0 is a folded leg.
-double SoleAboveKnee_m(const BipedLegs& legs, Side s, const LegAnglesRad& a) {
+// Highest sole point (heel or toe: BipedLegs::HeelAndToe) minus the knee, in
+// the pelvis's upright sagittal plane (its z is the world's): ≥ 0 is a folded leg.
+double SoleAboveKnee_m(const BipedLegs& legs, Side s, const LegAnglesRad& a, const std::array<Vec2xz, 2>& heel_toe) {
   const LegGeometry& g = legs.leg(s);
   const double knee_z = g.p_PH.z() - g.thigh_m * std::cos(a.hip);
-  return std::max(legs.Point(s, a, FootPoint::kHeel).y(), legs.Point(s, a, FootPoint::kToe).y()) - knee_z;
+  return std::max(heel_toe[0].y(), heel_toe[1].y()) - knee_z;
 }
 
 // The speed window in stance phase at a step's duration (p runs over [0, 0.5] in duration_s).
@@ -41,6 +41,8 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
     const double p = i < 0 ? 0.0 : WindowEnd(window, i);
     const StepPose pose = i >= 0 && known ? sampled->end_start[i].first : planner.Evaluate(plan, p);
     const StepPose before = i < 0 ? pose : known ? sampled->end_start[i].second : planner.Evaluate(plan, p - window);
+    // the swing sole's heel and toe, for its fold and its lift (LowestSoleZ's)
+    std::array<Vec2xz, 2> swing_heel_toe;
     for (const Side side : {plan.stance, plan.swing}) {
       const LegAnglesRad& a = side == plan.stance ? pose.stance : pose.swing;
       const char* role = side == plan.stance ? "stance" : "swing";
@@ -56,7 +58,9 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
           return text + excess->Describe();
         }
       }
-      const double fold_m = SoleAboveKnee_m(legs, side, a);
+      const std::array<Vec2xz, 2> heel_toe = legs.HeelAndToe(side, a);
+      if (side == plan.swing) swing_heel_toe = heel_toe;
+      const double fold_m = SoleAboveKnee_m(legs, side, a, heel_toe);
       if (fold_m >= 0) {
         std::snprintf(text, sizeof text, "the %s %s leg would fold at %.0f%% of the step: its sole %.2f m above "
                       "its own knee", role, SideName(side), 200 * p, fold_m);
@@ -64,7 +68,7 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
       }
     }
     if (p >= kDoubleSupportEnd) {
-      const double sole_z = pose.X_WP.translation().z() + legs.LowestSoleZ(plan.swing, pose.swing);
+      const double sole_z = pose.X_WP.translation().z() + std::min(swing_heel_toe[0].y(), swing_heel_toe[1].y());
       const double above_m = sole_z - plan.highest_ground_z_m;
       if (above_m > kMaxLiftAboveGround_m) {
         std::snprintf(text, sizeof text, "the %s swing foot would rise %.2f m above the highest ground it passes "

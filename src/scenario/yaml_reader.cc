@@ -10,7 +10,7 @@
 #include <cassert>
 #include <charconv>
 #include <cmath>
-#include <sstream>
+#include <cstdio>
 
 #include "core/nearest_key.h"
 
@@ -29,9 +29,12 @@ int LineOf(const YAML::Node& node) {
 }
 
 std::string FormatNumber(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
+  // what `std::ostringstream() << value` writes (its default: %g, 6 digits,
+  // in the C locale, which proxsim never changes), without building a
+  // stream: the number rules' messages are formatted for every field read
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
 }
 
 std::string WithUnit(std::string text, const std::string& unit) {

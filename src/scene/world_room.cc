@@ -16,7 +16,6 @@
 // Frames: W world; the room spans x from −1 to size_x − 1, y ±size_y/2.
 #include <algorithm>
 #include <cmath>
-#include <deque>
 
 #include "scene/world_generator_internal.h"
 
@@ -67,17 +66,25 @@ class FloorGrid {
     const int start = CellOf(from), goal = CellOf(to);
     if (blocked_[start] || blocked_[goal]) return {};
     std::vector<int> parent(blocked_.size(), -1);
-    std::deque<int> queue{start};
+    // a cell is closed once blocked or reached: one test a neighbour
+    std::vector<char> closed(blocked_.size());
+    for (std::size_t cell = 0; cell < blocked_.size(); ++cell) closed[cell] = blocked_[cell] != 0;
+    // breadth first, first in first out: every cell queued (once each) kept,
+    // read from `head` on (a deque's order, without its bookkeeping)
+    std::vector<int> queue;
+    queue.reserve(blocked_.size());
+    queue.push_back(start);
     parent[start] = start;
-    while (!queue.empty()) {
-      const int cell = queue.front();
-      queue.pop_front();
+    closed[start] = 1;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int cell = queue[head];
       if (cell == goal) break;
       const int ix = cell % nx_, iy = cell / nx_;
       const int next[4] = {ix > 0 ? cell - 1 : -1, ix + 1 < nx_ ? cell + 1 : -1, iy > 0 ? cell - nx_ : -1,
                            iy + 1 < ny_ ? cell + nx_ : -1};
       for (const int n : next) {
-        if (n < 0 || blocked_[n] || parent[n] >= 0) continue;
+        if (n < 0 || closed[n]) continue;
+        closed[n] = 1;
         parent[n] = cell;
         queue.push_back(n);
       }

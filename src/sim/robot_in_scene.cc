@@ -26,8 +26,10 @@ constexpr double kClosedFormBoundMargin_m = 0.25;
 // queries look only at the shapes within the cap of the link
 // (RayCaster::Nearby), fewer the lower the cap, while its bounds are spent by
 // the robot's own moves alone (the outcome study's 10 rooms under callgrind:
-// 0.1 m cost 7 % fewer instructions in ClearanceTo than 0.25 m, 0.05 m 3 % more).
-constexpr double kStillClosedFormBoundMargin_m = 0.1;
+// 0.1 m cost 7 % fewer instructions in ClearanceTo than 0.25 m, 0.05 m 3 %
+// more; once a chunk is tried by its centre first, 0.2 m cost the whole
+// study 0.4 % fewer than 0.1 m, 0.3 m and 0.5 m a little more than 0.2 m).
+constexpr double kStillClosedFormBoundMargin_m = 0.2;
 // A query asked only for what lies very near (the contacts' 0.1 mm) still
 // measures this far at least: a bound of a few centimetres would be spent by
 // a swinging foot in a sample or two, and every sample of the robot measured
@@ -37,9 +39,10 @@ constexpr double kMinBoundReach_m = 0.25;
 // Rounding in the poses and distances is far below this: a skip never hinges
 // on the last bits of a bound.
 constexpr double kBoundSlack_m = 1e-9;
-// Samples per chunk: a chunk whose bound keeps it out of reach is skipped
-// without looking at its samples one by one.
-constexpr std::size_t kChunkSamples = 24;
+// Samples per chunk: a chunk whose bound, or whose centre's distance, keeps
+// it out of reach is skipped without looking at its samples one by one (the
+// 10 rooms under callgrind: 16 cost 1 % fewer instructions than 24 or 8).
+constexpr std::size_t kChunkSamples = 16;
 
 // The farthest any point within radius_m of center_L (link frame) moves when
 // the link goes from X_WL_ref to X_WL: the centre's travel plus the rotation's
@@ -189,6 +192,24 @@ double RobotInScene::ClearanceTo(std::span<const std::int32_t> exclude_object_id
       if (chunk_lower_m >= best_m) {
         link_lower_m = std::min(link_lower_m, chunk_lower_m);
         continue;
+      }
+      if (!nearby_found) {
+        world.FindNearby(center_W, samples.radius_m, cap_m, &nearby_);
+        nearby_found = true;
+      }
+      // one capped query at the chunk's centre before its samples': a chunk
+      // whose centre is clear of the world by more than its radius holds no
+      // sample that can win (the distance at a sample is at least the
+      // centre's less the radius), and that bound lasts as the samples' would
+      {
+        const double centre_m = world.DistanceToWorld(X_WL * chunk.center_L, exclude_object_ids, cap_m, &nearby_);
+        const double centre_lower_m = centre_m - chunk.radius_m - kBoundSlack_m;
+        if (centre_lower_m >= best_m) {
+          bounds.chunk_lower_m[c] = centre_lower_m + slot.lowered_m;
+          bounds.chunk_X_WL_ref[c] = X_WL;
+          link_lower_m = std::min(link_lower_m, centre_lower_m);
+          continue;
+        }
       }
       double chunk_min_m = std::numeric_limits<double>::infinity();
       for (std::size_t i = chunk.begin; i < chunk.end; ++i) {

@@ -83,15 +83,50 @@ struct ObjectOverlap {
   Vec3 p_W_deepest = Vec3::Zero();
 };
 
+// Whether any point in the box [lo, hi] (W) may lie inside a scene object
+// that is not ground (in the caster at its scenario pose, as before any
+// sample): a solid whose own box (in its frame O) the box's corners, taken
+// into O, clear holds none of them, so no ray of Overlaps can find them
+// inside it. A mesh that is not ground (found inside by the distance to its
+// triangles, once met from within) always may.
+bool MayBeInsideAnObject(const Scenario& scenario, const Vec3& lo, const Vec3& hi) {
+  // far above the rounding of the samples' and the objects' poses
+  constexpr double kSlack_m = 1e-6;
+  for (const SceneObject& object : scenario.scene.objects) {
+    if (object.ground || std::holds_alternative<Plane>(object.shape)) continue;  // as Overlaps
+    Vec3 half_O = Vec3::Zero();
+    if (const auto* box = std::get_if<Box>(&object.shape)) half_O = box->size_m / 2;
+    else if (const auto* sphere = std::get_if<Sphere>(&object.shape)) half_O = Vec3::Constant(sphere->radius_m);
+    else if (const auto* cylinder = std::get_if<Cylinder>(&object.shape))
+      half_O = Vec3(cylinder->radius_m, cylinder->radius_m, cylinder->length_m / 2);
+    else return true;  // a mesh
+    const Pose X_OW = object.X_WO.inverse();
+    Vec3 lo_O = Vec3::Constant(std::numeric_limits<double>::infinity()), hi_O = -lo_O;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 p_O = X_OW * Vec3(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(), corner & 4 ? hi.z() : lo.z());
+      lo_O = lo_O.cwiseMin(p_O);
+      hi_O = hi_O.cwiseMax(p_O);
+    }
+    if ((lo_O.array() <= half_O.array() + kSlack_m).all() && (hi_O.array() >= -half_O.array() - kSlack_m).all())
+      return true;
+  }
+  return false;
+}
+
 std::vector<ObjectOverlap> Overlaps(const Scenario& scenario, const World& world, const RobotInScene& robot) {
   std::vector<Vec3> p_W;
   std::vector<int> link_of;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (int link = 0; link < robot.model().link_count(); ++link) {
     for (const Vec3& p_L : robot.surface_points_L(link)) {
       p_W.push_back(robot.X_WL(link) * p_L);
       link_of.push_back(link);
+      lo = lo.cwiseMin(p_W.back());
+      hi = hi.cwiseMax(p_W.back());
     }
   }
+  // (a robot clear of every solid's bounding sphere casts none of its ~10 000 rays)
+  if (p_W.empty() || !MayBeInsideAnObject(scenario, lo, hi)) return {};
   std::vector<Ray> rays;
   for (const Vec3& p : p_W) {
     for (const float dz : {1.0f, -1.0f}) {

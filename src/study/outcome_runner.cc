@@ -41,7 +41,7 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
   const std::string& source = study.families[study.jobs[job].family].source;
   // the world and each run as documents: the values their replay texts hold
   // (WorldText, RunScenarioText), never written out and parsed back
-  const YAML::Node world = WorldNode(study, job);
+  YAML::Node world = WorldNode(study, job);
   OutcomeJob result;
   // a generated room has a way through by construction (its free corridor,
   // scene/world_room.cc); elsewhere the reference walk tells, with the first
@@ -51,9 +51,15 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
     result.way_through = reference.outcome != "refused";
     if (!result.way_through) result.hazard_m = reference.walked_m;
   }
-  for (const SensorSet& set : study.sets)
-    for (const StrategyChoice& strategy : study.strategies)
-      result.runs.push_back(RunEpisodeNode(RunNodeFromWorld(world, &set, &strategy, false), source));
+  for (const SensorSet& set : study.sets) {
+    for (const StrategyChoice& strategy : study.strategies) {
+      // (the last run takes the world itself, uncopied)
+      const bool last = &set == &study.sets.back() && &strategy == &study.strategies.back();
+      result.runs.push_back(RunEpisodeNode(
+          last ? RunNodeFromWorld(std::move(world), &set, &strategy, false) : RunNodeFromWorld(world, &set, &strategy, false),
+          source));
+    }
+  }
   return result;
 }
 
