@@ -95,19 +95,6 @@ void SensorReader::FindNextPings(std::int64_t sample) {
   }
 }
 
-SensorReader::PingOffsets SensorReader::PingOffsets_s(std::size_t emitter, double listener_window_s,
-                                                     double t_s) const {
-  // relative to the listener's ping at this sample: the emitter's last ping
-  // (this sample's included) and its next one, when within the listening
-  // window (the first after this sample: a later one is never nearer)
-  PingOffsets offsets;
-  if (std::isfinite(last_ping_t_s_[emitter]) && t_s - last_ping_t_s_[emitter] < listener_window_s) {
-    offsets.s[offsets.count++] = last_ping_t_s_[emitter] - t_s;
-  }
-  if (next_ping_offset_s_[emitter] <= listener_window_s) offsets.s[offsets.count++] = next_ping_offset_s_[emitter];
-  return offsets;
-}
-
 void SensorReader::PrepareCrosstalk(std::int64_t sample) {
   FindNextPings(sample);
   echo_sources_.resize(scenario_.sensors.size());
@@ -139,6 +126,12 @@ void SensorReader::FindEchoSources(std::size_t sensor, const SampleFrame& frame)
 
 void SensorReader::ApplyCrosstalk(SampleFrame& frame, ParallelRunner& runner) {
   const double t_s = static_cast<double>(frame.sample) / scenario_.rate_hz;
+  // each emitter's last ping, s from this sample (−inf before its first), for PingOffsets_s
+  last_ping_offset_s_.resize(scenario_.sensors.size());
+  for (const std::size_t sonar : sonars_) {
+    const double last_s = last_ping_t_s_[sonar];
+    last_ping_offset_s_[sonar] = std::isfinite(last_s) ? last_s - t_s : -std::numeric_limits<double>::infinity();
+  }
   // each listener reads the emitters' sources and writes only its own reading
   runner.For(sonars_.size(), kListenersPerTask, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) ListenForCrosstalk(sonars_[k], frame, t_s);
@@ -162,7 +155,7 @@ void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame, 
   std::vector<CrossEchoPath>& paths = cross_paths_[listener];
   for (const std::size_t emitter : sonars_) {
     if (emitter == listener) continue;
-    const PingOffsets offsets_s = PingOffsets_s(emitter, window_s, t_s);
+    const PingOffsets offsets_s = PingOffsets_s(emitter, window_s);
     if (offsets_s.count == 0) continue;
     // (FindEchoSources found them: this listener listens now and the ping is within its window)
     assert(echo_sources_found_[emitter] && "an emitter's echo sources are found when a listener may hear it");
@@ -175,7 +168,13 @@ void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame, 
       return earliest_s > window_s || earliest_s >= first_s;
     });
     if (too_late) continue;
-    CrossEchoPathsInto(echo_sources_[emitter], config.spec, mirror_window, ear, paths);
+    // and no path longer than this could: it would arrive after the window or
+    // the first echo for every ping (widened for rounding: the cut must never
+    // drop a path the test below would take)
+    double longest_m = 0.0;
+    for (const double offset_s : offsets_s) longest_m = std::max(longest_m, (std::min(window_s, first_s) - offset_s) * c_m_s);
+    CrossEchoPathsInto(echo_sources_[emitter], config.spec, mirror_window, ear, paths, frame.sensors[emitter].p_WS,
+                       longest_m * (1 + 1e-9) + 1e-9);
     for (const CrossEchoPath& path : paths) {
       double arrival_s = std::numeric_limits<double>::infinity();
       for (const double offset_s : offsets_s) {

@@ -73,7 +73,16 @@ class SensorReader {
     const double* begin() const { return s.data(); }
     const double* end() const { return s.data() + count; }
   };
-  PingOffsets PingOffsets_s(std::size_t emitter, double listener_window_s, double t_s) const;
+  // (relative to the listener's ping at this sample: the emitter's last ping,
+  // this sample's included, and its next one, the first after this sample: a
+  // later one is never nearer; inline: it is asked for every pair)
+  PingOffsets PingOffsets_s(std::size_t emitter, double listener_window_s) const {
+    PingOffsets offsets;
+    const double last_s = last_ping_offset_s_[emitter];  // −inf: none (never within the window)
+    if (-last_s < listener_window_s) offsets.s[offsets.count++] = last_s;
+    if (next_ping_offset_s_[emitter] <= listener_window_s) offsets.s[offsets.count++] = next_ping_offset_s_[emitter];
+    return offsets;
+  }
   // each emitter's first ping after this sample, s from it, when within the
   // longest listening window (else +inf): found once per sample, not per pair
   void FindNextPings(std::int64_t sample);
@@ -105,6 +114,7 @@ class SensorReader {
   std::vector<double> nearest_source_m_;     // each emitter's NearestEchoSource_m, found with its sources
   bool sonar_listens_now_ = false;           // PrepareCrosstalk: some sonar with crosstalk reads at this sample
   std::vector<double> next_ping_offset_s_;   // FindNextPings' answer, by sensor
+  std::vector<double> last_ping_offset_s_;   // each sonar's last ping, s from this sample (ApplyCrosstalk)
   double longest_window_s_ = 0.0;            // the longest listening window of any sonar
   std::vector<bool> heard_by_others_;        // by sensor: a sonar that another sonar may hear
   std::vector<double> last_ping_t_s_;  // each sensor's last ping, s (NaN before the first)
