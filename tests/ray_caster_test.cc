@@ -12,6 +12,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <numbers>
+#include <array>
+#include <vector>
 #include <random>
 
 #include "analytic_intersector.h"
@@ -922,6 +925,74 @@ TEST(RayCasterTest, NearbyShapesGiveTheAnswersOfEveryShape) {
   }
   // the points must meet shapes within their caps, or nothing was compared
   EXPECT_GT(near_something, 1000);
+}
+
+// A batch of rays from one point is tested against the robot as a cone
+// (ray_caster_cast.cc, RobotCandidates): bodies outside it are not walked.
+// The answers must be those of the same rays cast where no cone applies (each
+// ray beside one from another point), bit for bit: same binary, same rays.
+// Beams from inside, beside and away from the links, wide and narrow, and
+// cones whose edge passes near the first link's bounding sphere's tangent.
+TEST(RayCasterTest, BeamsFromOnePointSeeTheRobotAsWhenCastRayByRay) {
+  RayCaster caster;
+  caster.AddBody({BodyShape{Box{Vec3(0.2, 40, 4)}, Translation(6, 0, 0), 0}}, BodyKind::kWorld);
+  const std::vector<Pose> link_poses = {Translation(1, 0, 0), Translation(0, 0.5, -0.3), Translation(-0.4, -0.2, 0.1),
+                                        Translation(2.5, 0.8, 0.4)};
+  int object = 1;
+  for (const Pose& X_WL : link_poses) {
+    caster.AddBody({BodyShape{Cylinder{0.05, 0.4}, Pose::Identity(), object},
+                    BodyShape{Box{Vec3(0.1, 0.08, 0.06)}, Translation(0, 0, -0.25), object + 1}},
+                   BodyKind::kRobot, X_WL);
+    object += 2;
+  }
+  caster.Commit();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto beam = [](const Vec3& origin_W, const Vec3& axis_W, double half_angle_rad, int rings) {
+    std::vector<Ray> rays{MakeRay(origin_W, axis_W, 8.0)};
+    const Vec3 u = axis_W.unitOrthogonal(), v = axis_W.normalized().cross(u);
+    for (int k = 1; k <= rings; ++k) {
+      const double theta = half_angle_rad * k / rings;
+      for (int j = 0; j < 8; ++j) {
+        const double phi = 2 * std::numbers::pi * j / 8;
+        rays.push_back(MakeRay(origin_W, std::cos(theta) * axis_W.normalized() +
+                                             std::sin(theta) * (std::cos(phi) * u + std::sin(phi) * v), 8.0));
+      }
+    }
+    return rays;
+  };
+  std::vector<std::vector<Ray>> beams;
+  for (int b = 0; b < 600; ++b) {
+    // from near the links, and from afar, aimed at a link's centre, off by up to 0.5 rad
+    const Vec3 origin_W = b % 2 ? Vec3(1.5 * unit(rng), 1.0 * unit(rng), 0.5 * unit(rng))
+                                : Vec3(4 * unit(rng), 4 * unit(rng), 2 * unit(rng));
+    const Vec3 link_W = link_poses[static_cast<std::size_t>(b) % link_poses.size()].translation();
+    const Vec3 axis_W = (link_W - origin_W).normalized() + 0.5 * Vec3(unit(rng), unit(rng), unit(rng));
+    if (axis_W.norm() < 1e-3) continue;
+    beams.push_back(beam(origin_W, axis_W, b % 3 ? 0.05 + 0.2 * (1 + unit(rng)) : 0.8 * (0.5 + 0.5 * unit(rng)), 3));
+  }
+  // cones whose edge passes near the tangent to the first link's bounding
+  // sphere from a point 1 m away (its radius about 0.33 m: half its box's diagonal)
+  for (const double off_rad : {-2e-4, 0.0, 2e-4}) {
+    const double tangent_rad = std::asin(0.33);
+    beams.push_back(beam(Vec3(0, 0, -0.13), Vec3(std::cos(tangent_rad + 0.3 + off_rad), std::sin(tangent_rad + 0.3 + off_rad), 0), 0.3, 2));
+  }
+  int robot_hits = 0;
+  for (const std::vector<Ray>& rays : beams) {
+    std::vector<Hit> together(rays.size());
+    caster.Cast(rays, together);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      // beside a ray from elsewhere: the batch has no single apex
+      const std::array<Ray, 2> pair = {rays[i], MakeRay(Vec3(9, 9, 9), Vec3::UnitX(), 1.0)};
+      std::array<Hit, 2> apart;
+      caster.Cast(pair, apart);
+      EXPECT_EQ(together[i].object_id, apart[0].object_id);
+      EXPECT_EQ(std::memcmp(&together[i].distance_m, &apart[0].distance_m, sizeof(float)), 0);
+      EXPECT_EQ(together[i].normal_W, apart[0].normal_W);
+      robot_hits += together[i].object_id >= 1;
+    }
+  }
+  EXPECT_GT(robot_hits, 100);  // the robot is met, not only missed
 }
 
 }  // namespace

@@ -136,6 +136,39 @@ TEST(CrosstalkTest, WithoutCrosstalkTheListenerHearsNothing) {
   for (const auto& row : ear) EXPECT_EQ(row.at("detected"), "0") << row.at("t_s");
 }
 
+// Twelve HC-SR04s on the walking biped's legs, fired round robin: some
+// listener hears another's ping while its own rays met nothing within its
+// lobe (its truth columns: no object). summary.json once credited each
+// crosstalk reading to its own ray's object, and the run died on that one
+// ("vector::_M_range_check", exit 1). Now an object is credited with its
+// sensors' own echoes only (`ok`), and the counts say so.
+TEST(CrosstalkTest, AReadingOfAnotherPingCreditsNoObjectWithTheListenersOwnRays) {
+  std::string yaml =
+      "proxsim: 1\nseed: 1\nduration_s: 4.0\nrate_hz: 200\nscene: {builtin: dining_room}\n"
+      "robot:\n  model: builtin:biped\n  start: {xyz_m: [0, 0, 0], yaw_deg: 0}\n"
+      "  gait: {stride_m: 0.6, period_s: 1.2}\n  path: {waypoints_m: [[0, 0], [4.5, 0]]}\nsensors:\n";
+  const char* links[] = {"left_thigh", "right_thigh", "left_tibia", "right_tibia", "left_foot", "right_foot"};
+  for (int i = 0; i < 12; ++i) {
+    yaml += "  - {name: s" + std::to_string(i) + ", type: hc_sr04, fire: round_robin, link: " + links[i % 6] +
+            ", pose: {xyz_m: [0.07, " + std::to_string(0.02 * (i % 3) - 0.02) + ", " +
+            std::to_string(-0.05 - 0.04 * (i / 6)) + "], rpy_deg: [0, " + std::to_string(5 + 3 * (i % 4)) + ", " +
+            std::to_string(-10 + 5 * (i % 5)) + "]}}\n";
+  }
+  const fs::path out = RunScenarioYaml("crosstalk_twelve_round_robin", yaml);
+  const auto rows = ReadCsv(out / "readings.csv");
+  std::size_t crosstalk = 0;
+  for (const auto& row : rows.rows) crosstalk += row.at("status") == "crosstalk";
+  EXPECT_GT(crosstalk, 0u);
+  std::ifstream summary_file(out / "summary.json");
+  const auto summary = nlohmann::json::parse(summary_file);
+  for (const auto& [name, sensor] : summary.at("sensors").items()) {
+    std::size_t credited = 0;
+    for (const auto& [object, count] : sensor.at("detections_by_object").items()) credited += count.get<std::size_t>();
+    EXPECT_EQ(credited, sensor.at("by_status").at("ok").get<std::size_t>()) << name;
+    EXPECT_EQ(sensor.at("detections").get<std::size_t>(), sensor.at("by_status").at("ok").get<std::size_t>()) << name;
+  }
+}
+
 TEST(CrosstalkTest, BadFiringIsRefusedNamingTheKey) {
   const fs::path dir = FreshDir("crosstalk_bad");
   fs::create_directories(dir);

@@ -263,8 +263,11 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
     impl.moving_dirty = true;
     impl.has_moving = true;
   } else {
-    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(impl.robot_bodies.size()));
+    body.robot_slot = static_cast<int>(impl.robot_bodies.size());
+    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(body.robot_slot));
     impl.robot_bodies.push_back(body_index);
+    impl.robot_spheres_W.emplace_back(body.bound_center_W.x(), body.bound_center_W.y(), body.bound_center_W.z(),
+                                      body.bound_radius_m + raycast_internal::kRobotBoxSlack_m);
     impl.robot_dirty = true;
     impl.has_robot = true;
   }
@@ -281,6 +284,7 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   body.bound_center_W = X_WB * body.bound_center_B;
   if (body.world_slot >= 0) impl_->world_spheres_W[body.world_slot].head<3>() = body.bound_center_W;
   if (body.moving_slot >= 0) impl_->moving_spheres_W[body.moving_slot].head<3>() = body.bound_center_W;
+  if (body.robot_slot >= 0) impl_->robot_spheres_W[body.robot_slot].head<3>() = body.bound_center_W;
   body.X_BW = X_WB.inverse();
   // the instance's transform waits for the commit of its scene: a caster
   // asked only for distances (World's moving caster), or moving objects no

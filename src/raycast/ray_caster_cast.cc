@@ -8,9 +8,11 @@
 #include <xmmintrin.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <functional>
+#include <span>
 
 namespace proxsim {
 
@@ -51,6 +53,7 @@ struct CastScenes {
   RTCScene robot = nullptr;      ///< the robot's top-level scene; null when there is no robot
   std::function<void()> commit_robot;  ///< commits `robot` if it moved (before a cast into it)
   bool test_robot_boxes = false;       ///< cast into `robot` only the packets with a ray that may meet one of its boxes
+  std::span<const int> robot_candidates;  ///< the robot bodies the batch may meet (RobotCandidates): their boxes are tested
   RTCScene moving = nullptr;     ///< the moving objects' top-level scene; null when there are none
   // each scene's bodies by instance ID
   const std::vector<int>* world_bodies = nullptr;
@@ -91,7 +94,7 @@ bool MayMeetSphere(const RTCRayHit8& packet, std::size_t lane, const std::vector
 /// Whether `lane`'s ray, up to its nearest hit so far (tfar), passes through
 /// the box of one of the robot's `robot_bodies` (in its body frame B: the
 /// slab test, a segment lengthened by the box's slack).
-bool MayMeetRobotBox(const RTCRayHit8& packet, std::size_t lane, const std::vector<int>& robot_bodies,
+bool MayMeetRobotBox(const RTCRayHit8& packet, std::size_t lane, std::span<const int> robot_bodies,
                      const std::vector<std::unique_ptr<Body>>& bodies) {
   const Vec3 origin_W(packet.ray.org_x[lane], packet.ray.org_y[lane], packet.ray.org_z[lane]);
   const Vec3 direction_W(packet.ray.dir_x[lane], packet.ray.dir_y[lane], packet.ray.dir_z[lane]);
@@ -141,10 +144,100 @@ void MapHit(const RTCRayHit8& packet, std::size_t lane, int direct_body, const s
 constexpr float kMaxRayOrigin_m = 1e15f;
 const Ray kHarmlessRay{Vec3f::Zero(), Vec3f::UnitX(), 1.0f};
 
-bool RayEmbreeCanTake(const Ray& ray) {
-  return ray.origin_W.allFinite() && ray.direction_W.allFinite() && !ray.direction_W.isZero() &&
-         ray.origin_W.cwiseAbs().maxCoeff() < kMaxRayOrigin_m && !std::isnan(ray.max_range_m) && ray.max_range_m >= 0;
+// (a comparison with a NaN is false, and |±inf| is beyond both bounds: each
+// test below also refuses the non-finite values)
+inline bool RayEmbreeCanTake(const Ray& ray) {
+  constexpr float kFinite = std::numeric_limits<float>::max();
+  const Vec3f& o = ray.origin_W;
+  const Vec3f& d = ray.direction_W;
+  // (`&`, not `&&`: every test is cheap, and one branch beats nine)
+  return (std::abs(o.x()) < kMaxRayOrigin_m) & (std::abs(o.y()) < kMaxRayOrigin_m) & (std::abs(o.z()) < kMaxRayOrigin_m) &
+         (std::abs(d.x()) <= kFinite) & (std::abs(d.y()) <= kFinite) & (std::abs(d.z()) <= kFinite) &
+         ((d.x() != 0.0f) | (d.y() != 0.0f) | (d.z() != 0.0f)) & (ray.max_range_m >= 0.0f);
 }
+
+// The cone test below errs on the side of a meeting by this much in the
+// cosine (rounding in the sums; Embree's own slack is in the spheres' radii).
+constexpr double kConeCosSlack = 1e-9;
+
+/// Up to this many candidate bodies are listed (RobotCandidates); a batch
+/// that may meet more is tested against the whole robot.
+constexpr std::size_t kMaxListedBodies = 32;
+
+/// A batch's candidate robot bodies: a short list kept on the stack (no heap
+/// per cast), or the whole robot.
+struct RobotCandidateList {
+  std::array<int, kMaxListedBodies> listed{};
+  std::size_t count = 0;
+  const std::vector<int>* whole_robot = nullptr;  ///< set: every body is a candidate
+  std::span<const int> bodies() const {
+    return whole_robot ? std::span<const int>(*whole_robot) : std::span<const int>(listed.data(), count);
+  }
+};
+
+/// The robot's bodies (indices into Impl::bodies) that some ray of the batch
+/// seeing the robot may meet. When those rays all start at one point (a
+/// sensor's beam or zones), they lie in a cone around the mean of their
+/// directions, out to the longest ray; a body's bounding sphere that lies
+/// outside that cone meets none of them (exact: the sphere holds the body's
+/// box, which holds every hit on it). Otherwise every body.
+RobotCandidateList RobotCandidates(std::span<const Ray> rays, const std::vector<int>& robot_bodies,
+                                   const std::vector<Eigen::Vector4d>& robot_spheres_W) {
+  RobotCandidateList out;
+  const auto all = [&] {
+    out.whole_robot = &robot_bodies;
+    return out;
+  };
+  const Ray* first = nullptr;
+  Vec3 axis = Vec3::Zero();
+  double longest_m = 0.0;
+  // (a ray Embree cannot take is never cast, but is not singled out here: a
+  // non-finite origin or direction makes the sums non-finite, and then every
+  // body is a candidate; a zero direction or a NaN range is passed over by
+  // the comparisons, which are false for NaN)
+  for (const Ray& ray : rays) {
+    if (!ray.see_robot) continue;  // never cast into the robot
+    if (first == nullptr) first = &ray;
+    if (ray.origin_W != first->origin_W) return all();
+    axis += ray.direction_W.cast<double>();  // (unit: any axis will do, θ is measured from it)
+    longest_m = std::max(longest_m, static_cast<double>(ray.max_range_m));
+  }
+  if (first == nullptr) return out;  // no ray sees the robot: no candidate
+  const double axis_norm = axis.norm();
+  if (!(axis_norm > 1e-6) || !std::isfinite(axis_norm) || !first->origin_W.allFinite()) return all();
+  axis /= axis_norm;
+  double cos_half = 1.0;  // the cone's half-angle θ: the widest ray off the axis
+  for (const Ray& ray : rays) {
+    if (!ray.see_robot) continue;
+    const Vec3 d = ray.direction_W.cast<double>();
+    cos_half = std::min(cos_half, axis.dot(d) / d.norm());
+  }
+  if (!(cos_half > 0.0)) return all();  // a half-space or wider: no cut worth its cost
+  const double sin_half = std::sqrt(std::max(0.0, 1.0 - cos_half * cos_half));
+  const Vec3 apex_W = first->origin_W.cast<double>();
+  for (std::size_t slot = 0; slot < robot_spheres_W.size(); ++slot) {
+    const Eigen::Vector4d& sphere = robot_spheres_W[slot];
+    const Vec3 to_centre = sphere.head<3>() - apex_W;
+    const double d_m = to_centre.norm(), r_m = sphere.w();
+    bool may_meet = !(d_m > r_m);  // the apex within the sphere (or an unbounded body)
+    if (!may_meet && d_m - r_m <= longest_m * (1 + 1e-6)) {
+      // within the cone widened by the sphere's angular radius β: the angle
+      // φ to its centre at most θ + β, compared by cosines (sin β = r/d)
+      const double sin_beta = r_m / d_m, cos_beta = std::sqrt(std::max(0.0, 1.0 - sin_beta * sin_beta));
+      const double cos_limit = cos_half * cos_beta - sin_half * sin_beta;  // cos(θ + β), θ + β < π
+      may_meet = to_centre.dot(axis) / d_m >= cos_limit - kConeCosSlack;
+    }
+    if (!may_meet) continue;
+    if (out.count == kMaxListedBodies) return all();
+    out.listed[out.count++] = robot_bodies[slot];
+  }
+  return out;
+}
+
+// With at most this many candidate bodies, every packet's rays take the box
+// test even after the robot's scene is committed: a few slab tests a ray cost
+// less than Embree's walk of the robot's scene (with the whole robot, the walk is cheaper).
+constexpr std::size_t kMaxBoxTestBodies = 3;
 
 /// Casts rays[0..n) (n <= 8) as one packet: into the world, then the lanes
 /// that see the robot into the robot's scene up to their world hit (Embree
@@ -153,14 +246,15 @@ bool RayEmbreeCanTake(const Ray& ray) {
 void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body>>& bodies, const Ray* rays,
                 Hit* hits, std::size_t n) {
   alignas(32) int valid[kPacketRays];
+  bool representable[kPacketRays];  // each lane's RayEmbreeCanTake, found once
   RTCRayHit8 packet;
   for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
     // Embree asserts (aborts) on a ray it cannot represent (|origin| beyond
     // ~1.8e18, non-finite values): such a lane is left out and sees nothing.
     // Input checks (the coordinate limit) keep real runs far from this.
-    const bool representable = lane < n && RayEmbreeCanTake(rays[lane]);
-    valid[lane] = representable ? -1 : 0;
-    const Ray& ray = representable ? rays[lane] : kHarmlessRay;  // inactive lanes: any finite ray
+    representable[lane] = lane < n && RayEmbreeCanTake(rays[lane]);
+    valid[lane] = representable[lane] ? -1 : 0;
+    const Ray& ray = representable[lane] ? rays[lane] : kHarmlessRay;  // inactive lanes: any finite ray
     packet.ray.org_x[lane] = ray.origin_W.x();
     packet.ray.org_y[lane] = ray.origin_W.y();
     packet.ray.org_z[lane] = ray.origin_W.z();
@@ -189,7 +283,7 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
   const auto cast_instances = [&](RTCScene scene, const std::vector<int>& instance_bodies, bool Ray::*sees) {
     bool any = false;
     for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-      valid[lane] = lane < n && rays[lane].*sees && RayEmbreeCanTake(rays[lane]) ? -1 : 0;
+      valid[lane] = representable[lane] && rays[lane].*sees ? -1 : 0;
       any = any || valid[lane];
       packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
@@ -215,11 +309,11 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
   }
   // the robot's links only when a ray may meet one of their boxes (the
   // robot's scene is then committed, if it moved since: ray_caster_internal.h)
-  if (scenes.robot) {
-    bool may_meet = !scenes.test_robot_boxes;
+  if (scenes.robot && !scenes.robot_candidates.empty()) {
+    bool may_meet = !scenes.test_robot_boxes && scenes.robot_candidates.size() > kMaxBoxTestBodies;
     for (std::size_t lane = 0; lane < n && !may_meet; ++lane)
-      may_meet = rays[lane].see_robot && RayEmbreeCanTake(rays[lane]) &&
-                 MayMeetRobotBox(packet, lane, *scenes.robot_bodies, bodies);
+      may_meet = representable[lane] && rays[lane].see_robot &&
+                 MayMeetRobotBox(packet, lane, scenes.robot_candidates, bodies);
     if (may_meet) {
       scenes.commit_robot();
       cast_instances(scenes.robot, *scenes.robot_bodies, &Ray::see_robot);
@@ -234,11 +328,13 @@ void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
   assert(impl_->committed && "Commit() after adding or moving bodies");
   const Impl& impl = *impl_;
   const auto packets = static_cast<std::ptrdiff_t>((rays.size() + kPacketRays - 1) / kPacketRays);
+  const RobotCandidateList robot_candidates = impl.has_robot ? RobotCandidates(rays, impl.robot_bodies, impl.robot_spheres_W) : RobotCandidateList{};
   const CastScenes scenes{.world = impl.world_direct ? impl.world_direct : impl.scene_world,
                           .direct_body = impl.world_direct ? impl.world_direct_body : -1,
                           .robot = impl.has_robot ? impl.scene_robot : nullptr,
                           .commit_robot = [impl = impl_.get()] { impl->CommitRobotIfMoved(); },
                           .test_robot_boxes = impl.robot_uncommitted.load(std::memory_order_acquire),
+                          .robot_candidates = robot_candidates.bodies(),
                           .moving = impl.has_moving ? impl.scene_moving : nullptr,
                           .world_bodies = &impl.world_bodies,
                           .robot_bodies = &impl.robot_bodies,

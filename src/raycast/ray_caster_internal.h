@@ -130,6 +130,7 @@ struct Body {
   Vec3 box_hi_B = Vec3::Constant(std::numeric_limits<double>::infinity());
   int world_slot = -1;  ///< a kWorld body's index in Impl::world_bodies and world_spheres_W
   int moving_slot = -1; ///< a kMoving body's index in Impl::moving_spheres_W
+  int robot_slot = -1;  ///< a kRobot body's index in Impl::robot_bodies and robot_spheres_W
   bool instance_stale = false;  ///< moved since its instance's transform was last set (Impl::stale_*)
   // point-query scenes of this body's meshes without some objects (the
   // ground, say), keyed by the sorted excluded object ids; built on first use
@@ -177,6 +178,11 @@ struct RayCaster::Impl {
   // sensor's rays that point away from both legs never do), once
   std::atomic<bool> robot_uncommitted{false};
   std::mutex robot_commit_mutex;
+  // each robot body's bounding sphere in W (as world_spheres_W, the radius
+  // grown by kRobotBoxSlack_m), by instance ID, kept with its pose: a batch
+  // of rays from one point (a sensor's beam) is tested against them as a
+  // cone, and only the bodies the cone may meet take the box test
+  std::vector<Eigen::Vector4d> robot_spheres_W;
   // the world body cast without its instance (see the top of the file), or null
   RTCScene world_direct = nullptr;
   int world_direct_body = -1;

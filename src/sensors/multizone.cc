@@ -246,12 +246,6 @@ const PartTables* FindPartTables(const SensorSpec& spec) {
   return nullptr;
 }
 
-// a zone's cell centre on the image plane, off the grid's centre, in tan units
-Vec2 ZoneOffset(const ZoneSpec& zones, double column, double row) {
-  const double cell_u = 2.0 * HalfTan(zones.fov_h_deg) / zones.nx, cell_v = 2.0 * HalfTan(zones.fov_v_deg) / zones.ny;
-  return Vec2((column + 0.5 - 0.5 * zones.nx) * cell_u, (row + 0.5 - 0.5 * zones.ny) * cell_v);
-}
-
 }  // namespace
 
 void ApplyMultizonePartTables(SensorSpec& spec) {

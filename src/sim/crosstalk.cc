@@ -34,18 +34,21 @@ MirrorWindow::MirrorWindow(const SensorSpec& listener_spec)
 
 void CrossEchoPathsInto(std::span<const EchoSource> sources, const SensorSpec& listener_spec,
                         const MirrorWindow& window, const ListeningSensor& listener,
-                        std::vector<CrossEchoPath>& paths) {
+                        std::vector<CrossEchoPath>& paths, const Vec3& p_W_emitter, double longest_m) {
   paths.clear();
   if (!listener_spec.beam) return;
+  // a path through a source `out` away is at least 2·out − |EL| long (ShortestCrossEchoPath_m)
+  const double apart_m = (listener.p_WS - p_W_emitter).norm();
   // the mirror test by its cosine first: only a direction within 1e-9 of the
   // window's edge takes the exact angle (acos), so each decision is the
   // angle's, bit for bit, at a dot product's cost
   const double window_deg = window.window_deg;
   const double cos_window = window.cos_window;
   for (const EchoSource& source : sources) {
+    if (2.0 * source.out_m - apart_m - 1e-9 > longest_m) continue;  // every path through it too long
     const Vec3 to_listener = listener.p_WS - source.p_WH;
     const double back_m = to_listener.norm();
-    if (!(back_m > 0.0)) continue;
+    if (!(back_m > 0.0) || source.out_m + back_m > longest_m) continue;
     const double cos_mirror = source.mirror_W.dot(to_listener / back_m);
     if (window_deg < 180.0 && cos_mirror < cos_window - 1e-9) continue;  // surely beyond the window
     if (!(cos_mirror > cos_window + 1e-9) && AngleDeg(source.mirror_W, to_listener / back_m) > window_deg) continue;
@@ -60,13 +63,6 @@ double NearestEchoSource_m(std::span<const EchoSource> sources) {
   double nearest_m = std::numeric_limits<double>::infinity();
   for (const EchoSource& source : sources) nearest_m = std::min(nearest_m, source.out_m);
   return nearest_m;
-}
-
-double ShortestCrossEchoPath_m(double nearest_source_m, const Vec3& p_W_emitter, const Vec3& p_W_listener) {
-  // a path E -> H -> L with |EH| = out is at least |EL| (E, H, L a triangle)
-  // and at least 2 out - |EL| (|HL| >= |EH| - |EL|)
-  const double apart_m = (p_W_listener - p_W_emitter).norm();
-  return std::max(apart_m, 2.0 * nearest_source_m - apart_m) - 1e-9;
 }
 
 }  // namespace proxsim

@@ -13,6 +13,8 @@
 // Frames: W world.
 #pragma once
 
+#include <algorithm>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -68,11 +70,16 @@ struct MirrorWindow {
 };
 
 /// Every way the emitter's ping (its echo sources) reaches the listener after
-/// one reflection, shortest first, into `paths` (cleared first); none when the
-/// listener has no beam.
+/// one reflection, no longer than `longest_m`, shortest first, into `paths`
+/// (cleared first); none when the listener has no beam. A caller that can
+/// use no path beyond some length (it would arrive after the listening window
+/// or after the first echo heard) passes it: a source whose every path is
+/// longer (2·out − |EL| > longest_m, E the emitter at `p_W_emitter`) is passed
+/// over before its way back is found.
 void CrossEchoPathsInto(std::span<const EchoSource> sources, const SensorSpec& listener_spec,
                         const MirrorWindow& window, const ListeningSensor& listener,
-                        std::vector<CrossEchoPath>& paths);
+                        std::vector<CrossEchoPath>& paths, const Vec3& p_W_emitter,
+                        double longest_m = std::numeric_limits<double>::infinity());
 
 /// The distance out to the nearest of an emitter's echo sources (+inf for none).
 double NearestEchoSource_m(std::span<const EchoSource> sources);
@@ -81,6 +88,12 @@ double NearestEchoSource_m(std::span<const EchoSource> sources);
 /// listener are and the nearest source's distance alone (the triangle
 /// inequality, less 1 nm for rounding): no path is shorter, so a caller can
 /// skip an emitter whose every path would arrive too late without finding them.
-double ShortestCrossEchoPath_m(double nearest_source_m, const Vec3& p_W_emitter, const Vec3& p_W_listener);
+/// (Inline: it is asked for every pair of sonars every sample.)
+inline double ShortestCrossEchoPath_m(double nearest_source_m, const Vec3& p_W_emitter, const Vec3& p_W_listener) {
+  // a path E -> H -> L with |EH| = out is at least |EL| (E, H, L a triangle)
+  // and at least 2 out - |EL| (|HL| >= |EH| - |EL|)
+  const double apart_m = (p_W_listener - p_W_emitter).norm();
+  return std::max(apart_m, 2.0 * nearest_source_m - apart_m) - 1e-9;
+}
 
 }  // namespace proxsim

@@ -11,7 +11,10 @@ void RunStatistics::Add(const SampleFrame& frame) {
     PerSensor& stats = sensors_[i];
     ++stats.samples;
     ++stats.by_status[static_cast<std::size_t>(s.reading.status)];
-    if (s.reading.detected()) {
+    // an object is credited with its own echoes only: a crosstalk reading is
+    // another sensor's ping, and its truth columns (object, hit) are those of
+    // the listener's own rays, which may have met nothing (object −1)
+    if (s.reading.status == ReadingStatus::kOk && s.object_id >= 0) {
       ++stats.detections_by_object[s.object_id];
       stats.first_detection_t_s.try_emplace(s.object_id, frame.t_s);
     }

@@ -1,6 +1,7 @@
 #include "sim/sensor_reader.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -54,7 +55,9 @@ void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
   // and the noise is keyed, so the readings are the same whatever the thread count.
   const std::size_t sensor_count = scenario_.sensors.size();
   frame.sensors.resize(sensor_count);
-  const auto read = [this, &frame](std::size_t begin_sensor, std::size_t end_sensor) {
+  const bool crosstalk = sonars_.size() > 1;
+  if (crosstalk) PrepareCrosstalk(frame.sample);
+  const auto read = [this, &frame, crosstalk](std::size_t begin_sensor, std::size_t end_sensor) {
     for (std::size_t sensor = begin_sensor; sensor < end_sensor; ++sensor) {
       const std::size_t begin = world_.ray_begin(sensor), count = world_.ray_begin(sensor + 1) - begin;
       // between its own samples a sensor reads nothing: its rays are not cast
@@ -62,6 +65,7 @@ void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
       PlaceSensor(sensor, frame, cast);
       if (cast) world_.caster().Cast(std::span(rays_).subspan(begin, count), std::span(hits_).subspan(begin, count));
       MeasureSensor(sensor, frame);
+      if (crosstalk) FindEchoSources(sensor, frame);
     }
   };
   if (rays_.size() >= kParallelReadRays) {
@@ -70,7 +74,7 @@ void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
     read(0, sensor_count);
   }
   // after every sensor is read: a listener needs the others' pings
-  if (sonars_.size() > 1) ApplyCrosstalk(frame);
+  if (crosstalk) ApplyCrosstalk(frame, runner);
 }
 
 double SensorReader::ListeningWindow_s(std::size_t sensor) const {
@@ -91,94 +95,117 @@ void SensorReader::FindNextPings(std::int64_t sample) {
   }
 }
 
-SensorReader::PingOffsets SensorReader::PingOffsets_s(std::size_t emitter, double listener_window_s,
-                                                     double t_s) const {
-  // relative to the listener's ping at this sample: the emitter's last ping
-  // (this sample's included) and its next one, when within the listening
-  // window (the first after this sample: a later one is never nearer)
-  PingOffsets offsets;
-  if (std::isfinite(last_ping_t_s_[emitter]) && t_s - last_ping_t_s_[emitter] < listener_window_s) {
-    offsets.s[offsets.count++] = last_ping_t_s_[emitter] - t_s;
-  }
-  if (next_ping_offset_s_[emitter] <= listener_window_s) offsets.s[offsets.count++] = next_ping_offset_s_[emitter];
-  return offsets;
+void SensorReader::PrepareCrosstalk(std::int64_t sample) {
+  FindNextPings(sample);
+  echo_sources_.resize(scenario_.sensors.size());
+  echo_sources_found_.assign(scenario_.sensors.size(), 0);
+  nearest_source_m_.resize(scenario_.sensors.size());
+  cross_paths_.resize(scenario_.sensors.size());
+  sonar_listens_now_ = std::any_of(sonars_.begin(), sonars_.end(), [&](std::size_t sonar) {
+    return scenario_.sensors[sonar].crosstalk && IsSensorSample(sonar, sample);
+  });
 }
 
-void SensorReader::ApplyCrosstalk(SampleFrame& frame) {
-  echo_sources_.resize(scenario_.sensors.size());
-  echo_sources_found_.assign(scenario_.sensors.size(), false);
-  nearest_source_m_.resize(scenario_.sensors.size());
-  FindNextPings(frame.sample);
+void SensorReader::FindEchoSources(std::size_t sensor, const SampleFrame& frame) {
+  // a listener asks for an emitter's sources when a ping of it lies within
+  // its window (PingOffsets_s): the last one (this sample's included: set by
+  // MeasureSensor) or the next one, within the longest window of any
+  if (!sonar_listens_now_ || !heard_by_others_[sensor]) return;
   const double t_s = static_cast<double>(frame.sample) / scenario_.rate_hz;
-  for (const std::size_t listener : sonars_) {
-    const SensorConfig& config = scenario_.sensors[listener];
-    SensorSample& out = frame.sensors[listener];
-    if (!config.crosstalk || out.reading.status == ReadingStatus::kNotSampled) continue;
-    const double c_m_s = WaveSpeed_m_s(config.spec.type, config.wave_speed_m_s);
-    const double window_s = ListeningWindow_s(listener);
-    // its own first echo, when one came back (the dead zone's and its body's too)
-    const ReadingStatus own = out.reading.status;
-    const bool own_heard = own == ReadingStatus::kOk || own == ReadingStatus::kTooClose || own == ReadingStatus::kSelf;
-    double first_s = own_heard ? 2.0 * (out.echo.distance_m + out.echo.flight_shift_m) / c_m_s
-                               : std::numeric_limits<double>::infinity();
-    bool heard_another = false;
-    const ListeningSensor ear{out.p_WS, out.dir_W};
-    const MirrorWindow mirror_window(config.spec);
-    for (const std::size_t emitter : sonars_) {
-      if (emitter == listener) continue;
-      const PingOffsets offsets_s = PingOffsets_s(emitter, window_s, t_s);
-      if (offsets_s.count == 0) continue;
-      if (!echo_sources_found_[emitter]) {
-        const std::size_t begin = world_.ray_begin(emitter), count = world_.ray_begin(emitter + 1) - begin;
-        const PingRays ping{frame.sensors[emitter].p_WS, std::span(ray_dir_W_).subspan(begin, count),
-                            std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
-        EchoSourcesInto(scenario_.sensors[emitter].spec, ping, echo_sources_[emitter]);
-        nearest_source_m_[emitter] = NearestEchoSource_m(echo_sources_[emitter]);
-        echo_sources_found_[emitter] = true;
-      }
-      // no path of this ping can arrive in the window before the first echo
-      // heard so far: its paths need not be found (an exact cut: each path is
-      // at least the shortest bound, and arrives no sooner)
-      const double shortest_m =
-          ShortestCrossEchoPath_m(nearest_source_m_[emitter], frame.sensors[emitter].p_WS, out.p_WS);
-      const bool too_late = std::all_of(offsets_s.begin(), offsets_s.end(), [&](double offset_s) {
-        const double earliest_s = offset_s + shortest_m / c_m_s;
-        return earliest_s > window_s || earliest_s >= first_s;
-      });
-      if (too_late) continue;
-      CrossEchoPathsInto(echo_sources_[emitter], config.spec, mirror_window, ear, cross_paths_);
-      for (const CrossEchoPath& path : cross_paths_) {
-        double arrival_s = std::numeric_limits<double>::infinity();
-        for (const double offset_s : offsets_s) {
-          const double a_s = offset_s + path.path_m / c_m_s;
-          if (a_s >= 0.0 && a_s <= window_s) arrival_s = std::min(arrival_s, a_s);
-        }
-        if (!(arrival_s < first_s)) continue;
-        // the listener must see the reflecting point
-        const Vec3 to_H = path.p_WH - out.p_WS;
-        const double d_m = to_H.norm();
-        Ray ray{.origin_W = out.p_WS.cast<float>(), .direction_W = (to_H / d_m).cast<float>(),
-                .max_range_m = static_cast<float>(d_m), .see_robot = config.see_robot};
-        Hit hit;
-        world_.caster().Cast(std::span(&ray, 1), std::span(&hit, 1));
-        if (hit.is_hit() && hit.distance_m < d_m - 1e-3) continue;
-        first_s = arrival_s;
-        heard_another = true;
-      }
-    }
-    if (!heard_another) continue;
-    // the device reads the other ping's echo as its own: range limits and noise
-    // as for any echo, from a draw keyed past its rays (no ray of its own)
-    Echo echo;
-    echo.distance_m = 0.5 * c_m_s * first_s;
-    const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(listener), static_cast<std::uint64_t>(frame.sample),
-                       static_cast<std::uint32_t>(world_.ray_begin(listener + 1) - world_.ray_begin(listener))};
-    Reading reading = Measure(config.spec, echo, [&](int) { return KeyedNoiseDraw(config.spec.noise, key); });
-    if (reading.status != ReadingStatus::kOk) continue;
-    reading.status = ReadingStatus::kCrosstalk;
-    out.reading = reading;
-    out.ray = -1;
+  const double last_s = last_ping_t_s_[sensor];
+  const bool may_be_heard = (std::isfinite(last_s) && t_s - last_s < longest_window_s_) ||
+                            next_ping_offset_s_[sensor] <= longest_window_s_;
+  if (!may_be_heard) return;
+  const std::size_t begin = world_.ray_begin(sensor), count = world_.ray_begin(sensor + 1) - begin;
+  const PingRays ping{frame.sensors[sensor].p_WS, std::span(ray_dir_W_).subspan(begin, count),
+                      std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
+  EchoSourcesInto(scenario_.sensors[sensor].spec, ping, echo_sources_[sensor]);
+  nearest_source_m_[sensor] = NearestEchoSource_m(echo_sources_[sensor]);
+  echo_sources_found_[sensor] = 1;
+}
+
+void SensorReader::ApplyCrosstalk(SampleFrame& frame, ParallelRunner& runner) {
+  const double t_s = static_cast<double>(frame.sample) / scenario_.rate_hz;
+  // each emitter's last ping, s from this sample (−inf before its first), for PingOffsets_s
+  last_ping_offset_s_.resize(scenario_.sensors.size());
+  for (const std::size_t sonar : sonars_) {
+    const double last_s = last_ping_t_s_[sonar];
+    last_ping_offset_s_[sonar] = std::isfinite(last_s) ? last_s - t_s : -std::numeric_limits<double>::infinity();
   }
+  // each listener reads the emitters' sources and writes only its own reading
+  runner.For(sonars_.size(), kListenersPerTask, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) ListenForCrosstalk(sonars_[k], frame, t_s);
+  });
+}
+
+void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame, double t_s) {
+  const SensorConfig& config = scenario_.sensors[listener];
+  SensorSample& out = frame.sensors[listener];
+  if (!config.crosstalk || out.reading.status == ReadingStatus::kNotSampled) return;
+  const double c_m_s = WaveSpeed_m_s(config.spec.type, config.wave_speed_m_s);
+  const double window_s = ListeningWindow_s(listener);
+  // its own first echo, when one came back (the dead zone's and its body's too)
+  const ReadingStatus own = out.reading.status;
+  const bool own_heard = own == ReadingStatus::kOk || own == ReadingStatus::kTooClose || own == ReadingStatus::kSelf;
+  double first_s = own_heard ? 2.0 * (out.echo.distance_m + out.echo.flight_shift_m) / c_m_s
+                             : std::numeric_limits<double>::infinity();
+  bool heard_another = false;
+  const ListeningSensor ear{out.p_WS, out.dir_W};
+  const MirrorWindow mirror_window(config.spec);
+  std::vector<CrossEchoPath>& paths = cross_paths_[listener];
+  for (const std::size_t emitter : sonars_) {
+    if (emitter == listener) continue;
+    const PingOffsets offsets_s = PingOffsets_s(emitter, window_s);
+    if (offsets_s.count == 0) continue;
+    // (FindEchoSources found them: this listener listens now and the ping is within its window)
+    assert(echo_sources_found_[emitter] && "an emitter's echo sources are found when a listener may hear it");
+    // no path of this ping can arrive in the window before the first echo
+    // heard so far: its paths need not be found (an exact cut: each path is
+    // at least the shortest bound, and arrives no sooner)
+    const double shortest_m = ShortestCrossEchoPath_m(nearest_source_m_[emitter], frame.sensors[emitter].p_WS, out.p_WS);
+    const bool too_late = std::all_of(offsets_s.begin(), offsets_s.end(), [&](double offset_s) {
+      const double earliest_s = offset_s + shortest_m / c_m_s;
+      return earliest_s > window_s || earliest_s >= first_s;
+    });
+    if (too_late) continue;
+    // and no path longer than this could: it would arrive after the window or
+    // the first echo for every ping (widened for rounding: the cut must never
+    // drop a path the test below would take)
+    double longest_m = 0.0;
+    for (const double offset_s : offsets_s) longest_m = std::max(longest_m, (std::min(window_s, first_s) - offset_s) * c_m_s);
+    CrossEchoPathsInto(echo_sources_[emitter], config.spec, mirror_window, ear, paths, frame.sensors[emitter].p_WS,
+                       longest_m * (1 + 1e-9) + 1e-9);
+    for (const CrossEchoPath& path : paths) {
+      double arrival_s = std::numeric_limits<double>::infinity();
+      for (const double offset_s : offsets_s) {
+        const double a_s = offset_s + path.path_m / c_m_s;
+        if (a_s >= 0.0 && a_s <= window_s) arrival_s = std::min(arrival_s, a_s);
+      }
+      if (!(arrival_s < first_s)) continue;
+      // the listener must see the reflecting point
+      const Vec3 to_H = path.p_WH - out.p_WS;
+      const double d_m = to_H.norm();
+      Ray ray{.origin_W = out.p_WS.cast<float>(), .direction_W = (to_H / d_m).cast<float>(),
+              .max_range_m = static_cast<float>(d_m), .see_robot = config.see_robot};
+      Hit hit;
+      world_.caster().Cast(std::span(&ray, 1), std::span(&hit, 1));
+      if (hit.is_hit() && hit.distance_m < d_m - 1e-3) continue;
+      first_s = arrival_s;
+      heard_another = true;
+    }
+  }
+  if (!heard_another) return;
+  // the device reads the other ping's echo as its own: range limits and noise
+  // as for any echo, from a draw keyed past its rays (no ray of its own)
+  Echo echo;
+  echo.distance_m = 0.5 * c_m_s * first_s;
+  const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(listener), static_cast<std::uint64_t>(frame.sample),
+                     static_cast<std::uint32_t>(world_.ray_begin(listener + 1) - world_.ray_begin(listener))};
+  Reading reading = Measure(config.spec, echo, [&](int) { return KeyedNoiseDraw(config.spec.noise, key); });
+  if (reading.status != ReadingStatus::kOk) return;
+  reading.status = ReadingStatus::kCrosstalk;
+  out.reading = reading;
+  out.ray = -1;
 }
 
 bool SensorReader::IsSensorSample(std::size_t sensor, std::int64_t sample) const {

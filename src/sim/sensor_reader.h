@@ -53,8 +53,17 @@ class SensorReader {
   void MeasureZonesInto(std::size_t sensor, SensorSample& out, const DrawOfRay& draw);
   // whether sample k is one of the sensor's own samples (its pings)
   bool IsSensorSample(std::size_t sensor, std::int64_t sample) const;
-  // the listeners' readings replaced by an earlier echo of another sensor's ping
-  void ApplyCrosstalk(SampleFrame& frame);
+  // before the sensors are read: each emitter's next ping, and whether any
+  // sonar listens at this sample (crosstalk's echo sources are then found)
+  void PrepareCrosstalk(std::int64_t sample);
+  // after `sensor` is read, within its read task: its ping's echo sources,
+  // when some listener may hear a ping of it at this sample
+  void FindEchoSources(std::size_t sensor, const SampleFrame& frame);
+  // the listeners' readings replaced by an earlier echo of another sensor's
+  // ping; listeners are independent, so they are shared out over the threads
+  void ApplyCrosstalk(SampleFrame& frame, ParallelRunner& runner);
+  // one listener's reading (ApplyCrosstalk)
+  void ListenForCrosstalk(std::size_t listener, SampleFrame& frame, double t_s);
   // the emitter's pings within the listener's window around its ping at this
   // sample, s from it: its last ping and its next one, at most (no heap: it is
   // asked for every pair of sonars every sample)
@@ -64,7 +73,16 @@ class SensorReader {
     const double* begin() const { return s.data(); }
     const double* end() const { return s.data() + count; }
   };
-  PingOffsets PingOffsets_s(std::size_t emitter, double listener_window_s, double t_s) const;
+  // (relative to the listener's ping at this sample: the emitter's last ping,
+  // this sample's included, and its next one, the first after this sample: a
+  // later one is never nearer; inline: it is asked for every pair)
+  PingOffsets PingOffsets_s(std::size_t emitter, double listener_window_s) const {
+    PingOffsets offsets;
+    const double last_s = last_ping_offset_s_[emitter];  // −inf: none (never within the window)
+    if (-last_s < listener_window_s) offsets.s[offsets.count++] = last_s;
+    if (next_ping_offset_s_[emitter] <= listener_window_s) offsets.s[offsets.count++] = next_ping_offset_s_[emitter];
+    return offsets;
+  }
   // each emitter's first ping after this sample, s from it, when within the
   // longest listening window (else +inf): found once per sample, not per pair
   void FindNextPings(std::int64_t sample);
@@ -74,6 +92,8 @@ class SensorReader {
   static constexpr std::size_t kParallelReadRays = 512;
   // sensors read by one task: enough rays to outweigh the task's cost
   static constexpr std::size_t kSensorsPerTask = 4;
+  // listeners whose crosstalk one task takes; fewer sonars than this are heard on one thread
+  static constexpr std::size_t kListenersPerTask = 4;
 
   const Scenario& scenario_;
   World& world_;
@@ -86,12 +106,15 @@ class SensorReader {
   std::vector<std::size_t> sonars_;    // ultrasonic sensors with a beam: they ping and hear each other
   std::vector<std::vector<Vec3>> zone_axes_S_;  // each multizone sensor's zone axes in its frame (multizone.h)
   // ApplyCrosstalk's per-emitter echo sources (sim/crosstalk.h), by sensor;
-  // each found once per sample, on first use (buffers kept across samples)
+  // found in the emitter's read task when a listener may need them (buffers
+  // kept across samples; one slot per sensor, so tasks never share one)
   std::vector<std::vector<EchoSource>> echo_sources_;
-  std::vector<bool> echo_sources_found_;
-  std::vector<CrossEchoPath> cross_paths_;  // one pair's paths, the buffer reused
+  std::vector<char> echo_sources_found_;                  // by sensor (char: written from several threads)
+  std::vector<std::vector<CrossEchoPath>> cross_paths_;  // by listener: one pair's paths, the buffer reused
   std::vector<double> nearest_source_m_;     // each emitter's NearestEchoSource_m, found with its sources
+  bool sonar_listens_now_ = false;           // PrepareCrosstalk: some sonar with crosstalk reads at this sample
   std::vector<double> next_ping_offset_s_;   // FindNextPings' answer, by sensor
+  std::vector<double> last_ping_offset_s_;   // each sonar's last ping, s from this sample (ApplyCrosstalk)
   double longest_window_s_ = 0.0;            // the longest listening window of any sonar
   std::vector<bool> heard_by_others_;        // by sensor: a sonar that another sonar may hear
   std::vector<double> last_ping_t_s_;  // each sensor's last ping, s (NaN before the first)

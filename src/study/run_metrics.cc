@@ -49,7 +49,9 @@ void RunMetricsRecorder::Add() {
     ++m.samples;
     self_[i] += sample.reading.status == ReadingStatus::kSelf;
     grazing_[i] += sample.reading.status == ReadingStatus::kGrazing;
-    if (!sample.reading.detected()) continue;
+    // a hazard is seen, and the floor covered, by the sensor's own echoes (a
+    // crosstalk reading is another sensor's ping; its object is its own ray's)
+    if (sample.reading.status != ReadingStatus::kOk) continue;
     const std::int32_t object = sample.object_id;
     const int hazard = HazardOf(object);
     if (hazard >= 0 && !m.hazards[hazard].detected && self != nullptr) {
