@@ -4,7 +4,7 @@
 # data/scenarios/, the paper's default run and the bench's closed-loop study
 # of 40 generated rooms (src/bench/outcome_bench.cc), and compares their files
 # byte for byte: readings.csv, poses.csv, summary.json, scene.json and
-# profile.ply of each run; the study's results.csv, ranking.csv,
+# profile.ply of each run (and its exit code); the study's results.csv, ranking.csv,
 # failures.csv and replay files (failures/). Prints each file that differs;
 # exits 1 if any does.
 #
@@ -17,10 +17,32 @@ cd "$(dirname "$0")/.."
 ref="$(realpath "$1")"
 new="$(realpath "$2")"
 work="${3:-$(mktemp -d)}"
-mkdir -p "$work"
+mkdir -p "$work/ref" "$work/new"
 work="$(realpath "$work")"
 scenarios="$(pwd)/data/scenarios"
 fail=0
+
+# run DIR BINARY ARGS...: one run into $work/DIR's side, its exit code beside it (DIR.rc)
+run() {
+  local dir="$1" bin="$2"
+  shift 2
+  "$bin" "$@" >/dev/null 2>&1
+  echo $? >"$work/$dir.rc"
+}
+
+# whether DIR's runs ended alike and well: a run that failed on both sides
+# leaves no files to differ, and must not pass for identical
+ended_alike() {  # ended_alike DIR
+  local dir="$1"
+  if ! cmp -s "$work/ref/$dir.rc" "$work/new/$dir.rc"; then
+    echo "differs: $dir (exit $(cat "$work/ref/$dir.rc") vs $(cat "$work/new/$dir.rc"))"; fail=1
+  elif [ "$(cat "$work/ref/$dir.rc")" != 0 ]; then
+    echo "failed on both: $dir (exit $(cat "$work/ref/$dir.rc"))"; fail=1
+  fi
+}
+
+# whether the reference's run of DIR is kept from an earlier call (and went well)
+ref_kept() { [ -d "$work/ref/$1" ] && [ "$(cat "$work/ref/$1.rc" 2>/dev/null)" = 0 ]; }
 
 compare() {  # compare DIR FILE...
   local dir="$1"
@@ -35,17 +57,19 @@ compare() {  # compare DIR FILE...
 # every scenario, run from its folder (paths in it are relative to it)
 for path in "$scenarios"/*.yaml; do
   name="$(basename "$path" .yaml)"
-  [ -d "$work/ref/$name" ] || (cd "$scenarios" && "$ref" run "$path" --no-report --out "$work/ref/$name" >/dev/null 2>&1)
+  ref_kept "$name" || { rm -rf "$work/ref/$name"; (cd "$scenarios" && run "ref/$name" "$ref" run "$path" --no-report --out "$work/ref/$name"); }
   rm -rf "$work/new/$name"
-  (cd "$scenarios" && "$new" run "$path" --no-report --out "$work/new/$name" >/dev/null 2>&1)
+  (cd "$scenarios" && run "new/$name" "$new" run "$path" --no-report --out "$work/new/$name")
+  ended_alike "$name"
   compare "$name" readings.csv poses.csv summary.json scene.json profile.ply
 done
 
 # the paper's default run
-[ -d "$work/ref/paper" ] || "$ref" run --no-report --out "$work/ref/paper" >/dev/null 2>&1
+ref_kept paper || { rm -rf "$work/ref/paper"; run ref/paper "$ref" run --no-report --out "$work/ref/paper"; }
 rm -rf "$work/new/paper"
-"$new" run --no-report --out "$work/new/paper" >/dev/null 2>&1
-compare paper readings.csv poses.csv profile.ply scene.json
+run new/paper "$new" run --no-report --out "$work/new/paper"
+ended_alike paper
+compare paper readings.csv poses.csv summary.json scene.json profile.ply
 
 # the bench's outcome study: 8 shin lasers, the stop rule, 40 rooms at difficulty 0.5
 study="$work/rooms40.yaml"
@@ -63,9 +87,10 @@ if [ ! -e "$study" ]; then
   printf 'proxsim_study: 1\nmode: outcomes\nbase: walker.yaml\nsets: [{name: eight_lasers, sensors: [%s]}]\nstrategies: [{name: stop}]\nworlds: {generate: {kind: room, difficulty: 0.5}, seeds: {from: 1, to: 40}}\n' \
     "$sensors" >"$study"
 fi
-[ -d "$work/ref/rooms40" ] || (cd "$work" && "$ref" study "$study" --no-report --threads 1 --out "$work/ref/rooms40" >/dev/null 2>&1)
+ref_kept rooms40 || { rm -rf "$work/ref/rooms40"; (cd "$work" && run ref/rooms40 "$ref" study "$study" --no-report --threads 1 --out "$work/ref/rooms40"); }
 rm -rf "$work/new/rooms40"
-(cd "$work" && "$new" study "$study" --no-report --threads 1 --out "$work/new/rooms40" >/dev/null 2>&1)
+(cd "$work" && run new/rooms40 "$new" study "$study" --no-report --threads 1 --out "$work/new/rooms40")
+ended_alike rooms40
 compare rooms40 results.csv ranking.csv failures.csv
 diff -r "$work/ref/rooms40/failures" "$work/new/rooms40/failures" >/dev/null || { echo "differs: rooms40/failures/"; fail=1; }
 

@@ -208,9 +208,11 @@ TEST(MultizoneTest, APartsLimitsAreRefusedNamingTheLimitAndItsSource) {
     std::ofstream(dir / name) << "proxsim: 1\nsensors:\n  - " << sensor << "\n";
     return RunProxsim("validate " + (dir / name).string());
   };
-  const auto zones = refused("zones.yaml", "{name: a, type: vl53l5cx, zones: [6, 6]}");
+  const auto zones = refused("zones.yaml", "{name: a, type: vl53l5cx, zones: [6, 6], rate_hz: 40}");
   EXPECT_EQ(zones.exit_code, 2) << zones.output;
   EXPECT_NE(zones.output.find("expected [4, 4] or [8, 8] for a vl53l5cx (ST UM2884"), std::string::npos) << zones.output;
+  // a grid the part does not have has no rate limit to name (it once said "at most 15 Hz ... at 6x6 zones")
+  EXPECT_EQ(zones.output.find("ranging frequency"), std::string::npos) << zones.output;
 
   const auto rate = refused("rate.yaml", "{name: a, type: vl53l7cx, rate_hz: 30}");
   EXPECT_EQ(rate.exit_code, 2) << rate.output;

@@ -103,8 +103,6 @@ Vec2xz StepPlanner::PlantedAnkle(const StepPlan& plan, const Pose& X_WP, double 
   return p_PA;
 }
 
-Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p) const { return SwingAnkle(plan, p, SwingCurve(plan, p)); }
-
 Vec2xz StepPlanner::SwingAnkle(const StepPlan& plan, double p, const LegAnglesRad& curve) const {
   const double u = SwingProgress(p);
   // cubic Hermite from (delta, rate) at toe-off to (end delta, 0) at heel strike

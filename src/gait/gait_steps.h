@@ -164,9 +164,7 @@ class StepPlanner {
   // pelvis at X_WP (given the swing pitch at p: the same answer).
   Vec2xz PlantedAnkle(const StepPlan& plan, double p, const Pose& X_WP) const;
   Vec2xz PlantedAnkle(const StepPlan& plan, const Pose& X_WP, double swing_pitch) const;
-  // The swing ankle target (P) from toe-off on, before the floor guard
-  // (given SwingCurve(plan, p): the same answer).
-  Vec2xz SwingAnkle(const StepPlan& plan, double p) const;
+  // The swing ankle target (P) from toe-off on, before the floor guard, given SwingCurve(plan, p).
   Vec2xz SwingAnkle(const StepPlan& plan, double p, const LegAnglesRad& swing_curve) const;
   // Latches X_WF, the landing correction and the clearance bump.
   void Finish(StepPlan* plan) const;

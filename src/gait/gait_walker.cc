@@ -177,8 +177,8 @@ double GaitWalker::StrikeLimitedDuration_s(const StepPlan& next, double duration
 }
 
 std::string GaitWalker::StepKey(const StepPlan& plan) const {
-  // (the period Duration_s reads, though the search key holds the same)
-  return GaitSearchKey(step_memo_key_, gait_.period_s, gait_.period_s) + StepPlanBytes(plan);
+  // (step_memo_key_ holds the period Duration_s reads: it is the walker's for life)
+  return step_memo_key_ + StepPlanBytes(plan);
 }
 
 double GaitWalker::CheckedDuration_s(const std::string& key, const StepPlan& plan, StepWindows* sampled) const {

@@ -327,10 +327,10 @@ Vec2xz BipedLegs::Point(Side s, const LegAnglesRad& a, FootPoint which) const {
 
 std::array<Vec2xz, 2> BipedLegs::HeelAndToe(Side s, const LegAnglesRad& a) const {
   const Vec2xz ankle = Ankle(s, a);
-  // RotateSagittal's arithmetic, its cosine and sine taken once
+  // (the pitch's cosine and sine taken once for both points)
   const double c = std::cos(a.pitch), sn = std::sin(a.pitch);
-  const auto rotate = [c, sn](const Vec2xz& v) { return Vec2xz(v.x() * c - v.y() * sn, v.x() * sn + v.y() * c); };
-  return {ankle + rotate(FootOffset(s, FootPoint::kHeel)), ankle + rotate(FootOffset(s, FootPoint::kToe))};
+  return {ankle + RotateSagittal(c, sn, FootOffset(s, FootPoint::kHeel)),
+          ankle + RotateSagittal(c, sn, FootOffset(s, FootPoint::kToe))};
 }
 
 double BipedLegs::LowestSoleZ(Side s, const LegAnglesRad& a) const {

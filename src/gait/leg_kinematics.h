@@ -156,10 +156,12 @@ class BipedLegs {
   double standing_height_m_ = 0;
 };
 
+/// Rotates a sagittal vector by an angle given by its cosine c and sine s
+/// (for a caller that turns several vectors by one angle).
+inline Vec2xz RotateSagittal(double c, double s, const Vec2xz& v) { return {v.x() * c - v.y() * s, v.x() * s + v.y() * c}; }
 /// Rotates a sagittal vector by a segment angle (positive: lower end forward / toe up).
 inline Vec2xz RotateSagittal(double angle_rad, const Vec2xz& v) {
-  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
-  return {v.x() * c - v.y() * s, v.x() * s + v.y() * c};
+  return RotateSagittal(std::cos(angle_rad), std::sin(angle_rad), v);
 }
 
 }  // namespace proxsim

@@ -100,7 +100,7 @@ class ElevationGrid {
   struct Tile {
     std::int32_t tx = 0, ty = 0;  ///< tile index: cells [tx·16, tx·16 + 16) in x
     std::array<TerrainCell, kTileCells> cells;
-    std::array<std::uint8_t, kTileCells> labels{};  ///< the hazard classifier's per-cell label (hazards.h)
+    std::array<std::uint8_t, kTileCells> labels{};  ///< the hazard classifier's per-cell label (hazards.h); during a hazard pass its top bit marks a cell filled (terrain_map.cc, kFilledBit)
     std::uint32_t version = 0;  ///< bumped whenever a cell of the tile changes
     std::uint32_t labelled_version = ~0u;  ///< the version its labels were computed at
     int labelled_count = 0;                ///< cells whose label is not kNone

@@ -6,14 +6,6 @@
 
 namespace proxsim {
 
-namespace {
-
-std::uint64_t Key(CellIndex c) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.ix)) << 32) | static_cast<std::uint32_t>(c.iy);
-}
-
-}  // namespace
-
 namespace hazards_internal {
 
 Hazard Classify(const std::vector<CellIndex>& cells, const std::vector<CellSurface>& surfaces, CellLabel label,
@@ -102,8 +94,8 @@ std::vector<Hazard> FindHazards(const std::vector<CellIndex>& seeds,
   // the visited cells: a hash set, for storages without marks of their own
   struct VisitedSet {
     std::unordered_set<std::uint64_t> keys;
-    bool Test(CellIndex c) const { return keys.contains(Key(c)); }
-    void Mark(CellIndex c) { keys.insert(Key(c)); }
+    bool Test(CellIndex c) const { return keys.contains(TileKey(c.ix, c.iy)); }  // (a pair's key: here a cell's)
+    void Mark(CellIndex c) { keys.insert(TileKey(c.ix, c.iy)); }
   } visited;
   visited.keys.reserve(2 * seeds.size());  // (no rehash as the fill grows: the same cells, found faster)
   std::vector<Hazard> hazards;

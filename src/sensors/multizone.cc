@@ -200,29 +200,31 @@ struct PartTables {
 };
 
 const std::vector<PartTables>& AllPartTables() {
+  // VL53L5CX, DS13754 Rev 5, accuracy Table 19 (201-4000 mm): 4x4 white 4 %
+  // dark / 7 % at 5 klux, grey 5 % / 8 %; 8x8 white 5 % / 8 %, grey 5 % / 11 %
+  static const Rows vl53l5cx_sigma_4x4 = {{0.88, 0, 0.04}, {0.17, 0, 0.05}, {0.88, 5, 0.07}, {0.17, 5, 0.08}};
+  static const Rows vl53l5cx_sigma_8x8 = {{0.88, 0, 0.05}, {0.17, 0, 0.05}, {0.88, 5, 0.08}, {0.17, 5, 0.11}};
   static const std::vector<PartTables> tables = {
-      // VL53L5CX, DS13754 Rev 5: Table 17 (4x4, 30 Hz), Table 18 (8x8, 15 Hz);
-      // accuracy Table 19 (201-4000 mm): 4x4 white 4 % dark / 7 % at 5 klux,
-      // grey 5 % / 8 %; 8x8 white 5 % / 8 %, grey 5 % / 11 %
+      // VL53L5CX, DS13754 Rev 5: Table 17 (4x4, 30 Hz), Table 18 (8x8, 15 Hz)
       {"vl53l5cx", 4,
        {{0.88, 0, 4.0}, {0.17, 0, 2.4}, {0.88, 5, 1.7}, {0.17, 5, 1.0}},
        {{0.88, 0, 4.0}, {0.17, 0, 2.2}, {0.88, 5, 1.4}, {0.17, 5, 0.95}},
-       {{0.88, 0, 0.04}, {0.17, 0, 0.05}, {0.88, 5, 0.07}, {0.17, 5, 0.08}}},
+       vl53l5cx_sigma_4x4},
       {"vl53l5cx", 8,
        {{0.88, 0, 3.5}, {0.17, 0, 1.3}, {0.88, 5, 1.1}, {0.17, 5, 0.8}},
        {{0.88, 0, 3.1}, {0.17, 0, 1.1}, {0.88, 5, 1.0}, {0.17, 5, 0.65}},
-       {{0.88, 0, 0.05}, {0.17, 0, 0.05}, {0.88, 5, 0.08}, {0.17, 5, 0.11}}},
+       vl53l5cx_sigma_8x8},
       // VL53L7CX, DS13865 Rev 6: Table 17 (4x4, 30 Hz), Table 18 (8x8, 15 Hz);
       // no accuracy table found: the VL53L5CX's (the part it is pin-to-pin
       // and driver compatible with), an assumption
       {"vl53l7cx", 4,
        {{0.88, 0, 3.5}, {0.54, 0, 2.8}, {0.17, 0, 1.4}, {0.88, 5, 0.65}, {0.54, 5, 0.6}, {0.17, 5, 0.55}},
        {{0.88, 0, 3.5}, {0.54, 0, 2.8}, {0.17, 0, 1.4}, {0.88, 5, 0.6}, {0.54, 5, 0.6}, {0.17, 5, 0.5}},
-       {{0.88, 0, 0.04}, {0.17, 0, 0.05}, {0.88, 5, 0.07}, {0.17, 5, 0.08}}},
+       vl53l5cx_sigma_4x4},
       {"vl53l7cx", 8,
        {{0.88, 0, 2.0}, {0.54, 0, 1.6}, {0.17, 0, 0.8}, {0.88, 5, 0.5}, {0.54, 5, 0.4}, {0.17, 5, 0.35}},
        {{0.88, 0, 1.9}, {0.54, 0, 1.6}, {0.17, 0, 0.75}, {0.88, 5, 0.5}, {0.54, 5, 0.4}, {0.17, 5, 0.25}},
-       {{0.88, 0, 0.05}, {0.17, 0, 0.05}, {0.88, 5, 0.08}, {0.17, 5, 0.11}}},
+       vl53l5cx_sigma_8x8},
       // VL53L8CX, DS14161 Rev 2: Table 16 (4x4, 30 Hz), Table 17 (8x8, 15 Hz);
       // accuracy Table 18 (200-4000 mm): 4x4 white 3 / 4 %, grey 54 % 4 / 6 %,
       // grey 17 % 4 / 7 %; 8x8 white 5 / 5 %, grey 54 % 5 / 6 %, grey 17 % 5 / 8 %
@@ -300,7 +302,10 @@ double ZoneSilenceRange_m(const SensorSpec& spec, int zone) {
 double MultizoneMaxRate_hz(const SensorSpec& spec) {
   const MultizonePart* part = FindMultizonePart(spec.part);
   if (part == nullptr || !spec.zones) return 0.0;
-  return spec.zones->nx == 4 ? part->max_rate_4x4_hz : part->max_rate_8x8_hz;
+  const ZoneSpec& z = *spec.zones;
+  if (z.nx == 4 && z.ny == 4) return part->max_rate_4x4_hz;
+  if (z.nx == 8 && z.ny == 8) return part->max_rate_8x8_hz;
+  return 0.0;  // a grid the part does not have: refused as such (sensor_spec.cc), with no rate to hold it to
 }
 
 }  // namespace proxsim

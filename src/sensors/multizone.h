@@ -122,7 +122,8 @@ double ZoneMaxRange_m(const SensorSpec& spec, double corner_weight, double refle
 /// target its tables hold (SilenceRange_m without a corner table).
 double ZoneSilenceRange_m(const SensorSpec& spec, int zone);
 
-/// The fastest ranging rate of the sensor's part at its resolution, Hz (0: no limit).
+/// The fastest ranging rate of the sensor's part at its resolution, Hz (0: no
+/// limit, or a resolution the part does not have).
 double MultizoneMaxRate_hz(const SensorSpec& spec);
 
 }  // namespace proxsim

@@ -1,7 +1,6 @@
 #include "sim/sensor_reader.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -98,7 +97,6 @@ void SensorReader::FindNextPings(std::int64_t sample) {
 void SensorReader::PrepareCrosstalk(std::int64_t sample) {
   FindNextPings(sample);
   echo_sources_.resize(scenario_.sensors.size());
-  echo_sources_found_.assign(scenario_.sensors.size(), 0);
   nearest_source_m_.resize(scenario_.sensors.size());
   cross_paths_.resize(scenario_.sensors.size());
   sonar_listens_now_ = std::any_of(sonars_.begin(), sonars_.end(), [&](std::size_t sonar) {
@@ -121,7 +119,6 @@ void SensorReader::FindEchoSources(std::size_t sensor, const SampleFrame& frame)
                       std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
   EchoSourcesInto(scenario_.sensors[sensor].spec, ping, echo_sources_[sensor]);
   nearest_source_m_[sensor] = NearestEchoSource_m(echo_sources_[sensor]);
-  echo_sources_found_[sensor] = 1;
 }
 
 void SensorReader::ApplyCrosstalk(SampleFrame& frame, ParallelRunner& runner) {
@@ -134,11 +131,11 @@ void SensorReader::ApplyCrosstalk(SampleFrame& frame, ParallelRunner& runner) {
   }
   // each listener reads the emitters' sources and writes only its own reading
   runner.For(sonars_.size(), kListenersPerTask, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) ListenForCrosstalk(sonars_[k], frame, t_s);
+    for (std::size_t k = begin; k < end; ++k) ListenForCrosstalk(sonars_[k], frame);
   });
 }
 
-void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame, double t_s) {
+void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame) {
   const SensorConfig& config = scenario_.sensors[listener];
   SensorSample& out = frame.sensors[listener];
   if (!config.crosstalk || out.reading.status == ReadingStatus::kNotSampled) return;
@@ -157,8 +154,8 @@ void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame, 
     if (emitter == listener) continue;
     const PingOffsets offsets_s = PingOffsets_s(emitter, window_s);
     if (offsets_s.count == 0) continue;
-    // (FindEchoSources found them: this listener listens now and the ping is within its window)
-    assert(echo_sources_found_[emitter] && "an emitter's echo sources are found when a listener may hear it");
+    // (FindEchoSources found this emitter's sources at this sample: this
+    // listener listens now, and the ping lies within its window, so within the longest)
     // no path of this ping can arrive in the window before the first echo
     // heard so far: its paths need not be found (an exact cut: each path is
     // at least the shortest bound, and arrives no sooner)

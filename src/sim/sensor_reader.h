@@ -17,7 +17,6 @@
 #pragma once
 
 #include <array>
-
 #include <vector>
 
 #include "core/parallel.h"
@@ -63,7 +62,7 @@ class SensorReader {
   // ping; listeners are independent, so they are shared out over the threads
   void ApplyCrosstalk(SampleFrame& frame, ParallelRunner& runner);
   // one listener's reading (ApplyCrosstalk)
-  void ListenForCrosstalk(std::size_t listener, SampleFrame& frame, double t_s);
+  void ListenForCrosstalk(std::size_t listener, SampleFrame& frame);
   // the emitter's pings within the listener's window around its ping at this
   // sample, s from it: its last ping and its next one, at most (no heap: it is
   // asked for every pair of sonars every sample)
@@ -109,7 +108,6 @@ class SensorReader {
   // found in the emitter's read task when a listener may need them (buffers
   // kept across samples; one slot per sensor, so tasks never share one)
   std::vector<std::vector<EchoSource>> echo_sources_;
-  std::vector<char> echo_sources_found_;                  // by sensor (char: written from several threads)
   std::vector<std::vector<CrossEchoPath>> cross_paths_;  // by listener: one pair's paths, the buffer reused
   std::vector<double> nearest_source_m_;     // each emitter's NearestEchoSource_m, found with its sources
   bool sonar_listens_now_ = false;           // PrepareCrosstalk: some sonar with crosstalk reads at this sample

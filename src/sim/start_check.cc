@@ -125,7 +125,7 @@ std::vector<ObjectOverlap> Overlaps(const Scenario& scenario, const World& world
       hi = hi.cwiseMax(p_W.back());
     }
   }
-  // (a robot clear of every solid's bounding sphere casts none of its ~10 000 rays)
+  // (a robot whose box clears every solid's box casts none of its ~10 000 rays)
   if (p_W.empty() || !MayBeInsideAnObject(scenario, lo, hi)) return {};
   std::vector<Ray> rays;
   for (const Vec3& p : p_W) {
