@@ -831,10 +831,10 @@ TEST(RayCasterTest, TriangleCountCountsBoxesAndMeshesOnly) {
 namespace proxsim {
 namespace {
 
-// The robot's scene is committed only when a ray may meet one of its bodies
-// (ray_caster_internal.h): however many moves no ray came near, the first
-// ray that does sees the body where it is now, never where it was committed
-// last, and a ray through a place it left sees what lies behind.
+// A robot body is cast into, its ray moved into the body's frame, only when
+// the ray may meet its box (ray_caster_internal.h): however many moves no ray
+// came near, the first ray that does sees the body where it is now, never
+// where a ray last met it, and a ray through a place it left sees what lies behind.
 TEST(RayCasterTest, RobotMovedWhileNoRayCameNearIsSeenWhereItIs) {
   RayCaster caster;
   caster.AddBody({BodyShape{Box{Vec3(0.2, 40, 4)}, Translation(10, 0, 0), 0}}, BodyKind::kWorld);
