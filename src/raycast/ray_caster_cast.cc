@@ -203,67 +203,71 @@ RobotCandidateList RobotCandidates(std::span<const Ray> rays, const std::vector<
 /// into the body's frame B (the distance along it is the same in both
 /// frames: a rigid motion), and keeps the hits nearer than each lane's
 /// nearest so far (the packet's tfar, lowered here). Only the lanes whose
-/// segment up to that nearest hit passes through the body's box (Body::box_lo_B,
-/// box_hi_B: the slab test, the segment lengthened by the box's slack) are cast.
+/// segment up to that nearest hit passes through the body's box
+/// (Body::box_lo_B, box_hi_B: the slab test, the segment lengthened by the
+/// box's slack, which covers the float sums' rounding) are cast, and nothing
+/// when no lane does.
 ///
 /// Why no top-level scene of the robot's instances: the robot moves every
 /// sample, and committing that scene (~50 000 instructions for the biped's
-/// 15 links, docs/performance.md) cost more than every cast into it of an
-/// outcome study's step; a ray moved into B here, in double precision, meets
-/// the body's triangles and shapes as Embree's instance would have moved it
-/// (in float: the two differ in the last bits of a distance on the robot).
+/// 15 links) cost more than every cast into it of an outcome study's step
+/// (docs/performance.md). A ray moved into B here meets the body's triangles
+/// and shapes as Embree's instance moved it, in float, but by sums in another
+/// order: the two differ in the last bits of a distance on the robot. Every
+/// lane takes the same sums, so a lane's answer does not depend on its packet.
 void CastIntoRobotBody(const Body& body, const bool sees[kPacketRays], const RTCIntersectContext& context,
                        RTCRayHit8& packet, Hit* hits, std::size_t n) {
-  alignas(32) int valid[kPacketRays];
+  // the lanes moved into B and tested four at a time, in float as Embree's
+  // instances moved them (SSE: the same sums on every x86-64 CPU)
+  const Eigen::Matrix3f R_BW = body.X_BW.linear().cast<float>();
+  const Vec3f p_BW = body.X_BW.translation().cast<float>();
+  const Vec3f lo_B = body.box_lo_B.cast<float>(), hi_B = body.box_hi_B.cast<float>();
   RTCRayHit8 local;
+  alignas(32) int valid[kPacketRays];
   bool any = false;
-  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
-    valid[lane] = 0;
-    Vec3 origin_B = Vec3::Zero(), direction_B = Vec3::UnitX();  // inactive lanes: any finite ray
-    if (sees[lane]) {
-      const Vec3 origin_W(packet.ray.org_x[lane], packet.ray.org_y[lane], packet.ray.org_z[lane]);
-      const Vec3 direction_W(packet.ray.dir_x[lane], packet.ray.dir_y[lane], packet.ray.dir_z[lane]);
-      origin_B = body.X_BW * origin_W;
-      direction_B = body.X_BW.linear() * direction_W;
-      const double length = direction_B.norm();
-      const double reach =
-          static_cast<double>(packet.ray.tfar[lane]) * (1 + 1e-6) + raycast_internal::kRobotBoxSlack_m / length;
-      double t_in = 0, t_out = reach;
-      for (int k = 0; k < 3 && t_in <= t_out; ++k) {
-        if (direction_B[k] == 0) {
-          if (origin_B[k] < body.box_lo_B[k] || origin_B[k] > body.box_hi_B[k]) t_in = reach + 1;  // parallel, outside
-          continue;
-        }
-        double t0 = (body.box_lo_B[k] - origin_B[k]) / direction_B[k], t1 = (body.box_hi_B[k] - origin_B[k]) / direction_B[k];
-        if (t0 > t1) std::swap(t0, t1);
-        t_in = std::max(t_in, t0);
-        t_out = std::min(t_out, t1);
-      }
-      // (a NaN in the comparisons is a meeting: the cast decides)
-      if (!(t_in > t_out)) {
-        valid[lane] = -1;
-        any = true;
-      } else {
-        origin_B = Vec3::Zero();
-        direction_B = Vec3::UnitX();
-      }
+  const __m128 slack = _mm_set1_ps(static_cast<float>(raycast_internal::kRobotBoxSlack_m));
+  const __m128 widen = _mm_set1_ps(1.0f + 1e-6f);
+  for (std::size_t l = 0; l < kPacketRays; l += 4) {
+    // (inactive lanes hold a finite ray: the sums are harmless)
+    const __m128 o[3] = {_mm_loadu_ps(&packet.ray.org_x[l]), _mm_loadu_ps(&packet.ray.org_y[l]), _mm_loadu_ps(&packet.ray.org_z[l])};
+    const __m128 d[3] = {_mm_loadu_ps(&packet.ray.dir_x[l]), _mm_loadu_ps(&packet.ray.dir_y[l]), _mm_loadu_ps(&packet.ray.dir_z[l])};
+    const __m128 length = _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2])));
+    const __m128 tfar = _mm_loadu_ps(&packet.ray.tfar[l]);
+    __m128 t_in = _mm_setzero_ps();
+    __m128 t_out = _mm_add_ps(_mm_mul_ps(tfar, widen), _mm_div_ps(slack, length));
+    float* const org_B[3] = {&local.ray.org_x[l], &local.ray.org_y[l], &local.ray.org_z[l]};
+    float* const dir_B[3] = {&local.ray.dir_x[l], &local.ray.dir_y[l], &local.ray.dir_z[l]};
+    for (int k = 0; k < 3; ++k) {
+      const __m128 r0 = _mm_set1_ps(R_BW(k, 0)), r1 = _mm_set1_ps(R_BW(k, 1)), r2 = _mm_set1_ps(R_BW(k, 2));
+      const __m128 o_k = _mm_add_ps(
+          _mm_add_ps(_mm_add_ps(_mm_mul_ps(r0, o[0]), _mm_mul_ps(r1, o[1])), _mm_mul_ps(r2, o[2])), _mm_set1_ps(p_BW[k]));
+      const __m128 d_k = _mm_add_ps(_mm_add_ps(_mm_mul_ps(r0, d[0]), _mm_mul_ps(r1, d[1])), _mm_mul_ps(r2, d[2]));
+      _mm_storeu_ps(org_B[k], o_k);
+      _mm_storeu_ps(dir_B[k], d_k);
+      // the slab test: a direction component of 0 gives ±inf, or NaN at a face (a meeting, below)
+      const __m128 t0 = _mm_div_ps(_mm_sub_ps(_mm_set1_ps(lo_B[k]), o_k), d_k);
+      const __m128 t1 = _mm_div_ps(_mm_sub_ps(_mm_set1_ps(hi_B[k]), o_k), d_k);
+      t_in = _mm_max_ps(t_in, _mm_min_ps(t0, t1));
+      t_out = _mm_min_ps(t_out, _mm_max_ps(t0, t1));
     }
-    local.ray.org_x[lane] = static_cast<float>(origin_B.x());
-    local.ray.org_y[lane] = static_cast<float>(origin_B.y());
-    local.ray.org_z[lane] = static_cast<float>(origin_B.z());
+    // not t_in > t_out: a meeting (true also for a NaN: the cast decides)
+    const int meets = _mm_movemask_ps(_mm_cmpngt_ps(t_in, t_out));
+    for (std::size_t lane = l; lane < l + 4; ++lane) {
+      valid[lane] = sees[lane] && (meets >> (lane - l) & 1) ? -1 : 0;
+      any = any || valid[lane];
+    }
+  }
+  if (!any) return;
+  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
     local.ray.tnear[lane] = 0.0f;
-    local.ray.dir_x[lane] = static_cast<float>(direction_B.x());
-    local.ray.dir_y[lane] = static_cast<float>(direction_B.y());
-    local.ray.dir_z[lane] = static_cast<float>(direction_B.z());
     local.ray.time[lane] = 0.0f;
-    local.ray.tfar[lane] = valid[lane] ? packet.ray.tfar[lane] : 1.0f;
+    local.ray.tfar[lane] = packet.ray.tfar[lane];
     local.ray.mask[lane] = 0xFFFFFFFFu;
     local.ray.id[lane] = 0;
     local.ray.flags[lane] = 0;
     local.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
     local.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
   }
-  if (!any) return;
   RTCIntersectContext body_context = context;
   rtcIntersect8(valid, body.scene, &body_context, &local);
   for (std::size_t lane = 0; lane < n; ++lane) {
@@ -355,7 +359,8 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
       any = any || sees[lane];
     }
     if (any) {
-      for (const int b : scenes.robot_candidates) CastIntoRobotBody(*bodies[static_cast<std::size_t>(b)], sees, context, packet, hits, n);
+      for (const int b : scenes.robot_candidates)
+        CastIntoRobotBody(*bodies[static_cast<std::size_t>(b)], sees, context, packet, hits, n);
     }
   }
 }
