@@ -48,8 +48,8 @@ void BM_MoveRobotAndCommit(benchmark::State& state) {
   for (auto _ : state) {
     robot.Place(locomotion->Advance(t_s += 0.001));
     caster.Commit();
-    // the robot's scene is committed by the first ray that may meet it
-    // (ray_caster_internal.h): one ray down onto the pelvis
+    // one ray down onto the pelvis, which is cast into the pelvis's own scene
+    // (the robot has no top-level scene to commit: ray_caster_internal.h)
     const proxsim::Vec3 p_W = robot.X_WL(robot.model().root_link()).translation() + proxsim::Vec3(0, 0, 1);
     const proxsim::Ray ray{.origin_W = p_W.cast<float>(), .direction_W = -proxsim::Vec3f::UnitZ(), .max_range_m = 2.0f};
     caster.Cast({&ray, 1}, hit);

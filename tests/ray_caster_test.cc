@@ -831,10 +831,10 @@ TEST(RayCasterTest, TriangleCountCountsBoxesAndMeshesOnly) {
 namespace proxsim {
 namespace {
 
-// The robot's scene is committed only when a ray may meet one of its bodies
-// (ray_caster_internal.h): however many moves no ray came near, the first
-// ray that does sees the body where it is now, never where it was committed
-// last, and a ray through a place it left sees what lies behind.
+// A robot body is cast into, its ray moved into the body's frame, only when
+// the ray may meet its box (ray_caster_internal.h): however many moves no ray
+// came near, the first ray that does sees the body where it is now, never
+// where a ray last met it, and a ray through a place it left sees what lies behind.
 TEST(RayCasterTest, RobotMovedWhileNoRayCameNearIsSeenWhereItIs) {
   RayCaster caster;
   caster.AddBody({BodyShape{Box{Vec3(0.2, 40, 4)}, Translation(10, 0, 0), 0}}, BodyKind::kWorld);
@@ -993,6 +993,90 @@ TEST(RayCasterTest, BeamsFromOnePointSeeTheRobotAsWhenCastRayByRay) {
     }
   }
   EXPECT_GT(robot_hits, 100);  // the robot is met, not only missed
+}
+
+}  // namespace
+}  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// A robot body is cast into on its own, each ray moved into the body's frame
+// (ray_caster_cast.cc, CastIntoRobotBody): a turned box on a turned, moved
+// body is met where the closed form (the slab test in the box's frame) puts
+// it, with its face's normal; a ray along a face 2 mm outside it misses it,
+// 2 mm inside it meets the face it enters.
+TEST(RayCasterTest, ATurnedRobotBodyIsMetWhereTheClosedFormPutsIt) {
+  RayCaster caster;
+  caster.AddBody({BodyShape{Box{Vec3(0.2, 40, 4)}, Translation(6, 0, 0), 0}}, BodyKind::kWorld);
+  const Vec3 size_m(0.12, 0.3, 0.5);
+  const Pose X_BO = XyzRpyDeg(0.02, -0.05, 0.1, 10, 0, 35);
+  const int body = caster.AddBody({BodyShape{Box{size_m}, X_BO, 1}}, BodyKind::kRobot, Pose::Identity());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int met = 0, beside = 0;
+  for (const Pose& X_WB : {XyzRpyDeg(1.2, 0.3, 0.4, 20, -30, 60), XyzRpyDeg(-0.7, 1.1, -0.2, -45, 15, 170)}) {
+    caster.SetBodyPose(body, X_WB);
+    caster.Commit();
+    const Pose X_WO = X_WB * X_BO;
+    const Pose X_OW = X_WO.inverse();
+    // the closed form: the slab test in O of the ray as cast (its float origin and direction)
+    const auto expect_met_as_closed_form = [&](const Ray& ray, const Hit& hit, const char* what, int k) {
+      const Vec3 o_O = X_OW * ray.origin_W.cast<double>(), d_O = X_OW.linear() * ray.direction_W.cast<double>();
+      double t_in = 0, t_out = ray.max_range_m;
+      int in_axis = -1;
+      for (int a = 0; a < 3; ++a) {
+        double t0 = (-0.5 * size_m[a] - o_O[a]) / d_O[a], t1 = (0.5 * size_m[a] - o_O[a]) / d_O[a];
+        if (t0 > t1) std::swap(t0, t1);
+        if (t0 > t_in) {
+          t_in = t0;
+          in_axis = a;
+        }
+        t_out = std::min(t_out, t1);
+      }
+      ASSERT_TRUE(t_in <= t_out && in_axis >= 0) << what << " " << k << ": the closed form misses";
+      ASSERT_EQ(hit.object_id, 1) << what << " " << k;
+      // float sums err by ~1e-7 m across; along the ray that grows as 1/cos of the incidence
+      const double cos_incidence = std::abs(d_O[in_axis]) / d_O.norm();
+      EXPECT_NEAR(hit.distance_m, t_in, 1e-6 + 1e-6 / cos_incidence) << what << " " << k;
+      Vec3 normal_O = Vec3::Zero();
+      normal_O[in_axis] = d_O[in_axis] > 0 ? -1 : 1;
+      ExpectNormalNear(hit.normal_W, X_WO.linear() * normal_O, 1e-4);
+      ++met;
+    };
+    for (int k = 0; k < 200; ++k) {
+      // a ray from 1-3 m away towards a point of a face
+      Vec3 target_O(unit(rng) * 0.45 * size_m.x(), unit(rng) * 0.45 * size_m.y(), unit(rng) * 0.45 * size_m.z());
+      const int face = k % 3;
+      target_O[face] = (unit(rng) > 0 ? 1 : -1) * 0.5 * size_m[face];
+      const Vec3 from_O = target_O + (2 + unit(rng)) * (target_O.normalized() + 0.3 * Vec3(unit(rng), unit(rng), unit(rng)));
+      const Vec3 origin_W = X_WO * from_O;
+      const Ray ray = MakeRay(origin_W, X_WO * target_O - origin_W, 5.0);
+      expect_met_as_closed_form(ray, CastOne(caster, ray), "ray", k);
+    }
+    for (int k = 0; k < 60; ++k) {
+      // along a face, from 1 m before the box, 2 mm outside it (a miss) and 2 mm inside (a hit)
+      const int face = k % 3, along = (k + 1) % 3, across = (k + 2) % 3;
+      const double sign = k % 2 ? 1.0 : -1.0;
+      for (const double off_m : {0.002, -0.002}) {
+        Vec3 from_O = Vec3::Zero();
+        from_O[face] = sign * (0.5 * size_m[face] + off_m);
+        from_O[along] = -0.5 * size_m[along] - 1.0;
+        from_O[across] = 0.4 * unit(rng) * size_m[across];
+        const Vec3 origin_W = X_WO * from_O;
+        const Ray ray = MakeRay(origin_W, X_WO.linear().col(along), 5.0);
+        const Hit hit = CastOne(caster, ray);
+        if (off_m > 0) {
+          EXPECT_NE(hit.object_id, 1) << "ray " << k << " passes 2 mm beside the box";
+          ++beside;
+        } else {
+          expect_met_as_closed_form(ray, hit, "grazing ray", k);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(met, 2 * (200 + 60));
+  EXPECT_EQ(beside, 2 * 60);
 }
 
 }  // namespace

@@ -122,25 +122,22 @@ RayCaster::RayCaster() : impl_(std::make_unique<Impl>()) {
                              ": " + ErrorCodeName(rtcGetDeviceError(nullptr)));
   }
   rtcSetDeviceErrorFunction(impl_->device, &Impl::OnDeviceError, impl_.get());
-  // rebuilt every sample: medium quality, not dynamic (for a few instances
-  // Embree's low-quality two-level builder costs 3× more: ~60 µs against ~20 µs
-  // per commit, proxsim_microbench BM_MoveRobotAndCommit)
+  // rebuilt when their objects move: medium quality, not dynamic (for a few
+  // instances Embree's low-quality two-level builder cost 3× more, ~60 µs
+  // against ~20 µs a commit, when the robot's links were instances too)
   impl_->scene_world = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
-  impl_->scene_robot = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
   impl_->scene_moving = impl_->NewScene(RTC_BUILD_QUALITY_MEDIUM);
   Commit();  // an empty caster answers every ray with a miss
 }
 
 RayCaster::~RayCaster() {
   for (auto& body : impl_->bodies) {
-    if (body->instance_robot) rtcReleaseGeometry(body->instance_robot);
     if (body->instance_world) rtcReleaseGeometry(body->instance_world);
     if (body->instance_moving) rtcReleaseGeometry(body->instance_moving);
     for (auto& [ids, scene] : body->query_scenes) rtcReleaseScene(scene);
     rtcReleaseScene(body->scene);
   }
   rtcReleaseScene(impl_->scene_world);
-  rtcReleaseScene(impl_->scene_robot);
   rtcReleaseScene(impl_->scene_moving);
   rtcReleaseDevice(impl_->device);
 }
@@ -264,11 +261,9 @@ int RayCaster::AddBody(std::vector<BodyShape> shapes, BodyKind kind, const Pose&
     impl.has_moving = true;
   } else {
     body.robot_slot = static_cast<int>(impl.robot_bodies.size());
-    body.instance_robot = impl.NewInstance(impl.scene_robot, body, static_cast<unsigned int>(body.robot_slot));
     impl.robot_bodies.push_back(body_index);
     impl.robot_spheres_W.emplace_back(body.bound_center_W.x(), body.bound_center_W.y(), body.bound_center_W.z(),
                                       body.bound_radius_m + raycast_internal::kRobotBoxSlack_m);
-    impl.robot_dirty = true;
     impl.has_robot = true;
   }
   impl.committed = false;
@@ -286,20 +281,17 @@ void RayCaster::SetBodyPose(int body_index, const Pose& X_WB) {
   if (body.moving_slot >= 0) impl_->moving_spheres_W[body.moving_slot].head<3>() = body.bound_center_W;
   if (body.robot_slot >= 0) impl_->robot_spheres_W[body.robot_slot].head<3>() = body.bound_center_W;
   body.X_BW = X_WB.inverse();
+  impl_->committed = false;
+  // a robot body has no instance: rays are moved into its frame as they are cast (ray_caster_cast.cc)
+  if (body.kind == BodyKind::kRobot) return;
   // the instance's transform waits for the commit of its scene: a caster
   // asked only for distances (World's moving caster), or moving objects no
   // ray comes near, never pay for it
   if (!body.instance_stale) {
     body.instance_stale = true;
-    (body.kind == BodyKind::kMoving  ? impl_->stale_moving
-     : body.kind == BodyKind::kRobot ? impl_->stale_robot
-                                     : impl_->stale_fixed)
-        .push_back(body_index);
+    (body.kind == BodyKind::kMoving ? impl_->stale_moving : impl_->stale_fixed).push_back(body_index);
   }
-  impl_->committed = false;
-  (body.kind == BodyKind::kWorld ? impl_->world_dirty
-   : body.kind == BodyKind::kMoving ? impl_->moving_dirty
-                                     : impl_->robot_dirty) = true;
+  (body.kind == BodyKind::kWorld ? impl_->world_dirty : impl_->moving_dirty) = true;
 }
 
 void RayCaster::Impl::PushTransforms(std::vector<int>& stale) {
@@ -307,7 +299,7 @@ void RayCaster::Impl::PushTransforms(std::vector<int>& stale) {
     Body& body = *bodies[b];
     float xfm[12];
     ToColumnMajor3x4(body.X_WB, xfm);
-    for (RTCGeometry instance : {body.instance_robot, body.instance_world, body.instance_moving}) {
+    for (RTCGeometry instance : {body.instance_world, body.instance_moving}) {
       if (!instance) continue;
       rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
       rtcCommitGeometry(instance);
@@ -341,11 +333,9 @@ void RayCaster::Commit() {
   }
   impl.PushTransforms(impl.stale_fixed);
   if (impl.world_dirty) impl.commit_arena.execute([&impl] { rtcCommitScene(impl.scene_world); });
-  // the moving objects' and the robot's scenes wait for a ray that may meet
-  // them (CommitMovingIfMoved, CommitRobotIfMoved)
+  // the moving objects' scene waits for a ray that may meet them (CommitMovingIfMoved)
   if (impl.moving_dirty) impl.moving_uncommitted.store(true, std::memory_order_release);
-  if (impl.robot_dirty) impl.robot_uncommitted.store(true, std::memory_order_release);
-  impl.robot_dirty = impl.world_dirty = impl.moving_dirty = false;
+  impl.world_dirty = impl.moving_dirty = false;
   impl_->committed = true;
   impl_->ThrowIfDeviceError("Commit");
 }
@@ -362,10 +352,6 @@ void RayCaster::Impl::CommitIfMoved(std::atomic<bool>& uncommitted, std::mutex& 
 
 void RayCaster::Impl::CommitMovingIfMoved() {
   CommitIfMoved(moving_uncommitted, moving_commit_mutex, stale_moving, scene_moving);
-}
-
-void RayCaster::Impl::CommitRobotIfMoved() {
-  CommitIfMoved(robot_uncommitted, robot_commit_mutex, stale_robot, scene_robot);
 }
 
 std::size_t RayCaster::triangle_count() const { return impl_->triangle_count; }

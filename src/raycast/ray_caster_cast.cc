@@ -1,5 +1,5 @@
 // Casting a batch of rays: packets of consecutive rays, each into the world
-// and then, for the rays that see it, into the robot up to the world hit;
+// and then, for the rays that see it, into each robot body up to the world hit;
 // the hit mapped back to its object, with its normal in W. Large batches are
 // shared out over the threads on packet boundaries.
 #include "raycast/ray_caster_internal.h"
@@ -50,14 +50,10 @@ constexpr std::size_t kPacketRays = 8;
 struct CastScenes {
   RTCScene world = nullptr;      ///< the world's top-level scene, or the world body's own (direct)
   int direct_body = -1;          ///< the body of `world` when it is direct, else -1 (hits carry the instance)
-  RTCScene robot = nullptr;      ///< the robot's top-level scene; null when there is no robot
-  std::function<void()> commit_robot;  ///< commits `robot` if it moved (before a cast into it)
-  bool test_robot_boxes = false;       ///< cast into `robot` only the packets with a ray that may meet one of its boxes
-  std::span<const int> robot_candidates;  ///< the robot bodies the batch may meet (RobotCandidates): their boxes are tested
+  std::span<const int> robot_candidates;  ///< the robot bodies the batch may meet (RobotCandidates), each cast on its own
   RTCScene moving = nullptr;     ///< the moving objects' top-level scene; null when there are none
   // each scene's bodies by instance ID
   const std::vector<int>* world_bodies = nullptr;
-  const std::vector<int>* robot_bodies = nullptr;
   const std::vector<int>* moving_bodies = nullptr;
   const std::vector<Eigen::Vector4d>* moving_spheres_W = nullptr;  ///< the moving bodies' bounding spheres
   std::function<void()> commit_moving;  ///< commits `moving` if it moved (before a cast into it)
@@ -87,37 +83,6 @@ bool MayMeetSphere(const RTCRayHit8& packet, std::size_t lane, const std::vector
     const double t = std::clamp(to_centre.dot(direction) / dd, 0.0, reach);
     const double within_m = sphere.w() + kSphereSlack_m;
     if ((to_centre - t * direction).squaredNorm() <= within_m * within_m) return true;
-  }
-  return false;
-}
-
-/// Whether `lane`'s ray, up to its nearest hit so far (tfar), passes through
-/// the box of one of the robot's `robot_bodies` (in its body frame B: the
-/// slab test, a segment lengthened by the box's slack).
-bool MayMeetRobotBox(const RTCRayHit8& packet, std::size_t lane, std::span<const int> robot_bodies,
-                     const std::vector<std::unique_ptr<Body>>& bodies) {
-  const Vec3 origin_W(packet.ray.org_x[lane], packet.ray.org_y[lane], packet.ray.org_z[lane]);
-  const Vec3 direction_W(packet.ray.dir_x[lane], packet.ray.dir_y[lane], packet.ray.dir_z[lane]);
-  const double length = direction_W.norm();
-  if (!(length > 0)) return true;
-  const double reach = static_cast<double>(packet.ray.tfar[lane]) * (1 + 1e-6) + raycast_internal::kRobotBoxSlack_m / length;
-  for (const int b : robot_bodies) {
-    const Body& body = *bodies[static_cast<std::size_t>(b)];
-    const Vec3 origin_B = body.X_BW * origin_W;
-    const Vec3 direction_B = body.X_BW.linear() * direction_W;
-    double t_in = 0, t_out = reach;
-    for (int k = 0; k < 3 && t_in <= t_out; ++k) {
-      if (direction_B[k] == 0) {
-        if (origin_B[k] < body.box_lo_B[k] || origin_B[k] > body.box_hi_B[k]) t_in = reach + 1;  // parallel, outside
-        continue;
-      }
-      double t0 = (body.box_lo_B[k] - origin_B[k]) / direction_B[k], t1 = (body.box_hi_B[k] - origin_B[k]) / direction_B[k];
-      if (t0 > t1) std::swap(t0, t1);
-      t_in = std::max(t_in, t0);
-      t_out = std::min(t_out, t1);
-    }
-    // (a NaN in the comparisons is a meeting: the cast decides)
-    if (!(t_in > t_out)) return true;
   }
   return false;
 }
@@ -234,14 +199,92 @@ RobotCandidateList RobotCandidates(std::span<const Ray> rays, const std::vector<
   return out;
 }
 
-// With at most this many candidate bodies, every packet's rays take the box
-// test even after the robot's scene is committed: a few slab tests a ray cost
-// less than Embree's walk of the robot's scene (with the whole robot, the walk is cheaper).
-constexpr std::size_t kMaxBoxTestBodies = 3;
+/// Casts the lanes in `sees` into one robot body's own scene, each ray moved
+/// into the body's frame B (the distance along it is the same in both
+/// frames: a rigid motion), and keeps the hits nearer than each lane's
+/// nearest so far (the packet's tfar, lowered here). Only the lanes whose
+/// segment up to that nearest hit passes through the body's box
+/// (Body::box_lo_B, box_hi_B: the slab test, the segment lengthened by the
+/// box's slack, which covers the float sums' rounding) are cast, and nothing
+/// when no lane does.
+///
+/// Why no top-level scene of the robot's instances: the robot moves every
+/// sample, and committing that scene (~50 000 instructions for the biped's
+/// 15 links) cost more than every cast into it of an outcome study's step
+/// (docs/performance.md). A ray moved into B here meets the body's triangles
+/// and shapes as Embree's instance moved it, in float, but by sums in another
+/// order: the two differ in the last bits of a distance on the robot. Every
+/// lane takes the same sums, so a lane's answer does not depend on its packet.
+void CastIntoRobotBody(const Body& body, const bool sees[kPacketRays], const RTCIntersectContext& context,
+                       RTCRayHit8& packet, Hit* hits, std::size_t n) {
+  // the lanes moved into B and tested four at a time, in float as Embree's
+  // instances moved them (SSE: the same sums on every x86-64 CPU)
+  const Eigen::Matrix3f R_BW = body.X_BW.linear().cast<float>();
+  const Vec3f p_BW = body.X_BW.translation().cast<float>();
+  const Vec3f lo_B = body.box_lo_B.cast<float>(), hi_B = body.box_hi_B.cast<float>();
+  RTCRayHit8 local;
+  alignas(32) int valid[kPacketRays];
+  bool any = false;
+  const __m128 slack = _mm_set1_ps(static_cast<float>(raycast_internal::kRobotBoxSlack_m));
+  const __m128 widen = _mm_set1_ps(1.0f + 1e-6f);
+  for (std::size_t l = 0; l < kPacketRays; l += 4) {
+    // (inactive lanes hold a finite ray: the sums are harmless)
+    const __m128 o[3] = {_mm_loadu_ps(&packet.ray.org_x[l]), _mm_loadu_ps(&packet.ray.org_y[l]), _mm_loadu_ps(&packet.ray.org_z[l])};
+    const __m128 d[3] = {_mm_loadu_ps(&packet.ray.dir_x[l]), _mm_loadu_ps(&packet.ray.dir_y[l]), _mm_loadu_ps(&packet.ray.dir_z[l])};
+    const __m128 length = _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2])));
+    const __m128 tfar = _mm_loadu_ps(&packet.ray.tfar[l]);
+    __m128 t_in = _mm_setzero_ps();
+    __m128 t_out = _mm_add_ps(_mm_mul_ps(tfar, widen), _mm_div_ps(slack, length));
+    float* const org_B[3] = {&local.ray.org_x[l], &local.ray.org_y[l], &local.ray.org_z[l]};
+    float* const dir_B[3] = {&local.ray.dir_x[l], &local.ray.dir_y[l], &local.ray.dir_z[l]};
+    for (int k = 0; k < 3; ++k) {
+      const __m128 r0 = _mm_set1_ps(R_BW(k, 0)), r1 = _mm_set1_ps(R_BW(k, 1)), r2 = _mm_set1_ps(R_BW(k, 2));
+      const __m128 o_k = _mm_add_ps(
+          _mm_add_ps(_mm_add_ps(_mm_mul_ps(r0, o[0]), _mm_mul_ps(r1, o[1])), _mm_mul_ps(r2, o[2])), _mm_set1_ps(p_BW[k]));
+      const __m128 d_k = _mm_add_ps(_mm_add_ps(_mm_mul_ps(r0, d[0]), _mm_mul_ps(r1, d[1])), _mm_mul_ps(r2, d[2]));
+      _mm_storeu_ps(org_B[k], o_k);
+      _mm_storeu_ps(dir_B[k], d_k);
+      // the slab test: a direction component of 0 gives ±inf, or NaN at a face (a meeting, below)
+      const __m128 t0 = _mm_div_ps(_mm_sub_ps(_mm_set1_ps(lo_B[k]), o_k), d_k);
+      const __m128 t1 = _mm_div_ps(_mm_sub_ps(_mm_set1_ps(hi_B[k]), o_k), d_k);
+      t_in = _mm_max_ps(t_in, _mm_min_ps(t0, t1));
+      t_out = _mm_min_ps(t_out, _mm_max_ps(t0, t1));
+    }
+    // not t_in > t_out: a meeting (true also for a NaN: the cast decides)
+    const int meets = _mm_movemask_ps(_mm_cmpngt_ps(t_in, t_out));
+    for (std::size_t lane = l; lane < l + 4; ++lane) {
+      valid[lane] = sees[lane] && (meets >> (lane - l) & 1) ? -1 : 0;
+      any = any || valid[lane];
+    }
+  }
+  if (!any) return;
+  for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+    local.ray.tnear[lane] = 0.0f;
+    local.ray.time[lane] = 0.0f;
+    local.ray.tfar[lane] = packet.ray.tfar[lane];
+    local.ray.mask[lane] = 0xFFFFFFFFu;
+    local.ray.id[lane] = 0;
+    local.ray.flags[lane] = 0;
+    local.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    local.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext body_context = context;
+  rtcIntersect8(valid, body.scene, &body_context, &local);
+  for (std::size_t lane = 0; lane < n; ++lane) {
+    if (!valid[lane] || local.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
+    packet.ray.tfar[lane] = local.ray.tfar[lane];
+    const GeomRecord& geom = *body.geoms[local.hit.geomID[lane]];
+    const Vec3f normal_B = Vec3f(local.hit.Ng_x[lane], local.hit.Ng_y[lane], local.hit.Ng_z[lane]).normalized();
+    hits[lane].distance_m = local.ray.tfar[lane];
+    hits[lane].normal_W = body.R_WB * normal_B;
+    hits[lane].object_id = geom.object_id;
+  }
+}
 
 /// Casts rays[0..n) (n <= 8) as one packet: into the world, then the lanes
-/// that see the robot into the robot's scene up to their world hit (Embree
-/// only reports a nearer one). Each lane is intersected on its own, so a
+/// that may meet a moving object into theirs, then those that see the robot
+/// into each robot body they may meet, each up to its nearest hit so far
+/// (Embree only reports a nearer one). Each lane is intersected on its own, so a
 /// ray's answer does not depend on the other rays of its packet.
 void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body>>& bodies, const Ray* rays,
                 Hit* hits, std::size_t n) {
@@ -307,16 +350,17 @@ void CastPacket(const CastScenes& scenes, const std::vector<std::unique_ptr<Body
       cast_instances(scenes.moving, *scenes.moving_bodies, &Ray::see_moving);
     }
   }
-  // the robot's links only when a ray may meet one of their boxes (the
-  // robot's scene is then committed, if it moved since: ray_caster_internal.h)
-  if (scenes.robot && !scenes.robot_candidates.empty()) {
-    bool may_meet = !scenes.test_robot_boxes && scenes.robot_candidates.size() > kMaxBoxTestBodies;
-    for (std::size_t lane = 0; lane < n && !may_meet; ++lane)
-      may_meet = representable[lane] && rays[lane].see_robot &&
-                 MayMeetRobotBox(packet, lane, scenes.robot_candidates, bodies);
-    if (may_meet) {
-      scenes.commit_robot();
-      cast_instances(scenes.robot, *scenes.robot_bodies, &Ray::see_robot);
+  // then each robot body the batch may meet, on its own (CastIntoRobotBody)
+  if (!scenes.robot_candidates.empty()) {
+    bool sees[kPacketRays];
+    bool any = false;
+    for (std::size_t lane = 0; lane < kPacketRays; ++lane) {
+      sees[lane] = representable[lane] && rays[lane].see_robot;
+      any = any || sees[lane];
+    }
+    if (any) {
+      for (const int b : scenes.robot_candidates)
+        CastIntoRobotBody(*bodies[static_cast<std::size_t>(b)], sees, context, packet, hits, n);
     }
   }
 }
@@ -331,13 +375,9 @@ void RayCaster::Cast(std::span<const Ray> rays, std::span<Hit> hits) const {
   const RobotCandidateList robot_candidates = impl.has_robot ? RobotCandidates(rays, impl.robot_bodies, impl.robot_spheres_W) : RobotCandidateList{};
   const CastScenes scenes{.world = impl.world_direct ? impl.world_direct : impl.scene_world,
                           .direct_body = impl.world_direct ? impl.world_direct_body : -1,
-                          .robot = impl.has_robot ? impl.scene_robot : nullptr,
-                          .commit_robot = [impl = impl_.get()] { impl->CommitRobotIfMoved(); },
-                          .test_robot_boxes = impl.robot_uncommitted.load(std::memory_order_acquire),
                           .robot_candidates = robot_candidates.bodies(),
                           .moving = impl.has_moving ? impl.scene_moving : nullptr,
                           .world_bodies = &impl.world_bodies,
-                          .robot_bodies = &impl.robot_bodies,
                           .moving_bodies = &impl.moving_bodies,
                           .moving_spheres_W = &impl.moving_spheres_W,
                           .commit_moving = [impl = impl_.get()] { impl->CommitMovingIfMoved(); },

@@ -13,14 +13,18 @@
 //     spheres, cylinders and planes as user geometry intersected exactly
 //     (analytic_shapes.h), never tessellated;
 //   - two top-level scenes instance the bodies (one level of instancing):
-//     `world` the kWorld bodies, `robot` the kRobot ones and `moving` the
-//     kMoving ones. A body's instance ID is its index among its scene's
-//     bodies (Impl::world_bodies, robot_bodies, moving_bodies), so a hit maps
-//     back to (body, geometry) → object_id. A ray is cast into the world first — straight into the
-//     world body's own scene when there is one world body at the identity
-//     pose (the usual case), so the big static BVH is walked without an
-//     instance level — then, if it sees the robot, into `robot` up to the
-//     world hit: the nearer hit wins.
+//     `world` the kWorld bodies and `moving` the kMoving ones. A body's
+//     instance ID is its index among its scene's bodies (Impl::world_bodies,
+//     moving_bodies), so a hit maps back to (body, geometry) → object_id. A
+//     ray is cast into the world first — straight into the world body's own
+//     scene when there is one world body at the identity pose (the usual
+//     case), so the big static BVH is walked without an instance level —
+//     then, if it may meet one, into `moving`, then, if it sees the robot,
+//     into each kRobot body it may meet (Impl::robot_bodies): the ray moved
+//     into the body's frame and cast into the body's own scene, up to the
+//     nearest hit so far. The robot has no top-level scene: it moves every
+//     sample, and a commit of its instances cost more than the casts into it
+//     (ray_caster_cast.cc, CastIntoRobotBody).
 // Moving a body only rewrites its instance transforms; Commit() then rebuilds
 // the world's top-level scene if it changed, whose only primitives are the
 // instances. The moving objects' top-level scene is rebuilt only when a ray
@@ -28,16 +32,16 @@
 // hit passes within a moving body's bounding sphere, ray_caster_cast.cc): a
 // commit of 50 instances costs ~40 µs, most samples' rays pass far from every
 // moving object, and a ray that passes outside every sphere misses them all
-// whether or not their scene is up to date. The robot's (moved every sample)
-// likewise, when a ray's segment first passes through one of its bodies'
-// boxes (Body::box_lo_B, box_hi_B: a box fits a link far better than a sphere
-// around it, and a shin sensor's rays start beside their own link).
+// whether or not their scene is up to date. A robot body is cast into only
+// when a ray's segment passes through its box (Body::box_lo_B, box_hi_B: a
+// box fits a link far better than a sphere around it, and a shin sensor's
+// rays start beside their own link).
 // The child scenes, and so the static world's BVH, are built once in AddBody.
 //
 // Every scene is RTC_SCENE_FLAG_ROBUST: Embree then uses its watertight
 // triangle test, so a ray through a shared edge or vertex cannot slip between
-// triangles. Child scenes are built once with high (world) or medium (robot)
-// quality; the small top-level scenes are rebuilt at medium quality.
+// triangles. Child scenes are built once with high (world) or medium (robot,
+// moving) quality; the small top-level scenes are rebuilt at medium quality.
 //
 // Normals: Embree reports Ng in the instanced body's frame B and unnormalised;
 // we normalise it and rotate it by R_WB. Triangle normals follow the right-hand
@@ -107,7 +111,6 @@ struct Body {
   std::vector<std::unique_ptr<GeomRecord>> geoms;  ///< index = geomID in `scene`; stable addresses
   Pose X_WB = Pose::Identity();
   Eigen::Matrix3f R_WB = Eigen::Matrix3f::Identity();
-  RTCGeometry instance_robot = nullptr;  ///< null for world bodies
   RTCGeometry instance_world = nullptr;  ///< null for robot and moving bodies
   RTCGeometry instance_moving = nullptr; ///< null for world and robot bodies
   bool has_mesh = false;
@@ -125,7 +128,7 @@ struct Body {
   Vec3 bound_center_W = Vec3::Zero();  ///< X_WB · bound_center_B, kept with X_WB
   Pose X_BW = Pose::Identity();  ///< X_WB.inverse(), kept with X_WB (distance queries, the robot's box test)
   // a kRobot body's box in B (Embree's bounds of its scene, grown by a
-  // slack): a ray that misses the box misses the body (Impl::robot_uncommitted)
+  // slack): a ray that misses the box misses the body (CastIntoRobotBody)
   Vec3 box_lo_B = Vec3::Constant(-std::numeric_limits<double>::infinity());
   Vec3 box_hi_B = Vec3::Constant(std::numeric_limits<double>::infinity());
   int world_slot = -1;  ///< a kWorld body's index in Impl::world_bodies and world_spheres_W
@@ -148,14 +151,12 @@ struct RayCaster::Impl {
 
   RTCDevice device = nullptr;
   RTCScene scene_world = nullptr;
-  RTCScene scene_robot = nullptr;
   RTCScene scene_moving = nullptr;  ///< the kMoving bodies' instances
   std::vector<std::unique_ptr<Body>> bodies;
   // each top-level scene's bodies by instance ID: IDs are dense within a
-  // scene (Embree's commit walks every ID up to the largest, so the robot's
-  // scene, committed every sample, must not start its IDs after 50 moving objects)
-  std::vector<int> robot_bodies;
+  // scene (Embree's commit walks every ID up to the largest)
   std::vector<int> moving_bodies;
+  std::vector<int> robot_bodies;  ///< the kRobot bodies (no scene of theirs: cast one by one)
   // the kWorld bodies' indices and bounding spheres in W (centre x, y, z,
   // radius), side by side and kept with their poses: a distance query culls
   // bodies without touching their records (50 moving boxes: 50 bodies a query)
@@ -171,15 +172,8 @@ struct RayCaster::Impl {
   // commit of their scene (Commit, or CommitMovingIfMoved for kMoving bodies)
   std::vector<int> stale_fixed;
   std::vector<int> stale_moving;
-  std::vector<int> stale_robot;
-  // the robot's scene has moved since its last commit: as the moving
-  // objects' (above), it is committed by the first cast whose segment up to
-  // its world hit passes through one of the robot's body boxes (a shin
-  // sensor's rays that point away from both legs never do), once
-  std::atomic<bool> robot_uncommitted{false};
-  std::mutex robot_commit_mutex;
   // each robot body's bounding sphere in W (as world_spheres_W, the radius
-  // grown by kRobotBoxSlack_m), by instance ID, kept with its pose: a batch
+  // grown by kRobotBoxSlack_m), by robot_slot, kept with its pose: a batch
   // of rays from one point (a sensor's beam) is tested against them as a
   // cone, and only the bodies the cone may meet take the box test
   std::vector<Eigen::Vector4d> robot_spheres_W;
@@ -192,9 +186,7 @@ struct RayCaster::Impl {
   std::size_t triangle_count = 0;
   std::unique_ptr<ParallelRunner> runner = std::make_unique<ParallelRunner>(1);  ///< for large batches
   bool committed = true;
-  // which top-level scene has a change to commit: moving a robot body leaves
-  // the world's as it was, so a step rebuilds only `robot`
-  bool robot_dirty = true;
+  // which top-level scene has a change to commit (moving a robot body changes neither)
   bool world_dirty = true;
   bool moving_dirty = true;
   tbb::task_arena commit_arena{1};  ///< one slot: top-level commits run on the caller only
@@ -216,9 +208,7 @@ struct RayCaster::Impl {
   /// Commits the moving objects' scene if they moved since its last commit
   /// (thread-safe: the casts of a batch may ask at once).
   void CommitMovingIfMoved();
-  /// Commits the robot's scene if it moved since its last commit (thread-safe, as CommitMovingIfMoved).
-  void CommitRobotIfMoved();
-  /// The two above: the scene's transforms pushed and the scene committed,
+  /// The above: the scene's transforms pushed and the scene committed,
   /// once, by the first cast that finds `uncommitted` set.
   void CommitIfMoved(std::atomic<bool>& uncommitted, std::mutex& mutex, std::vector<int>& stale, RTCScene scene);
   /// Sets the instances' transforms of the bodies in `stale` from their poses, and empties it.
