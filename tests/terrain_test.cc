@@ -566,6 +566,7 @@ TEST(TerrainMapTest, TheHazardPassKeepingUnchangedClustersFindsWhatAFillOfEveryL
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::normal_distribution<double> noise(0.0, 0.025);
   int passes_with_hazards = 0;
+  std::size_t clusters_kept = 0, clusters_filled = 0;
   for (int step = 0; step < 60; ++step) {
     std::vector<SensorOutput> readings;
     for (int k = 0; k + 1 < kReadings; ++k) {
@@ -581,6 +582,8 @@ TEST(TerrainMapTest, TheHazardPassKeepingUnchangedClustersFindsWhatAFillOfEveryL
     // a new raised cell far off: a label changes, so that this sample has a hazard pass
     readings.push_back(Reading(Vec3(3 + 0.1 * step, 3, 0.5), -Vec3::UnitZ(), true, 0.4));
     map.Update(Observation{.t_s = 0.02 * step, .sensors = readings, .robot = &robot});
+    clusters_kept += map.clusters_kept_at_last_pass();
+    clusters_filled += map.clusters_filled_at_last_pass();
     // the whole fill, from the grid's labels as the map computes them
     std::vector<CellIndex> seeds;
     map.grid().ForEachTile([&](const ElevationGrid::Tile& tile) {
@@ -612,6 +615,12 @@ TEST(TerrainMapTest, TheHazardPassKeepingUnchangedClustersFindsWhatAFillOfEveryL
     passes_with_hazards += full.empty() ? 0 : 1;
   }
   EXPECT_GT(passes_with_hazards, 30);
+  // and the passes did keep clusters (those no burst came near) as well as
+  // fill others again, so the comparison above checked both paths (4 556
+  // kept and 340 filled when written; a pass that fills every cluster again
+  // keeps none)
+  EXPECT_GT(clusters_kept, 2000u);
+  EXPECT_GT(clusters_filled, 100u);
 }
 
 }  // namespace

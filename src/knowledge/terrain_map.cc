@@ -99,6 +99,7 @@ void TerrainMap::Reset() {
   next_pass_t_s_ = 0.0;
   clusters_.clear();
   clustered_ground_z_m_ = std::numeric_limits<double>::quiet_NaN();
+  clusters_kept_ = 0;
   retired_since_pass_ = false;
   relabelled_.clear();
 }
@@ -372,6 +373,7 @@ void TerrainMap::FindHazardsAgain(double t_s, const RobotKnowledge& robot) {
                });
   // in the order a fill from every labelled cell would find them: by their least cell
   clusters_.clear();
+  clusters_kept_ = kept.size();
   std::merge(std::make_move_iterator(kept.begin()), std::make_move_iterator(kept.end()),
              std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()), std::back_inserter(clusters_),
              [&](const Cluster& a, const Cluster& b) { return row_order(a.cells.front(), b.cells.front()); });

@@ -68,6 +68,10 @@ class TerrainMap {
   /// The hazards found so far (the last pass's, and those left behind on
   /// another ground), within the window.
   const std::vector<Hazard>& hazards() const { return hazards_; }
+  /// How many clusters the last hazard pass kept from the pass before, and
+  /// how many it filled again (FindHazardsAgain): what its incremental work saved.
+  std::size_t clusters_kept_at_last_pass() const { return clusters_kept_; }
+  std::size_t clusters_filled_at_last_pass() const { return clusters_.size() - clusters_kept_; }
   /// The tiles and hazards that left the window at the last sample.
   const std::vector<std::unique_ptr<ElevationGrid::Tile>>& last_retired_tiles() const { return retired_tiles_; }
   const std::vector<Hazard>& last_retired_hazards() const { return retired_hazards_; }
@@ -116,6 +120,7 @@ class TerrainMap {
   // whether tiles left the window since (then every cluster is found again)
   std::vector<Cluster> clusters_;
   double clustered_ground_z_m_ = std::numeric_limits<double>::quiet_NaN();
+  std::size_t clusters_kept_ = 0;  // of clusters_, those the last pass kept
   bool retired_since_pass_ = false;
   // the cells relabelled since the last hazard pass
   std::vector<CellIndex> relabelled_;
