@@ -5,7 +5,15 @@
 # package's .py files are copied next to the compiled core at every build.
 # Tests: tests/python through pytest (python3-pytest), as one CTest test.
 
-set(Python_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "Debian's Python, for which pybind11-dev and python3-numpy are installed")
+# .venv/ (scripts/install-deps.sh) is Debian's Python with PyPI's pinned
+# packages (python/requirements.txt: mujoco, gymnasium, xacro, rosbags) over it;
+# without it, Debian's Python alone.
+if(EXISTS ${CMAKE_SOURCE_DIR}/.venv/bin/python3)
+  set(proxsim_default_python ${CMAKE_SOURCE_DIR}/.venv/bin/python3)
+else()
+  set(proxsim_default_python /usr/bin/python3)
+endif()
+set(Python_EXECUTABLE ${proxsim_default_python} CACHE FILEPATH "Debian's Python (in .venv/ with PyPI's pinned packages), for which pybind11-dev and python3-numpy are installed")
 set(PYBIND11_FINDPYTHON ON)
 find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)
 find_package(pybind11 CONFIG REQUIRED)

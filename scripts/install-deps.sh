@@ -11,7 +11,7 @@ packages=(
   libbullet-dev libmujoco-dev
   liboctomap-dev
   python3-matplotlib python3-numpy
-  python3-dev pybind11-dev python3-pytest
+  python3-dev pybind11-dev python3-pytest python3-venv
   libopenmpi-dev openmpi-bin
   nodejs npm   # the viewer's bundle and the MCAP exporter; the build runs `npm ci` in viewer/ and foxglove/
 )
@@ -38,12 +38,25 @@ if command -v node >/dev/null && command -v npm >/dev/null; then
 fi
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all packages present"
-  exit 0
+else
+  sudo=()
+  if [ "$(id -u)" -ne 0 ]; then sudo=(sudo -n); fi
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -qq
+  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-sudo=()
-if [ "$(id -u)" -ne 0 ]; then sudo=(sudo -n); fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-"${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# PyPI's packages (python/requirements.txt, pinned) in .venv/, over Debian's
+# Python and its numpy/matplotlib: recreated when the pins change.
+venv=.venv
+stamp="$venv/.requirements.sha256"
+want=$(sha256sum python/requirements.txt | cut -d' ' -f1)
+if [ ! -x "$venv/bin/python3" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
+  echo "install-deps: installing python/requirements.txt into $venv"
+  /usr/bin/python3 -m venv --system-site-packages "$venv"
+  "$venv/bin/pip" install --quiet --disable-pip-version-check -r python/requirements.txt
+  echo "$want" > "$stamp"
+else
+  echo "install-deps: $venv up to date"
+fi
