@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -56,6 +57,42 @@ TEST(OutcomeStats, McNemarExactMatchesTheBinomialSums) {
   // 2 Σ_{i ≤ 500} C(1100, i) / 2^1100 = 0.00281954499143643 (in exact integers)
   EXPECT_NEAR(McNemarExactP(600, 500), McNemarExactP(500, 600), 1e-15);
   EXPECT_NEAR(McNemarExactP(600, 500), 0.00281954499143643, 1e-12);
+}
+
+// Boost.Math's quantiles against the published tables (Abramowitz & Stegun
+// 26.2 and 26.7; NIST/SEMATECH e-Handbook 1.3.6.7.2): the normal's 97.5 %
+// and Student's t at 97.5 % — 3 degrees of freedom is 3.182 (the hand-kept
+// table this replaced had 2.182), 30 is 2.042, 120 is 1.980
+TEST(OutcomeStats, QuantilesMatchThePublishedTables) {
+  EXPECT_NEAR(NormalQuantile(0.975), 1.959964, 1e-6);
+  EXPECT_DOUBLE_EQ(NormalQuantile(0.975), kZ95);
+  EXPECT_NEAR(NormalQuantile(0.95), 1.644854, 1e-6);
+  EXPECT_NEAR(StudentTQuantile(0.975, 1), 12.706, 1e-3);
+  EXPECT_NEAR(StudentTQuantile(0.975, 2), 4.303, 1e-3);
+  EXPECT_NEAR(StudentTQuantile(0.975, 3), 3.182, 1e-3);
+  EXPECT_NEAR(StudentTQuantile(0.975, 10), 2.228, 1e-3);
+  EXPECT_NEAR(StudentTQuantile(0.975, 30), 2.042, 1e-3);
+  EXPECT_NEAR(StudentTQuantile(0.975, 120), 1.980, 1e-3);
+  EXPECT_NEAR(StudentTQuantile(0.95, 5), 2.015, 1e-3);
+}
+
+// by hand: S = 11010, B = 00010, O = 11110 on 5 worlds; x = S − B = 11000,
+// y = O − B = 11100, R = 2/3; z = x − R·y = (1/3, 1/3, −2/3, 0, 0), Σz² = 2/3;
+// Var R = (2/3) / (5·4) / (3/5)² = 25/270; half = 1.959964·√(25/270) = 0.596398
+TEST(OutcomeStats, PerceptionScoreMatchesAHandComputedCase) {
+  const std::vector<char> set{1, 1, 0, 1, 0}, blind{0, 0, 0, 1, 0}, oracle{1, 1, 1, 1, 0};
+  const PerceptionScore score = PerceptionScoreOf(set, blind, oracle);
+  EXPECT_NEAR(score.score, 2.0 / 3.0, 1e-12);
+  const double half = kZ95 * std::sqrt(25.0 / 270.0);
+  EXPECT_NEAR(half, 0.596398, 1e-6);
+  EXPECT_NEAR(score.low, 2.0 / 3.0 - half, 1e-12);
+  EXPECT_NEAR(score.high, 2.0 / 3.0 + half, 1e-12);
+  // the set as good as the oracle on every world: 1, no spread
+  const PerceptionScore perfect = PerceptionScoreOf(oracle, blind, oracle);
+  EXPECT_DOUBLE_EQ(perfect.score, 1.0);
+  EXPECT_DOUBLE_EQ(perfect.low, 1.0);
+  // an oracle no better than blind: undefined
+  EXPECT_TRUE(std::isnan(PerceptionScoreOf(set, blind, blind).score));
 }
 
 TEST(OutcomeStats, Median) {
@@ -169,6 +206,64 @@ TEST(OutcomeAnswers, APlantedStudyGivesExactlyThePlantedRates) {
   EXPECT_EQ(failures.rows.size(), 10u);
   const auto results = ReadCsv(dir / "results.csv");
   EXPECT_EQ(results.rows.size(), 60u);
+  fs::remove_all(dir);
+}
+
+// A set A with both baselines on 10 worlds, one strategy:
+//   blind succeeds in worlds 0-2 (3/10: more than 20 %, a warning),
+//   the oracle everywhere, A in worlds 0-7 and collides in 8 and 9.
+// perception score = (8 − 3) / (10 − 3) = 5/7; A's expected cost per run =
+// $10 / 1000 runs + 2/10 collisions · $50 = $10.01.
+TEST(OutcomeAnswers, BaselinesGiveThePlantedPerceptionScoreCostAndWarning) {
+  const fs::path dir = FreshDir("outcome_baselines");
+  fs::create_directories(dir);
+  OutcomeStudyConfig study;
+  study.source = "planted";
+  study.sets = {{"A", "[]", {"a1"}, 10.0, 2.0, {}}};
+  SensorSet blind{"blind", "[]", {}, std::nan(""), std::nan(""), {}};
+  blind.baseline = "blind";
+  SensorSet oracle{"oracle", "[]", {}, std::nan(""), std::nan(""), {}};
+  oracle.baseline = "oracle";
+  study.sets.push_back(blind);
+  study.sets.push_back(oracle);
+  study.strategies = {{"stop", "{name: stop}"}};
+  study.families = {{"room_d0.5", "room", 0.5, "", "", true}};
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) study.jobs.push_back({0, seed});
+  study.replay_files = 0;
+  OutcomeResults results(10);
+  const OutcomeRun reached{"reached_goal", 8.0, 4.4, 4.0, 0.2}, collided{"collided", 3.0, 1.5, 4.0, 0.0};
+  for (int j = 0; j < 10; ++j) {
+    results[j].runs = {j < 8 ? reached : collided, j < 3 ? reached : collided, reached};
+  }
+  const nlohmann::json selection = WriteOutcomeAnswers(study, results, dir.string());
+  const auto ranking = ReadCsv(dir / "ranking.csv");
+  ASSERT_EQ(ranking.rows.size(), 3u);
+  std::map<std::string, std::map<std::string, std::string>> by_set;
+  for (const auto& row : ranking.rows) by_set[row.at("set")] = row;
+  EXPECT_NEAR(std::stod(by_set["A"].at("perception_score")), 5.0 / 7.0, 1e-9);
+  EXPECT_NEAR(std::stod(by_set["A"].at("expected_cost_per_run_usd")), 10.01, 1e-9);
+  EXPECT_NEAR(std::stod(by_set["blind"].at("perception_score")), 0.0, 1e-12);
+  EXPECT_NEAR(std::stod(by_set["oracle"].at("perception_score")), 1.0, 1e-12);
+  EXPECT_EQ(by_set["oracle"].at("baseline"), "oracle");
+  EXPECT_EQ(by_set["A"].at("baseline"), "");
+  // the baselines are rows of the answer, never a set to buy
+  ASSERT_FALSE(selection["lowest_expected_cost"].is_null());
+  EXPECT_EQ(selection["lowest_expected_cost"]["set"], "A");
+  EXPECT_TRUE(selection["unpriced_sets"].empty());
+  ASSERT_EQ(selection["warnings"].size(), 1u);
+  EXPECT_NE(selection["warnings"][0].get<std::string>().find("blind baseline (no sensors) succeeds in 30 %"),
+            std::string::npos);
+  // one episode per run in episodes.jsonl
+  std::ifstream episodes(dir / "episodes.jsonl");
+  std::string line;
+  int lines = 0, blind_lines = 0;
+  while (std::getline(episodes, line)) {
+    const nlohmann::json e = nlohmann::json::parse(line);
+    ++lines;
+    blind_lines += e["baseline"] == "blind";
+  }
+  EXPECT_EQ(lines, 30);
+  EXPECT_EQ(blind_lines, 10);
   fs::remove_all(dir);
 }
 

@@ -252,10 +252,20 @@ int OutcomeStudy(const std::string& study_path, const std::string& out_dir, int 
   std::printf("proxsim study: %s — %zu closed-loop runs\n", study_path.c_str(), study.runs_per_job() * study.jobs.size());
   for (std::size_t i = 0; i < std::min<std::size_t>(5, selection["ranking"].size()); ++i) {
     const auto& row = selection["ranking"][i];
-    std::printf("  %-40s %-12s success %.3f [%.3f, %.3f]%s\n", row["set"].get<std::string>().c_str(),
+    const std::string perception =
+        row["perception_score"].is_null()
+            ? std::string()
+            : proxsim::FormatNumbers(", perception %.2f", row["perception_score"].get<double>());
+    std::printf("  %-40s %-12s success %.3f [%.3f, %.3f]%s%s%s\n", row["set"].get<std::string>().c_str(),
                 row["strategy"].get<std::string>().c_str(), row["success_rate"].get<double>(),
-                row["success_ci95"][0].get<double>(), row["success_ci95"][1].get<double>(),
-                row["price_usd"].is_null() ? "" : proxsim::FormatNumbers(", $%.2f", row["price_usd"].get<double>()).c_str());
+                row["success_ci95"][0].get<double>(), row["success_ci95"][1].get<double>(), perception.c_str(),
+                row["price_usd"].is_null() ? "" : proxsim::FormatNumbers(", $%.2f", row["price_usd"].get<double>()).c_str(),
+                row["baseline"].is_null() ? "" : " (baseline)");
+  }
+  for (const auto& warning : selection["warnings"]) std::printf("warning: %s\n", warning.get<std::string>().c_str());
+  if (const auto& lowest = selection["lowest_expected_cost"]; !lowest.is_null()) {
+    std::printf("lowest expected cost per run: %s with %s, $%.3f a run\n", lowest["set"].get<std::string>().c_str(),
+                lowest["strategy"].get<std::string>().c_str(), lowest["expected_cost_per_run_usd"].get<double>());
   }
   const auto& cheapest = selection["cheapest_reaching_target"];
   if (cheapest.is_null()) {
@@ -265,7 +275,8 @@ int OutcomeStudy(const std::string& study_path, const std::string& out_dir, int 
                 cheapest["set"].get<std::string>().c_str(), cheapest["strategy"].get<std::string>().c_str(),
                 cheapest["price_usd"].get<double>(), cheapest["success_rate"].get<double>());
   }
-  std::printf("outputs in %s/ (results.csv, ranking.csv, pairs.csv, selection.json, failures.csv)\n", out_dir.c_str());
+  std::printf("outputs in %s/ (results.csv, ranking.csv, pairs.csv, selection.json, failures.csv, episodes.jsonl)\n",
+              out_dir.c_str());
   std::fflush(stdout);
   if (!report) return 0;
   if (proxsim::MakeStudyReport(out_dir) != 0) {

@@ -48,7 +48,7 @@ GenerateConfig ReadGenerate(YamlReader& reader, const Field& field) {
                                       "ramp", "flat_m",
                                       // room
                                       "size_m", "height_m", "robot_width_m", "margin_m", "tables", "chairs", "shelves",
-                                      "clutter", "people", "people_height_m", "people_speed_m_s"});
+                                      "clutter", "blockers", "people", "people_height_m", "people_speed_m_s"});
   if (!map) return config;
   const Field kind = (*map)["kind"];
   if (reader.Require(kind, "kind: course or room")) {
@@ -66,7 +66,7 @@ GenerateConfig ReadGenerate(YamlReader& reader, const Field& field) {
     if (!course && map->Has(key)) reader.Fail((*map)[key], std::string(key) + " is for kind: course");
   }
   for (const char* key : {"size_m", "height_m", "robot_width_m", "margin_m", "tables", "chairs", "shelves", "clutter",
-                          "people", "people_height_m", "people_speed_m_s"}) {
+                          "blockers", "people", "people_height_m", "people_speed_m_s"}) {
     if (course && map->Has(key)) reader.Fail((*map)[key], std::string(key) + " is for kind: room");
   }
 
@@ -108,6 +108,8 @@ GenerateConfig ReadGenerate(YamlReader& reader, const Field& field) {
   ReadRange(reader, (*map)["chairs"], AnyNumber(), &r.chairs);
   ReadRange(reader, (*map)["shelves"], AnyNumber(), &r.shelves);
   ReadRange(reader, (*map)["clutter"], AnyNumber(), &r.clutter);
+  ReadFamily(reader, (*map)["blockers"],
+             {{"count", &r.blockers}, {"width_m", &r.blocker_width_m}, {"height_m", &r.blocker_height_m}});
   ReadRange(reader, (*map)["people"], AnyNumber(), &r.people);
   ReadRange(reader, (*map)["people_height_m"], AnyNumber(), &r.person_height_m);
   ReadRange(reader, (*map)["people_speed_m_s"], AnyNumber(), &r.person_speed_m_s);

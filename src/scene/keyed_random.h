@@ -25,6 +25,12 @@ class KeyedRandom {
   /// A whole number in [lo, hi], each equally likely.
   int Integer(int lo, int hi) { return lo + static_cast<int>(Uniform() * (hi - lo + 1)); }
 
+  /// A seed of its own for each (seed, a, b): worlds of two kinds or two
+  /// difficulties drawn from one user seed share no numbers.
+  static std::uint64_t MixSeed(std::uint64_t seed, std::uint64_t a, std::uint64_t b) {
+    return Mix(Mix(seed ^ 0xd1b54a32d192ed03ull) ^ Mix(a + 0x8cb92ba72f3d8dd7ull) ^ Mix(b + 0x52dce729da3ed9b5ull));
+  }
+
  private:
   static std::uint64_t Mix(std::uint64_t z) {
     z += 0x9e3779b97f4a7c15ull;

@@ -100,6 +100,13 @@ std::vector<std::string> GenerateProblems(const GenerateConfig& config) {
       range_problem(key, range, 0, false, "counts >= 0");
       if (std::max(range.easy, range.hard) > 200) problems.push_back(std::string(key) + ": at most 200");
     }
+    range_problem("blockers.count", r.blockers, 0, false, "counts >= 0");
+    if (std::max(r.blockers.easy, r.blockers.hard) > 50) problems.push_back("blockers.count: at most 50 per 5 m");
+    range_problem("blockers.width_m", r.blocker_width_m, 0.02, false, "widths of 0.02 m at least");
+    range_problem("blockers.height_m", r.blocker_height_m, 0.02, false, "heights of 0.02 m at least");
+    if (std::max(r.blocker_width_m.easy, r.blocker_width_m.hard) > 2) problems.push_back("blockers.width_m: at most 2 m");
+    if (std::max(r.blocker_height_m.easy, r.blocker_height_m.hard) > r.height_m)
+      problems.push_back("blockers.height_m: at most the room's height");
     char heights[64];
     std::snprintf(heights, sizeof heights, "heights in [%g, %g] m", kPersonMinHeight_m, kPersonMaxHeight_m);
     range_problem("people_height_m", r.person_height_m, kPersonMinHeight_m, false, heights);
@@ -116,7 +123,13 @@ std::vector<std::string> GenerateProblems(const GenerateConfig& config) {
 }
 
 GeneratedWorld GenerateWorld(const GenerateConfig& config) {
-  return config.kind == GenerateConfig::Kind::kCourse ? gen::GenerateCourse(config) : gen::GenerateRoom(config);
+  // the user's seed mixed with the kind and the difficulty (to the
+  // millionth): seed k of a room at 0.3 and at 0.6 are two rooms, not one
+  // room drawn twice with more furniture
+  GenerateConfig mixed = config;
+  const auto micro = static_cast<std::uint64_t>(std::llround(config.difficulty * 1e6));
+  mixed.seed = KeyedRandom::MixSeed(config.seed, static_cast<std::uint64_t>(config.kind), micro);
+  return mixed.kind == GenerateConfig::Kind::kCourse ? gen::GenerateCourse(mixed) : gen::GenerateRoom(mixed);
 }
 
 }  // namespace proxsim

@@ -64,6 +64,13 @@ struct RoomConfig {
   GenRange chairs{2, 8};
   GenRange shelves{1, 4};
   GenRange clutter{2, 15};
+  /// Obstacles put in the way: on the straight walk from the start to the
+  /// goal (the robot's path), each leaving a way around (the corridor). A
+  /// count per 5 m of that walk (at least one), then each one's width across
+  /// the walk and height: more, thinner and lower as the difficulty grows.
+  GenRange blockers{1, 3};
+  GenRange blocker_width_m{0.6, 0.12};
+  GenRange blocker_height_m{0.6, 0.10};
   GenRange people{0, 4};
   GenRange person_height_m{1.55, 1.95};
   GenRange person_speed_m_s{0.6, 1.4};
@@ -106,6 +113,10 @@ struct GeneratedWorld {
   std::vector<Vec2> path_m;  ///< the robot's waypoints, from its start (the origin)
   /// The room's free corridor: the cells searched (for pictures and tests), metres per cell.
   double corridor_cell_m = 0;
+  /// A room's way around what is in the path's way: waypoints from the start
+  /// to the goal along the free corridor (a proof that a way exists; the
+  /// robot is given the straight path_m and must find it by sensing).
+  std::vector<Vec2> corridor_m;
 };
 
 /// Generates a world; requires GenerateProblems(config) to be empty.

@@ -3,12 +3,18 @@
 // floor (boxes, cylinders, balls) and people walking across the robot's way,
 // their numbers growing with the difficulty.
 //
+// What is in the way: the robot's path is the straight line from its start
+// to the goal, and blockers (boxes, posts, chairs, low bars) are put across
+// it first, so that a robot that ignores its sensors walks into them; each,
+// like everything else, leaves a way around.
+//
 // The free corridor: every piece of furniture and clutter is placed only if
 // a path still joins the robot's start to its goal on a 5 cm grid where the
 // footprints are grown by half the corridor's width (robot_width_m +
 // margin_m) and a cell: a breadth-first search on the layout as it would be, before the
 // piece is accepted. The robot's path is that search's path, cut to
 // waypoints wherever the straight line between two of them stays clear.
+// That path is kept (GeneratedWorld::corridor_m) as the proof of a way around.
 // Nothing is placed within 0.7 m of the start or the goal. A person's walk
 // is a line across the robot's path that stays clear of the furniture (by
 // 0.3 m), starting at least 1.5 m from the robot.
@@ -25,6 +31,7 @@ namespace {
 
 constexpr double kCell_m = 0.05;
 constexpr double kKeepClear_m = 0.7;  // around the start and the goal
+constexpr double kFirstBlocker_m = 1.5;  // along the walk from the start
 constexpr double kWallThickness_m = 0.1;
 
 /// An axis-aligned footprint in the plane.
@@ -246,6 +253,32 @@ Piece Clutter(const std::string& name, const Vec2& centre, KeyedRandom& random) 
   return piece;
 }
 
+// a blocker across the walk at `centre`: a box, a post, a chair or a low
+// bar, `width` across the walk (along `across`) and `height` tall
+Piece Blocker(const std::string& name, const Vec2& centre, const Vec2& across, double width, double height,
+              KeyedRandom& random) {
+  const int kind = random.Integer(0, 3);
+  const bool across_x = std::abs(across.x()) > std::abs(across.y());
+  const auto oriented = [&](double w_across, double w_along) {
+    return across_x ? Vec2(w_across, w_along) : Vec2(w_along, w_across);
+  };
+  Piece piece;
+  if (kind == 1) {  // a post: a standing cylinder as wide as drawn, at least knee high
+    const double r = Round_m(0.5 * width), length = Round_m(std::max(height, 0.5));
+    piece.footprint = FootprintAt(centre, Vec2(2 * r, 2 * r));
+    piece.objects.push_back(Cylinder(name, r, length, Vec3(centre.x(), centre.y(), 0.5 * length), 0.65));
+    return piece;
+  }
+  if (kind == 2) return Chair(name, centre, random);  // furniture's own sizes
+  // a box (as deep as wide) or a low bar (10 cm deep, twice as wide, at most 0.2 m high)
+  const Vec2 size = kind == 0 ? oriented(width, width) : oriented(2 * width, 0.1);
+  const double z = kind == 0 ? height : std::min(height, 0.2);
+  piece.footprint = FootprintAt(centre, size);
+  piece.objects.push_back(Box(name, Vec3(piece.footprint.min.x(), piece.footprint.min.y(), 0),
+                              Vec3(piece.footprint.max.x(), piece.footprint.max.y(), Round_m(z)), false, 0.7));
+  return piece;
+}
+
 // how many of a kind at this difficulty, for a room of this area (the ranges are for 10 × 10 m)
 int CountOf(const GenRange& range, double difficulty, double area_m2, KeyedRandom& random) {
   return static_cast<int>(std::lround(Draw(range, difficulty, random) * area_m2 / 100.0));
@@ -318,10 +351,38 @@ GeneratedWorld GenerateRoom(const GenerateConfig& config) {
     for (GenObject& object : piece.objects) world.objects.push_back(std::move(object));
     return true;
   };
+  constexpr int kTries = 20;
+  // what is in the way first: blockers across the straight walk, one per
+  // slot of it (clear of the start and the goal), each moved along its slot
+  // and across the walk until it leaves a way around
+  {
+    const Vec2 along = (goal - start).normalized(), across(-along.y(), along.x());
+    const double walk_m = (goal - start).norm();
+    // from 1.5 m on: a robot that stops at its start has not stopped before them
+    const double first_m = kFirstBlocker_m, last_m = walk_m - kKeepClear_m - 0.4;
+    KeyedRandom count_random(config.seed, 50);
+    const int count = std::max(1, static_cast<int>(std::lround(Draw(room.blockers, d, count_random) * walk_m / 5.0)));
+    const double slot_m = (last_m - first_m) / count;
+    int made = 0;
+    for (int i = 0; i < count && slot_m > 0; ++i) {
+      KeyedRandom random(config.seed, 51 + static_cast<std::uint64_t>(i) * 1000);
+      const double width = Round_m(Draw(room.blocker_width_m, d, random));
+      const double height = Round_m(Draw(room.blocker_height_m, d, random));
+      for (int attempt = 0; attempt < kTries; ++attempt) {
+        const double s_m = first_m + slot_m * (i + random.Uniform(0.2, 0.8));
+        const double l_m = random.Uniform(-0.12, 0.12);  // within the feet's sweep
+        const Vec2 centre = start + s_m * along + l_m * across;
+        if (try_place(Blocker("blocker_" + std::to_string(made + 1), centre, across, width, height, random))) {
+          ++made;
+          break;
+        }
+      }
+    }
+  }
+
   const auto random_point = [&](KeyedRandom& random) {
     return Vec2(random.Uniform(room_min.x() + 0.3, room_max.x() - 0.3), random.Uniform(room_min.y() + 0.3, room_max.y() - 0.3));
   };
-  constexpr int kTries = 20;
   struct Kind {
     const char* name;
     GenRange range;
@@ -350,16 +411,18 @@ GeneratedWorld GenerateRoom(const GenerateConfig& config) {
     }
   }
 
-  // the robot's path: the corridor's cells cut to waypoints where the line stays clear
-  world.path_m.push_back(start);
+  // the way around: the corridor's cells cut to waypoints where the line stays clear
+  world.corridor_m.push_back(start);
   for (std::size_t i = 0; i < path.size();) {
     std::size_t far = i + 1;
-    while (far + 1 < path.size() && grid.Clear(world.path_m.back(), grid.Centre(path[far + 1]))) ++far;
+    while (far + 1 < path.size() && grid.Clear(world.corridor_m.back(), grid.Centre(path[far + 1]))) ++far;
     if (far >= path.size() - 1) break;
-    world.path_m.emplace_back(Round_m(grid.Centre(path[far]).x()), Round_m(grid.Centre(path[far]).y()));
+    world.corridor_m.emplace_back(Round_m(grid.Centre(path[far]).x()), Round_m(grid.Centre(path[far]).y()));
     i = far;
   }
-  world.path_m.push_back(goal);
+  world.corridor_m.push_back(goal);
+  // the robot's path: straight to the goal, through whatever is in the way
+  world.path_m = {start, goal};
 
   // people: walks across the robot's path, clear of the furniture by 0.3 m
   FloorGrid walk_grid(room_min, room_max, 0.3);

@@ -86,9 +86,12 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
   external_ = dynamic_cast<ExternalDrive*>(locomotion_.get());
   world_ = std::make_unique<World>(scenario_, locomotion_ ? &locomotion_->model() : nullptr, threads);
   // (after the robot and the world, whose problems come first) a run without
-  // sensors would write an empty report and claim success
-  if (scenario_.sensors.empty()) {
-    throw InputError(scenario_.source + ": sensors: no sensors: nothing to measure (add at least one under 'sensors:')");
+  // sensors would write an empty report and claim success; a walking robot
+  // without sensors is the blind baseline of an outcome study (its outcome
+  // is the measurement)
+  if (scenario_.sensors.empty() && !scenario_.robot) {
+    throw InputError(scenario_.source + ": sensors: no sensors: nothing to measure (add at least one under 'sensors:', "
+                     "or a robot whose walk without sensors is the measurement)");
   }
   reader_ = std::make_unique<SensorReader>(scenario_, *world_);
   delivery_ = std::make_unique<DeliveryQueue>(scenario_.sensors, scenario_.rate_hz);
@@ -180,6 +183,7 @@ void Simulation::Reset(std::uint64_t seed) {
   state_ = RobotState{};
   // (the map first: a gait planning on it plans its first step as it starts afresh)
   if (terrain_map_) terrain_map_->Reset();
+  world_->ResetPeople();
   if (locomotion_) {
     locomotion_->Reset();
     world_->robot()->ForgetClearanceBounds();
@@ -211,6 +215,9 @@ const SampleFrame& Simulation::TakeSample() {
   RobotInScene* robot = world_->robot();
   // the scene's moving objects where they are at this sample's time
   if (world_->has_moving_objects()) {
+    // people wait for a robot standing in their way (state_: the last sample's)
+    if (locomotion_ && state_.stopped && frame_.sample > 0)
+      world_->HoldPeopleNear(state_.X_WP.translation().head<2>(), kPedestrianKeep_m, frame_.t_s, 1.0 / scenario_.rate_hz);
     const double moved_m = world_->MoveObjects(frame_.t_s);
     // the clearance's remembered bounds against them shrink by as much as they moved
     if (robot) robot->LowerClearanceBounds(world_->moving_caster(), moved_m);
@@ -390,6 +397,13 @@ void Simulation::UpdateContacts(const std::vector<Contact>& contacts) {
 }
 
 Simulation::Outcome Simulation::outcome() const {
+  // the goal ends the episode's story: nothing after it (a collision, the
+  // gait's last step past a limit) changes its outcome
+  const auto after_goal = [&](double t_s) { return outcome_.reached_goal && t_s > outcome_.reached_goal_t_s; };
+  const bool collided_first = !outcome_.collisions.empty() && !after_goal(outcome_.collisions.front().t_s);
+  const bool fell_first = outcome_.fell && !after_goal(outcome_.end_t_s);
+  if (!collided_first && !fell_first && outcome_.reached_goal)
+    return {"reached_goal", outcome_.reached_goal_t_s, "reached the path's last waypoint"};
   if (outcome_.collided) return {"collided", outcome_.end_t_s, outcome_.end_detail};
   // under on_collision: continue the walk went on, but the episode still collided
   if (!outcome_.collisions.empty()) {

@@ -18,6 +18,7 @@
 #include <optional>
 #include <array>
 #include <string_view>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,11 @@
 #include "knowledge/terrain_map.h"
 
 namespace proxsim {
+
+/// A person does not step nearer than this (torso to pelvis, horizontally)
+/// to a robot standing still: it waits (World::HoldPeopleNear). Two people's
+/// comfortable passing distance, about 0.45 m each of body and margin.
+inline constexpr double kPedestrianKeep_m = 0.9;
 
 class Simulation {
  public:
@@ -78,6 +84,8 @@ class Simulation {
   /// What the sensors had delivered by the last sample's time: a reading
   /// appears here at its t_reported_s (the first sample at or after it), and
   /// not_sampled otherwise. The same as frame() when no sensor has a latency.
+  /// What the robot's datasheets and mountings tell it about each sensor (scenario order).
+  std::span<const SensorInfo> sensor_info() const { return sensor_info_; }
   const SampleFrame& delivered() const;
 
   /// What the robot knew at the last sample: the strategy's input.

@@ -48,6 +48,7 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   // each moving object a body of its own, its instance moved every sample
   std::vector<BodyShape> world_shapes;
   world_shapes.reserve(scenario.scene.objects.size());
+  std::vector<std::string> person_names;  // people_'s, in order
   for (const SceneObject& object : scenario.scene.objects) {
     const auto id = static_cast<std::int32_t>(object_names_.size());
     object_names_.push_back(object.name);
@@ -57,6 +58,19 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
     }
     const int body = caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO);
     moving_.push_back({&*object.motion, body, BoundingRadius_m(object.shape), object.X_WO});
+    // a person's parts (NAME/torso, NAME/left_leg, ...) wait together
+    if (const auto slash = object.name.find('/'); slash != std::string::npos) {
+      const std::string person = object.name.substr(0, slash);
+      std::size_t k = 0;
+      while (k < person_names.size() && person_names[k] != person) ++k;
+      if (k == person_names.size()) {
+        person_names.push_back(person);
+        people_.emplace_back();
+      }
+      moving_.back().person = static_cast<int>(k);
+      people_[k].parts.push_back(moving_.size() - 1);
+      if (object.name.substr(slash + 1) == "torso") people_[k].torso = moving_.size() - 1;
+    }
     // (world bodies there: that caster is for distances, which measure world bodies)
     moving_caster_body_.push_back(
         moving_caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kWorld, object.X_WO));
@@ -90,7 +104,9 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   // every sensor's link must exist
   std::vector<std::string> problems;
   for (const SensorConfig& sensor : scenario.sensors) {
-    const int link = sensor.link == "world" || robot_model == nullptr ? -1 : robot_model->LinkIndex(sensor.link);
+    int link = sensor.link == "world" || robot_model == nullptr ? -1 : robot_model->LinkIndex(sensor.link);
+    // `root`: the robot's root link, whatever its name (unless a link is called so)
+    if (link < 0 && robot_model != nullptr && sensor.link == "root") link = robot_model->root_link();
     if (sensor.link != "world" && link < 0) problems.push_back(UnknownLinkProblem(scenario, sensor, robot_model));
     sensor_link_.push_back(link);
   }
@@ -113,11 +129,31 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
 
 World::~World() = default;
 
+int World::HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double t_s, double dt_s) {
+  int waiting = 0;
+  for (Person& person : people_) {
+    const MovingBody& torso = moving_[person.torso];
+    const Vec2 next = MotionPoseAt(*torso.motion, t_s - person.waited_s).translation().head<2>();
+    const double next_m = (next - p_W_robot).norm();
+    if (next_m < keep_m && next_m < (torso.X_WO.translation().head<2>() - p_W_robot).norm()) {
+      person.waited_s += dt_s;
+      ++waiting;
+    }
+  }
+  return waiting;
+}
+
+void World::ResetPeople() {
+  for (Person& person : people_) person.waited_s = 0;
+}
+
 double World::MoveObjects(double t_s) {
   double moved_m = 0;
   for (std::size_t i = 0; i < moving_.size(); ++i) {
     MovingBody& moving = moving_[i];
-    const Pose X_WO = MotionPoseAt(*moving.motion, t_s);
+    // a person who waited walks on from where it stopped
+    const double waited_s = moving.person >= 0 ? people_[moving.person].waited_s : 0.0;
+    const Pose X_WO = MotionPoseAt(*moving.motion, t_s - waited_s);
     // a point at r from the origin moves by the origin's step plus r times the
     // turn's chord 2·sin(θ/2) = ‖R − R_last‖_F / √2 (no acos for 50 objects a sample)
     const double chord_per_m = (X_WO.linear() - moving.X_WO.linear()).norm() / std::sqrt(2.0);

@@ -61,6 +61,14 @@ class World {
   double MoveObjects(double t_s);
   /// Whether the scene has moving objects (they are bodies of their own in caster()).
   bool has_moving_objects() const { return !moving_.empty(); }
+  /// Pedestrians do not walk into a robot standing still: each person (the
+  /// moving parts `NAME/...` of a person, scene/person.h) whose next step,
+  /// at t_s, would bring its torso nearer than `keep_m` to `p_W_robot` and
+  /// nearer than it is now waits where it is for `dt_s` (its walk resumes
+  /// from there later). Call before MoveObjects(t_s); returns how many wait.
+  int HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double t_s, double dt_s);
+  /// A new episode: every person walks from its start again.
+  void ResetPeople();
   /// The moving objects alone, in a caster of their own (object ids as in
   /// caster()), for the robot's clearance and contacts (caster()'s distances
   /// measure the still scene only); null without any.
@@ -91,7 +99,15 @@ class World {
     int body;              // in caster_
     double radius_m;       // of a sphere about the object's origin holding it
     Pose X_WO;             // where it was last put
+    int person = -1;       // the person whose part it is (people_), -1 for none
   };
+  // a person: its parts in moving_, the torso among them, and how long it has waited
+  struct Person {
+    std::vector<std::size_t> parts;
+    std::size_t torso = 0;
+    double waited_s = 0;
+  };
+  std::vector<Person> people_;
   std::vector<MovingBody> moving_;
   RayCaster moving_caster_;
   std::vector<int> moving_caster_body_;  // each moving object's body in moving_caster_

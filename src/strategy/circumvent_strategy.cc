@@ -1,4 +1,6 @@
 #include "strategy/circumvent_strategy.h"
+
+#include "knowledge/echo_cone.h"
 #include "core/message_format.h"
 #include "gait/gait_walker.h"
 
@@ -62,6 +64,7 @@ Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
 }  // namespace
 
 void CircumventStrategy::Reset(const StrategySetup& setup) {
+  sensors_.assign(setup.sensors.begin(), setup.sensors.end());
   path_m_ = setup.path_m;
   stride_m_ = setup.stride_m;
   stride_now_m_ = setup.stride_m;
@@ -82,6 +85,10 @@ void CircumventStrategy::Reset(const StrategySetup& setup) {
   passed_ = false;
 }
 
+bool CircumventStrategy::RaisedEcho(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self) const {
+  return sensor.fresh && sensor.detected && EchoIsRaised(sensor, info, self.ground_z_m, config_.min_height_m);
+}
+
 CircumventStrategy::Cell CircumventStrategy::CellOf(const Vec3& p_W) const {
   return {static_cast<std::int64_t>(std::floor(p_W.x() / kCell_m)),
           static_cast<std::int64_t>(std::floor(p_W.y() / kCell_m))};
@@ -93,10 +100,10 @@ Vec2 CircumventStrategy::ToWorld(double s, double l) const {
 
 void CircumventStrategy::KeepPoints(const Observation& observation) {
   const RobotKnowledge& self = *observation.robot;
-  for (const SensorOutput& sensor : observation.sensors) {
-    if (!sensor.fresh || !sensor.detected) continue;
+  for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
+    const SensorOutput& sensor = observation.sensors[i];
+    if (!RaisedEcho(sensor, sensors_[i], self)) continue;  // the floor, wherever in its cone it echoed
     const Vec3 p_W = sensor.p_W_measured();
-    if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;  // the floor
     points_[CellOf(p_W)] = p_W;
   }
 }
@@ -105,10 +112,10 @@ std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observa
                                                        double look_ahead_m, double lateral_m) const {
   const RobotKnowledge& self = *observation.robot;
   const Vec3 lateral_W = Vec3::UnitZ().cross(walking_W);
-  for (const SensorOutput& sensor : observation.sensors) {
-    if (!sensor.fresh || !sensor.detected) continue;
+  for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
+    const SensorOutput& sensor = observation.sensors[i];
+    if (!RaisedEcho(sensor, sensors_[i], self)) continue;
     const Vec3 p_W = sensor.p_W_measured();
-    if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;
     // ahead of the leading toe, aside of the pelvis (the toe leads on one side)
     const double ahead_m = (p_W - self.p_W_front).dot(walking_W);
     const double aside_m = (p_W - self.X_WP.translation()).dot(lateral_W);
@@ -195,10 +202,10 @@ Vec3 CircumventStrategy::WalkingDirection(const RobotKnowledge& self, const Vec2
 std::optional<Vec3> CircumventStrategy::PointOnThePath(const Observation& observation) const {
   const RobotKnowledge& self = *observation.robot;
   const double clear_m = half_width_m_ + config_.margin_m;
-  for (const SensorOutput& sensor : observation.sensors) {
-    if (!sensor.fresh || !sensor.detected) continue;
+  for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
+    const SensorOutput& sensor = observation.sensors[i];
+    if (!RaisedEcho(sensor, sensors_[i], self)) continue;
     const Vec3 p_W = sensor.p_W_measured();
-    if (p_W.z() - self.ground_z_m < config_.min_height_m) continue;
     const double ahead_m = (p_W - self.p_W_front).dot(self.heading_W);
     if (ahead_m < 0 || ahead_m > config_.detect_distance_m) continue;
     // nearer the path than the robot may pass: in the way (beyond the goal: not)

@@ -118,6 +118,10 @@ class CircumventStrategy : public Strategy {
   Vec2 ToWorld(double s, double l) const;
 
   CircumventConfig config_;
+  // a fresh detection standing min_height_m above the ground wherever in its cone it echoed
+  bool RaisedEcho(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self) const;
+
+  std::vector<SensorInfo> sensors_;
   std::vector<Vec2> path_m_;
   double stride_m_ = 0;      // the gait's own stride (NaN: not known)
   double stride_now_m_ = 0;  // the stride last commanded

@@ -3,15 +3,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include "knowledge/echo_cone.h"
 #include "strategy/drop_ahead.h"
 
 namespace proxsim {
 
 namespace {
 
-// whether a reported point is an obstacle in the robot's way
-bool PointIsObstacle(const Vec3& p_W, const RobotKnowledge& self, const StopConfig& rule) {
-  if (p_W.z() - self.ground_z_m < rule.min_height_m) return false;  // the floor
+// whether a reported point is in the robot's way (its height judged by the caller)
+bool PointIsAhead(const Vec3& p_W, const RobotKnowledge& self, const StopConfig& rule) {
   const Vec3 lateral_W = Vec3::UnitZ().cross(self.heading_W);
   const Vec3 from_front = p_W - self.p_W_front;
   return from_front.dot(self.heading_W) <= rule.stop_distance_m &&
@@ -20,24 +20,32 @@ bool PointIsObstacle(const Vec3& p_W, const RobotKnowledge& self, const StopConf
 
 }  // namespace
 
-std::optional<Vec3> ObstaclePointAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule) {
+std::optional<Vec3> ObstaclePointAhead(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self,
+                                       const StopConfig& rule) {
   if (!sensor.fresh) return std::nullopt;
-  // the points the sensor reports, not the truth: its reading's, and each zone's of a multi-zone sensor
-  if (sensor.detected && PointIsObstacle(sensor.p_W_measured(), self, rule)) return sensor.p_W_measured();
+  // the points the sensor reports, not the truth: its reading's (raised
+  // wherever in its cone the echo came from: knowledge/echo_cone.h), and
+  // each zone's of a multi-zone sensor
+  if (sensor.detected && EchoIsRaised(sensor, info, self.ground_z_m, rule.min_height_m) &&
+      PointIsAhead(sensor.p_W_measured(), self, rule))
+    return sensor.p_W_measured();
   for (std::size_t zone = 0; zone < sensor.zones.size(); ++zone) {
-    if (sensor.zones[zone].detected && PointIsObstacle(sensor.p_W_zone(zone), self, rule)) return sensor.p_W_zone(zone);
+    const Vec3 p_W = sensor.p_W_zone(zone);
+    if (sensor.zones[zone].detected && p_W.z() - self.ground_z_m >= rule.min_height_m && PointIsAhead(p_W, self, rule))
+      return p_W;
   }
   return std::nullopt;
 }
 
-bool IsObstacleAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule) {
-  return ObstaclePointAhead(sensor, self, rule).has_value();
+bool IsObstacleAhead(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self,
+                     const StopConfig& rule) {
+  return ObstaclePointAhead(sensor, info, self, rule).has_value();
 }
 
-int FindObstacleAhead(const Observation& observation, const StopConfig& rule) {
+int FindObstacleAhead(const Observation& observation, std::span<const SensorInfo> sensors, const StopConfig& rule) {
   if (observation.robot == nullptr) return -1;
-  for (std::size_t i = 0; i < observation.sensors.size(); ++i) {
-    if (IsObstacleAhead(observation.sensors[i], *observation.robot, rule)) return static_cast<int>(i);
+  for (std::size_t i = 0; i < observation.sensors.size() && i < sensors.size(); ++i) {
+    if (IsObstacleAhead(observation.sensors[i], sensors[i], *observation.robot, rule)) return static_cast<int>(i);
   }
   return -1;
 }
@@ -60,8 +68,8 @@ void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, 
   if (stopping_ || observation.robot == nullptr) return;
   const RobotKnowledge& self = *observation.robot;
   char detail[240];
-  if (const int trigger = FindObstacleAhead(observation, config_); trigger >= 0) {
-    const Vec3 p_W = *ObstaclePointAhead(observation.sensors[trigger], self, config_);
+  if (const int trigger = FindObstacleAhead(observation, sensors_, config_); trigger >= 0) {
+    const Vec3 p_W = *ObstaclePointAhead(observation.sensors[trigger], sensors_[trigger], self, config_);
     const Vec3 from_front = p_W - self.p_W_front;
     std::snprintf(detail, sizeof detail, "%s reports a point %.3f m ahead of the leading toe, %.3f m above the ground",
                   sensors_.at(trigger).name.c_str(), from_front.dot(self.heading_W), p_W.z() - self.ground_z_m);

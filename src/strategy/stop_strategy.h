@@ -11,6 +11,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 
 #include <vector>
 
@@ -20,14 +21,17 @@
 namespace proxsim {
 
 /// Whether one sensor's output is a fresh detection in the corridor within the
-/// look-ahead, at least min_height_m above the ground.
-bool IsObstacleAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule);
+/// look-ahead, at least min_height_m above the ground wherever in its beam's
+/// cone the echo came from (knowledge/echo_cone.h; a zone: its axis point).
+bool IsObstacleAhead(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self,
+                     const StopConfig& rule);
 /// The reported point that makes it one (the reading's, else the first zone's), or nullopt.
-std::optional<Vec3> ObstaclePointAhead(const SensorOutput& sensor, const RobotKnowledge& self, const StopConfig& rule);
+std::optional<Vec3> ObstaclePointAhead(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self,
+                                       const StopConfig& rule);
 
-/// The first sensor whose fresh detection stands in the corridor within the
-/// look-ahead, at least min_height_m above the ground; -1 when none does.
-int FindObstacleAhead(const Observation& observation, const StopConfig& rule);
+/// The first sensor whose fresh detection is an obstacle ahead (IsObstacleAhead;
+/// `sensors` in the observation's order); -1 when none does.
+int FindObstacleAhead(const Observation& observation, std::span<const SensorInfo> sensors, const StopConfig& rule);
 
 class StopStrategy : public Strategy {
  public:

@@ -5,9 +5,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <optional>
+
+#include <yaml-cpp/yaml.h>
 
 #include "core/atomic_file.h"
 #include "core/text_fields.h"
+#include "scenario/scenario_paths.h"
 #include "study/outcome_stats.h"
 
 namespace proxsim {
@@ -94,6 +98,37 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   }
   WriteFileAtomically((out / "results.csv").string(), csv);
 
+  // each set's and strategy's success world by world, for the paired statistics
+  std::vector<std::vector<char>> succeeded(n_sets * n_strategies, std::vector<char>(results.size(), 0));
+  for (std::size_t job = 0; job < results.size(); ++job)
+    for (std::size_t s = 0; s < n_sets; ++s)
+      for (std::size_t g = 0; g < n_strategies; ++g)
+        succeeded[s * n_strategies + g][job] = IsSuccess(run_of(job, s, g), results[job]) ? 1 : 0;
+  const auto baseline_index = [&](const char* name) -> std::optional<std::size_t> {
+    for (std::size_t s = 0; s < n_sets; ++s)
+      if (study.sets[s].baseline == name) return s;
+    return std::nullopt;
+  };
+  const std::optional<std::size_t> blind = baseline_index("blind"), oracle = baseline_index("oracle");
+  const auto perception = [&](const Tally& t) -> PerceptionScore {
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    if (!blind || !oracle) return {kNone, kNone, kNone};
+    return PerceptionScoreOf(succeeded[t.set * n_strategies + t.strategy],
+                             succeeded[*blind * n_strategies + t.strategy],
+                             succeeded[*oracle * n_strategies + t.strategy]);
+  };
+  // dollars per run: failures (collisions, falls), and the hardware amortised over its runs
+  const auto failure_cost = [&](const Tally& t) {
+    if (t.runs == 0) return 0.0;
+    return (static_cast<double>(t.collided) * study.costs.collision_usd + static_cast<double>(t.fell) * study.costs.fall_usd) /
+           static_cast<double>(t.runs);
+  };
+  const auto expected_cost = [&](const Tally& t) {
+    const SensorSet& set = study.sets[t.set];
+    const double hardware = set.baseline == "blind" ? 0.0 : set.price_usd / study.costs.runs_per_unit;
+    return hardware + failure_cost(t);
+  };
+
   // ranking.csv: by success rate, then price (unknown last), then the order given
   std::vector<std::size_t> order(tallies.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -107,12 +142,15 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   });
   std::string ranking = "rank,set,strategy,sensors,price_usd,mass_g,runs,successes,success_rate,success_ci95_low,"
                         "success_ci95_high,reached_goal_rate,collision_rate,fall_rate,stopped_rate,time_up_rate,"
-                        "median_time_to_goal_s,median_path_ratio,median_min_clearance_m,min_clearance_m\n";
+                        "median_time_to_goal_s,median_path_ratio,median_min_clearance_m,min_clearance_m,baseline,"
+                        "perception_score,perception_ci95_low,perception_ci95_high,failure_cost_per_run_usd,"
+                        "expected_cost_per_run_usd\n";
   json rows = json::array();
   for (std::size_t r = 0; r < order.size(); ++r) {
     const Tally& t = tallies[order[r]];
     const SensorSet& set = study.sets[t.set];
     const Interval ci = WilsonInterval95(t.successes, t.runs);
+    const PerceptionScore score = perception(t);
     const auto share = [&](std::int64_t k) { return t.runs > 0 ? static_cast<double>(k) / static_cast<double>(t.runs) : 0.0; };
     std::string sensors;
     for (const std::string& name : set.sensor_names) sensors += (sensors.empty() ? "" : " ") + name;
@@ -122,8 +160,14 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
                Number(ci.low) + "," + Number(ci.high) + "," + Number(share(t.reached)) + "," +
                Number(share(t.collided)) + "," + Number(share(t.fell)) + "," + Number(share(t.stopped)) + "," +
                Number(share(t.time_up)) + "," + Number(Median(t.time_to_goal_s)) + "," + Number(Median(t.path_ratio)) +
-               "," + Number(Median(t.clearance_m)) + "," + Number(t.min_clearance_m) + "\n";
+               "," + Number(Median(t.clearance_m)) + "," + Number(t.min_clearance_m) + "," + set.baseline + "," +
+               Number(score.score) + "," + Number(score.low) + "," + Number(score.high) + "," +
+               Number(failure_cost(t)) + "," + Number(expected_cost(t)) + "\n";
     rows.push_back({{"set", set.name},
+                    {"baseline", set.baseline.empty() ? json(nullptr) : json(set.baseline)},
+                    {"perception_score", JsonNumber(score.score)},
+                    {"perception_ci95", {JsonNumber(score.low), JsonNumber(score.high)}},
+                    {"expected_cost_per_run_usd", JsonNumber(expected_cost(t))},
                     {"strategy", study.strategies[t.strategy].label},
                     {"price_usd", JsonNumber(set.price_usd)},
                     {"mass_g", JsonNumber(set.mass_g)},
@@ -170,10 +214,12 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   std::vector<std::size_t> priced;
   json unpriced = json::array();
   for (std::size_t i : order) {
-    if (std::isfinite(study.sets[tallies[i].set].price_usd)) priced.push_back(i);
+    const SensorSet& set = study.sets[tallies[i].set];
+    if (set.baseline.empty() && std::isfinite(set.price_usd)) priced.push_back(i);
   }
   for (const SensorSet& set : study.sets)
-    if (!std::isfinite(set.price_usd)) unpriced.push_back({{"set", set.name}, {"sensors_without_price", set.unpriced}});
+    if (set.baseline.empty() && !std::isfinite(set.price_usd))
+      unpriced.push_back({{"set", set.name}, {"sensors_without_price", set.unpriced}});
   std::stable_sort(priced.begin(), priced.end(), [&](std::size_t a, std::size_t b) {
     if (price_key(tallies[a]) != price_key(tallies[b])) return price_key(tallies[a]) < price_key(tallies[b]);
     return tallies[a].rate() > tallies[b].rate();
@@ -188,8 +234,51 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
                 {"sensors", study.sets[t.set].sensor_names},
                 {"success_rate", t.rate()},
                 {"success_ci95", {ci.low, ci.high}},
-                {"target_met_at_95_confidence", ci.low >= study.target_success}};
+                {"target_met_at_95_confidence", ci.low >= study.target_success},
+                {"perception_score", JsonNumber(perception(t).score)},
+                {"expected_cost_per_run_usd", JsonNumber(expected_cost(t))}};
   };
+  json lowest_cost = nullptr;
+  {
+    std::optional<std::size_t> best;
+    for (std::size_t i : priced)
+      if (!best || expected_cost(tallies[i]) < expected_cost(tallies[*best])) best = i;
+    if (best) lowest_cost = point(*best);
+  }
+
+  // warnings: where the worlds or the strategy, not the sensors, limit the answer
+  json warnings = json::array();
+  for (std::size_t f = 0; f < study.families.size() && blind && oracle; ++f) {
+    for (std::size_t g = 0; g < n_strategies; ++g) {
+      std::int64_t n = 0, blind_ok = 0, oracle_ok = 0;
+      for (std::size_t job = 0; job < results.size(); ++job) {
+        if (study.jobs[job].family != f) continue;
+        ++n;
+        blind_ok += succeeded[*blind * n_strategies + g][job];
+        oracle_ok += succeeded[*oracle * n_strategies + g][job];
+      }
+      if (n == 0) continue;
+      const double blind_rate = static_cast<double>(blind_ok) / static_cast<double>(n);
+      const double oracle_rate = static_cast<double>(oracle_ok) / static_cast<double>(n);
+      char text[400];
+      if (oracle_rate < 0.95) {
+        std::snprintf(text, sizeof text,
+                      "world %s, strategy %s: the oracle (perfect perception) succeeds in %.0f %% of %lld worlds (< 95 %%): "
+                      "the strategy or the legs, not the sensors, limit the answer there",
+                      study.families[f].name.c_str(), study.strategies[g].label.c_str(), 100 * oracle_rate,
+                      static_cast<long long>(n));
+        warnings.push_back(text);
+      }
+      if (blind_rate > 0.20) {
+        std::snprintf(text, sizeof text,
+                      "world %s, strategy %s: the blind baseline (no sensors) succeeds in %.0f %% of %lld worlds (> 20 %%): "
+                      "these worlds do not test the sensors",
+                      study.families[f].name.c_str(), study.strategies[g].label.c_str(), 100 * blind_rate,
+                      static_cast<long long>(n));
+        warnings.push_back(text);
+      }
+    }
+  }
   json cheapest = nullptr;
   for (std::size_t i : priced) {
     if (tallies[i].rate() >= study.target_success) {
@@ -214,7 +303,22 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
        "strategy, stood refused there)"},
       {"interval", "95 % Wilson score interval"},
       {"pairs", "McNemar's exact two-sided test on the discordant worlds (pairs.csv)"},
+      {"perception_score",
+       "(success - blind) / (oracle - blind) on the same worlds, seeds and strategy: the share of what perfect "
+       "perception would achieve over no sensors that the set delivers; 95 % interval by the delta method on the paired "
+       "worlds"},
+      {"baselines",
+       {{"blind", "no sensors: the strategy never sees anything"},
+        {"oracle", "perfect perception: a fan of exact rays from the robot's root link over the ground 0.3 to 3 m ahead, "
+                   "120 degrees wide, 10 Hz"}}},
+      {"costs",
+       {{"runs_per_unit", study.costs.runs_per_unit},
+        {"collision_usd", study.costs.collision_usd},
+        {"fall_usd", study.costs.fall_usd},
+        {"expected_cost_per_run_usd", "price_usd / runs_per_unit + collision_rate * collision_usd + fall_rate * fall_usd"}}},
+      {"warnings", warnings},
       {"cheapest_reaching_target", cheapest},
+      {"lowest_expected_cost", lowest_cost},
       {"pareto_front", front},
       {"unpriced_sets", unpriced},
       {"ranking", rows}};
@@ -232,14 +336,20 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
         const std::string stem = FileSafe(family.name) + "_seed" + std::to_string(study.jobs[job].seed) + "_set" +
                                  std::to_string(s + 1) + "_" + FileSafe(study.strategies[g].label);
         std::string file, command, viewer;
-        if (written < study.replay_files) {
+        // the blind baseline is meant to fail: its failures are listed, not replayed
+        if (written < study.replay_files && study.sets[s].baseline != "blind") {
           ++written;
           fs::create_directories(out / "failures");
+          // the replay's relative paths (a user's robot, meshes) rebased to its folder, as `proxsim generate` does
+          YAML::Node replay = YAML::Load(RunScenarioText(study, job, s, g));
+          RebaseScenarioPaths(replay, fs::path(family.source).parent_path(), out / "failures");
+          YAML::Emitter emitted;
+          emitted << replay;
           const std::string text =
               "# " + run.outcome + " at t = " + Number(run.outcome_t_s) + " s: set '" + study.sets[s].name +
               "', strategy " + study.strategies[g].label + ", world " + family.name + " seed " +
               std::to_string(study.jobs[job].seed) + " (written by proxsim study " + study.source + ")\n" +
-              RunScenarioText(study, job, s, g);
+              emitted.c_str() + "\n";
           WriteFileAtomically((out / "failures" / (stem + ".yaml")).string(), text);
           // relative to the study's folder: the files are the same wherever the study was written
           file = "failures/" + stem + ".yaml";
@@ -254,6 +364,37 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     }
   }
   WriteFileAtomically((out / "failures.csv").string(), failures);
+
+  // episodes.jsonl: one object per run, for a user's own analysis of the factors
+  std::string episodes;
+  for (std::size_t job = 0; job < results.size(); ++job) {
+    const WorldFamily& family = study.families[study.jobs[job].family];
+    for (std::size_t s = 0; s < n_sets; ++s) {
+      for (std::size_t g = 0; g < n_strategies; ++g) {
+        const OutcomeRun& run = run_of(job, s, g);
+        const json strategy = study.strategies[g].yaml.empty() ? json(nullptr) : json(study.strategies[g].yaml);
+        episodes += json{{"set", study.sets[s].name},
+                         {"baseline", study.sets[s].baseline.empty() ? json(nullptr) : json(study.sets[s].baseline)},
+                         {"strategy", study.strategies[g].label},
+                         {"strategy_parameters", strategy},
+                         {"world", family.name},
+                         {"kind", family.kind},
+                         {"difficulty", JsonNumber(family.difficulty)},
+                         {"seed", study.jobs[job].seed},
+                         {"way_through", results[job].way_through},
+                         {"outcome", run.outcome},
+                         {"outcome_t_s", JsonNumber(run.outcome_t_s)},
+                         {"success", IsSuccess(run, results[job])},
+                         {"walked_m", JsonNumber(run.walked_m)},
+                         {"straight_m", JsonNumber(run.straight_m)},
+                         {"min_clearance_m", JsonNumber(run.min_clearance_m)},
+                         {"price_usd", JsonNumber(study.sets[s].price_usd)}}
+                        .dump() +
+                    "\n";
+      }
+    }
+  }
+  WriteFileAtomically((out / "episodes.jsonl").string(), episodes);
   return selection;
 }
 

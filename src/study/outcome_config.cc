@@ -1,5 +1,6 @@
 #include "study/outcome_config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "scenario/scenario_sections.h"
 #include "scenario/yaml_reader.h"
 #include "sensors/part_prices.h"
+#include "study/outcome_baselines.h"
 #include "study/study_config.h"
 
 namespace proxsim {
@@ -396,7 +398,7 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
   study.source = path;
   const auto top = reader.Map(reader.Root(document),
                               {"proxsim_study", "mode", "base", "sets", "combine", "candidates", "strategies", "worlds",
-                               "seeds", "target_success", "prices", "replay_files"},
+                               "seeds", "target_success", "prices", "replay_files", "baselines", "cost"},
                               "a study map starting with 'proxsim_study: 1'");
   if (!top) throw InputError(reader.Problems());
   if (const auto version = reader.Count((*top)["proxsim_study"]); !version || *version != 1) {
@@ -476,6 +478,8 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
     SensorSet set;
     set.name = set_nodes[i].first;
     if (!set_names.insert(set.name).second) reader.Fail(set_fields[i], "set '" + set.name + "' appears twice");
+    if (IsBaselineName(set.name))
+      reader.Fail(set_fields[i], "set '" + set.name + "': a baseline's name (blind, oracle); give the set another");
     const Field sensors_field{set_nodes[i].second, set_fields[i].path, true};
     const std::vector<SensorConfig> sensors = ReadSensors(reader, sensors_field, true);
     if (set_nodes[i].second.IsSequence() && set_nodes[i].second.size() == 0)
@@ -490,6 +494,32 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
     for (const SensorSet& set : study.sets)
       for (const std::string& name : set.sensor_names) used |= name == key;
     if (!used) reader.Fail((*top)["prices"], "'" + key + "' is neither a part, a type, nor a sensor of any set");
+  }
+
+  // the baselines, after the sets: blind and oracle unless the study says otherwise
+  if (const Field field = (*top)["baselines"]) {
+    study.baselines.clear();
+    if (const auto items = reader.List(field, "a list of baselines: [blind, oracle], or [] for none")) {
+      for (const Field& item : *items) {
+        const auto name = reader.String(item);
+        if (!name) continue;
+        if (!IsBaselineName(*name)) reader.Fail(item, "unknown baseline '" + *name + "' (expected blind or oracle)");
+        else if (std::find(study.baselines.begin(), study.baselines.end(), *name) != study.baselines.end())
+          reader.Fail(item, "baseline '" + *name + "' appears twice");
+        else study.baselines.push_back(*name);
+      }
+    }
+  }
+  for (const std::string& name : study.baselines) study.sets.push_back(BaselineSet(name));
+
+  // what failures cost, for the expected cost per run
+  if (const Field field = (*top)["cost"]) {
+    if (const auto one = reader.Map(field, {"runs_per_unit", "collision_usd", "fall_usd"})) {
+      RunCosts& c = study.costs;
+      c.runs_per_unit = reader.Number((*one)["runs_per_unit"], PositiveNumber("runs")).value_or(c.runs_per_unit);
+      c.collision_usd = reader.Number((*one)["collision_usd"], NonNegativeNumber("USD")).value_or(c.collision_usd);
+      c.fall_usd = reader.Number((*one)["fall_usd"], NonNegativeNumber("USD")).value_or(c.fall_usd);
+    }
   }
 
   study.strategies = ReadStrategies(reader, (*top)["strategies"]);
@@ -546,7 +576,12 @@ YAML::Node RunNodeFromWorld(YAML::Node&& world, const SensorSet* set, const Stra
   YAML::Node doc = std::move(world);
   if (set != nullptr) doc["sensors"] = YAML::Load(set->sensors_yaml);
   if (strategy != nullptr && !strategy->yaml.empty()) doc["robot"]["strategy"] = YAML::Load(strategy->yaml);
-  if (reference) doc["robot"]["gait"]["unsafe_steps"] = "refuse";
+  if (reference) {
+    doc["sensors"] = YAML::Load("[]");  // blind
+    doc["robot"]["gait"]["unsafe_steps"] = "refuse";
+    doc["robot"]["gait"]["footholds"] = "truth";  // legs that feel the true ground, whatever the runs plan on
+    doc["robot"]["on_collision"] = "stop";
+  }
   return doc;
 }
 

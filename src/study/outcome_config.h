@@ -36,6 +36,18 @@ struct SensorSet {
   double price_usd = 0;      ///< the sum over its sensors; NaN when one has no price
   double mass_g = 0;         ///< the sum; NaN when one has no mass
   std::vector<std::string> unpriced;  ///< its sensors without a price (why price_usd is NaN)
+  /// "" for a candidate set; "blind" or "oracle" for a baseline the study adds
+  /// (outcome_baselines.h): rows of the answer, never a set to buy.
+  std::string baseline;
+};
+
+/// What a run's failures cost, for the expected cost per run (CostNav's
+/// spirit: a navigation stack ranked by dollars per run): the set's price
+/// amortised over runs_per_unit runs, plus each collision's and each fall's.
+struct RunCosts {
+  double runs_per_unit = 1000;  ///< runs one unit of hardware lasts, > 0
+  double collision_usd = 50;    ///< a collision: a bumped object, a scratched shin
+  double fall_usd = 500;        ///< a fall: a humanoid's repair and downtime
 };
 
 /// One strategy the sets are run with.
@@ -68,6 +80,9 @@ struct OutcomeStudyConfig {
   std::vector<Job> jobs;
   double target_success = 0.95;
   std::size_t replay_files = 1000;
+  RunCosts costs;
+  /// The baselines run beside the sets (their rows last in `sets`): blind and oracle by default.
+  std::vector<std::string> baselines{"blind", "oracle"};
   std::size_t runs_per_job() const { return sets.size() * strategies.size(); }
 };
 
@@ -85,9 +100,10 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
 /// The scenario text of one run: the job's world, the set's sensors, the
 /// strategy, `seed` the job's seed. What the run reads, and what its replay
 /// file holds. (RunTextFromWorld with `reference` makes the job's reference
-/// walk instead.) The reference: no strategy (the first set's sensors, which then
-/// steer nothing: a scenario needs a sensor) and `gait.unsafe_steps: refuse` —
-/// the episode that tells whether the legs can walk the path at all.
+/// walk instead.) The reference: no sensors, no strategy, legs that feel the
+/// true ground and refuse an unsafe step (`gait.footholds: truth`,
+/// `gait.unsafe_steps: refuse`), ended by its first collision — the episode
+/// that tells whether the path given can be walked at all, and where not.
 std::string RunScenarioText(const OutcomeStudyConfig& study, std::size_t job, std::size_t set, std::size_t strategy);
 
 /// The job's world without sensors or strategy (generated, for a generated family).

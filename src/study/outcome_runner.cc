@@ -43,13 +43,15 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
   // (WorldText, RunScenarioText), never written out and parsed back
   YAML::Node world = WorldNode(study, job);
   OutcomeJob result;
-  // a generated room has a way through by construction (its free corridor,
-  // scene/world_room.cc); elsewhere the reference walk tells, with the first
-  // set's sensors (a scenario needs one; without a strategy they steer nothing)
-  if (study.families[study.jobs[job].family].kind != "room") {
-    const OutcomeRun reference = RunEpisodeNode(RunNodeFromWorld(world, &study.sets.front(), nullptr, true), source);
-    result.way_through = reference.outcome != "refused";
-    if (!result.way_through) result.hazard_m = reference.walked_m;
+  // the reference walk: blind, no strategy, legs that refuse an unsafe step,
+  // the episode ended by the first collision. Refused: the path cannot be
+  // walked; collided: something stands in the straight way (a generated
+  // room's blockers, a person) — either way a stop before it is a success
+  const OutcomeRun reference = RunEpisodeNode(RunNodeFromWorld(world, nullptr, nullptr, true), source);
+  result.way_through = reference.outcome != "refused" && reference.outcome != "collided";
+  if (!result.way_through) {
+    result.hazard_m = reference.walked_m;
+    result.stop_window_m = reference.outcome == "refused" ? kStopBeforeHazard_m : kStopBeforeObstacle_m;
   }
   for (const SensorSet& set : study.sets) {
     for (const StrategyChoice& strategy : study.strategies) {
@@ -68,7 +70,7 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
 bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
   if (run.outcome == "reached_goal") return true;
   return !job.way_through && (run.outcome == "stopped" || run.outcome == "refused") &&
-         run.walked_m >= job.hazard_m - kStopBeforeHazard_m;
+         run.walked_m >= job.hazard_m - job.stop_window_m;
 }
 
 namespace {
@@ -76,7 +78,8 @@ namespace {
 // The episode of a loaded scenario, walked to its end.
 OutcomeRun RunLoaded(Scenario scenario) {
   Simulation sim(std::move(scenario), 1);
-  while (!sim.done()) sim.Step();
+  // the goal ends the episode: nothing after it changes the outcome
+  while (!sim.done() && !sim.robot_outcome().reached_goal) sim.Step();
   OutcomeRun run;
   const Simulation::Outcome outcome = sim.outcome();
   run.outcome = outcome.name;
@@ -105,7 +108,7 @@ OutcomeRun RunEpisodeNode(const YAML::Node& scenario, const std::string& source)
 json OutcomeJobJson(const OutcomeJob& job) {
   json runs = json::array();
   for (const OutcomeRun& r : job.runs) runs.push_back({r.outcome, r.outcome_t_s, r.walked_m, r.straight_m, r.min_clearance_m});
-  return {{"way", job.way_through}, {"hazard_m", job.hazard_m}, {"runs", runs}};
+  return {{"way", job.way_through}, {"hazard_m", job.hazard_m}, {"window_m", job.stop_window_m}, {"runs", runs}};
 }
 
 OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const std::string& where) {
@@ -115,12 +118,17 @@ OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const 
   const auto runs = metrics.find("runs");
   if (way == metrics.end() || !way->is_boolean()) Bad(where + ": expected \"way\": true or false");
   if (hazard == metrics.end() || !hazard->is_number()) Bad(where + ": expected \"hazard_m\": a number");
+  const auto window = metrics.find("window_m");
+  if (window == metrics.end() || !window->is_number() || !std::isfinite(window->get<double>()) ||
+      window->get<double>() < 0)
+    Bad(where + ": expected \"window_m\": a number >= 0");
   if (runs == metrics.end() || !runs->is_array() || runs->size() != runs_per_job) {
     Bad(where + ": expected " + std::to_string(runs_per_job) + " runs (sets x strategies; a line of another study?)");
   }
   OutcomeJob job;
   job.way_through = way->get<bool>();
   job.hazard_m = hazard->get<double>();
+  job.stop_window_m = window->get<double>();
   for (const json& r : *runs) {
     if (!r.is_array() || r.size() != 5 || !r[0].is_string() ||
         std::ranges::find(Simulation::kOutcomeNames, r[0].get<std::string>()) == Simulation::kOutcomeNames.end()) {

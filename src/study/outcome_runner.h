@@ -28,17 +28,25 @@ struct OutcomeRun {
 
 /// One job's episodes: runs[set · strategies + strategy].
 struct OutcomeJob {
-  bool way_through = true;      ///< the reference walk did not stand refused before an unsafe step
-  double hazard_m = 0;          ///< without a way through: how far the reference walked before it stood refused
+  bool way_through = true;      ///< the reference walk got to the goal along the path given
+  double hazard_m = 0;          ///< without a way through: how far the reference walked before it met the hazard
+  /// without a way through: a stop counts as "before the hazard" within this
+  /// path length of hazard_m (kStopBeforeHazard_m or kStopBeforeObstacle_m)
+  double stop_window_m = 2.0;
   std::vector<OutcomeRun> runs;
 };
 
-/// Without a way through, a stop counts as "before the hazard" within this
-/// path length of where the reference walk stood refused: a robot that stops
-/// at its start does not succeed for it. About three of the paper's strides:
-/// the stop rule on the stairs-hole example stops 1.4 m short, on a drop its
-/// lasers saw 0.16 m ahead of the toe.
+/// Where the reference walk stood refused (a step its legs cannot take), a
+/// stop counts as "before the hazard" within this path length of it: a robot
+/// that stops at its start does not succeed for it. About three of the
+/// paper's strides: the stop rule on the stairs-hole example stops 1.4 m
+/// short, on a drop its lasers saw 0.16 m ahead of the toe.
 inline constexpr double kStopBeforeHazard_m = 2.0;
+/// Where the reference walk collided (something in the way of the straight
+/// path, a generated room's blockers), within this: the stop rule's 0.5 m
+/// look-ahead from the toe, the toe up to 0.3 m ahead of the pelvis, and
+/// half a stride to the next double support.
+inline constexpr double kStopBeforeObstacle_m = 1.2;
 
 using OutcomeResults = std::vector<OutcomeJob>;  ///< per job
 

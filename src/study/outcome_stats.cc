@@ -4,7 +4,35 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
+
 namespace proxsim {
+
+double NormalQuantile(double p) { return boost::math::quantile(boost::math::normal_distribution<double>(), p); }
+
+double StudentTQuantile(double p, double dof) {
+  return boost::math::quantile(boost::math::students_t_distribution<double>(dof), p);
+}
+
+PerceptionScore PerceptionScoreOf(std::span<const char> set, std::span<const char> blind, std::span<const char> oracle) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t n = set.size();
+  double sum_x = 0, sum_y = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    sum_x += set[j] - blind[j];
+    sum_y += oracle[j] - blind[j];
+  }
+  if (n < 2 || sum_y <= 0) return {sum_y > 0 ? sum_x / sum_y : kNaN, kNaN, kNaN};
+  const double r = sum_x / sum_y, mean_y = sum_y / static_cast<double>(n);
+  double sum_z2 = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double z = (set[j] - blind[j]) - r * (oracle[j] - blind[j]);
+    sum_z2 += z * z;
+  }
+  const double half = kZ95 * std::sqrt(sum_z2 / (static_cast<double>(n) * static_cast<double>(n - 1))) / mean_y;
+  return {r, r - half, r + half};
+}
 
 Interval WilsonInterval95(std::int64_t successes, std::int64_t n) {
   if (n <= 0) return {0.0, 1.0};

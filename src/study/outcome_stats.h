@@ -14,14 +14,30 @@
 //   (two-sided, exact binomial; 1 when there is no discordant pair). Exact
 //   rather than the chi-square approximation, which is poor below about 25
 //   discordant pairs — the usual case in a small study.
+// - the perception score of a set: where its success lies between the blind
+//   baseline's and the oracle's on the same worlds, R = (S − B) / (O − B),
+//   with a 95 % interval by the delta method on the paired worlds: with
+//   x_j = S_j − B_j and y_j = O_j − B_j (each −1, 0 or 1) on world j of n,
+//   R = Σx / Σy, and with z_j = x_j − R·y_j (whose mean is 0),
+//     Var R ≈ Σ z_j² / (n (n − 1)) / ȳ²,   R ± z₀.₉₇₅ √Var R;
+//   undefined (NaN) when the oracle does no better than blind (Σy <= 0).
+//
+// Every quantile comes from Boost.Math (boost/math/distributions), checked
+// against published tables in tests/outcome_study_test.cc.
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace proxsim {
 
-/// z of a two-sided 95 % interval (the normal's 97.5 % quantile).
+/// The standard normal's quantile at probability p in (0, 1) (Boost.Math).
+double NormalQuantile(double p);
+/// Student's t's quantile at probability p in (0, 1) for `dof` >= 1 degrees of freedom (Boost.Math).
+double StudentTQuantile(double p, double dof);
+
+/// z of a two-sided 95 % interval (the normal's 97.5 % quantile; NormalQuantile(0.975) to the last bit, tested).
 inline constexpr double kZ95 = 1.959963984540054;
 
 struct Interval {
@@ -33,6 +49,13 @@ Interval WilsonInterval95(std::int64_t successes, std::int64_t n);
 
 /// McNemar's exact two-sided p-value from the discordant counts b and c.
 double McNemarExactP(std::int64_t b, std::int64_t c);
+
+/// A perception score and its 95 % interval (all NaN when undefined).
+struct PerceptionScore {
+  double score, low, high;
+};
+/// From the paired successes (0 or 1) of the set, blind and the oracle on the same n worlds.
+PerceptionScore PerceptionScoreOf(std::span<const char> set, std::span<const char> blind, std::span<const char> oracle);
 
 /// The median of `values` (the mean of the middle two for an even count); NaN for none.
 double Median(std::vector<double> values);

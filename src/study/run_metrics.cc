@@ -71,7 +71,7 @@ void RunMetricsRecorder::Add() {
   if (self == nullptr) return;
   const SampleFrame& delivered = sim_.delivered();
   for (std::size_t i = 0; i < delivered.sensors.size(); ++i) {
-    if (!IsObstacleAhead(observation.sensors[i], *self, stop_rule)) continue;
+    if (!IsObstacleAhead(observation.sensors[i], sim_.sensor_info()[i], *self, stop_rule)) continue;
     if (HazardOf(delivered.sensors[i].object_id) < 0) ++metrics_[i].false_alarms;
   }
 }

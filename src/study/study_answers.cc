@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/text_fields.h"
+#include "study/outcome_stats.h"
 #include "study/study_selection.h"
 
 namespace proxsim {
@@ -17,13 +18,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Student's t at 97.5 % for 1..30 degrees of freedom; 1.96 beyond
-double T975(std::size_t dof) {
-  static const double table[] = {12.706, 4.303, 2.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
-                                 2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
-                                 2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
-  return dof >= 1 && dof <= 30 ? table[dof - 1] : 1.96;
-}
+// Student's t at 97.5 % (Boost.Math; the hand-kept table this replaced had
+// 2.182 for 3 degrees of freedom, where it is 3.182, and 1.96 beyond 30)
+double T975(std::size_t dof) { return StudentTQuantile(0.975, static_cast<double>(dof)); }
 
 std::string Number(double value) {
   if (!std::isfinite(value)) return "";

@@ -1,0 +1,35 @@
+// Where a beam's echo may have come from. A sensor with a cone of rays
+// reports the nearest echo anywhere in its cone, not on its axis: the point
+// a reading puts on the axis (SensorOutput::p_W_measured) may stand
+// centimetres above a floor that echoed at the cone's lower edge. Whether a
+// reading shows something raised is therefore asked of the lowest point the
+// echo can have come from: the cone's lowest direction at the reported
+// distance. One ray (aperture 0) is its axis.
+//
+// Frames: W world.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "knowledge/observation.h"
+
+namespace proxsim {
+
+/// The height (world z) of the lowest point an echo at `d_m` can have come
+/// from, for a sensor at `p_WS` whose axis is `dir_W` (unit) and whose beam's
+/// full cone angle is `aperture_deg`: the axis turned down by half the
+/// aperture in its vertical plane, z = p_z + d·(cos θ·a_z − sin θ·√(1 − a_z²)).
+inline double LowestEchoZ_m(const Vec3& p_WS, const Vec3& dir_W, double d_m, double aperture_deg) {
+  const double half_rad = 0.5 * aperture_deg * M_PI / 180.0;
+  const double a_z = std::clamp(dir_W.z(), -1.0, 1.0);
+  return p_WS.z() + d_m * (std::cos(half_rad) * a_z - std::sin(half_rad) * std::sqrt(1.0 - a_z * a_z));
+}
+
+/// Whether a detection of `sensor` (a fresh one) stands at least
+/// `min_height_m` above the ground at `ground_z_m` wherever in its cone it came from.
+inline bool EchoIsRaised(const SensorOutput& sensor, const SensorInfo& info, double ground_z_m, double min_height_m) {
+  return LowestEchoZ_m(sensor.p_WS, sensor.dir_W, sensor.d_m, info.aperture_deg) - ground_z_m >= min_height_m;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,43 @@
+// The baselines an outcome study runs beside the candidate sets, on the same
+// worlds and seeds, with the same strategies (docs/studies.md "Baselines"):
+//
+//  - blind: no sensors at all; the strategy never sees anything. Where the
+//    worlds test sensing, it must fail: its success is what a set gets for
+//    free.
+//  - oracle: perfect perception for the same strategy — a dense fan of
+//    `ideal` rays (noise-free, exact, any incidence, blind to the robot's own
+//    body) from the robot's root link, covering the ground from 0.3 m to 3 m
+//    ahead and 60 degrees to either side, read ten times a second. Its
+//    failures are the strategy's and the legs', not the sensors': its success
+//    is what perfect sensing would buy.
+//
+// A set's perception score is where it lies between the two
+// (outcome_stats.h, PerceptionScore).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "study/outcome_config.h"
+
+namespace proxsim {
+
+inline constexpr const char* kBlindBaseline = "blind";
+inline constexpr const char* kOracleBaseline = "oracle";
+
+/// The oracle's fan: azimuths from -kOracleHalfFan_deg to +kOracleHalfFan_deg every
+/// kOracleAzimuthStep_deg, each at the pitches whose rays from 1 m up meet
+/// the floor at kOracleGroundReach_m.
+inline constexpr double kOracleHalfFan_deg = 60;
+inline constexpr double kOracleAzimuthStep_deg = 4;
+inline constexpr double kOracleRate_hz = 10;
+inline constexpr double kOracleRange_m = 4;
+
+/// The baseline sets by name ("blind", "oracle"), as SensorSets (their
+/// `baseline` set, no price): what LoadOutcomeStudyFile appends to the sets.
+SensorSet BaselineSet(const std::string& name);
+
+/// Whether `name` is a baseline's.
+bool IsBaselineName(const std::string& name);
+
+}  // namespace proxsim
