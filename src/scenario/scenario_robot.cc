@@ -115,6 +115,13 @@ std::optional<Value> ReadChoice(YamlReader& reader, const Field& field,
   return std::nullopt;
 }
 
+// a strategy's `perception: readings | map`
+Perception ReadPerception(YamlReader& reader, const Field& field) {
+  return ReadChoice<Perception>(reader, field, {{"readings", Perception::kReadings}, {"map", Perception::kMap}},
+                                "expected readings (each fresh reading's point) or map (the robot's terrain map)")
+      .value_or(Perception::kReadings);
+}
+
 }  // namespace
 
 std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& field) {
@@ -122,9 +129,11 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
   const YAML::Node name_node = field.node.IsMap() ? field.node["name"] : YAML::Node();
   const std::string name = name_node && name_node.IsScalar() ? name_node.Scalar() : "";
   if (name == "stop") {
-    const auto map = reader.Map(field, {"name", "stop_distance_m", "min_height_m", "corridor_half_width_m", "max_drop_m"});
+    const auto map =
+        reader.Map(field, {"name", "perception", "stop_distance_m", "min_height_m", "corridor_half_width_m", "max_drop_m"});
     if (!map) return std::nullopt;
     StopConfig stop;
+    stop.perception = ReadPerception(reader, (*map)["perception"]);
     stop.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(stop.stop_distance_m);
     stop.min_height_m = reader.Number((*map)["min_height_m"], PositiveNumber("m")).value_or(stop.min_height_m);
     stop.corridor_half_width_m =
@@ -133,10 +142,11 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
     return stop;
   }
   if (name == "circumvent") {
-    const auto map = reader.Map(field, {"name", "margin_m", "detect_distance_m", "stop_distance_m", "min_height_m",
-                                        "max_detour_m", "assumed_depth_m", "rejoin_m"});
+    const auto map = reader.Map(field, {"name", "perception", "margin_m", "detect_distance_m", "stop_distance_m",
+                                        "min_height_m", "max_detour_m", "assumed_depth_m", "rejoin_m"});
     if (!map) return std::nullopt;
     CircumventConfig c;
+    c.perception = ReadPerception(reader, (*map)["perception"]);
     c.margin_m = reader.Number((*map)["margin_m"], NonNegativeNumber("m")).value_or(c.margin_m);
     c.detect_distance_m = reader.Number((*map)["detect_distance_m"], PositiveNumber("m")).value_or(c.detect_distance_m);
     c.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(c.stop_distance_m);

@@ -17,13 +17,14 @@ nlohmann::json NullUnless(bool known, const nlohmann::json& value) { return know
 nlohmann::json StrategyJson(const StrategyConfig& config) {
   if (const auto* stop = std::get_if<StopConfig>(&config)) {
     return {{"name", "stop"},
+            {"perception", PerceptionName(stop->perception)},
             {"stop_distance_m", stop->stop_distance_m},
             {"min_height_m", stop->min_height_m},
             {"corridor_half_width_m", stop->corridor_half_width_m},
             {"max_drop_m", NullUnless(stop->max_drop_m > 0, stop->max_drop_m)}};
   }
   const auto& c = std::get<CircumventConfig>(config);
-  return {{"name", "circumvent"},          {"margin_m", c.margin_m},
+  return {{"name", "circumvent"},          {"perception", PerceptionName(c.perception)}, {"margin_m", c.margin_m},
           {"detect_distance_m", c.detect_distance_m}, {"stop_distance_m", c.stop_distance_m},
           {"min_height_m", c.min_height_m},  {"max_detour_m", c.max_detour_m},
           {"assumed_depth_m", c.assumed_depth_m}, {"rejoin_m", c.rejoin_m}};

@@ -1,6 +1,7 @@
 #include "strategy/circumvent_strategy.h"
 
 #include "knowledge/echo_cone.h"
+#include "knowledge/map_queries.h"
 #include "core/message_format.h"
 #include "gait/gait_walker.h"
 
@@ -98,24 +99,32 @@ Vec2 CircumventStrategy::ToWorld(double s, double l) const {
   return segment_.origin + s * segment_.u + l * Left(segment_.u);
 }
 
-void CircumventStrategy::KeepPoints(const Observation& observation) {
+void CircumventStrategy::FindRaisedPoints(const Observation& observation) {
+  raised_.clear();
   const RobotKnowledge& self = *observation.robot;
+  if (config_.perception == Perception::kMap) {
+    // the map's obstacles, their outlines every cell of ours (steps and holes are the legs' to plan)
+    if (observation.map != nullptr)
+      ForEachObstacleOutlinePoint(*observation.map, kCell_m, [&](const Vec3& p_W) { raised_.push_back(p_W); });
+    return;
+  }
   for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
     const SensorOutput& sensor = observation.sensors[i];
     if (!RaisedEcho(sensor, sensors_[i], self)) continue;  // the floor, wherever in its cone it echoed
-    const Vec3 p_W = sensor.p_W_measured();
-    points_[CellOf(p_W)] = p_W;
+    raised_.push_back(sensor.p_W_measured());
   }
+}
+
+void CircumventStrategy::KeepPoints(const Observation& observation) {
+  FindRaisedPoints(observation);
+  for (const Vec3& p_W : raised_) points_[CellOf(p_W)] = p_W;
 }
 
 std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observation, const Vec3& walking_W,
                                                        double look_ahead_m, double lateral_m) const {
   const RobotKnowledge& self = *observation.robot;
   const Vec3 lateral_W = Vec3::UnitZ().cross(walking_W);
-  for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
-    const SensorOutput& sensor = observation.sensors[i];
-    if (!RaisedEcho(sensor, sensors_[i], self)) continue;
-    const Vec3 p_W = sensor.p_W_measured();
+  for (const Vec3& p_W : raised_) {
     // ahead of the leading toe, aside of the pelvis (the toe leads on one side)
     const double ahead_m = (p_W - self.p_W_front).dot(walking_W);
     const double aside_m = (p_W - self.X_WP.translation()).dot(lateral_W);
@@ -202,10 +211,7 @@ Vec3 CircumventStrategy::WalkingDirection(const RobotKnowledge& self, const Vec2
 std::optional<Vec3> CircumventStrategy::PointOnThePath(const Observation& observation) const {
   const RobotKnowledge& self = *observation.robot;
   const double clear_m = half_width_m_ + config_.margin_m;
-  for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
-    const SensorOutput& sensor = observation.sensors[i];
-    if (!RaisedEcho(sensor, sensors_[i], self)) continue;
-    const Vec3 p_W = sensor.p_W_measured();
+  for (const Vec3& p_W : raised_) {
     const double ahead_m = (p_W - self.p_W_front).dot(self.heading_W);
     if (ahead_m < 0 || ahead_m > config_.detect_distance_m) continue;
     // nearer the path than the robot may pass: in the way (beyond the goal: not)

@@ -121,7 +121,11 @@ class CircumventStrategy : public Strategy {
   // a fresh detection standing min_height_m above the ground wherever in its cone it echoed
   bool RaisedEcho(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self) const;
 
+  // this sample's raised points (fresh readings' or the map's obstacles' outlines: config_.perception)
+  void FindRaisedPoints(const Observation& observation);
+
   std::vector<SensorInfo> sensors_;
+  std::vector<Vec3> raised_;
   std::vector<Vec2> path_m_;
   double stride_m_ = 0;      // the gait's own stride (NaN: not known)
   double stride_now_m_ = 0;  // the stride last commanded

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "knowledge/echo_cone.h"
+#include "knowledge/map_queries.h"
 #include "strategy/drop_ahead.h"
 
 namespace proxsim {
@@ -68,6 +69,22 @@ void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, 
   if (stopping_ || observation.robot == nullptr) return;
   const RobotKnowledge& self = *observation.robot;
   char detail[240];
+  if (config_.perception == Perception::kMap) {
+    // the map's obstacles in the corridor ahead of the leading toe; the legs plan steps and holes on their own map
+    if (observation.map == nullptr) return;
+    const Hazard* obstacle =
+        ObstacleInCorridor(*observation.map, self.p_W_front.head<2>(), self.heading_W.head<2>().normalized(),
+                           config_.stop_distance_m, config_.corridor_half_width_m);
+    if (obstacle == nullptr) return;
+    std::snprintf(detail, sizeof detail,
+                  "the map shows an obstacle %.2f m high over (%.2f, %.2f)-(%.2f, %.2f), %.3f m from the leading toe",
+                  obstacle->height_m, obstacle->min_W.x(), obstacle->min_W.y(), obstacle->max_W.x(),
+                  obstacle->max_W.y(), obstacle->DistanceTo(self.p_W_front.head<2>()));
+    robot.Stop();
+    stopping_ = true;
+    events.Log("obstacle_ahead", detail);
+    return;
+  }
   if (const int trigger = FindObstacleAhead(observation, sensors_, config_); trigger >= 0) {
     const Vec3 p_W = *ObstaclePointAhead(observation.sensors[trigger], sensors_[trigger], self, config_);
     const Vec3 from_front = p_W - self.p_W_front;

@@ -8,8 +8,15 @@
 
 namespace proxsim {
 
+/// What a built-in strategy reads: each fresh reading's point (`readings`,
+/// the paper's way), or the robot's terrain map (`map`: its obstacles,
+/// knowledge/map_queries.h; steps and holes are the legs' to plan on their
+/// own map, gait.footholds: map).
+enum class Perception { kReadings, kMap };
+
 /// `{name: stop}`: stop before an obstacle or a drop the sensors report ahead.
 struct StopConfig {
+  Perception perception = Perception::kReadings;  ///< readings | map
   double stop_distance_m = 0.5;         ///< look-ahead from the leading toe, > 0
   double min_height_m = 0.03;           ///< a point this far above the stance ground is an obstacle, > 0
   double corridor_half_width_m = 0.30;  ///< lateral half-width of the corridor the feet sweep, > 0
@@ -18,6 +25,7 @@ struct StopConfig {
 
 /// `{name: circumvent}`: walk around an obstacle seen ahead, back to the path.
 struct CircumventConfig {
+  Perception perception = Perception::kReadings;  ///< readings | map
   double margin_m = 0.15;            ///< kept between the robot's half-width and the obstacle, >= 0
   double detect_distance_m = 1.5;    ///< an obstacle this close ahead of the leading toe is avoided, > 0
   double stop_distance_m = 0.3;      ///< safety: stop when a point is this close in the walking corridor, > 0
@@ -28,6 +36,11 @@ struct CircumventConfig {
 };
 
 using StrategyConfig = std::variant<StopConfig, CircumventConfig>;
+
+/// "readings" or "map".
+inline const char* PerceptionName(Perception perception) {
+  return perception == Perception::kMap ? "map" : "readings";
+}
 
 /// "stop" or "circumvent".
 inline const char* StrategyName(const StrategyConfig& config) {

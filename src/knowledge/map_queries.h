@@ -1,0 +1,33 @@
+// What the built-in strategies ask of the terrain map (terrain_map.h), one
+// query each, so that every strategy reads the map the same way:
+//  - the obstacles: hazards of class `obstacle` (raised, too high or too
+//    small to step on), as the map has found them — a step up or down the
+//    legs can take, and a hole the gait plans over on its own map
+//    (gait.footholds: map), are not obstacles to walk around;
+//  - the first obstacle in a corridor ahead: a rectangle from a point along
+//    a heading, by the separating-axis test against each obstacle's extent;
+//  - an obstacle's outline, as points every `spacing_m` around its extent at
+//    its top's height, for a strategy that plans around points.
+//
+// Frames: W world.
+#pragma once
+
+#include <functional>
+
+#include "core/geometry.h"
+#include "knowledge/hazards.h"
+#include "knowledge/terrain_map.h"
+
+namespace proxsim {
+
+/// The first obstacle (in the map's order) whose extent meets the corridor
+/// [0, ahead_m] along `heading_W` (unit, horizontal) from `p_W_from`, within
+/// ±half_width_m across it; null when none does.
+const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, const Vec2& heading_W, double ahead_m,
+                                 double half_width_m);
+
+/// Calls `point` with points every `spacing_m` (at most) around the outline
+/// of each obstacle's extent, at its top's height (world z).
+void ForEachObstacleOutlinePoint(const TerrainMap& map, double spacing_m, const std::function<void(const Vec3&)>& point);
+
+}  // namespace proxsim
