@@ -34,7 +34,7 @@ std::string SmallStudy() {
   const std::string data = std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/";
   return "proxsim_study: 1\nmode: outcomes\nbase: " + data + "outcome_walker.yaml\n"
          "sets:\n"
-         "  - {name: blind, sensors: [{name: up, type: laser, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.35], "
+         "  - {name: upward, sensors: [{name: up, type: laser, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.35], "
          "rpy_deg: [0, -80, 0]}}]}\n"
          "  - name: lasers\n    sensors:\n"
          "      - {name: laser_left_ahead, type: laser, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 8, 0]}}\n"
@@ -66,10 +66,10 @@ TEST_F(OutcomeStudyCliTest, TheExampleRanksSetsAndStrategiesAndDrawsThem) {
   const auto result =
       RunProxsim("study " + std::string(PROXSIM_SOURCE_DIR) + "/data/studies/outcomes_room.yaml --out " + out.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  // 3 sets x 2 strategies x (2 room difficulties + 1 course) x 8 seeds
-  EXPECT_EQ(ReadCsv(out / "results.csv").rows.size(), 144u);
-  EXPECT_EQ(ReadCsv(out / "ranking.csv").rows.size(), 6u);
-  EXPECT_EQ(ReadCsv(out / "pairs.csv").rows.size(), 6u);  // 3 pairs per strategy
+  // (3 sets + 2 baselines) x 2 strategies x (2 room difficulties + 1 course) x 8 seeds
+  EXPECT_EQ(ReadCsv(out / "results.csv").rows.size(), 240u);  // (3 sets + blind + oracle) x 2 strategies x 24 worlds
+  EXPECT_EQ(ReadCsv(out / "ranking.csv").rows.size(), 10u);
+  EXPECT_EQ(ReadCsv(out / "pairs.csv").rows.size(), 20u);  // C(5, 2) pairs per strategy
   const auto selection = nlohmann::json::parse(ReadFile(out / "selection.json"));
   EXPECT_EQ(selection["mode"], "outcomes");
   EXPECT_TRUE(selection["unpriced_sets"].empty()) << "every sensor of the example has a price";
@@ -111,16 +111,17 @@ TEST_F(OutcomeStudyCliTest, FilesAreByteIdenticalWithOneThreadTwoThreadsTwoMpiRa
     for (const char* file : kFiles) EXPECT_EQ(ReadFile(dir_ / out / file), ReadFile(dir_ / "t1" / file)) << out << "/" << file;
   }
 
-  // what the runs did: the blind set walks into the obstacle whatever its strategy
+  // what the runs did: the upward-looking set walks into the obstacle whatever its strategy
   const auto results = ReadCsv(dir_ / "t1" / "results.csv");
-  ASSERT_EQ(results.rows.size(), 2u * 2u * 4u);
+  ASSERT_EQ(results.rows.size(), (2u + 2u) * 2u * 4u);  // (2 sets + blind + oracle) x 2 strategies x 4 worlds
   for (const auto& row : results.rows) {
-    if (row.at("set") == "blind" && row.at("world") == "obstacle_room") EXPECT_EQ(row.at("outcome"), "collided");
+    if (row.at("set") == "upward" && row.at("world") == "obstacle_room") EXPECT_EQ(row.at("outcome"), "collided");
     if (row.at("set") == "lasers" && row.at("world") == "obstacle_room" && row.at("strategy") == "circumvent") {
       EXPECT_EQ(row.at("outcome"), "reached_goal");
       EXPECT_EQ(row.at("success"), "1");
     }
-    if (row.at("world") == "obstacle_room") EXPECT_EQ(row.at("way_through"), "1");
+    // the blind reference walk meets the obstacle: the straight path has no way through
+    if (row.at("world") == "obstacle_room") EXPECT_EQ(row.at("way_through"), "0");
   }
 }
 
@@ -129,10 +130,10 @@ TEST_F(OutcomeStudyCliTest, AFailedRunsReplayCommandReproducesItsOutcome) {
   ASSERT_EQ(RunProxsim("study " + study_ + " --no-report --out " + out.string()).exit_code, 0);
   const auto failures = ReadCsv(out / "failures.csv");
   ASSERT_FALSE(failures.rows.empty());
-  // the blind set's collision in the obstacle room
+  // the upward set's collision in the obstacle room
   const std::map<std::string, std::string>* failure = nullptr;
   for (const auto& row : failures.rows)
-    if (row.at("set") == "blind" && row.at("world") == "obstacle_room") failure = &row;
+    if (row.at("set") == "upward" && row.at("world") == "obstacle_room") failure = &row;
   ASSERT_NE(failure, nullptr);
   std::string command = failure->at("command");
   ASSERT_EQ(command.rfind("proxsim run ", 0), 0u) << command;
@@ -156,7 +157,7 @@ TEST_F(OutcomeStudyCliTest, StoppingBeforeAnImpassableHoleIsASuccess) {
       << "sets:\n  - name: knee_lasers\n    sensors:\n"
       << "      - {name: l, type: laser, link: left_tibia, pose: {xyz_m: [0.08, 0, -0.08], rpy_deg: [0, 35, 0]}}\n"
       << "      - {name: r, type: laser, link: right_tibia, pose: {xyz_m: [0.08, 0, -0.08], rpy_deg: [0, 35, 0]}}\n"
-      << "strategies: [{name: stop}, none]\n"
+      << "strategies: [{name: stop}, none]\nbaselines: []\n"
       << "worlds: [{name: hole, scenario: " << PROXSIM_SOURCE_DIR << "/data/scenarios/stairs_hole.yaml}]\n";
   const fs::path out = dir_ / "hole_out";
   const auto result = RunProxsim("study " + (dir_ / "hole.yaml").string() + " --no-report --out " + out.string());

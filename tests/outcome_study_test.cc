@@ -297,7 +297,7 @@ TEST(OutcomeConfig, CombineMakesEverySetOfSizeAmongTheTopMountings) {
       << "4,ideal@left_tibia:z-0.1:x0.06:p0:y0,ideal,,left_tibia,-0.1,0.06,0,0,0.2,0,0.1,0,0,0,0,0\n";
   const std::string head = "proxsim_study: 1\nmode: outcomes\nbase: " + std::string(PROXSIM_SOURCE_DIR) +
                            "/data/scenarios/outcome_walker.yaml\nworlds: {generate: {kind: room}}\n";
-  std::ofstream(dir / "from_ranking.yaml") << head << "combine: {from: ranking.csv, size: 2, top: 3}\n";
+  std::ofstream(dir / "from_ranking.yaml") << head << "combine: {from: ranking.csv, size: 2, top: 3}\nbaselines: []\n";
   const OutcomeStudyConfig ranked = LoadOutcomeStudyFile((dir / "from_ranking.yaml").string());
   ASSERT_EQ(ranked.sets.size(), 3u);  // C(3, 2)
   EXPECT_EQ(ranked.sets[0].name, "laser@left_tibia:z-0.35:x0.06:p15:y0 + vl53l0x@right_tibia:z-0.25:x0.06:p0:y0");
@@ -311,7 +311,7 @@ TEST(OutcomeConfig, CombineMakesEverySetOfSizeAmongTheTopMountings) {
   std::ofstream(dir / "from_candidates.yaml")
       << head << "combine: {from: candidates, size: 3}\n"
       << "candidates: {axes: {type: [vl53l0x, hc_sr04], link: [left_tibia, right_tibia], along_m: -0.3}}\n"
-      << "prices: {hc_sr04: {price_usd: 2.5}}\n";
+      << "prices: {hc_sr04: {price_usd: 2.5}}\nbaselines: []\n";
   const OutcomeStudyConfig listed = LoadOutcomeStudyFile((dir / "from_candidates.yaml").string());
   ASSERT_EQ(listed.sets.size(), 4u);  // C(4, 3)
   EXPECT_DOUBLE_EQ(listed.sets[0].price_usd, 2 * PartPriceOf("vl53l0x")->price_usd + 2.5);
