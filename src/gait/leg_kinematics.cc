@@ -407,6 +407,7 @@ std::string BipedLegs::Fingerprint() const {
     }
   }
   put(standing_height_m_);
+  put(crouch_knee_rad_);
   return bytes;
 }
 

@@ -143,6 +143,21 @@ class BipedLegs {
   /// Reads them back.
   LegAnglesRad ReadJoints(Side s, std::span<const double> q) const;
 
+  /// The gait's crouch: a constant knee bend c (rad, ≥ 0) added to the curves
+  /// while the foot's pitch is kept, the thigh leaning forward by c/2 and the
+  /// shank back by c/2 (hip flexion +c/2, knee flexion +c, ankle dorsiflexion
+  /// +c/2), so that a robot that stands and walks with bent knees (TALOS, the
+  /// H1 under its own controllers) walks so here. 0: the curves as they are.
+  void SetCrouch(double knee_rad) { crouch_knee_rad_ = knee_rad; }
+  double crouch_knee_rad() const { return crouch_knee_rad_; }
+  /// The normative curves at `phase` (gait/gait_curves.h, CurveLegAngles), with the crouch.
+  LegAnglesRad Curve(double phase, double amplitude, double push_off_gain = 1.0) const {
+    LegAnglesRad a = CurveLegAngles(phase, amplitude, push_off_gain);
+    a.hip += 0.5 * crouch_knee_rad_;
+    a.knee += crouch_knee_rad_;
+    return a;
+  }
+
   /// Every number the gait's planning reads from these legs, as bytes: both
   /// legs' geometry, the reference pose, and each chain joint's frame, axis,
   /// type and limits. Equal fingerprints plan equal steps (gait/gait_memo.h).
@@ -154,6 +169,7 @@ class BipedLegs {
   std::array<std::vector<int>, 2> chain_;  // joints from the root to the foot link, parents first
   std::vector<double> q_reference_;
   double standing_height_m_ = 0;
+  double crouch_knee_rad_ = 0;
 };
 
 /// Rotates a sagittal vector by an angle given by its cosine c and sine s

@@ -39,6 +39,8 @@ struct GaitCycle {
   double stride_m = 0;    ///< heel strike to heel strike of one foot
   double period_s = 0;    ///< the cycle's duration
   double max_step_m = 0;  ///< highest step up or down it takes on uneven ground
+  double crouch_knee_rad = 0;  ///< the stance knee bend added to the curves (0: straight-kneed)
+  double pelvis_height_m = 0;  ///< root link above the floor at heel strike on level ground, walking so
 };
 
 /// Something the motion noticed or decided (a step it cannot take), for

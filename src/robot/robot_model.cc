@@ -430,6 +430,13 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
   return model;
 }
 
+const RobotKeyframe* RobotModel::Keyframe(const std::string& name) const {
+  for (const RobotKeyframe& key : keyframes_) {
+    if (key.name == name) return &key;
+  }
+  return nullptr;
+}
+
 int RobotModel::LinkIndex(const std::string& name) const {
   const auto it = link_of_.find(name);
   return it == link_of_.end() ? -1 : it->second;

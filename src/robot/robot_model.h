@@ -66,6 +66,15 @@ struct RobotJoint {
   double effort = 0.0;           ///< <limit effort>: N·m or N (0 when not given)
 };
 
+/// A named pose the model file gives (an MJCF <keyframe><key name=…>): what the
+/// robot's makers call its standing or walking pose, e.g. Menagerie's `home`.
+struct RobotKeyframe {
+  std::string name;
+  std::vector<double> q_by_joint;  ///< one value per joint, indexed like joint(i) (rad or m; 0 for fixed joints)
+  bool has_root = false;           ///< the key gives the root's pose (a free joint's qpos)
+  Pose X_WRoot = Pose::Identity(); ///< root link in W at the key (identity without has_root)
+};
+
 /// A URDF robot: links, joints, shapes and forward kinematics.
 class RobotModel {
  public:
@@ -119,6 +128,14 @@ class RobotModel {
   /// Distinct mesh files loaded (a file used by several links counts once).
   std::size_t MeshFileCount() const { return mesh_file_count_; }
 
+  /// The model's named poses (MJCF keyframes; none for a URDF), in file order.
+  const std::vector<RobotKeyframe>& keyframes() const { return keyframes_; }
+  /// The keyframe called `name`, or null.
+  const RobotKeyframe* Keyframe(const std::string& name) const;
+
+  /// What the loader's engine was (e.g. "MuJoCo 4.0.0" for an MJCF; empty for a URDF).
+  const std::string& loader() const { return loader_; }
+
   /// Poses of every link in W given the root link's pose X_WRoot and one value
   /// per joint (rad or m, indexed like joint(i); fixed joints ignore theirs).
   /// Both spans are sized joint_count() and link_count().
@@ -140,6 +157,8 @@ class RobotModel {
   std::vector<int> joint_order_;  ///< joints parents-first, for forward kinematics
   int root_link_ = -1;
   std::size_t mesh_file_count_ = 0;
+  std::vector<RobotKeyframe> keyframes_;
+  std::string loader_;
 };
 
 }  // namespace proxsim
