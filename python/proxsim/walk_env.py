@@ -30,6 +30,11 @@ import numpy as np
 from ._core import Simulation
 from .spaces import Box
 
+try:  # a gymnasium.Env when Gymnasium is importable (gymnasium.utils.env_checker.check_env passes)
+    from gymnasium import Env as _EnvBase
+except ImportError:
+    _EnvBase = object
+
 
 # the task's defaults, shared with VecWalkEnv
 MIN_STRIDE_M = 0.3
@@ -54,9 +59,10 @@ def walk_spaces(n_sensors, min_stride_m, max_stride_m):
     return observation_space, action_space
 
 
-class WalkEnv:
+class WalkEnv(_EnvBase):
     metadata = {"render_modes": []}
     render_mode = None
+    spec = None
 
     def __init__(self, scenario, *, threads=1, min_stride_m=MIN_STRIDE_M, max_stride_m=MAX_STRIDE_M,
                  collision_penalty=COLLISION_PENALTY, fall_penalty=FALL_PENALTY):
@@ -97,6 +103,8 @@ class WalkEnv:
         return float(np.hypot(*(obs["robot"]["pelvis_W"][:2] - self._goal)))
 
     def reset(self, *, seed=None, options=None):
+        if _EnvBase is not object:
+            super().reset(seed=seed)  # Gymnasium's own np_random, seeded as its checker expects
         self._sim.reset(seed=seed)
         if seed is not None:
             self.action_space.seed(seed)
