@@ -41,6 +41,7 @@ struct GaitCycle {
   double max_step_m = 0;  ///< highest step up or down it takes on uneven ground
   double crouch_knee_rad = 0;  ///< the stance knee bend added to the curves (0: straight-kneed)
   double pelvis_height_m = 0;  ///< root link above the floor at heel strike on level ground, walking so
+  double amplitude = 0;        ///< the curves' amplitude k for the stride (1: the normative adult walk)
 };
 
 /// Something the motion noticed or decided (a step it cannot take), for

@@ -140,7 +140,8 @@ nlohmann::json RobotOutcomeJson(const Simulation& sim) {
           {"min_clearance_t_s", outcome.min_clearance_t_s},
           {"gait", sim.locomotion()->gait_cycle() ? nlohmann::json{{"stride_m", sim.locomotion()->gait_cycle()->stride_m}, {"period_s", sim.locomotion()->gait_cycle()->period_s},
                                                                       {"crouch_knee_deg", RadToDeg(sim.locomotion()->gait_cycle()->crouch_knee_rad)},
-                                                                      {"pelvis_height_m", sim.locomotion()->gait_cycle()->pelvis_height_m}} : nlohmann::json(nullptr)},
+                                                                      {"pelvis_height_m", sim.locomotion()->gait_cycle()->pelvis_height_m},
+                                                                      {"amplitude", sim.locomotion()->gait_cycle()->amplitude}} : nlohmann::json(nullptr)},
           {"distance_walked_m", state.distance_walked_m},
           {"standing_at_end", state.stopped},
           {"events", events}};
