@@ -110,3 +110,15 @@ def test_talos_walks_crouched_as_its_walk_pose_keyframe_stands(tmp_path):
     # and its pelvis, placed by the geometry at heel strike, stands within 1 cm of the keyframe's
     assert robot["gait"]["crouch_knee_deg"] == pytest.approx(np.degrees(0.8), abs=1e-9)
     assert robot["gait"]["pelvis_height_m"] == pytest.approx(1.025, abs=0.01)
+
+
+@needs_talos
+def test_an_unknown_keyframe_is_refused_naming_the_models_keyframes(tmp_path):
+    with open(scenario("talos_crouched_dining_room.yaml")) as f:
+        text = f.read().replace("../../../shared/robots/pal_talos", TALOS_DIR).replace("walk_pose", "home")
+    path = tmp_path / "home.yaml"
+    path.write_text(text)
+    result = run_cli("validate", str(path))
+    assert result.returncode == 2
+    message = result.stdout + result.stderr
+    assert "gait.keyframe: no keyframe 'home' in the model (its keyframes: 'walk_pose')" in message, message
