@@ -257,6 +257,7 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
     g.p_L_heel = X_LP * Vec3(heel, g.sole_y_m, lowest);
     g.p_L_sole = X_LP * Vec3(p_PA.x(), g.sole_y_m, lowest);
     g.p_L_toe = X_LP * Vec3(toe, g.sole_y_m, lowest);
+    g.up_L = X_LP.linear() * Vec3::UnitZ();
   }
   if (!problems.empty() || !legs_ok) throw InputError(problems);
 

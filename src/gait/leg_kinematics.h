@@ -64,6 +64,7 @@ struct LegGeometry {
   double toe_top_m = 0;      ///< the foot's front face: its highest point at the toe's x, above the sole
   double heel_top_m = 0;     ///< its back face's, at the heel's x
   Vec3 p_L_heel = Vec3::Zero(), p_L_sole = Vec3::Zero(), p_L_toe = Vec3::Zero();  ///< in the foot link frame
+  Vec3 up_L = Vec3::UnitZ();  ///< the sole's upward normal (P's z at the reference pose) in the foot link frame
   double leg_length_m = 0;   ///< hip joint above the sole, standing straight
   /// +1: the knee's URDF limits let it flex (knee > 0, the lower end moving
   /// back, as a human knee); −1: they let it bend the other way only

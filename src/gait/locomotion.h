@@ -32,6 +32,9 @@ struct FootFrame {
   Vec3 p_L_sole = Vec3::Zero();  ///< the sole point under the ankle
   Vec3 p_L_toe = Vec3::Zero();   ///< the sole's front end on the foot's centre line
   Vec3 p_L_heel = Vec3::Zero();  ///< its back end
+  /// The sole's upward normal in the foot link frame: the root's z at the
+  /// reference pose, whatever way the foot link's own frame is turned
+  Vec3 up_L = Vec3::UnitZ();
 };
 
 /// One gait cycle as walked.
