@@ -46,6 +46,10 @@ struct LegNames {
   std::string knee;
   std::string ankle;
   std::string foot;
+  /// `legs.*.ankle_zero_deg` in radians: the foot's pitch at the reference
+  /// pose (toe up +), for a foot whose sole is not flat at joint zero; the
+  /// gait walks the sole flat (gait/leg_kinematics.h)
+  double ankle_zero_rad = 0.0;
 };
 
 /// A walk: the gait, the legs that take it, the start pose and the path.

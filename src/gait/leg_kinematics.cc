@@ -222,6 +222,15 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
       legs_ok = false;
       continue;
     }
+    // a foot pitched at joint zero (legs.*.ankle_zero_deg) is read turned flat about the ankle joint
+    const Vec3& p_PA = p_P[2];
+    g.foot0_rad = name.ankle_zero_rad;
+    const auto turn_about_ankle = [&](const Vec3& p, double angle_rad) {
+      const Vec2xz v = RotateSagittal(angle_rad, Vec2xz(p.x() - p_PA.x(), p.z() - p_PA.z()));
+      return Vec3(p_PA.x() + v.x(), p.y(), p_PA.z() + v.y());
+    };
+    if (g.foot0_rad != 0.0)
+      for (Vec3& p : points_P) p = turn_about_ankle(p, -g.foot0_rad);
     double lowest = std::numeric_limits<double>::infinity();
     for (const Vec3& p : points_P) lowest = std::min(lowest, p.z());
     double heel = std::numeric_limits<double>::infinity(), toe = -heel, y_min = heel, y_max = -heel;
@@ -237,27 +246,29 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
       if (p.x() >= toe - kSoleBand_m) g.toe_top_m = std::max(g.toe_top_m, p.z() - lowest);
       if (p.x() <= heel + kSoleBand_m) g.heel_top_m = std::max(g.heel_top_m, p.z() - lowest);
     }
-    const Vec3& p_PA = p_P[2];
     g.sole_z_m = lowest - p_PA.z();
     g.heel_x_m = heel - p_PA.x();
     g.toe_x_m = toe - p_PA.x();
     g.sole_y_m = 0.5 * (y_min + y_max);
     g.half_width_m = 0.5 * (y_max - y_min);
     if (!(g.heel_x_m < 0 && g.toe_x_m > 0 && g.sole_z_m < 0)) {
-      char text[300];
+      char text[500];
       std::snprintf(text, sizeof text,
                     "' has its sole (its lowest points, within %.0f mm) from %.3f to %.3f m along x and %.3f m "
-                    "below the ankle joint; the sole must reach behind and in front of the ankle, below it",
-                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m);
+                    "below the ankle joint; the sole must reach behind and in front of the ankle, below it "
+                    "(a foot pitched at joint zero is read flat when %s.ankle_zero_deg gives its pitch there, toe up "
+                    "positive)",
+                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m, key.c_str());
       problems.push_back(source + ": " + key + ".foot: link '" + name.foot + text);
     }
     lowest_sole_P = std::min(lowest_sole_P, lowest);
     // the foot points in the foot link's own frame
     const Pose X_LP = X_PL[g.foot_link].inverse();
-    g.p_L_heel = X_LP * Vec3(heel, g.sole_y_m, lowest);
-    g.p_L_sole = X_LP * Vec3(p_PA.x(), g.sole_y_m, lowest);
-    g.p_L_toe = X_LP * Vec3(toe, g.sole_y_m, lowest);
-    g.up_L = X_LP.linear() * Vec3::UnitZ();
+    // (turned back by ψ0: the material points, where they are at the reference pose)
+    g.p_L_heel = X_LP * turn_about_ankle(Vec3(heel, g.sole_y_m, lowest), g.foot0_rad);
+    g.p_L_sole = X_LP * turn_about_ankle(Vec3(p_PA.x(), g.sole_y_m, lowest), g.foot0_rad);
+    g.p_L_toe = X_LP * turn_about_ankle(Vec3(toe, g.sole_y_m, lowest), g.foot0_rad);
+    g.up_L = X_LP.linear() * Vec3(-std::sin(g.foot0_rad), 0.0, std::cos(g.foot0_rad));
   }
   if (!problems.empty() || !legs_ok) throw InputError(problems);
 
@@ -409,6 +420,7 @@ std::string BipedLegs::Fingerprint() const {
   }
   put(standing_height_m_);
   put(crouch_knee_rad_);
+  for (const LegGeometry& g : legs_) put(g.foot0_rad);
   return bytes;
 }
 
@@ -429,7 +441,7 @@ Vec3 BipedLegs::Point3(Side s, const LegAnglesRad& a, FootPoint which) const {
 std::array<double, 3> BipedLegs::JointValues(Side s, const LegAnglesRad& a) const {
   const LegGeometry& g = leg(s);
   return {g.hip_sign * (g.thigh0_rad - a.hip), g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad)),
-          g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch)};
+          g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - (a.pitch - g.foot0_rad))};
 }
 
 void BipedLegs::WriteJoints(Side s, const LegAnglesRad& a, std::span<double> q) const {
@@ -445,7 +457,7 @@ LegAnglesRad BipedLegs::ReadJoints(Side s, std::span<const double> q) const {
   LegAnglesRad a;
   a.hip = g.thigh0_rad - q[g.hip_joint] / g.hip_sign;
   a.knee = q[g.knee_joint] / g.knee_sign + (g.thigh0_rad - g.shank0_rad);
-  a.pitch = (a.hip - a.knee) - g.shank0_rad - q[g.ankle_joint] / g.ankle_sign;
+  a.pitch = (a.hip - a.knee) - g.shank0_rad - q[g.ankle_joint] / g.ankle_sign + g.foot0_rad;
   return a;
 }
 

@@ -17,7 +17,10 @@
 // θS = θT − knee, foot pitch ψ (toe up +), all 0 when standing straight. A
 // pitch axis a = s·y_P (s = ±1, the sign) turns its segment by −s·q, so with
 // θT0, θS0 the segments' angles at the reference pose:
-//   q_hip = s_h·(θT0 − θT),  q_knee = s_k·(knee − (θT0 − θS0)),  q_ankle = s_a·(θS − θS0 − ψ).
+//   q_hip = s_h·(θT0 − θT),  q_knee = s_k·(knee − (θT0 − θS0)),  q_ankle = s_a·(θS − θS0 − (ψ − ψ0)),
+// ψ0 the foot's pitch at the reference pose (0 unless legs.*.ankle_zero_deg
+// says the sole is pitched at joint zero: its geometry is then read turned
+// flat about the ankle, and ψ = 0 is the sole flat).
 //
 // Frames: P pelvis (the root link; x forward, y left, z up), L the foot link.
 #pragma once
@@ -61,6 +64,7 @@ struct LegGeometry {
   double sole_z_m = 0;       ///< sole below the ankle joint (< 0)
   double sole_y_m = 0;       ///< y of the sole's centre line in P
   double half_width_m = 0;   ///< half the sole's width
+  double foot0_rad = 0;      ///< ψ0: the foot's pitch at the reference pose (legs.*.ankle_zero_deg), toe up +
   double toe_top_m = 0;      ///< the foot's front face: its highest point at the toe's x, above the sole
   double heel_top_m = 0;     ///< its back face's, at the heel's x
   Vec3 p_L_heel = Vec3::Zero(), p_L_sole = Vec3::Zero(), p_L_toe = Vec3::Zero();  ///< in the foot link frame

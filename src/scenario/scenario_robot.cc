@@ -60,7 +60,7 @@ std::optional<std::array<LegNames, 2>> ReadLegs(YamlReader& reader, const Field&
       complete = false;
       continue;
     }
-    const auto map = reader.Map(side_field, {"hip", "knee", "ankle", "foot"});
+    const auto map = reader.Map(side_field, {"hip", "knee", "ankle", "foot", "ankle_zero_deg"});
     if (!map) {
       complete = false;
       continue;
@@ -72,6 +72,10 @@ std::optional<std::array<LegNames, 2>> ReadLegs(YamlReader& reader, const Field&
       const auto text = reader.Require(name, std::string(key) + ", " + what) ? reader.String(name) : std::nullopt;
       if (text) *value = *text;
       else complete = false;
+    }
+    // a foot pitched at joint zero: its pitch there, toe up positive
+    if (const auto zero = reader.Number((*map)["ankle_zero_deg"], NumberIn(-45.0, 45.0, "deg"))) {
+      leg->ankle_zero_rad = DegToRad(*zero);
     }
   }
   if (!complete) return std::nullopt;
