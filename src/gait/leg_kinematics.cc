@@ -369,8 +369,8 @@ LegAnglesRad BipedLegs::PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, do
   const LegGeometry& g = leg(s);
   const RobotJoint& ankle = model_.joint(g.ankle_joint);
   if (ankle.type != JointType::kRevolute || !(ankle.lower + 2 * margin_rad < ankle.upper)) return a;
-  // q_ankle = s_a·(θS − θS0 − ψ): the pitches at the two limits
-  const double shank = (a.hip - a.knee) - g.shank0_rad;
+  // q_ankle = s_a·(θS − θS0 − (ψ − ψ0)): the pitches at the two limits
+  const double shank = (a.hip - a.knee) - g.shank0_rad + g.foot0_rad;
   const double at_lower = shank - (ankle.lower + margin_rad) / g.ankle_sign,
                at_upper = shank - (ankle.upper - margin_rad) / g.ankle_sign;
   LegAnglesRad out = a;
@@ -380,12 +380,13 @@ LegAnglesRad BipedLegs::PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, do
 
 Pose BipedLegs::FootPose_P(Side s, const LegAnglesRad& a) const {
   const LegGeometry& g = leg(s);
+  const std::array<double, 3> v = JointValues(s, a);
   Pose X_PL = Pose::Identity();
   for (const int j : chain_[static_cast<int>(s)]) {
     double q = q_reference_[j];
-    if (j == g.hip_joint) q = g.hip_sign * (g.thigh0_rad - a.hip);
-    if (j == g.knee_joint) q = g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad));
-    if (j == g.ankle_joint) q = g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch);
+    if (j == g.hip_joint) q = v[0];
+    if (j == g.knee_joint) q = v[1];
+    if (j == g.ankle_joint) q = v[2];
     X_PL = X_PL * model_.JointTransform(j, q);
   }
   return X_PL;
