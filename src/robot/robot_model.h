@@ -89,10 +89,10 @@ class RobotModel {
   static RobotModel FromUrdfText(const std::string& urdf_text, const std::string& source,
                                  const UrdfOptions& options = {});
 
-  /// Reads a MuJoCo model (MJCF) through libmujoco: its bodies, hinge and slide
+  /// Reads a MuJoCo model (MJCF) through the wheel's libmujoco: its bodies, hinge and slide
   /// joints, geoms and sites, as robot/mjcf_model.h maps them. Throws
   /// InputError naming the file and what MuJoCo refused, or each element
-  /// proxsim cannot follow (a ball joint, an equality constraint, a plane geom…).
+  /// proxsim cannot follow (a ball joint, a closed chain, a plane geom…).
   static RobotModel FromMjcfFile(const std::string& path, const UrdfOptions& options = {});
 
   /// A URDF or an MJCF file, told apart by its first element (<robot> or <mujoco>).
