@@ -7,7 +7,7 @@
 // the sole band along the foot link's own z: standing was "collided with
 // floor (left_foot) at t = 0.00 s".) And a foot whose sole is pitched 10° toe
 // up at joint zero (its geometry turned about the ankle): refused without
-// legs.*.ankle_zero_deg, naming the key; with `ankle_zero_deg: 10` it walks
+// legs.*.ankle_zero_deg, naming the key and the 10.0° the geometry lies flat at; with `ankle_zero_deg: 10` it walks
 // with its sole flat, exactly as the original.
 #include <gtest/gtest.h>
 
@@ -152,6 +152,8 @@ TEST(PitchedSole, WalkedFlatWithAnkleZeroDeg) {
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_NE(refused.output.find("the sole must reach behind and in front of the ankle"), std::string::npos) << refused.output;
   EXPECT_NE(refused.output.find("robot.legs.left.ankle_zero_deg gives its pitch there"), std::string::npos) << refused.output;
+  // and the pitch the geometry lies flattest at, found by a 0.1 deg scan: the 10 deg it was turned by
+  EXPECT_NE(refused.output.find("its geometry lies flattest at 10.0 deg"), std::string::npos) << refused.output;
   std::string legs = legs_without;
   for (const std::string foot : {"left_foot}", "right_foot}"}) {
     Replace(legs, foot, foot.substr(0, foot.size() - 1) + ", ankle_zero_deg: 10}", 0);

@@ -252,13 +252,34 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
     g.sole_y_m = 0.5 * (y_min + y_max);
     g.half_width_m = 0.5 * (y_max - y_min);
     if (!(g.heel_x_m < 0 && g.toe_x_m > 0 && g.sole_z_m < 0)) {
-      char text[500];
+      // the pitch at which the foot's lowest points spread longest along x: where its sole lies flat
+      double best_extent_m = -1, flat_from = 0, flat_to = 0;
+      for (int tenth = -450; tenth <= 450; ++tenth) {
+        const double psi = DegToRad(0.1 * tenth);
+        double low = std::numeric_limits<double>::infinity(), back = low, front = -low;
+        for (const Vec3& p : points_P) low = std::min(low, turn_about_ankle(p, -psi).z());
+        for (const Vec3& p : points_P) {
+          const Vec3 q = turn_about_ankle(p, -psi);
+          if (q.z() > low + kSoleBand_m) continue;
+          back = std::min(back, q.x());
+          front = std::max(front, q.x());
+        }
+        const double extent_m = front - back;
+        if (extent_m > best_extent_m + 1e-3) {
+          best_extent_m = extent_m;
+          flat_from = flat_to = 0.1 * tenth;
+        } else if (extent_m >= best_extent_m - 1e-3) {
+          flat_to = 0.1 * tenth;  // the plateau of the longest sole: its middle is the flat pitch
+        }
+      }
+      char text[600];
       std::snprintf(text, sizeof text,
                     "' has its sole (its lowest points, within %.0f mm) from %.3f to %.3f m along x and %.3f m "
                     "below the ankle joint; the sole must reach behind and in front of the ankle, below it "
                     "(a foot pitched at joint zero is read flat when %s.ankle_zero_deg gives its pitch there, toe up "
-                    "positive)",
-                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m, key.c_str());
+                    "positive: its geometry lies flattest at %.1f deg)",
+                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m, key.c_str(),
+                    RadToDeg(g.foot0_rad) + 0.5 * (flat_from + flat_to));
       problems.push_back(source + ": " + key + ".foot: link '" + name.foot + text);
     }
     lowest_sole_P = std::min(lowest_sole_P, lowest);
