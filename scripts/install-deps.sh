@@ -8,7 +8,7 @@ packages=(
   libembree-dev libtbb-dev libeigen3-dev libyaml-cpp-dev libassimp-dev libcli11-dev
   nlohmann-json3-dev librandom123-dev liburdfdom-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libbullet-dev libmujoco-dev libboost-dev
+  libbullet-dev libboost-dev   # Boost.Math (header-only) for the studies; MuJoCo comes from PyPI, into .venv/ below (python/requirements.txt)
   liboctomap-dev
   python3-matplotlib python3-numpy
   python3-dev pybind11-dev python3-pytest python3-venv

@@ -129,21 +129,6 @@ TEST(BadInputTest, MissingPackagesOneLineEach) {
   EXPECT_EQ(result.output.find("thigh.stl"), std::string::npos) << "a line per mesh:\n" << result.output;
 }
 
-TEST(BadInputTest, XacroIsNamedInOneLine) {
-  // a .urdf file that is xacro (its xmlns:xacro): one line, not the leg map's eight "no joint" lines
-  const auto result = ExpectRefusedFile(
-      "xacro_robot.yaml",
-      {"xacro_robot.urdf: this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)"});
-  EXPECT_NE(result.output.find("1 problem in the input"), std::string::npos) << result.output;
-  EXPECT_EQ(result.output.find("no joint"), std::string::npos) << result.output;
-  // the same through validate and inspect
-  for (const std::string command : {"validate " + kBadDir + "/xacro_robot.yaml", "inspect " + kBadDir + "/xacro_robot.urdf"}) {
-    const CommandResult other = RunProxsim(command);
-    EXPECT_EQ(other.exit_code, 2) << command << "\n" << other.output;
-    EXPECT_NE(other.output.find("this is xacro: expand it first"), std::string::npos) << other.output;
-  }
-}
-
 TEST(BadInputTest, StartOnABoxUnderTheFeet) {
   // feet stand only on ground: the robot would start with its feet in the crate, refused naming it and the links
   ExpectRefusedFile("start_on_crate.yaml",

@@ -118,9 +118,11 @@ struct Outcome {
 };
 
 // Walks `robot` at `stride_m` and checks every sample; returns what it measured.
-Outcome WalkAndCheck(const Robot& robot, double stride_m) {
+// `crouch_knee_deg` > 0 walks with that stance knee bend (gait.crouch_knee_deg).
+Outcome WalkAndCheck(const Robot& robot, double stride_m, double crouch_knee_deg = 0) {
   char name[64];
-  std::snprintf(name, sizeof name, "limits_%s_%03d", robot.name.c_str(), static_cast<int>(std::lround(stride_m * 100)));
+  std::snprintf(name, sizeof name, "limits_%s_%03d_c%03d", robot.name.c_str(), static_cast<int>(std::lround(stride_m * 100)),
+                static_cast<int>(std::lround(crouch_knee_deg)));
   const fs::path dir = FreshDir(name);
   fs::create_directories(dir);
   const fs::path scenario = dir / "walk.yaml";
@@ -128,7 +130,8 @@ Outcome WalkAndCheck(const Robot& robot, double stride_m) {
     std::ofstream out(scenario);
     out << "proxsim: 1\nseed: 1\nduration_s: 40\nrate_hz: 100\nscene: {builtin: stairs}\nrobot:\n"
         << robot.robot_yaml << "  start: {xyz_m: [0, 0, 0], yaw_deg: 0}\n"
-        << "  gait: {stride_m: " << stride_m << ", unsafe_steps: refuse}\n"
+        << "  gait: {stride_m: " << stride_m << ", unsafe_steps: refuse"
+        << (crouch_knee_deg > 0 ? ", crouch_knee_deg: " + std::to_string(crouch_knee_deg) : std::string()) << "}\n"
         << "  path: {waypoints_m: [[0, 0], [" << kPathEnd_x_m << ", 0]]}\n"
         << "sensors:\n  - {name: ahead, type: ideal, link: world, pose: {xyz_m: [0, 0, 2], rpy_deg: [0, 90, 0]}}\n";
   }
@@ -279,6 +282,22 @@ void Sweep(const Robot& robot) {
 }
 
 TEST(JointLimitsSweep, BipedOnTheStairsWithinItsLimitsAtEveryStride) { Sweep(Biped()); }
+
+// A crouched gait (docs/robots.md, "The gait's shape"): the H1 with its knees bent 0.6 rad more at
+// every phase walks the same course within every limit, at three strides.
+TEST(JointLimitsSweep, H1CrouchedBy0_6RadOnTheStairsWithinItsLimits) {
+  if (!fs::is_regular_file(kH1Dir / "urdf" / "h1.urdf"))
+    GTEST_SKIP() << "skipped: the Unitree H1 is not at " << kH1Dir.lexically_normal().string()
+                 << " (the H1 tests read ../shared/robots/h1_description from beside the project)";
+  const double crouch_deg = 0.6 * 180.0 / M_PI;
+  for (const double stride_m : {0.40, 0.50, 0.60}) {
+    const Outcome o = WalkAndCheck(H1(), stride_m, crouch_deg);
+    std::printf("[ measured ] h1 crouched 0.6 rad, stride %.2f m: worst angle excess %+.4f rad (%s), worst speed "
+                "%.2f of its limit (%s), sole-to-knee %+.3f m, lift above the highest tread %.3f m; ended: %s\n",
+                stride_m, o.worst_angle_excess_rad, o.worst_angle_joint.c_str(), o.worst_speed_ratio,
+                o.worst_speed_joint.c_str(), o.highest_fold_m, o.highest_lift_m, o.how.c_str());
+  }
+}
 
 TEST(JointLimitsSweep, H1OnTheStairsWithinItsLimitsAtEveryStride) {
   if (!fs::is_regular_file(kH1Dir / "urdf" / "h1.urdf"))

@@ -343,15 +343,25 @@ TEST_F(MjcfModelTest, WhatProxsimCannotFollowIsNamed) {
             std::string::npos);
   EXPECT_NE(error_of("hinge_root.xml", R"(<body name="a"><joint name="swing"/><geom size="0.1"/></body>)").find("joint 'swing' attaches the root body 'a'"),
             std::string::npos);
-  Write(dir_ / "eq.xml", R"(<mujoco><worldbody><body name="a"><freejoint/><geom size="0.1"/>
-    <body name="b"><joint name="j1"/><geom size="0.1"/></body><body name="c"><joint name="j2"/><geom size="0.1"/></body>
-    </body></worldbody><equality><joint name="coupled" joint1="j1" joint2="j2"/></equality></mujoco>)");
-  EXPECT_NE(ErrorOf([&] { RobotModel::FromFile((dir_ / "eq.xml").string()); }).find("equality constraint 'coupled'"),
+  // a joint coupling that holds at the reference pose is kept (a gripper's fingers: TALOS's); one that
+  // does not, and any other equality (a closed chain), is named
+  const auto equality = [&](const std::string& name, const std::string& refs, const std::string& eq) {
+    Write(dir_ / name, R"(<mujoco><worldbody><body name="a"><freejoint/><geom size="0.1"/>
+      <body name="b"><joint name="j1" )" + refs + R"(/><geom size="0.1"/></body><body name="c"><joint name="j2"/><geom size="0.1"/></body>
+      </body></worldbody><equality>)" + eq + "</equality></mujoco>");
+    return ErrorOf([&] { RobotModel::FromFile((dir_ / name).string()); });
+  };
+  EXPECT_EQ(equality("eq_mirror.xml", "", R"(<joint name="mirror" joint1="j1" joint2="j2" polycoef="0 -1 0 0 0"/>)"), "");
+  EXPECT_NE(equality("eq_offset.xml", "", R"(<joint name="offset" joint1="j1" joint2="j2" polycoef="0.2 1 0 0 0"/>)")
+                .find("joint coupling 'offset' (joint 'j1') does not hold at the reference pose"),
+            std::string::npos);
+  EXPECT_NE(equality("eq_connect.xml", "", R"(<connect name="loop" body1="b" body2="c" anchor="0 0 0"/>)")
+                .find("equality constraint 'loop' is not supported"),
             std::string::npos);
   // MuJoCo's own refusal, with its reason
   Write(dir_ / "bad.xml", "<mujoco><worldbody><body><bogus/></body></worldbody></mujoco>");
   const std::string bad = ErrorOf([&] { RobotModel::FromFile((dir_ / "bad.xml").string()); });
-  EXPECT_NE(bad.find("MuJoCo could not load the MJCF"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("MuJoCo " PROXSIM_MUJOCO_VERSION " could not load the MJCF"), std::string::npos) << bad;
   EXPECT_NE(bad.find("bogus"), std::string::npos) << bad;
   // and through the CLI: exit 2, named
   Write(dir_ / "ball_run.yaml", "proxsim: 1\nduration_s: 1\nrate_hz: 10\nrobot: {model: ball.xml}\nsensors: []\n");

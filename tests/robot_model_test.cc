@@ -147,14 +147,16 @@ namespace proxsim {
 namespace {
 
 TEST(RobotModel, XacroIsRecognisedByItsContentNotItsName) {
-  // an element of xacro's, or its namespace with a substitution: "this is xacro", one problem
+  // as text (no file for xacro to run on), an element of xacro's, or its namespace with a
+  // substitution: "this is xacro", one problem (a file is expanded: tests/xacro_test.cc)
   for (const char* text :
        {R"(<robot name="r"><xacro:macro name="m"/><link name="base"/></robot>)",
         R"(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base">
              <visual><geometry><box size="${w} 0.1 0.1"/></geometry></visual></link></robot>)"}) {
     // the whole message: one line, nothing else
     EXPECT_EQ(ErrorOf([&] { RobotModel::FromUrdfText(text, "r.urdf"); }),
-              "r.urdf: this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)");
+              "r.urdf: this is xacro, given as text: expand it first (`xacro in.urdf.xacro > out.urdf`), or give "
+              "its file (proxsim runs xacro on a file)");
   }
   // xacro's output may keep the namespace on a URDF with nothing left to expand: it loads
   const RobotModel expanded = RobotModel::FromUrdfText(

@@ -7,15 +7,15 @@ The log is MuJoCo's `qpos` of the H1 as Menagerie's unitree_h1/h1.xml orders it:
 first (pelvis x, y, z in metres, then its quaternion w, x, y, z), then the 19 hinge joints in the
 model's order (MUJOCO_H1_HINGES), one row per logged time.
 
-Where the log comes from: MuJoCo's Python bindings are not a Debian package (Debian ships only its
-C library) and there is no MuJoCo controller that walks the H1 here, so by default this script
-first MAKES the log, honestly labelled: it walks the H1 by proxsim's own kinematic gait
+Where the log comes from: there is no MuJoCo controller that walks the H1 here, so by default this
+script first MAKES the log, honestly labelled: it walks the H1 by proxsim's own kinematic gait
 (data/scenarios/h1_dining_room.yaml) and writes each sample's state converted to qpos order
 (make_log). Give --log FILE to drive from a log of your own simulator instead (the same columns:
 t_s, then qpos[0] ... qpos[25]). A live loop has the same body as drive(): build q and X_WP from
-d.qpos after mj_step, call sim.step (docs/cosimulation.md shows it for MuJoCo and Isaac Lab).
+d.qpos after mj_step, call sim.step (examples/python/talos_mujoco_physics.py does it live, with
+MuJoCo's physics moving TALOS; docs/cosimulation.md).
 
-    PYTHONPATH=build/release/python /usr/bin/python3 examples/python/h1_mujoco_qpos.py --out h1-cosim
+    PYTHONPATH=build/release/python .venv/bin/python3 examples/python/h1_mujoco_qpos.py --out h1-cosim
 """
 import argparse
 import os

@@ -24,11 +24,22 @@ the robot collided, fell or reached its goal (info["outcome"] says which, as
 summary.json's robot.outcome does); it is truncated at the scenario's
 duration_s. The reward and termination use the truth; the agent's
 observation never does.
+
+info: t_s, and after a step outcome, collided, fell, reached_goal; and "raw",
+proxsim's whole observation dict (NaN where a value is none), unless
+raw_info=False. With Gymnasium installed WalkEnv is a gymnasium.Env;
+gymnasium.utils.env_checker.check_env passes with raw_info=False (its
+determinism check compares infos with ==, and NaN is never equal to itself).
 """
 import numpy as np
 
 from ._core import Simulation
 from .spaces import Box
+
+try:  # a gymnasium.Env when Gymnasium is importable (gymnasium.utils.env_checker.check_env passes)
+    from gymnasium import Env as _EnvBase
+except ImportError:
+    _EnvBase = object
 
 
 # the task's defaults, shared with VecWalkEnv
@@ -54,12 +65,13 @@ def walk_spaces(n_sensors, min_stride_m, max_stride_m):
     return observation_space, action_space
 
 
-class WalkEnv:
+class WalkEnv(_EnvBase):
     metadata = {"render_modes": []}
     render_mode = None
+    spec = None
 
     def __init__(self, scenario, *, threads=1, min_stride_m=MIN_STRIDE_M, max_stride_m=MAX_STRIDE_M,
-                 collision_penalty=COLLISION_PENALTY, fall_penalty=FALL_PENALTY):
+                 collision_penalty=COLLISION_PENALTY, fall_penalty=FALL_PENALTY, raw_info=True):
         if isinstance(scenario, str) and scenario.startswith("builtin:"):
             self._sim = Simulation.builtin(scenario[len("builtin:"):], threads=threads, scenario_strategy=False)
         else:
@@ -71,6 +83,8 @@ class WalkEnv:
         self._max_stride_m = float(max_stride_m)
         self._collision_penalty = float(collision_penalty)
         self._fall_penalty = float(fall_penalty)
+        # info["raw"]: proxsim's whole observation, NaN where a value is none (a laser's signal)
+        self._raw_info = bool(raw_info)
         self.observation_space, self.action_space = walk_spaces(len(self._sim.sensor_names), min_stride_m,
                                                                 max_stride_m)
         self._goal = None
@@ -97,6 +111,8 @@ class WalkEnv:
         return float(np.hypot(*(obs["robot"]["pelvis_W"][:2] - self._goal)))
 
     def reset(self, *, seed=None, options=None):
+        if _EnvBase is not object:
+            super().reset(seed=seed)  # Gymnasium's own np_random, seeded as its checker expects
         self._sim.reset(seed=seed)
         if seed is not None:
             self.action_space.seed(seed)
@@ -107,7 +123,7 @@ class WalkEnv:
         self._collisions = 0
         obs = self._sim.step()
         self._last_distance = self._distance_to_goal(obs)
-        return self._vector(obs), {"t_s": obs["t_s"], "raw": obs}
+        return self._vector(obs), self._info({"t_s": obs["t_s"]}, obs)
 
     def step(self, action):
         action = np.asarray(action, dtype=float)
@@ -133,9 +149,14 @@ class WalkEnv:
             reward -= self._fall_penalty
         terminated = bool(collided or fell or outcome == "reached_goal")
         truncated = bool(self._sim.done and not terminated)
-        info = {"t_s": obs["t_s"], "raw": obs, "outcome": outcome, "collided": collided, "fell": fell,
-                "reached_goal": truth["reached_goal"]}
+        info = self._info({"t_s": obs["t_s"], "outcome": outcome, "collided": collided, "fell": fell,
+                           "reached_goal": truth["reached_goal"]}, obs)
         return self._vector(obs), float(reward), terminated, truncated, info
+
+    def _info(self, info, obs):
+        if self._raw_info:
+            info["raw"] = obs
+        return info
 
     def close(self):
         self._sim.close()

@@ -2,7 +2,7 @@
 // needs closed meshes: an open one gets no volume and a zero bounding radius,
 // so rays never reach it), loaded from generated MJCF with the convex hulls
 // off and collisions off. mj_ray has no range: a hit beyond the ray's range is
-// a miss here. mj_ray only reads the model and the data, so threads share them.
+// a miss here. MuJoCo is the wheel's (cmake/mujoco.cmake). mj_ray only reads the model and the data, so threads share them.
 #include <cstdio>
 #include <filesystem>
 #include <limits>
@@ -10,16 +10,12 @@
 
 #include "bench/peers.h"
 
-#ifdef PROXSIM_HAVE_MUJOCO
 #include <mujoco/mujoco.h>
+#include <unistd.h>
 
 #include <chrono>
-#include <unistd.h>
-#endif
 
 namespace proxsim::bench {
-
-#ifdef PROXSIM_HAVE_MUJOCO
 
 std::string MujocoVersion() { return mj_versionString(); }
 
@@ -43,7 +39,7 @@ class MujocoPeer : public RayPeer {
       const mjtNum pnt[3] = {ray.origin_W.x(), ray.origin_W.y(), ray.origin_W.z()};
       const mjtNum vec[3] = {ray.direction_W.x(), ray.direction_W.y(), ray.direction_W.z()};
       int geom = -1;
-      const mjtNum d = mj_ray(model_, data_, pnt, vec, nullptr, 1, -1, &geom);
+      const mjtNum d = mj_ray(model_, data_, pnt, vec, nullptr, 1, -1, &geom, nullptr);
       distances[i] = d >= 0 && d <= ray.max_range_m ? static_cast<float>(d) : std::numeric_limits<float>::infinity();
     }
   }
@@ -95,16 +91,5 @@ std::unique_ptr<RayPeer> MakeMujocoPeer(const BenchScene& scene, std::string* wh
   const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return std::make_unique<MujocoPeer>(model, build_s);
 }
-
-#else
-
-std::string MujocoVersion() { return "unavailable"; }
-
-std::unique_ptr<RayPeer> MakeMujocoPeer(const BenchScene&, std::string* why) {
-  *why = "MuJoCo was not found when proxsim was configured (apt-get install libmujoco-dev)";
-  return nullptr;
-}
-
-#endif
 
 }  // namespace proxsim::bench

@@ -38,6 +38,19 @@ nlohmann::json BoxJson(const std::optional<BoundingBox>& box) {
   return {{"min", VecJson(box->min_m)}, {"max", VecJson(box->max_m)}};
 }
 
+// each keyframe's moving joints by name (rad or m), and the root's height when the key places it
+nlohmann::json KeyframesJson(const RobotModel& model) {
+  nlohmann::json keys = nlohmann::json::array();
+  for (const RobotKeyframe& key : model.keyframes()) {
+    nlohmann::json q = nlohmann::json::object();
+    for (const int j : model.MovingJoints()) q[model.joint_name(j)] = key.q_by_joint[j];
+    keys.push_back({{"name", key.name},
+                    {"root_z_m", key.has_root ? nlohmann::json(key.X_WRoot.translation().z()) : nlohmann::json(nullptr)},
+                    {"q", q}});
+  }
+  return keys;
+}
+
 nlohmann::json InspectJson(const RobotModel& model, const RobotSummary& summary, const LegMapSuggestion& legs) {
   nlohmann::json json = {{"proxsim_inspect", 1},
                          {"robot", {{"name", model.name()},
@@ -45,7 +58,9 @@ nlohmann::json InspectJson(const RobotModel& model, const RobotSummary& summary,
                                     {"root_link", model.link_name(model.root_link())},
                                     {"mass_kg", model.TotalMass_kg()},
                                     {"mesh_files", model.MeshFileCount()},
-                                    {"mesh_triangles", model.MeshTriangleCount()}}},
+                                    {"mesh_triangles", model.MeshTriangleCount()},
+                                    {"loader", model.loader().empty() ? nlohmann::json(nullptr) : nlohmann::json(model.loader())}}},
+                         {"keyframes", KeyframesJson(model)},
                          {"links", nlohmann::json::array()},
                          {"joints", nlohmann::json::array()},
                          {"feet_candidates", nlohmann::json::array()}};
@@ -120,8 +135,20 @@ void PrintText(const RobotModel& model, const RobotSummary& summary, const LegMa
   std::printf("robot '%s' (%s): %d links, %d joints, %.2f kg, %zu mesh files\n", model.name().c_str(),
               model.source().c_str(), model.link_count(), model.joint_count(), model.TotalMass_kg(),
               model.MeshFileCount());
-  std::printf("reference pose: every joint at 0, the root link '%s' at the world origin (x forward, y left, z up)\n\n",
+  if (!model.loader().empty()) std::printf("read through %s (what it compiled)\n", model.loader().c_str());
+  std::printf("reference pose: every joint at 0, the root link '%s' at the world origin (x forward, y left, z up)\n",
               model.link_name(model.root_link()).c_str());
+  for (const RobotKeyframe& key : model.keyframes()) {
+    std::printf("keyframe '%s'", key.name.c_str());
+    if (key.has_root) std::printf(": root at z %.4f m", key.X_WRoot.translation().z());
+    int shown = 0;
+    for (const int j : model.MovingJoints()) {
+      if (key.q_by_joint[j] == 0.0) continue;
+      std::printf("%s%s %.4g", shown++ == 0 ? "; joints not at 0: " : ", ", model.joint_name(j).c_str(), key.q_by_joint[j]);
+    }
+    std::printf("\n");
+  }
+  std::printf("\n");
 
   std::printf("links, in tree order (bounding boxes [min] .. [max] in metres):\n");
   for (const LinkSummary& link : summary.links) {

@@ -22,7 +22,8 @@ std::vector<FootFrame> FeetOf(const RobotModel& model, const WalkConfig& config)
     std::vector<FootFrame> feet;
     for (const Side side : {Side::kLeft, Side::kRight}) {
       const LegGeometry& leg = legs.leg(side);
-      feet.push_back({.link = leg.foot_link, .p_L_sole = leg.p_L_sole, .p_L_toe = leg.p_L_toe, .p_L_heel = leg.p_L_heel});
+      feet.push_back({.link = leg.foot_link, .p_L_sole = leg.p_L_sole, .p_L_toe = leg.p_L_toe, .p_L_heel = leg.p_L_heel,
+                     .up_L = leg.up_L});
     }
     return feet;
   } catch (const InputError&) {

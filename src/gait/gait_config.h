@@ -29,6 +29,14 @@ struct GaitConfig {
   /// knows, a foot landing lower than planned by more than this falls, m
   /// (gait/touchdown.h)
   double touchdown_tolerance_m = 0.02;
+  /// `gait.keyframe`: a named pose of the model (an MJCF <key>, e.g. `home`):
+  /// the gait walks with its knee bend (crouch) and holds every joint it does
+  /// not drive at the key's angle (robot.joints_deg still overrides). Empty: none.
+  std::string keyframe;
+  /// `gait.crouch_knee_deg` in radians: the stance knee bend the gait walks
+  /// with (gait/leg_kinematics.h, BipedLegs::SetCrouch), ≥ 0. Absent: the
+  /// keyframe's, else 0 (the curves' straight-kneed human walk).
+  std::optional<double> crouch_knee_rad;
 };
 
 /// One leg as the gait drives it (`robot.legs.left` / `.right`): the revolute
@@ -38,6 +46,10 @@ struct LegNames {
   std::string knee;
   std::string ankle;
   std::string foot;
+  /// `legs.*.ankle_zero_deg` in radians: the foot's pitch at the reference
+  /// pose (toe up +), for a foot whose sole is not flat at joint zero; the
+  /// gait walks the sole flat (gait/leg_kinematics.h)
+  double ankle_zero_rad = 0.0;
 };
 
 /// A walk: the gait, the legs that take it, the start pose and the path.

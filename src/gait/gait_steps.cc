@@ -42,7 +42,7 @@ double StepPlanner::Amplitude(const StepPlan& plan, double p) const {
 
 LegAnglesRad StepPlanner::StanceAngles(const StepPlan& plan, double p) const {
   const double g = plan.g_from + (plan.g_to - plan.g_from) * Smoothstep(p / kDoubleSupportEnd);
-  LegAnglesRad a = CurveLegAngles(p, Amplitude(plan, p), g);
+  LegAnglesRad a = legs_.Curve(p, Amplitude(plan, p), g);
   const double fade = 1 - Smoothstep(p / kDoubleSupportEnd);
   a.hip += plan.stance_offset.hip * fade;
   a.knee += plan.stance_offset.knee * fade;
@@ -69,7 +69,7 @@ Pose StepPlanner::StancePelvis(const StepPlan& plan, double p, const LegAnglesRa
 }
 
 LegAnglesRad StepPlanner::SwingCurve(const StepPlan& plan, double p) const {
-  return CurveLegAngles(p + 0.5, Amplitude(plan, p));
+  return legs_.Curve(p + 0.5, Amplitude(plan, p));
 }
 
 double StepPlanner::SwingPitch(const StepPlan& plan, double p) const {
@@ -155,7 +155,7 @@ void StepPlanner::Finish(StepPlan* plan) const {
   {
     const auto offset = [&](double p) -> Vec2xz {
       const Pose X_WP = StancePelvis(*plan, p, StanceAngles(*plan, p));
-      return PlantedAnkle(*plan, p, X_WP) - legs_.Ankle(plan->swing, CurveLegAngles(p + 0.5, Amplitude(*plan, p)));
+      return PlantedAnkle(*plan, p, X_WP) - legs_.Ankle(plan->swing, legs_.Curve(p + 0.5, Amplitude(*plan, p)));
     };
     const Vec2xz at_toe_off = offset(kDoubleSupportEnd);
     plan->swing_toe_off_delta = at_toe_off;
@@ -168,7 +168,7 @@ void StepPlanner::Finish(StepPlan* plan) const {
     const LegAnglesRad end_stance = StanceAngles(*plan, 0.5);
     const Pose end_X_WP = StancePelvis(*plan, 0.5, end_stance);
     const LegGeometry& sg = legs_.leg(plan->swing);
-    const LegAnglesRad curve = CurveLegAngles(1.0, k);
+    const LegAnglesRad curve = legs_.Curve(1.0, k);
     LegAnglesRad land = curve;
     const double z_target = plan->floor_z_m - end_X_WP.translation().z();  // heel z in P
     const double o_z = RotateSagittal(curve.pitch, legs_.FootOffset(plan->swing, FootPoint::kHeel)).y();
@@ -211,14 +211,14 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   plan.g_from = plan.g_to = PushOffGain(legs_, plan.stance, k);
   plan.yaw_from = plan.yaw_to = yaw_rad;
   plan.floor_z_m = plan.landing_z_m = plan.highest_ground_z_m = p_W_start.z();
-  const LegAnglesRad stance = CurveLegAngles(0.0, k);
+  const LegAnglesRad stance = legs_.Curve(0.0, k);
   const Rotation R = Heading(yaw_rad);
   const Vec3 p_P_heel = legs_.Point3(Side::kLeft, stance, FootPoint::kHeel);
   const Vec3 p_WP(p_W_start.x(), p_W_start.y(), p_W_start.z() - p_P_heel.z());
   plan.p_W_heel = p_WP + R * p_P_heel;
   // the trailing foot starts on its curve, lifted onto the floor if the curve
   // puts it below, and stays there until toe-off
-  LegAnglesRad trailing = CurveLegAngles(0.5, k);
+  LegAnglesRad trailing = legs_.Curve(0.5, k);
   const double below = p_W_start.z() - (p_WP.z() + legs_.LowestSoleZ(Side::kRight, trailing));
   if (below > 0) trailing = legs_.SolveAnkle(Side::kRight, legs_.Ankle(Side::kRight, trailing) + Vec2xz(0, below), trailing.pitch);
   plan.p_W_trailing_toe = PelvisPose(p_WP, R) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
@@ -245,11 +245,11 @@ StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to)
   // and the old stance foot's toe, where it pivots (its latched toe)
   plan.p_W_trailing_toe = prev.X_WF * legs_.FootPoint_L(prev.stance, FootPoint::kToe);
   // stance: what the curves do not explain at heel strike, blended out
-  const LegAnglesRad stance_curve = CurveLegAngles(0.0, plan.k_from);
+  const LegAnglesRad stance_curve = legs_.Curve(0.0, plan.k_from);
   plan.stance_offset.hip = strike.swing.hip - stance_curve.hip;
   plan.stance_offset.knee = strike.swing.knee - stance_curve.knee;
   // swing: its pitch starts from where the old stance foot is
-  plan.swing_start_pitch = strike.stance.pitch - CurveLegAngles(0.5, plan.k_from).pitch;
+  plan.swing_start_pitch = strike.stance.pitch - legs_.Curve(0.5, plan.k_from).pitch;
   Finish(&plan);
   if (terrain_ != nullptr) PlanOnTerrain(&plan, prev.natural_landing, strike.X_WP.translation());
   return plan;
@@ -259,8 +259,8 @@ double PushOffGain(const BipedLegs& legs, Side stance, double k) {
   const Side swing = stance == Side::kLeft ? Side::kRight : Side::kLeft;
   // pelvis height above the floor: at landing (swing heel down, curves) and at
   // the end of stance (stance toe down) for a gain g
-  const double landing = -legs.Point(swing, CurveLegAngles(1.0, k), FootPoint::kHeel).y();
-  const auto on_toe = [&](double g) { return -legs.Point(stance, CurveLegAngles(0.5, k, g), FootPoint::kToe).y(); };
+  const double landing = -legs.Point(swing, legs.Curve(1.0, k), FootPoint::kHeel).y();
+  const auto on_toe = [&](double g) { return -legs.Point(stance, legs.Curve(0.5, k, g), FootPoint::kToe).y(); };
   if (on_toe(1.0) <= landing) return 1.0;
   if (on_toe(0.0) >= landing) return 0.0;
   double lo = 0, hi = 1;

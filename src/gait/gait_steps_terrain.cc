@@ -108,7 +108,7 @@ double StepDuration_s(const StepPlan& plan, double period_s) {
 
 LegAnglesRad StepPlanner::CurveStanceAngles(const StepPlan& plan, double p) const {
   const double g = plan.g_from + (plan.g_to - plan.g_from) * Smoothstep(p / kDoubleSupportEnd);
-  return CurveLegAngles(p, Amplitude(plan, p), g);
+  return legs_.Curve(p, Amplitude(plan, p), g);
 }
 
 LegAnglesRad StepPlanner::TerrainStanceAngles(const StepPlan& plan, double p) const {
@@ -243,7 +243,7 @@ bool StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const 
   // the pelvis at the next heel strike: lowered by the fall, and further if the
   // landing leg would be more stretched than on a flat floor
   const Vec2xz hip_P(sg.p_PH.x(), sg.p_PH.z());
-  const double natural_reach = (legs_.Ankle(plan->swing, CurveLegAngles(1.0, plan->k_to)) + plan->swing_end_delta - hip_P).norm();
+  const double natural_reach = (legs_.Ankle(plan->swing, legs_.Curve(1.0, plan->k_to)) + plan->swing_end_delta - hip_P).norm();
   const Vec2 hip_H = ToH(*plan, X_c1.translation()) + Vec2(hip_P.x(), hip_P.y());
   const double ds = ankle_land.x() - hip_H.x();
   if (std::abs(ds) >= natural_reach) {

@@ -25,6 +25,26 @@ double WrapAngle(double a) { return std::remainder(a, 2 * kPi); }
 // step planned on it stays the step planned.
 constexpr double kSettleTolerance_m = 1e-5;
 
+// robot.joints_deg, preceded by the keyframe's angle for every other joint the
+// legs do not drive (a hinge: the angles held are revolute ones), so that the
+// robot holds its arms and torso as its makers posed them
+std::vector<std::pair<std::string, double>> HeldWithKeyframe(const RobotModel& model, const WalkConfig& config,
+                                                             const RobotKeyframe* key) {
+  if (key == nullptr) return config.joints_rad;
+  const std::array<LegNames, 2> legs = config.legs.value_or(BuiltinBipedLegs());
+  std::vector<std::pair<std::string, double>> held;
+  for (const int j : model.MovingJoints()) {
+    const RobotJoint& joint = model.joint(j);
+    if (joint.type != JointType::kRevolute && joint.type != JointType::kContinuous) continue;
+    bool skip = false;
+    for (const LegNames& leg : legs) skip = skip || joint.name == leg.hip || joint.name == leg.knee || joint.name == leg.ankle;
+    for (const auto& given : config.joints_rad) skip = skip || joint.name == given.first;
+    if (!skip && key->q_by_joint[j] != 0.0) held.emplace_back(joint.name, key->q_by_joint[j]);
+  }
+  held.insert(held.end(), config.joints_rad.begin(), config.joints_rad.end());
+  return held;
+}
+
 }  // namespace
 
 GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
@@ -35,9 +55,23 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   if (!config.gait.derive_stride_from_legs && !(gait_.stride_m > 0))
     problems.push_back(model_->source() + ": gait stride_m must be > 0");
   if (!problems.empty()) throw InputError(problems);
+  // the keyframe the gait takes its pose from, if one is named
+  const RobotKeyframe* key = nullptr;
+  if (!config.gait.keyframe.empty()) {
+    key = model_->Keyframe(config.gait.keyframe);
+    if (key == nullptr) {
+      std::string known;
+      for (const RobotKeyframe& k : model_->keyframes()) known += (known.empty() ? "" : ", ") + ("'" + k.name + "'");
+      problems.push_back(model_->source() + ": gait.keyframe: no keyframe '" + config.gait.keyframe + "' in the model (" +
+                         (known.empty() ? std::string("it has none: keyframes are an MJCF's <keyframe><key name=...>")
+                                        : "its keyframes: " + known) +
+                         ")");
+      throw InputError(problems);
+    }
+  }
   // the held joints and the legs, their problems reported together
   try {
-    q_held_ = HeldJointAngles(*model_, config.joints_rad, config.legs.value_or(BuiltinBipedLegs()));
+    q_held_ = HeldJointAngles(*model_, HeldWithKeyframe(*model_, config, key), config.legs.value_or(BuiltinBipedLegs()));
   } catch (const InputError& error) {
     problems = error.problems();
     q_held_.assign(model_->joint_count(), 0.0);
@@ -48,6 +82,15 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
     problems.insert(problems.end(), error.problems().begin(), error.problems().end());
   }
   if (!problems.empty()) throw InputError(problems);
+  // the crouch: given, or the keyframe's knee bend (the mean of its legs'), else none
+  double crouch_rad = 0.0;
+  if (config.gait.crouch_knee_rad) {
+    crouch_rad = *config.gait.crouch_knee_rad;
+  } else if (key != nullptr) {
+    crouch_rad = std::max(0.0, 0.5 * (legs_->ReadJoints(Side::kLeft, key->q_by_joint).knee +
+                                      legs_->ReadJoints(Side::kRight, key->q_by_joint).knee));
+  }
+  legs_->SetCrouch(crouch_rad);
   limits_ = std::make_unique<LegLimits>(*legs_);
   planner_ = std::make_unique<StepPlanner>(*legs_);
   // stride and period not given: the built-in biped's, scaled to these legs
@@ -71,6 +114,7 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
     RememberGait(memo_key, loaded);
   }
   initial_k_ = loaded.k;
+  pelvis_height_m_ = -legs_->Point3(Side::kLeft, legs_->Curve(0.0, loaded.k), FootPoint::kHeel).z();
   initial_achieved_stride_m_ = loaded.stride_m;
   // (the default, like the amplitude it is found at, a function of the search key)
   if (config.gait.max_step_m > 0) {
@@ -429,7 +473,8 @@ std::vector<FootFrame> GaitWalker::Feet() const {
   std::vector<FootFrame> feet;
   for (const Side side : {Side::kLeft, Side::kRight}) {
     const LegGeometry& leg = legs_->leg(side);
-    feet.push_back({.link = leg.foot_link, .p_L_sole = leg.p_L_sole, .p_L_toe = leg.p_L_toe, .p_L_heel = leg.p_L_heel});
+    feet.push_back({.link = leg.foot_link, .p_L_sole = leg.p_L_sole, .p_L_toe = leg.p_L_toe, .p_L_heel = leg.p_L_heel,
+                     .up_L = leg.up_L});
   }
   return feet;
 }

@@ -99,7 +99,8 @@ class GaitWalker : public Locomotion {
   void SetPath(std::vector<Vec2> waypoints_m) override;
   std::vector<FootFrame> Feet() const override;
   std::optional<GaitCycle> gait_cycle() const override {
-    return GaitCycle{achieved_stride_m_, gait_.period_s, max_step_m_};
+    return GaitCycle{achieved_stride_m_, gait_.period_s, max_step_m_, legs_->crouch_knee_rad(), pelvis_height_m_,
+                     k_target_};
   }
   void SetTerrain(const TerrainQuery* ground, const TerrainQuery* footholds = nullptr) override;
   std::vector<LocomotionEvent> TakeEvents() override;
@@ -165,6 +166,7 @@ class GaitWalker : public Locomotion {
 
   std::unique_ptr<RobotModel> model_;  // stable address: legs_ and planner_ refer into it
   std::unique_ptr<BipedLegs> legs_;
+  double pelvis_height_m_ = 0;  // root above the floor at a level heel strike (GaitCycle::pelvis_height_m)
   std::unique_ptr<LegLimits> limits_;  // the legs' URDF limits
   std::unique_ptr<StepPlanner> planner_;
   GaitConfig gait_;

@@ -222,6 +222,15 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
       legs_ok = false;
       continue;
     }
+    // a foot pitched at joint zero (legs.*.ankle_zero_deg) is read turned flat about the ankle joint
+    const Vec3& p_PA = p_P[2];
+    g.foot0_rad = name.ankle_zero_rad;
+    const auto turn_about_ankle = [&](const Vec3& p, double angle_rad) {
+      const Vec2xz v = RotateSagittal(angle_rad, Vec2xz(p.x() - p_PA.x(), p.z() - p_PA.z()));
+      return Vec3(p_PA.x() + v.x(), p.y(), p_PA.z() + v.y());
+    };
+    if (g.foot0_rad != 0.0)
+      for (Vec3& p : points_P) p = turn_about_ankle(p, -g.foot0_rad);
     double lowest = std::numeric_limits<double>::infinity();
     for (const Vec3& p : points_P) lowest = std::min(lowest, p.z());
     double heel = std::numeric_limits<double>::infinity(), toe = -heel, y_min = heel, y_max = -heel;
@@ -237,26 +246,50 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
       if (p.x() >= toe - kSoleBand_m) g.toe_top_m = std::max(g.toe_top_m, p.z() - lowest);
       if (p.x() <= heel + kSoleBand_m) g.heel_top_m = std::max(g.heel_top_m, p.z() - lowest);
     }
-    const Vec3& p_PA = p_P[2];
     g.sole_z_m = lowest - p_PA.z();
     g.heel_x_m = heel - p_PA.x();
     g.toe_x_m = toe - p_PA.x();
     g.sole_y_m = 0.5 * (y_min + y_max);
     g.half_width_m = 0.5 * (y_max - y_min);
     if (!(g.heel_x_m < 0 && g.toe_x_m > 0 && g.sole_z_m < 0)) {
-      char text[300];
+      // the pitch at which the foot's lowest points spread longest along x: where its sole lies flat
+      double best_extent_m = -1, flat_from = 0, flat_to = 0;
+      for (int tenth = -450; tenth <= 450; ++tenth) {
+        const double psi = DegToRad(0.1 * tenth);
+        double low = std::numeric_limits<double>::infinity(), back = low, front = -low;
+        for (const Vec3& p : points_P) low = std::min(low, turn_about_ankle(p, -psi).z());
+        for (const Vec3& p : points_P) {
+          const Vec3 q = turn_about_ankle(p, -psi);
+          if (q.z() > low + kSoleBand_m) continue;
+          back = std::min(back, q.x());
+          front = std::max(front, q.x());
+        }
+        const double extent_m = front - back;
+        if (extent_m > best_extent_m + 1e-3) {
+          best_extent_m = extent_m;
+          flat_from = flat_to = 0.1 * tenth;
+        } else if (extent_m >= best_extent_m - 1e-3) {
+          flat_to = 0.1 * tenth;  // the plateau of the longest sole: its middle is the flat pitch
+        }
+      }
+      char text[600];
       std::snprintf(text, sizeof text,
                     "' has its sole (its lowest points, within %.0f mm) from %.3f to %.3f m along x and %.3f m "
-                    "below the ankle joint; the sole must reach behind and in front of the ankle, below it",
-                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m);
+                    "below the ankle joint; the sole must reach behind and in front of the ankle, below it "
+                    "(a foot pitched at joint zero is read flat when %s.ankle_zero_deg gives its pitch there, toe up "
+                    "positive: its geometry lies flattest at %.1f deg)",
+                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m, key.c_str(),
+                    RadToDeg(g.foot0_rad) + 0.5 * (flat_from + flat_to));
       problems.push_back(source + ": " + key + ".foot: link '" + name.foot + text);
     }
     lowest_sole_P = std::min(lowest_sole_P, lowest);
     // the foot points in the foot link's own frame
     const Pose X_LP = X_PL[g.foot_link].inverse();
-    g.p_L_heel = X_LP * Vec3(heel, g.sole_y_m, lowest);
-    g.p_L_sole = X_LP * Vec3(p_PA.x(), g.sole_y_m, lowest);
-    g.p_L_toe = X_LP * Vec3(toe, g.sole_y_m, lowest);
+    // (turned back by ψ0: the material points, where they are at the reference pose)
+    g.p_L_heel = X_LP * turn_about_ankle(Vec3(heel, g.sole_y_m, lowest), g.foot0_rad);
+    g.p_L_sole = X_LP * turn_about_ankle(Vec3(p_PA.x(), g.sole_y_m, lowest), g.foot0_rad);
+    g.p_L_toe = X_LP * turn_about_ankle(Vec3(toe, g.sole_y_m, lowest), g.foot0_rad);
+    g.up_L = X_LP.linear() * Vec3(-std::sin(g.foot0_rad), 0.0, std::cos(g.foot0_rad));
   }
   if (!problems.empty() || !legs_ok) throw InputError(problems);
 
@@ -357,8 +390,8 @@ LegAnglesRad BipedLegs::PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, do
   const LegGeometry& g = leg(s);
   const RobotJoint& ankle = model_.joint(g.ankle_joint);
   if (ankle.type != JointType::kRevolute || !(ankle.lower + 2 * margin_rad < ankle.upper)) return a;
-  // q_ankle = s_a·(θS − θS0 − ψ): the pitches at the two limits
-  const double shank = (a.hip - a.knee) - g.shank0_rad;
+  // q_ankle = s_a·(θS − θS0 − (ψ − ψ0)): the pitches at the two limits
+  const double shank = (a.hip - a.knee) - g.shank0_rad + g.foot0_rad;
   const double at_lower = shank - (ankle.lower + margin_rad) / g.ankle_sign,
                at_upper = shank - (ankle.upper - margin_rad) / g.ankle_sign;
   LegAnglesRad out = a;
@@ -368,12 +401,13 @@ LegAnglesRad BipedLegs::PitchWithinAnkleLimits(Side s, const LegAnglesRad& a, do
 
 Pose BipedLegs::FootPose_P(Side s, const LegAnglesRad& a) const {
   const LegGeometry& g = leg(s);
+  const std::array<double, 3> v = JointValues(s, a);
   Pose X_PL = Pose::Identity();
   for (const int j : chain_[static_cast<int>(s)]) {
     double q = q_reference_[j];
-    if (j == g.hip_joint) q = g.hip_sign * (g.thigh0_rad - a.hip);
-    if (j == g.knee_joint) q = g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad));
-    if (j == g.ankle_joint) q = g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch);
+    if (j == g.hip_joint) q = v[0];
+    if (j == g.knee_joint) q = v[1];
+    if (j == g.ankle_joint) q = v[2];
     X_PL = X_PL * model_.JointTransform(j, q);
   }
   return X_PL;
@@ -407,6 +441,8 @@ std::string BipedLegs::Fingerprint() const {
     }
   }
   put(standing_height_m_);
+  put(crouch_knee_rad_);
+  for (const LegGeometry& g : legs_) put(g.foot0_rad);
   return bytes;
 }
 
@@ -427,7 +463,7 @@ Vec3 BipedLegs::Point3(Side s, const LegAnglesRad& a, FootPoint which) const {
 std::array<double, 3> BipedLegs::JointValues(Side s, const LegAnglesRad& a) const {
   const LegGeometry& g = leg(s);
   return {g.hip_sign * (g.thigh0_rad - a.hip), g.knee_sign * (a.knee - (g.thigh0_rad - g.shank0_rad)),
-          g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - a.pitch)};
+          g.ankle_sign * ((a.hip - a.knee) - g.shank0_rad - (a.pitch - g.foot0_rad))};
 }
 
 void BipedLegs::WriteJoints(Side s, const LegAnglesRad& a, std::span<double> q) const {
@@ -443,7 +479,7 @@ LegAnglesRad BipedLegs::ReadJoints(Side s, std::span<const double> q) const {
   LegAnglesRad a;
   a.hip = g.thigh0_rad - q[g.hip_joint] / g.hip_sign;
   a.knee = q[g.knee_joint] / g.knee_sign + (g.thigh0_rad - g.shank0_rad);
-  a.pitch = (a.hip - a.knee) - g.shank0_rad - q[g.ankle_joint] / g.ankle_sign;
+  a.pitch = (a.hip - a.knee) - g.shank0_rad - q[g.ankle_joint] / g.ankle_sign + g.foot0_rad;
   return a;
 }
 

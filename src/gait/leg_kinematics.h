@@ -17,7 +17,10 @@
 // θS = θT − knee, foot pitch ψ (toe up +), all 0 when standing straight. A
 // pitch axis a = s·y_P (s = ±1, the sign) turns its segment by −s·q, so with
 // θT0, θS0 the segments' angles at the reference pose:
-//   q_hip = s_h·(θT0 − θT),  q_knee = s_k·(knee − (θT0 − θS0)),  q_ankle = s_a·(θS − θS0 − ψ).
+//   q_hip = s_h·(θT0 − θT),  q_knee = s_k·(knee − (θT0 − θS0)),  q_ankle = s_a·(θS − θS0 − (ψ − ψ0)),
+// ψ0 the foot's pitch at the reference pose (0 unless legs.*.ankle_zero_deg
+// says the sole is pitched at joint zero: its geometry is then read turned
+// flat about the ankle, and ψ = 0 is the sole flat).
 //
 // Frames: P pelvis (the root link; x forward, y left, z up), L the foot link.
 #pragma once
@@ -61,9 +64,11 @@ struct LegGeometry {
   double sole_z_m = 0;       ///< sole below the ankle joint (< 0)
   double sole_y_m = 0;       ///< y of the sole's centre line in P
   double half_width_m = 0;   ///< half the sole's width
+  double foot0_rad = 0;      ///< ψ0: the foot's pitch at the reference pose (legs.*.ankle_zero_deg), toe up +
   double toe_top_m = 0;      ///< the foot's front face: its highest point at the toe's x, above the sole
   double heel_top_m = 0;     ///< its back face's, at the heel's x
   Vec3 p_L_heel = Vec3::Zero(), p_L_sole = Vec3::Zero(), p_L_toe = Vec3::Zero();  ///< in the foot link frame
+  Vec3 up_L = Vec3::UnitZ();  ///< the sole's upward normal (P's z at the reference pose) in the foot link frame
   double leg_length_m = 0;   ///< hip joint above the sole, standing straight
   /// +1: the knee's URDF limits let it flex (knee > 0, the lower end moving
   /// back, as a human knee); −1: they let it bend the other way only
@@ -143,6 +148,21 @@ class BipedLegs {
   /// Reads them back.
   LegAnglesRad ReadJoints(Side s, std::span<const double> q) const;
 
+  /// The gait's crouch: a constant knee bend c (rad, ≥ 0) added to the curves
+  /// while the foot's pitch is kept, the thigh leaning forward by c/2 and the
+  /// shank back by c/2 (hip flexion +c/2, knee flexion +c, ankle dorsiflexion
+  /// +c/2), so that a robot that stands and walks with bent knees (TALOS, the
+  /// H1 under its own controllers) walks so here. 0: the curves as they are.
+  void SetCrouch(double knee_rad) { crouch_knee_rad_ = knee_rad; }
+  double crouch_knee_rad() const { return crouch_knee_rad_; }
+  /// The normative curves at `phase` (gait/gait_curves.h, CurveLegAngles), with the crouch.
+  LegAnglesRad Curve(double phase, double amplitude, double push_off_gain = 1.0) const {
+    LegAnglesRad a = CurveLegAngles(phase, amplitude, push_off_gain);
+    a.hip += 0.5 * crouch_knee_rad_;
+    a.knee += crouch_knee_rad_;
+    return a;
+  }
+
   /// Every number the gait's planning reads from these legs, as bytes: both
   /// legs' geometry, the reference pose, and each chain joint's frame, axis,
   /// type and limits. Equal fingerprints plan equal steps (gait/gait_memo.h).
@@ -154,6 +174,7 @@ class BipedLegs {
   std::array<std::vector<int>, 2> chain_;  // joints from the root to the foot link, parents first
   std::vector<double> q_reference_;
   double standing_height_m_ = 0;
+  double crouch_knee_rad_ = 0;
 };
 
 /// Rotates a sagittal vector by an angle given by its cosine c and sine s

@@ -32,6 +32,9 @@ struct FootFrame {
   Vec3 p_L_sole = Vec3::Zero();  ///< the sole point under the ankle
   Vec3 p_L_toe = Vec3::Zero();   ///< the sole's front end on the foot's centre line
   Vec3 p_L_heel = Vec3::Zero();  ///< its back end
+  /// The sole's upward normal in the foot link frame: the root's z at the
+  /// reference pose, whatever way the foot link's own frame is turned
+  Vec3 up_L = Vec3::UnitZ();
 };
 
 /// One gait cycle as walked.
@@ -39,6 +42,9 @@ struct GaitCycle {
   double stride_m = 0;    ///< heel strike to heel strike of one foot
   double period_s = 0;    ///< the cycle's duration
   double max_step_m = 0;  ///< highest step up or down it takes on uneven ground
+  double crouch_knee_rad = 0;  ///< the stance knee bend added to the curves (0: straight-kneed)
+  double pelvis_height_m = 0;  ///< root link above the floor at heel strike on level ground, walking so
+  double amplitude = 0;        ///< the curves' amplitude k for the stride (1: the normative adult walk)
 };
 
 /// Something the motion noticed or decided (a step it cannot take), for

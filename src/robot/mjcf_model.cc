@@ -76,8 +76,8 @@ ModelPtr LoadCompiled(const std::string& path) {
   mju_user_warning = previous;
   g_warnings = nullptr;
   if (!model) {
-    throw InputError(path + ": MuJoCo could not load the MJCF (libmujoco " + std::to_string(mj_version()) +
-                     "): " + (error[0] != '\0' ? std::string(error) : "no reason given"));
+    throw InputError(path + ": MuJoCo " + mj_versionString() + " could not load the MJCF: " +
+                     (error[0] != '\0' ? std::string(error) : "no reason given"));
   }
   return model;
 }
@@ -126,10 +126,29 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
   std::vector<std::string> problems;
   const std::string where = path + ": ";
 
-  // what proxsim's kinematic tree cannot follow, named
+  // what proxsim's kinematic tree cannot follow, named. A joint coupling
+  // (a gripper's fingers) is kept when the reference pose (every qpos 0, where
+  // proxsim holds the joints the gait does not drive) satisfies it: MuJoCo's
+  // coupling is q1 − ref1 = Σ c_i (q2 − ref2)^i (without joint2, q1 − ref1 = c0)
   for (int e = 0; e < m->neq; ++e) {
-    problems.push_back(where + "equality constraint '" + NameOf(m, mjOBJ_EQUALITY, e, "equality") +
-                       "' is not supported: proxsim's robot is a kinematic tree (no coupled joints or closed chains)");
+    if (!m->eq_active0[e]) continue;  // off unless a controller turns it on
+    const std::string name = NameOf(m, mjOBJ_EQUALITY, e, "equality");
+    if (m->eq_type[e] != mjEQ_JOINT) {
+      problems.push_back(where + "equality constraint '" + name +
+                         "' is not supported: proxsim's robot is a kinematic tree (no closed chains or welds; "
+                         "joint couplings are)");
+      continue;
+    }
+    const int j1 = m->eq_obj1id[e], j2 = m->eq_obj2id[e];
+    const double d1 = 0.0 - m->qpos0[m->jnt_qposadr[j1]];
+    const double d2 = j2 >= 0 ? 0.0 - m->qpos0[m->jnt_qposadr[j2]] : 0.0;
+    const mjtNum* c = m->eq_data + mjNEQDATA * e;
+    const double residual = d1 - (c[0] + d2 * (c[1] + d2 * (c[2] + d2 * (c[3] + d2 * c[4]))));
+    if (std::abs(residual) > 1e-9) {
+      problems.push_back(where + "joint coupling '" + name + "' (joint '" + NameOf(m, mjOBJ_JOINT, j1, "joint") +
+                         "') does not hold at the reference pose (every joint at 0), off by " +
+                         std::to_string(residual) + ": proxsim holds coupled joints there");
+    }
   }
   if (m->nskin > 0) problems.push_back(where + "skins are not supported (" + std::to_string(m->nskin) + " skin(s))");
   std::vector<int> roots;
@@ -179,6 +198,7 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
 
   // bodies: each a link; its joints between it and its parent's link
   std::vector<int> link_of_body(m->nbody, -1);
+  std::map<int, int> mujoco_joint_of;  // proxsim's moving joint -> MuJoCo's joint id (for keyframes)
   std::map<int, std::shared_ptr<const TriangleMesh>> meshes;  // by MuJoCo mesh id, shared by the geoms using it
   for (int b = roots[0]; b < m->nbody; ++b) {
     const std::string body = NameOf(m, mjOBJ_BODY, b, "body");
@@ -225,8 +245,19 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
       const int child = add_link(last && on_origin ? body : body + "." + joint, last && on_origin ? m->body_mass[b] : 0.0);
       const bool hinge = m->jnt_type[j] == mjJNT_HINGE;
       const bool limited = m->jnt_limited[j] != 0;
+      // proxsim's q is MuJoCo's qpos: MuJoCo turns a joint by qpos − ref from
+      // the pose the XML draws (ref = qpos0), so the joint frame is the XML's
+      // turned back by ref, and the XML's pose is q = ref
+      const double ref = m->qpos0[m->jnt_qposadr[j]];
+      Pose X_PJ = X_PB * Translation(anchor);
+      if (hinge) {
+        X_PJ.linear() = X_PJ.linear() * Eigen::AngleAxisd(-ref, axis.normalized()).toRotationMatrix();
+      } else {
+        X_PJ = X_PJ * Translation(-ref * axis.normalized());
+      }
       const int index = add_joint(joint, hinge ? (limited ? JointType::kRevolute : JointType::kContinuous) : JointType::kPrismatic,
-                                  parent, child, X_PB * Translation(anchor), axis.normalized());
+                                  parent, child, X_PJ, axis.normalized());
+      mujoco_joint_of[index] = j;
       if (limited) {
         model.joints_[index].has_limits = true;
         model.joints_[index].lower = m->jnt_range[2 * j];
@@ -297,6 +328,23 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
               Vec3::UnitX());
   }
   if (!problems.empty()) throw InputError(problems);
+
+  // keyframes: each joint's qpos, and the root's pose when it has a free joint
+  int root_free_qpos = -1;
+  if (m->body_jntnum[roots[0]] > 0 && m->jnt_type[m->body_jntadr[roots[0]]] == mjJNT_FREE) {
+    root_free_qpos = m->jnt_qposadr[m->body_jntadr[roots[0]]];
+  }
+  for (int k = 0; k < m->nkey; ++k) {
+    const mjtNum* qpos = m->key_qpos + k * m->nq;
+    RobotKeyframe key{.name = NameOf(m, mjOBJ_KEY, k, "key"), .q_by_joint = std::vector<double>(model.joints_.size(), 0.0)};
+    for (const auto& [joint, j] : mujoco_joint_of) key.q_by_joint[joint] = qpos[m->jnt_qposadr[j]];
+    if (root_free_qpos >= 0) {
+      key.has_root = true;
+      key.X_WRoot = PoseOf(qpos + root_free_qpos, qpos + root_free_qpos + 3);
+    }
+    model.keyframes_.push_back(std::move(key));
+  }
+  model.loader_ = std::string("MuJoCo ") + mj_versionString();
 
   // forward kinematics in joint order: each joint was added after its parent link was reached
   model.root_link_ = 0;

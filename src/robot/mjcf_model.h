@@ -1,6 +1,7 @@
-// MuJoCo models (MJCF) as proxsim robots, read through Debian's libmujoco
-// (mj_loadXML, which also compiles the model: defaults, fromto, meshes,
-// angles in degrees all resolved). RobotModel::FromMjcfFile maps the compiled
+// MuJoCo models (MJCF) as proxsim robots, read through the libmujoco of PyPI's
+// `mujoco` wheel (cmake/mujoco.cmake; mj_loadXML, which also compiles the
+// model: defaults, <frame>, <include>, autolimits, fromto, meshes, angles in
+// degrees all resolved). RobotModel::FromMjcfFile maps the compiled
 // model into proxsim's tree of links and 1-DoF joints (docs/robots.md,
 // "MuJoCo models"):
 //
@@ -8,7 +9,9 @@
 //    is the floating base proxsim places itself); every other body is a link
 //    of its name, with its mass;
 //  - a body's hinge joints become revolute joints (continuous when not
-//    limited), its slide joints prismatic ones, with their ranges; a body
+//    limited), its slide joints prismatic ones, with their ranges; the
+//    joint's `ref` (qpos0) is folded into its frame, so that proxsim's q is
+//    MuJoCo's qpos and the reference pose (q = 0) is qpos = 0; a body
 //    without joints hangs from its parent by a fixed joint `fixed:BODY`. A
 //    joint whose anchor is off the body's origin, or a body with several
 //    joints, gets a link per joint between them (`BODY.JOINT`, no geometry)
@@ -21,13 +24,18 @@
 //  - each site becomes a link of its name, fixed to its body (`site:SITE`),
 //    so that a sensor may mount on it (`link: SITE`).
 //
+//  - joint couplings (<equality><joint>) that hold at the reference pose are
+//    kept (proxsim holds the joints the gait does not drive there);
+//  - keyframes become RobotKeyframe (each joint's qpos, the root's pose).
+//
 // Anything that would change what the robot's surface or motion is, and
 // proxsim cannot follow, is an InputError naming it: ball joints, free joints
 // below the root, joints attaching the root to the world, equality
-// constraints, mocap bodies, skins, plane and height-field geoms, geoms of
-// the world body, several trees under the world. What does not change it
-// (actuators, MuJoCo sensors, tendons, contacts, keyframes, visuals) is not
-// read: proxsim is kinematic.
+// constraints other than joint couplings (or a coupling the reference pose
+// breaks), mocap bodies, skins, plane and height-field geoms, geoms of the
+// world body, several trees under the world. What does not change it
+// (actuators, MuJoCo sensors, tendons, contacts, visuals) is not read:
+// proxsim is kinematic.
 #pragma once
 
 #include <cmath>

@@ -2,6 +2,7 @@
 // kinematics over them. urdfdom reports its reasons for refusing a file through
 // console_bridge; we capture those lines and put them in the InputError.
 #include "robot/robot_model.h"
+#include "robot/xacro_expand.h"
 
 #include <algorithm>
 #include <array>
@@ -243,6 +244,9 @@ RobotModel RobotModel::FromUrdfFile(const std::string& path, const UrdfOptions& 
   if (!in) throw InputError(path + ": cannot open the URDF file (missing or unreadable)");
   std::stringstream text;
   text << in.rdbuf();
+  // a xacro file is expanded by xacro itself (robot/xacro_expand.h); the URDF
+  // it prints is read as if it were the file (meshes relative to its folder)
+  if (IsXacro(text.str())) return FromUrdfText(ExpandXacro(path), path, options);
   return FromUrdfText(text.str(), path, options);
 }
 
@@ -297,7 +301,8 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
   // then lack links and joints, blamed elsewhere. Recognised by its content
   // (IsXacro), not its name.
   if (IsXacro(urdf_text)) {
-    throw InputError(source + ": this is xacro: expand it first (`xacro in.urdf.xacro > out.urdf`)");
+    throw InputError(source + ": this is xacro, given as text: expand it first (`xacro in.urdf.xacro > out.urdf`), "
+                     "or give its file (proxsim runs xacro on a file)");
   }
   std::vector<std::string> messages;
   const urdf::ModelInterfaceSharedPtr urdf = ParseCapturingErrors(urdf_text, &messages);
@@ -428,6 +433,13 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
   model.joint_order_.resize(model.joints_.size());
   for (int j = 0; j < model.joint_count(); ++j) model.joint_order_[j] = j;
   return model;
+}
+
+const RobotKeyframe* RobotModel::Keyframe(const std::string& name) const {
+  for (const RobotKeyframe& key : keyframes_) {
+    if (key.name == name) return &key;
+  }
+  return nullptr;
 }
 
 int RobotModel::LinkIndex(const std::string& name) const {

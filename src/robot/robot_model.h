@@ -66,6 +66,15 @@ struct RobotJoint {
   double effort = 0.0;           ///< <limit effort>: N·m or N (0 when not given)
 };
 
+/// A named pose the model file gives (an MJCF <keyframe><key name=…>): what the
+/// robot's makers call its standing or walking pose, e.g. Menagerie's `home`.
+struct RobotKeyframe {
+  std::string name;
+  std::vector<double> q_by_joint;  ///< one value per joint, indexed like joint(i) (rad or m; 0 for fixed joints)
+  bool has_root = false;           ///< the key gives the root's pose (a free joint's qpos)
+  Pose X_WRoot = Pose::Identity(); ///< root link in W at the key (identity without has_root)
+};
+
 /// A URDF robot: links, joints, shapes and forward kinematics.
 class RobotModel {
  public:
@@ -80,10 +89,10 @@ class RobotModel {
   static RobotModel FromUrdfText(const std::string& urdf_text, const std::string& source,
                                  const UrdfOptions& options = {});
 
-  /// Reads a MuJoCo model (MJCF) through libmujoco: its bodies, hinge and slide
+  /// Reads a MuJoCo model (MJCF) through the wheel's libmujoco: its bodies, hinge and slide
   /// joints, geoms and sites, as robot/mjcf_model.h maps them. Throws
   /// InputError naming the file and what MuJoCo refused, or each element
-  /// proxsim cannot follow (a ball joint, an equality constraint, a plane geom…).
+  /// proxsim cannot follow (a ball joint, a closed chain, a plane geom…).
   static RobotModel FromMjcfFile(const std::string& path, const UrdfOptions& options = {});
 
   /// A URDF or an MJCF file, told apart by its first element (<robot> or <mujoco>).
@@ -119,6 +128,14 @@ class RobotModel {
   /// Distinct mesh files loaded (a file used by several links counts once).
   std::size_t MeshFileCount() const { return mesh_file_count_; }
 
+  /// The model's named poses (MJCF keyframes; none for a URDF), in file order.
+  const std::vector<RobotKeyframe>& keyframes() const { return keyframes_; }
+  /// The keyframe called `name`, or null.
+  const RobotKeyframe* Keyframe(const std::string& name) const;
+
+  /// What the loader's engine was (e.g. "MuJoCo 4.0.0" for an MJCF; empty for a URDF).
+  const std::string& loader() const { return loader_; }
+
   /// Poses of every link in W given the root link's pose X_WRoot and one value
   /// per joint (rad or m, indexed like joint(i); fixed joints ignore theirs).
   /// Both spans are sized joint_count() and link_count().
@@ -140,6 +157,8 @@ class RobotModel {
   std::vector<int> joint_order_;  ///< joints parents-first, for forward kinematics
   int root_link_ = -1;
   std::size_t mesh_file_count_ = 0;
+  std::vector<RobotKeyframe> keyframes_;
+  std::string loader_;
 };
 
 }  // namespace proxsim

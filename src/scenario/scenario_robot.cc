@@ -24,6 +24,8 @@ constexpr double kMinGaitPeriod_s = 0.1, kMaxGaitPeriod_s = 30.0;
 // ground within one sample (gait/touchdown.h), a jump that stays a kinematic
 // stand-in for a foot feeling its way down only over a few centimetres.
 constexpr double kMaxTouchdownTolerance_m = 0.05;
+// gait.crouch_knee_deg: a knee bent further than this is a squat, not a walk
+constexpr double kMaxCrouchKnee_deg = 90.0;
 }  // namespace
 
 namespace {
@@ -58,7 +60,7 @@ std::optional<std::array<LegNames, 2>> ReadLegs(YamlReader& reader, const Field&
       complete = false;
       continue;
     }
-    const auto map = reader.Map(side_field, {"hip", "knee", "ankle", "foot"});
+    const auto map = reader.Map(side_field, {"hip", "knee", "ankle", "foot", "ankle_zero_deg"});
     if (!map) {
       complete = false;
       continue;
@@ -70,6 +72,10 @@ std::optional<std::array<LegNames, 2>> ReadLegs(YamlReader& reader, const Field&
       const auto text = reader.Require(name, std::string(key) + ", " + what) ? reader.String(name) : std::nullopt;
       if (text) *value = *text;
       else complete = false;
+    }
+    // a foot pitched at joint zero: its pitch there, toe up positive
+    if (const auto zero = reader.Number((*map)["ankle_zero_deg"], NumberIn(-45.0, 45.0, "deg"))) {
+      leg->ankle_zero_rad = DegToRad(*zero);
     }
   }
   if (!complete) return std::nullopt;
@@ -258,7 +264,12 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
   // the legs, max_step_m absent comes from them
   robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
   if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m", "unsafe_steps", "footholds",
-                                                     "touchdown_tolerance_m"})) {
+                                                     "touchdown_tolerance_m", "keyframe", "crouch_knee_deg"})) {
+    // the gait's shape from the robot: a named keyframe of its model, or a knee bend given here
+    if (const auto key = reader.String((*gait)["keyframe"])) robot.gait.keyframe = *key;
+    if (const auto crouch = reader.Number((*gait)["crouch_knee_deg"], NumberIn(0.0, kMaxCrouchKnee_deg, "deg"))) {
+      robot.gait.crouch_knee_rad = DegToRad(*crouch);
+    }
     robot.unsafe_steps =
         ReadChoice<UnsafeSteps>(reader, (*gait)["unsafe_steps"],
                                 {{"fall", UnsafeSteps::kFall}, {"refuse", UnsafeSteps::kRefuse}},

@@ -95,7 +95,8 @@ ContactFinder::ContactFinder(RobotInScene& robot, const RayCaster& ground, std::
     has_feet_ = true;
     const auto& points_L = robot_.surface_points_L(foot.link);
     for (std::size_t i = 0; i < points_L.size(); ++i)
-      if (points_L[i].z() - foot.p_L_sole.z() < kSoleBand_m) not_sole_[foot.link][i] = false;
+      // height above the sole along its upward normal (a foot link's frame may be turned any way)
+      if ((points_L[i] - foot.p_L_sole).dot(foot.up_L) < kSoleBand_m) not_sole_[foot.link][i] = false;
   }
   // the legs' lower links, each of one leg against each of the other, with
   // the boxes that bound their samples and their shapes in their own frames
