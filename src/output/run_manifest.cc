@@ -127,7 +127,7 @@ void Write(const fs::path& dir, RunManifest manifest) {
 
 const std::vector<std::string>& RunOutputNames() {
   static const std::vector<std::string> names = {"readings.csv", "readings", "profile.ply", "poses.csv",
-                                                  "scene.json",   "summary.json", "timings.json", "terrain",
+                                                  "joints.csv",   "scene.json",   "summary.json", "timings.json", "terrain",
                                                   "report"};
   return names;
 }
