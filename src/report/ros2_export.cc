@@ -45,8 +45,8 @@ void CheckRos2Path(const std::string& bag_dir, const std::string& run_dir) {
   std::error_code ec;
   const fs::path bag(bag_dir);
   if (IsAtOrInside(bag, run_dir)) {
-    throw InputError("--ros2 " + bag_dir + ": the run's folder or inside it: " + run_dir +
-                     "; the bag is not one of the run's files, give a folder beside it");
+    throw InputError("--ros2 " + bag_dir + ": the run's folder " + run_dir +
+                     " or a folder in it; the bag is not one of the run's files, give a folder beside the run");
   }
   if (fs::exists(fs::symlink_status(bag, ec)) && !fs::is_directory(bag, ec)) {
     throw InputError("--ros2 " + bag_dir + ": not a folder; give a new (or empty) folder for the bag");
@@ -54,7 +54,9 @@ void CheckRos2Path(const std::string& bag_dir, const std::string& run_dir) {
   if (fs::is_directory(bag, ec) && !fs::is_empty(bag, ec)) {
     throw InputError("--ros2 " + bag_dir + ": a folder that holds files; give a new (or empty) folder for the bag");
   }
-  const fs::path parent = fs::absolute(bag, ec).lexically_normal().parent_path();
+  fs::path full = fs::absolute(bag, ec).lexically_normal();
+  if (!full.has_filename()) full = full.parent_path();  // "bag/" is the folder bag
+  const fs::path parent = full.parent_path();
   if (!fs::is_directory(parent, ec)) {
     throw InputError("--ros2 " + bag_dir + ": its folder " + parent.string() + " does not exist");
   }
