@@ -468,7 +468,7 @@ int main(int argc, char** argv) {
     if (*export_command) {
       if (!export_mcap && !export_ros2) throw proxsim::InputError("export: give --mcap FILE, --ros2 DIR or both");
       CheckOneRun(export_dir);
-      if (export_mcap) proxsim::CheckMcapPath(*export_mcap);
+      if (export_mcap) proxsim::CheckMcapPath(*export_mcap, export_dir);
       if (export_ros2) proxsim::CheckRos2Path(*export_ros2, export_dir);
       // hold the folder against a run into it while its files are read
       const proxsim::OutputFolder folder(export_dir, {.command = "export", .create = false, .check_contents = false});

@@ -132,6 +132,15 @@ const std::vector<std::string>& RunOutputNames() {
   return names;
 }
 
+const std::vector<std::string>& RunFileNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = RunOutputNames();
+    all.insert(all.end(), {"columns.json", "zones", "echoes", "objects_poses.csv", "manifest.json", ".proxsim.lock"});
+    return all;
+  }();
+  return names;
+}
+
 std::optional<RunManifest> ReadRunManifest(const std::string& dir) {
   std::ifstream in(fs::path(dir) / kManifest);
   if (!in) return std::nullopt;
