@@ -321,3 +321,51 @@ def test_bad_bag_folders_are_refused_with_nothing_written(tmp_path, status_run):
     (tmp_path / "not_a_run").mkdir()
     result = run_cli("export", str(tmp_path / "not_a_run"), "--ros2", str(tmp_path / "bag2"))
     assert result.returncode == 2 and not (tmp_path / "bag2").exists(), result.stderr
+
+
+def test_every_mcap_export_writes_a_layout_that_plots_each_sensor(tmp_path, status_run):
+    """The Foxglove layout beside an MCAP export (docs/foxglove.md): it parses, its 3D panel is on `world`,
+    it has one Plot per sensor of that sensor's d_m, a Log panel on /events, and its tree holds every panel."""
+    run, _, _ = status_run
+    result = run_cli("export", str(run), "--mcap", str(tmp_path / "walk.mcap"))
+    assert result.returncode == 0, result.stderr
+    layout = json.loads((tmp_path / "walk.layout.json").read_text())
+    panels = layout["configById"]
+    assert panels["3D!world"]["followTf"] == "world"
+    assert panels["3D!world"]["topics"]["/profile"]["decayTime"] >= 0.98  # the profile kept for the whole run
+    plotted = {}
+    for panel_id, config in panels.items():
+        if panel_id.startswith("Plot!"):
+            [path] = config["paths"]
+            plotted[path["label"]] = path["value"]
+    names = [s["name"] for s in json.loads((run / "scene.json").read_text())["sensors"]]
+    assert plotted == {name: f"/sensors/{name}/reading.d_m" for name in names}
+    assert panels["RosOut!events"]["topicToRender"] == "/events"
+
+    def leaves(node):
+        return [node] if isinstance(node, str) else leaves(node["first"]) + leaves(node["second"])
+    assert sorted(leaves(layout["layout"])) == sorted(panels)
+
+
+def test_odd_sensor_names_without_a_robot(tmp_path):
+    """Names that are not ROS names: the bag's topics are made valid (docs/ros2.md), the frame ids stay the
+    names; the layout quotes the MCAP topic in its message path. Without a robot: no /tf, no /joint_states."""
+    (tmp_path / "s.yaml").write_text(
+        "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nscene:\n  objects:\n    - {name: ground, plane: {}}\n"
+        "sensors:\n"
+        "  - {name: 'front left.1', type: laser, pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n"
+        "  - {name: '2nd', type: reflectance, pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n")
+    result = run_cli("run", str(tmp_path / "s.yaml"), "--out", str(tmp_path / "run"), "--no-report",
+                     "--ros2", str(tmp_path / "bag"), "--mcap", str(tmp_path / "odd.mcap"))
+    assert result.returncode == 0, result.stderr
+    messages, _ = read_bag(tmp_path / "bag")
+    assert set(messages) == {"/tf_static", "/sensors/front_left_1/range", "/sensors/s2nd/range", "/profile"}
+    assert {m.header.frame_id for _, m in messages["/sensors/front_left_1/range"]} == {"front left.1"}
+    assert [m.range for _, m in messages["/sensors/s2nd/range"]] == pytest.approx([0.5] * 2, abs=0.05)
+    [(_, static)] = messages["/tf_static"]
+    assert {(t.header.frame_id, t.child_frame_id) for t in static.transforms} == {("world", "front left.1"),
+                                                                                   ("world", "2nd")}
+    layout = json.loads((tmp_path / "odd.layout.json").read_text())
+    paths = {c["paths"][0]["value"] for k, c in layout["configById"].items() if k.startswith("Plot!")}
+    assert paths == {'"/sensors/front left.1/reading".d_m', "/sensors/2nd/reading.d_m"}
+    assert "RosOut!events" not in layout["configById"]  # no robot, no warnings: no /events
