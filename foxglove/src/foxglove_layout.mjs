@@ -36,10 +36,13 @@ export function runLayout(topics, durationS) {
   const configById = {};
 
   // the 3D view: the scene, the robot, the rays and the profile in the world frame
-  const shown = ['/scene', '/robot', '/profile', '/terrain/map', '/terrain/hazards', ...readings.map((t) => t.replace(/reading$/, 'ray'))];
+  const rays = readings.map((t) => t.replace(/reading$/, 'ray'));
+  const shown = ['/scene', '/robot', '/profile', '/terrain/map', '/terrain/hazards', ...rays];
   const topicSettings = {};
   for (const topic of shown.filter((t) => names.has(t))) topicSettings[topic] = { visible: true };
-  if (topicSettings['/profile']) Object.assign(topicSettings['/profile'], { decayTime: Math.max(durationS, 1), pointSize: 3 });
+  if (topicSettings['/profile']) {
+    Object.assign(topicSettings['/profile'], { decayTime: Math.max(durationS, 1), pointSize: 3 });
+  }
   configById['3D!world'] = { followTf: 'world', followMode: 'follow-pose', topics: topicSettings, layers: {} };
 
   // a plot of each sensor's distance over time
@@ -70,6 +73,7 @@ export function runLayout(topics, durationS) {
     globalVariables: {},
     userNodes: {},
     playbackConfig: { speed: 1 },
-    layout: side.length === 0 ? '3D!world' : { first: '3D!world', second: split(side, 'column'), direction: 'row', splitPercentage: 60 },
+    layout: side.length === 0 ? '3D!world'
+      : { first: '3D!world', second: split(side, 'column'), direction: 'row', splitPercentage: 60 },
   };
 }

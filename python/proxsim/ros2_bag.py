@@ -244,7 +244,8 @@ def sensor_specs(summary, scene):
     for sensor in scene["sensors"]:
         spec = inputs.get(sensor["name"])
         if spec is None:
-            raise RunFolderError(f"summary.json: no inputs.sensors entry for the sensor {sensor['name']!r} of scene.json")
+            raise RunFolderError(f"summary.json: no inputs.sensors entry for the sensor {sensor['name']!r} "
+                                 "of scene.json")
         specs.append({**spec, "link": sensor["link"], "min_range_m": sensor["min_range_m"],
                       "max_range_m": sensor["max_range_m"]})
     return specs
@@ -434,6 +435,9 @@ def main(argv):
     except RunFolderError as error:
         print(f"proxsim export: {error}", file=sys.stderr)
         return BAD_INPUT
+    except OSError as error:  # the bag's folder cannot be written: not the input's fault
+        print(f"proxsim export: cannot write the bag {bag_dir}: {error}", file=sys.stderr)
+        return 1
     print(f"ros2: {bag_dir} — {sum(counts.values())} messages on {len(counts)} topics")
     return 0
 

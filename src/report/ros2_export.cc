@@ -73,7 +73,9 @@ int ExportRos2(const std::string& run_dir, const std::string& bag_dir) {
     return 1;
   }
   const int code = RunChildProcess(python, {python, "-I", writer, run_dir, bag_dir}, "the ROS 2 bag writer");
-  if (code != 0 && code != kRos2ExportBadInput) std::cerr << "proxsim: the ROS 2 bag writer failed (exit " << code << ")\n";
+  if (code != 0 && code != kRos2ExportBadInput) {
+    std::cerr << "proxsim: the ROS 2 bag writer failed (exit " << code << ")\n";
+  }
   return code;
 }
 
