@@ -28,9 +28,16 @@ import shutil
 import sys
 
 import numpy as np
-from rosbags.interfaces import Qos, QosDurability, QosHistory, QosLiveliness, QosReliability, QosTime
-from rosbags.rosbag2 import StoragePlugin, Writer
-from rosbags.typesys import Stores, get_typestore
+
+try:
+    from rosbags.interfaces import Qos, QosDurability, QosHistory, QosLiveliness, QosReliability, QosTime
+    from rosbags.rosbag2 import StoragePlugin, Writer
+    from rosbags.typesys import Stores, get_typestore
+except ImportError as missing:  # a Python without the venv's packages: say what to do, not a traceback
+    if __name__ != "__main__":
+        raise
+    sys.exit(f"proxsim export: the ROS 2 bag needs PyPI's rosbags ({missing}); scripts/install-deps.sh installs it "
+             "into .venv/, then configure the build again so that proxsim runs the venv's Python")
 
 BAD_INPUT = 2
 BAG_VERSION = 8  # rosbag2's metadata version of ROS 2 Jazzy (rosbags writes 8 or 9)

@@ -369,3 +369,30 @@ def test_odd_sensor_names_without_a_robot(tmp_path):
     paths = {c["paths"][0]["value"] for k, c in layout["configById"].items() if k.startswith("Plot!")}
     assert paths == {'"/sensors/front left.1/reading".d_m', "/sensors/2nd/reading.d_m"}
     assert "RosOut!events" not in layout["configById"]  # no robot, no warnings: no /events
+
+
+def test_parts_report_their_datasheet_cone_and_range(tmp_path):
+    """field_of_view, min_range, max_range and radiation_type of named parts, against their datasheets'
+    figures as docs/sensors.md gives them: the VL53L1X's 27° cone and 0.04-3.6 m (long mode), 15° and 1.7 m
+    at a 4x4 ROI; the VL53L0X's 25° and 0.03-2 m; the HC-SR04's 60° cone, 0.02-4 m, ultrasound."""
+    (tmp_path / "s.yaml").write_text(
+        "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nscene:\n  objects:\n    - {name: ground, plane: {}}\n"
+        "sensors:\n"
+        "  - {name: wide, type: vl53l1x, pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n"
+        "  - {name: narrow, type: vl53l1x, roi: [4, 4], pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n"
+        "  - {name: l0, type: vl53l0x, pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n"
+        "  - {name: sonar, type: hc_sr04, rate_hz: 10, pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n")
+    result = run_cli("run", str(tmp_path / "s.yaml"), "--out", str(tmp_path / "run"), "--no-report",
+                     "--ros2", str(tmp_path / "bag"))
+    assert result.returncode == 0, result.stderr
+    messages, _ = read_bag(tmp_path / "bag")
+    want = {"wide": (1, 27, 0.04, 3.6), "narrow": (1, 15, 0.04, 1.7), "l0": (1, 25, 0.03, 2.0),
+            "sonar": (0, 60, 0.02, 4.0)}
+    for name, (radiation, fov_deg, low, high) in want.items():
+        ranges = messages[f"/sensors/{name}/range"]
+        assert len(ranges) == 2, name
+        for _, m in ranges:
+            assert m.radiation_type == radiation, name
+            assert m.field_of_view == pytest.approx(math.radians(fov_deg), rel=1e-6), name
+            assert (m.min_range, m.max_range) == pytest.approx((low, high), rel=1e-6), name
+            assert m.range == pytest.approx(0.5, abs=0.05), name  # the floor 0.5 m below, each detects it
