@@ -374,9 +374,11 @@ def test_odd_sensor_names_without_a_robot(tmp_path):
 def test_parts_report_their_datasheet_cone_and_range(tmp_path):
     """field_of_view, min_range, max_range and radiation_type of named parts, against their datasheets'
     figures as docs/sensors.md gives them: the VL53L1X's 27° cone and 0.04-3.6 m (long mode), 15° and 1.7 m
-    at a 4x4 ROI; the VL53L0X's 25° and 0.03-2 m; the HC-SR04's 60° cone, 0.02-4 m, ultrasound."""
+    at a 4x4 ROI; the VL53L0X's 25° and 0.03-2 m; the HC-SR04's 60° cone, 0.02-4 m, ultrasound. In ROS's
+    convention (outputs.range_convention: rep117) the run gives each reading's variance: Range.variance."""
     (tmp_path / "s.yaml").write_text(
-        "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nscene:\n  objects:\n    - {name: ground, plane: {}}\n"
+        "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\noutputs: {range_convention: rep117}\n"
+        "scene:\n  objects:\n    - {name: ground, plane: {}}\n"
         "sensors:\n"
         "  - {name: wide, type: vl53l1x, pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n"
         "  - {name: narrow, type: vl53l1x, roi: [4, 4], pose: {xyz_m: [0, 0, 0.5], rpy_deg: [0, 90, 0]}}\n"
@@ -396,3 +398,5 @@ def test_parts_report_their_datasheet_cone_and_range(tmp_path):
             assert m.field_of_view == pytest.approx(math.radians(fov_deg), rel=1e-6), name
             assert (m.min_range, m.max_range) == pytest.approx((low, high), rel=1e-6), name
             assert m.range == pytest.approx(0.5, abs=0.05), name  # the floor 0.5 m below, each detects it
+        variances = [float(r["variance_m2"]) for r in read_csv(tmp_path / "run" / "readings.csv") if r["sensor"] == name]
+        assert [m.variance for _, m in ranges] == [np.float32(v) for v in variances] and min(variances) > 0, name
