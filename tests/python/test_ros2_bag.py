@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import run_cli
+from conftest import run_cli, scenario
 
 rosbags = pytest.importorskip("rosbags", reason="rosbags is in .venv/ (scripts/install-deps.sh)")
 from rosbags.highlevel import AnyReader  # noqa: E402
@@ -400,3 +400,14 @@ def test_parts_report_their_datasheet_cone_and_range(tmp_path):
             assert m.range == pytest.approx(0.5, abs=0.05), name  # the floor 0.5 m below, each detects it
         variances = [float(r["variance_m2"]) for r in read_csv(tmp_path / "run" / "readings.csv") if r["sensor"] == name]
         assert [m.variance for _, m in ranges] == [np.float32(v) for v in variances] and min(variances) > 0, name
+
+
+def test_crosstalk_reports_the_echo_it_heard(tmp_path):
+    """The shipped sonar pair (data/scenarios/sonar_pair_thighs.yaml): each hears the other's ping
+    (crosstalk), which the device reports as a distance; every Range as REP 117 gives its status."""
+    result = run_cli("run", scenario("sonar_pair_thighs.yaml"), "--out", str(tmp_path / "run"), "--no-report", "--ros2", str(tmp_path / "bag"))
+    assert result.returncode == 0, result.stderr
+    messages, _ = read_bag(tmp_path / "bag")
+    spec = {"radiation_type": 0, "fov_rad": math.radians(60), "range_m": (0.02, 4.0)}
+    statuses = check_ranges(tmp_path / "run", messages, {"sonar_left_thigh": spec, "sonar_right_thigh": spec})
+    assert {"ok", "crosstalk", "no_echo", "grazing"} <= statuses
