@@ -275,6 +275,13 @@ def test_the_paper_run_gives_500_ranges_per_sensor(tmp_path):
     for name in ("ideal", "laser", "ultrasonic", "reflectance"):
         assert len(messages[f"/sensors/{name}/range"]) == 500, name
     assert len(check_tf_equals_poses(tmp_path / "run", messages)) == 500
+    # its strategy's events (obstacle_ahead, stopped) and its outcome, at their times, INFO (20)
+    robot = json.loads((tmp_path / "run" / "summary.json").read_text())["robot"]
+    want = [(ns(e["t_s"]), "robot", f"{e['event']}: {e['detail']}") for e in robot["events"]]
+    want.append((ns(robot["outcome_t_s"]), "outcome", f"{robot['outcome']}: {robot['outcome_detail']}"))
+    logs = messages["/events"]
+    assert [(t, m.name, m.msg) for t, m in logs] == want and len(want) >= 3
+    assert {m.level for _, m in logs} == {20} and all(stamp_ns(m.stamp) == t for t, m in logs)
 
 
 def test_npy_runs_give_the_same_bag_messages(tmp_path, status_run):
