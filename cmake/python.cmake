@@ -39,6 +39,11 @@ add_dependencies(proxsim_python proxsim_python_package)
 # `proxsim bench` drives the paper run from Python too (bench/python_loop.py)
 target_compile_definitions(proxsim_bench PRIVATE PROXSIM_PYTHON_DIR="${CMAKE_BINARY_DIR}/python")
 add_dependencies(proxsim proxsim_python)
+# `proxsim export --ros2` runs the bag writer from the source tree with this
+# Python (the venv's, where rosbags is): set on its one source file, so that
+# nothing else recompiles when the interpreter changes.
+set_source_files_properties(${CMAKE_SOURCE_DIR}/src/report/ros2_export.cc PROPERTIES COMPILE_DEFINITIONS
+  "PROXSIM_PYTHON_PROGRAM=\"${Python_EXECUTABLE}\";PROXSIM_ROS2_BAG_WRITER=\"${CMAKE_SOURCE_DIR}/python/proxsim/ros2_bag.py\"")
 
 if(PROXSIM_BUILD_TESTS)
   set(python_test_environment

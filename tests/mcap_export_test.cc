@@ -2,7 +2,8 @@
 // RUN --mcap` write an MCAP file that @mcap/core reads back with every topic,
 // message count and time range the run calls for, Foxglove's schemas and the
 // run's values (tests/foxglove/mcap_readback.mjs checks the file); bad input
-// is refused with exit 2, naming it, and writes nothing.
+// (a path among the run's own files too) is refused with exit 2, naming it,
+// and writes nothing.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -108,12 +109,23 @@ TEST(McapExport, BadInputIsRefusedNamingItAndWritesNothing) {
   result = RunProxsim("run --no-report --out " + inside.string() + " --mcap " + (inside / "run.mcap").string());
   EXPECT_EQ(result.exit_code, 0) << result.output;
   EXPECT_TRUE(fs::is_regular_file(inside / "run.mcap"));
+  EXPECT_TRUE(fs::is_regular_file(inside / "run.layout.json")) << "the layout beside it";
 
   // a folder given as the file
   ASSERT_EQ(RunProxsim("run --no-report --out " + run.string()).exit_code, 0);
   result = RunProxsim("export " + run.string() + " --mcap " + dir.string());
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("a folder"), std::string::npos) << result.output;
+
+  // one of the run's own files, or a file in one of its folders: never written over
+  const auto readings_bytes = fs::file_size(run / "readings.csv");
+  for (const fs::path& file : {run / "readings.csv", run / "terrain" / "x.mcap"}) {
+    result = RunProxsim("export " + run.string() + " --mcap " + file.string());
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("one of the run's files"), std::string::npos) << result.output;
+  }
+  EXPECT_EQ(fs::file_size(run / "readings.csv"), readings_bytes);
+  EXPECT_FALSE(fs::exists(run / "terrain" / "x.mcap"));
 
   // a run whose files are no longer one run's (a file changed behind the manifest)
   std::ofstream(run / "poses.csv", std::ios::app) << "9,pelvis,0,0,0,1,0,0,0\n";

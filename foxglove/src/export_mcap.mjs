@@ -8,7 +8,8 @@
 // are JSON, each channel's schema the JSON schema @foxglove/schemas
 // publishes (encoding `jsonschema`). Messages go out in time order, merged
 // from the topics' own ordered streams. The file appears whole: it is
-// written as OUT.mcap.tmp and renamed when complete.
+// written as OUT.mcap.tmp and renamed when complete. Beside it, the Foxglove
+// layout for it (OUT.layout.json, foxglove_layout.mjs), likewise whole.
 // Exit 0 done; 2 bad input (the run's files, the arguments), named; 1 anything else.
 import fs from 'node:fs/promises';
 import path from 'node:path';
@@ -17,10 +18,14 @@ import { McapWriter } from '@mcap/core';
 import { FileHandleWritable } from '@mcap/nodejs';
 import { readRunFolder, RunFolderError } from './run_folder.mjs';
 import { runTopics, toNanoseconds } from './foxglove_messages.mjs';
+import { layoutPath, runLayout } from './foxglove_layout.mjs';
 
 const BAD_INPUT = 2;
 
-/** Writes the run in `runDir` to `mcapPath`; returns {messages, topics: [{topic, schema, count}], start_s, end_s}. */
+/**
+ * Writes the run in `runDir` to `mcapPath`, and its layout beside it; returns {messages, topics: [{topic,
+ * schema, count}], start_s, end_s, layout (the layout's path)}.
+ */
 export async function exportRun(runDir, mcapPath) {
   const run = readRunFolder(runDir);
   const topics = runTopics(run);
@@ -87,7 +92,12 @@ export async function exportRun(runDir, mcapPath) {
   }
   await handle.close();
   await fs.rename(tmpPath, mcapPath);
+  // the layout that opens the file ready to look at
+  const layout = layoutPath(mcapPath);
+  await fs.writeFile(`${layout}.tmp`, `${JSON.stringify(runLayout(topics, (last ?? 0) - (first ?? 0)), null, 2)}\n`);
+  await fs.rename(`${layout}.tmp`, layout);
   return {
+    layout,
     messages: counts.reduce((a, b) => a + b, 0),
     topics: topics.map(({ topic, schema }, k) => ({ topic, schema: schema.title, count: counts[k] })),
     start_s: first,
@@ -104,7 +114,7 @@ async function main() {
   try {
     const result = await exportRun(runDir, mcapPath);
     console.log(`mcap: ${mcapPath} — ${result.messages} messages on ${result.topics.length} topics, `
-      + `t = ${result.start_s ?? 0} to ${result.end_s ?? 0} s`);
+      + `t = ${result.start_s ?? 0} to ${result.end_s ?? 0} s; layout ${result.layout}`);
     return 0;
   } catch (error) {
     if (error instanceof RunFolderError) {

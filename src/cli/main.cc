@@ -5,6 +5,7 @@
 //   proxsim inspect ROBOT [--json]   (a robot's links, joints and leg map, docs/robots.md)
 //   proxsim plot OUT_DIR             (redraws the figures and the viewer of a run)
 //   proxsim export OUT_DIR --mcap FILE (the run as an MCAP file for Foxglove, docs/foxglove.md)
+//   proxsim export OUT_DIR --ros2 DIR  (the run as a ROS 2 bag, docs/ros2.md)
 //   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
@@ -34,6 +35,7 @@
 #include "output/run_manifest.h"
 #include "scenario/scenario.h"
 #include "report/mcap_export.h"
+#include "report/ros2_export.h"
 #include "scenario/scenario_generate.h"
 #include "report/report_runner.h"
 #include "run/run.h"
@@ -109,9 +111,11 @@ void CheckOutArgument(const std::string& out_dir) {
 }
 
 int Run(const std::string& scenario_path, const std::string& out_dir, const std::string& seed_text, int threads,
-        bool report, const std::string& format, bool force, const std::string& mcap_path) {
+        bool report, const std::string& format, bool force, const std::string& mcap_path,
+        const std::optional<std::string>& ros2_dir) {
   CheckOutArgument(out_dir);
   if (!mcap_path.empty()) proxsim::CheckMcapPath(mcap_path, out_dir);
+  if (ros2_dir) proxsim::CheckRos2Path(*ros2_dir, out_dir);
   const std::optional<std::uint64_t> seed = ParseSeed(seed_text);
   InstallLoadingHandlers();  // a stop signal while loading ends the process at once
   proxsim::Scenario scenario = LoadScenarioArgument(scenario_path);
@@ -186,6 +190,11 @@ int Run(const std::string& scenario_path, const std::string& out_dir, const std:
   // the run in Foxglove: an MCAP file of the files just written
   if (!mcap_path.empty() && proxsim::ExportMcap(out_dir, mcap_path) != 0) {
     std::fprintf(stderr, "proxsim: the run's files are complete, but its MCAP file could not be written\n");
+    return kExitFailure;
+  }
+  // the run into a ROS 2 stack: a bag of the files just written
+  if (ros2_dir && proxsim::ExportRos2(out_dir, *ros2_dir) != 0) {
+    std::fprintf(stderr, "proxsim: the run's files are complete, but its ROS 2 bag could not be written\n");
     return kExitFailure;
   }
   if (!report) return 0;
@@ -348,6 +357,9 @@ int main(int argc, char** argv) {
   std::string format = "csv";
   std::string run_mcap;
   run->add_option("--mcap", run_mcap, "also write the run as an MCAP file for Foxglove (docs/foxglove.md)");
+  // optional, not a string: `--ros2 ''` must be refused, not taken for "no bag"
+  std::optional<std::string> run_ros2;
+  run->add_option("--ros2", run_ros2, "also write the run as a ROS 2 bag into this new folder (docs/ros2.md)");
   run->add_option("--format", format, "readings as readings.csv, or as one .npy per column in readings/ (large runs)")
       ->check(CLI::IsMember({"csv", "npy"}))
       ->capture_default_str();
@@ -372,10 +384,13 @@ int main(int argc, char** argv) {
   CLI::App* plot = app.add_subcommand("plot", "redraw the figures and the viewer of a finished run");
   plot->add_option("out", plot_dir, "the run's output folder")->required()->check(CLI::ExistingDirectory);
 
-  std::string export_dir, export_mcap;
-  CLI::App* export_command = app.add_subcommand("export", "write a finished run as an MCAP file for Foxglove");
+  std::string export_dir;
+  std::optional<std::string> export_mcap, export_ros2;
+  CLI::App* export_command =
+      app.add_subcommand("export", "write a finished run as an MCAP file for Foxglove and/or a ROS 2 bag");
   export_command->add_option("out", export_dir, "the run's output folder")->required()->check(CLI::ExistingDirectory);
-  export_command->add_option("--mcap", export_mcap, "the MCAP file to write (docs/foxglove.md)")->required();
+  export_command->add_option("--mcap", export_mcap, "the MCAP file to write (docs/foxglove.md)");
+  export_command->add_option("--ros2", export_ros2, "the new folder to write the ROS 2 bag into (docs/ros2.md)");
 
   std::string study_path, study_out = "study-out";
   int study_threads = 0;
@@ -422,7 +437,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format, run_force, run_mcap);
+    if (*run) return Run(scenario_path, out_dir, seed, threads, !no_report, format, run_force, run_mcap, run_ros2);
     if (*bench && !bench_from.empty()) {
       std::string report;
       // a regular file only: a FIFO would block the read for ever
@@ -462,11 +477,16 @@ int main(int argc, char** argv) {
       return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
     }
     if (*export_command) {
+      if (!export_mcap && !export_ros2) throw proxsim::InputError("export: give --mcap FILE, --ros2 DIR or both");
       CheckOneRun(export_dir);
-      proxsim::CheckMcapPath(export_mcap);
+      if (export_mcap) proxsim::CheckMcapPath(*export_mcap, export_dir);
+      if (export_ros2) proxsim::CheckRos2Path(*export_ros2, export_dir);
       // hold the folder against a run into it while its files are read
       const proxsim::OutputFolder folder(export_dir, {.command = "export", .create = false, .check_contents = false});
-      const int code = proxsim::ExportMcap(export_dir, export_mcap);
+      int code = export_mcap ? proxsim::ExportMcap(export_dir, *export_mcap) : 0;
+      if (code == 0 && export_ros2) code = proxsim::ExportRos2(export_dir, *export_ros2);
+      // the two writers give bad input the same code
+      static_assert(proxsim::kMcapExportBadInput == proxsim::kRos2ExportBadInput);
       return code == 0 ? 0 : code == proxsim::kMcapExportBadInput ? kExitBadInput : kExitFailure;
     }
     if (*validate) return Validate(validate_path);

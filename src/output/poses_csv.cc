@@ -34,6 +34,24 @@ void PosesCsvWriter::Add(const SampleFrame& frame) {
   }
 }
 
+JointsCsvWriter::JointsCsvWriter(const std::string& path, const RobotModel& model, const RobotState& state)
+    : file_(path), model_(model), state_(state), joints_(model.MovingJoints()) {
+  file_.Write("t_s,joint,position\n");
+}
+
+void JointsCsvWriter::Add(const SampleFrame& frame) {
+  line_.clear();
+  for (const int joint : joints_) {
+    AppendNumber(line_, frame.t_s);
+    line_ += ',';
+    AppendCsvField(line_, model_.joint_name(joint));
+    line_ += ',';
+    AppendNumber(line_, state_.q.at(joint));
+    line_ += '\n';
+  }
+  file_.Write(line_);
+}
+
 bool ObjectPosesCsvWriter::Needed(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.motion.has_value(); });
 }

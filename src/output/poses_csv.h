@@ -1,13 +1,16 @@
 // poses.csv: the robot's links in the world at every sample, for replay
 // (`t_s,link,x,y,z,qw,qx,qy,qz`, one row per link per sample, streamed);
 // objects_poses.csv: the scene's moving objects likewise
-// (`t_s,object,x,y,z,qw,qx,qy,qz`), for scenes that have any.
+// (`t_s,object,x,y,z,qw,qx,qy,qz`), for scenes that have any; joints.csv:
+// the robot's joint positions at every sample (`t_s,joint,position`), which
+// poses.csv gives only through the URDF (a ROS 2 bag's JointState reads them).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "gait/locomotion.h"
 #include "output/run_sink.h"
 #include "scene/scene.h"
 #include "sim/robot_in_scene.h"
@@ -30,6 +33,25 @@ class PosesCsvWriter : public RunSink {
  private:
   AtomicFile file_;
   const RobotInScene& robot_;
+  std::string line_;
+};
+
+class JointsCsvWriter : public RunSink {
+ public:
+  /// Writes the moving joints of `model` (every one but the fixed ones, in
+  /// joint order) as `state` holds them at each sample; both must outlive the writer.
+  JointsCsvWriter(const std::string& path, const RobotModel& model, const RobotState& state);
+
+  /// Appends one row per moving joint: its position, rad (m for a prismatic joint).
+  void Add(const SampleFrame& frame) override;
+  void Commit() override { file_.Commit(); }
+  void AddToSummary(nlohmann::json& summary) const override { summary["outputs"].push_back("joints.csv"); }
+
+ private:
+  AtomicFile file_;
+  const RobotModel& model_;
+  const RobotState& state_;
+  std::vector<int> joints_;
   std::string line_;
 };
 

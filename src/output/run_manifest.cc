@@ -127,8 +127,17 @@ void Write(const fs::path& dir, RunManifest manifest) {
 
 const std::vector<std::string>& RunOutputNames() {
   static const std::vector<std::string> names = {"readings.csv", "readings", "profile.ply", "poses.csv",
-                                                  "scene.json",   "summary.json", "timings.json", "terrain",
+                                                  "joints.csv",   "scene.json",   "summary.json", "timings.json", "terrain",
                                                   "report"};
+  return names;
+}
+
+const std::vector<std::string>& RunFileNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = RunOutputNames();
+    all.insert(all.end(), {"columns.json", "zones", "echoes", "objects_poses.csv", "manifest.json", ".proxsim.lock"});
+    return all;
+  }();
   return names;
 }
 

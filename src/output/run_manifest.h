@@ -52,4 +52,9 @@ std::vector<std::string> RunFolderProblems(const std::string& dir);
 /// The names a run writes (files and folders), to spot one left by another run.
 const std::vector<std::string>& RunOutputNames();
 
+/// Every name a run may hold at the top of its folder: RunOutputNames() and
+/// the files and folders beside them (columns.json, zones/, echoes/,
+/// objects_poses.csv, manifest.json, the lock). An export never writes there.
+const std::vector<std::string>& RunFileNames();
+
 }  // namespace proxsim

@@ -4,10 +4,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <vector>
 
 #include "core/input_error.h"
+#include "output/run_manifest.h"
 #include "report/child_process.h"
 
 namespace proxsim {
@@ -24,7 +27,7 @@ namespace fs = std::filesystem;
 
 }  // namespace
 
-void CheckMcapPath(const std::string& mcap_path, const std::string& folder_to_come) {
+void CheckMcapPath(const std::string& mcap_path, const std::string& run_dir) {
   if (mcap_path.empty()) throw InputError("--mcap: an empty path; give the MCAP file to write");
   std::error_code ec;
   if (fs::is_directory(mcap_path, ec)) {
@@ -32,10 +35,20 @@ void CheckMcapPath(const std::string& mcap_path, const std::string& folder_to_co
   }
   const fs::path parent = fs::path(mcap_path).parent_path();
   // compared as folders ("out" and "out/" alike)
-  const bool comes = !folder_to_come.empty() && !parent.empty() &&
-                     (parent / "").lexically_normal() == (fs::path(folder_to_come) / "").lexically_normal();
+  const bool comes = !parent.empty() &&
+                     (parent / "").lexically_normal() == (fs::path(run_dir) / "").lexically_normal();
   if (!parent.empty() && !comes && !fs::is_directory(parent, ec)) {
     throw InputError("--mcap " + mcap_path + ": its folder " + parent.string() + " does not exist");
+  }
+  // never over the run's own files: its path inside the run's folder starts with none of their names
+  const fs::path inside = fs::weakly_canonical(fs::absolute(mcap_path, ec), ec)
+                              .lexically_relative(fs::weakly_canonical(fs::absolute(run_dir, ec), ec));
+  if (!inside.empty() && *inside.begin() != "..") {
+    const std::vector<std::string>& names = RunFileNames();
+    if (std::find(names.begin(), names.end(), inside.begin()->string()) != names.end()) {
+      throw InputError("--mcap " + mcap_path + ": one of the run's files (or in one of its folders) in " + run_dir +
+                       "; give a file of its own");
+    }
   }
 }
 

@@ -12,9 +12,11 @@ namespace proxsim {
 constexpr int kMcapExportBadInput = 2;
 
 /// Checks, before anything is run, that `mcap_path` can be the MCAP file: not
-/// empty, not a folder, in a folder that exists or is `folder_to_come` (the
-/// run's output folder, which the run creates). Throws InputError naming it.
-void CheckMcapPath(const std::string& mcap_path, const std::string& folder_to_come = {});
+/// empty, not a folder, in a folder that exists or is `run_dir` (the run's
+/// output folder, which a run creates), and neither one of the run's files
+/// nor in one of its folders (RunFileNames(): its layout goes beside it too).
+/// Throws InputError naming it.
+void CheckMcapPath(const std::string& mcap_path, const std::string& run_dir);
 
 /// Writes the finished run in run_dir to mcap_path (whole, or not at all);
 /// returns 0, kMcapExportBadInput when a run file is unreadable, else 1,

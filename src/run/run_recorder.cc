@@ -85,6 +85,10 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
     sinks_.push_back(MakeReadingsSink(format, out_dir_, scenario, object_names));
     sinks_.push_back(std::make_unique<ProfilePlyWriter>((out / "profile.ply").string()));
     if (sim.robot()) sinks_.push_back(std::make_unique<PosesCsvWriter>((out / "poses.csv").string(), *sim.robot()));
+    if (sim.robot() && sim.robot_state()) {
+      sinks_.push_back(std::make_unique<JointsCsvWriter>((out / "joints.csv").string(), sim.robot()->model(),
+                                                         *sim.robot_state()));
+    }
     if (ObjectPosesCsvWriter::Needed(scenario.scene)) {
       sinks_.push_back(std::make_unique<ObjectPosesCsvWriter>((out / "objects_poses.csv").string(), scenario.scene));
     }
