@@ -15,6 +15,10 @@
 
 namespace proxsim::testing {
 
+/// Unitree's H1 description, read in place beside the project (../shared/robots).
+inline const std::filesystem::path kH1Dir =
+    std::filesystem::path(PROXSIM_SOURCE_DIR) / ".." / "shared" / "robots" / "h1_description";
+
 struct CommandResult {
   int exit_code = -1;
   std::string output;  ///< stdout and stderr together

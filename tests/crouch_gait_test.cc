@@ -35,7 +35,7 @@ using testing::ReadCsv;
 using testing::ReadFile;
 using testing::RunProxsim;
 
-const fs::path kH1Dir = fs::path(PROXSIM_SOURCE_DIR) / ".." / "shared" / "robots" / "h1_description";
+using testing::kH1Dir;
 constexpr double kMountPitch_rad = 15.0 * M_PI / 180.0;  // the laser's pitch down on the shin
 
 struct Walk {

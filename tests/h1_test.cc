@@ -34,7 +34,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kH1Dir = fs::path(PROXSIM_SOURCE_DIR) / ".." / "shared" / "robots" / "h1_description";
+using testing::kH1Dir;
 const fs::path kExample = fs::path(PROXSIM_SOURCE_DIR) / "data" / "scenarios" / "h1_dining_room.yaml";
 
 #define SKIP_WITHOUT_H1()                                                                                    \

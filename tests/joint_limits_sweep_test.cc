@@ -44,7 +44,7 @@ using testing::ReadCsv;
 using testing::ReadFile;
 using testing::RunProxsim;
 
-const fs::path kH1Dir = fs::path(PROXSIM_SOURCE_DIR) / ".." / "shared" / "robots" / "h1_description";
+using testing::kH1Dir;
 const fs::path kBiped = fs::path(PROXSIM_SOURCE_DIR) / "data" / "robots" / "biped.urdf";
 
 // Highest a swinging sole may rise above the highest tread it passes over, m.

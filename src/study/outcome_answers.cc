@@ -260,23 +260,18 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
       if (n == 0) continue;
       const double blind_rate = static_cast<double>(blind_ok) / static_cast<double>(n);
       const double oracle_rate = static_cast<double>(oracle_ok) / static_cast<double>(n);
-      char text[400];
-      if (oracle_rate < 0.95) {
-        std::snprintf(text, sizeof text,
-                      "world %s, strategy %s: the oracle (perfect perception) succeeds in %.0f %% of %lld worlds (< 95 %%): "
-                      "the strategy or the legs, not the sensors, limit the answer there",
-                      study.families[f].name.c_str(), study.strategies[g].label.c_str(), 100 * oracle_rate,
-                      static_cast<long long>(n));
+      const auto warn = [&](const char* baseline, double rate, const char* bound, const char* meaning) {
+        char text[400];
+        std::snprintf(text, sizeof text, "world %s, strategy %s: %s succeeds in %.0f %% of %lld worlds (%s): %s",
+                      study.families[f].name.c_str(), study.strategies[g].label.c_str(), baseline, 100 * rate,
+                      static_cast<long long>(n), bound, meaning);
         warnings.push_back(text);
-      }
-      if (blind_rate > 0.20) {
-        std::snprintf(text, sizeof text,
-                      "world %s, strategy %s: the blind baseline (no sensors) succeeds in %.0f %% of %lld worlds (> 20 %%): "
-                      "these worlds do not test the sensors",
-                      study.families[f].name.c_str(), study.strategies[g].label.c_str(), 100 * blind_rate,
-                      static_cast<long long>(n));
-        warnings.push_back(text);
-      }
+      };
+      if (oracle_rate < 0.95)
+        warn("the oracle (perfect perception)", oracle_rate, "< 95 %",
+             "the strategy or the legs, not the sensors, limit the answer there");
+      if (blind_rate > 0.20)
+        warn("the blind baseline (no sensors)", blind_rate, "> 20 %", "these worlds do not test the sensors");
     }
   }
   json cheapest = nullptr;
