@@ -44,6 +44,12 @@ def ordered(values):
     return seen
 
 
+def answer_runs(results):
+    """The runs the answer counts: the test worlds, each set's chosen variant
+    of each strategy (every run when nothing is tuned)."""
+    return [r for r in results if r.get("split", "test") == "test" and r.get("chosen", "1") == "1"]
+
+
 def success_by_set(ranking, results, out):
     sets = ordered(r["set"] for r in results)
     strategies = ordered(r["strategy"] for r in results)
@@ -93,7 +99,7 @@ def failures_by_world(results, out):
         if k == 0:
             ax.set_ylabel("share of runs that failed")
     axes[0][-1].legend(fontsize=7, loc="upper right")
-    fig.suptitle("How the failed runs ended, by world family (every set)", fontsize=10)
+    fig.suptitle("How the failed runs ended, by world family (every set; test worlds)", fontsize=10)
     for ext in ("png", "svg"):
         fig.savefig(os.path.join(out, f"failures_by_world.{ext}"), dpi=120)
     plt.close(fig)
@@ -133,24 +139,32 @@ def page(ranking, selection, failures, out):
               f"<b>{html.escape(cheapest['set'])}</b> with {html.escape(cheapest['strategy'])}, "
               f"${cheapest['price_usd']:.2f}, success {cheapest['success_rate']:.3f} "
               f"[{cheapest['success_ci95'][0]:.3f}, {cheapest['success_ci95'][1]:.3f}]")
+    # where the worlds or the strategy, not the sensors, limit the answer (the baselines say so)
+    warnings = "".join(f"<li>{html.escape(w)}</li>" for w in selection.get("warnings", []))
+    warnings = f'<h2>Warnings</h2><ul class="warn">{warnings}</ul>' if warnings else ""
+    lowest = selection.get("lowest_expected_cost")
+    lowest = ("" if lowest is None else
+              f"<p>Lowest expected cost per run: <b>{html.escape(lowest['set'])}</b> with "
+              f"{html.escape(lowest['strategy'])}, ${lowest['expected_cost_per_run_usd']:.3f} a run.</p>")
     text = f"""<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>proxsim outcome study</title>
 <style>body{{font-family:sans-serif;margin:2em;max-width:1100px}} table{{border-collapse:collapse;font-size:13px}}
-td,th{{border:1px solid #ccc;padding:3px 6px}} img{{max-width:100%}}</style></head><body>
+td,th{{border:1px solid #ccc;padding:3px 6px}} img{{max-width:100%}} .warn{{color:#a0522d}}</style></head><body>
 <h1>Closed-loop study: which sensors get the robot through</h1>
 <p>Files: <a href="results.csv">results.csv</a> (one row per run), <a href="ranking.csv">ranking.csv</a>,
 <a href="pairs.csv">pairs.csv</a> (McNemar), <a href="selection.json">selection.json</a>,
 <a href="failures.csv">failures.csv</a> (replay commands).</p>
-<h2>Cheapest set reaching a success rate of {selection['target_success']}</h2><p>{answer}</p>
+{warnings}
+<h2>Cheapest set reaching a success rate of {selection['target_success']}</h2><p>{answer}</p>{lowest}
 <p>{html.escape(selection['success'])}.</p>
 <h2>Success by set and strategy</h2><img src="success_by_set.png" alt="success by set and strategy">
 <h2>Failures by world</h2><img src="failures_by_world.png" alt="failures by world family">
 <h2>Price against success</h2><img src="price_success.png" alt="price against success">
 <h2>Ranking</h2>
-{table(ranking[:30], ["rank", "set", "strategy", "price_usd", "runs", "success_rate", "success_ci95_low",
-                      "success_ci95_high", "collision_rate", "fall_rate", "stopped_rate", "median_time_to_goal_s",
+{table(ranking[:30], ["rank", "set", "strategy", "tuned", "price_usd", "runs", "success_rate", "success_ci95_low",
+                      "success_ci95_high", "perception_score", "expected_cost_per_run_usd", "collision_rate", "fall_rate", "stopped_rate", "median_time_to_goal_s",
                       "median_path_ratio", "min_clearance_m"])}
 <h2>Failed runs (first 30 of {len(failures)})</h2>
-{table(failures[:30], ["set", "strategy", "world", "seed", "outcome", "outcome_t_s", "command"])}
+{table(failures[:30], ["set", "strategy", "tuned", "world", "seed", "outcome", "outcome_t_s", "command"])}
 </body></html>
 """
     with open(os.path.join(out, "index.html"), "w") as f:
@@ -158,7 +172,7 @@ td,th{{border:1px solid #ccc;padding:3px 6px}} img{{max-width:100%}}</style></he
 
 
 def draw(out):
-    results = read_csv(os.path.join(out, "results.csv"))
+    results = answer_runs(read_csv(os.path.join(out, "results.csv")))
     ranking = read_csv(os.path.join(out, "ranking.csv"))
     failures = read_csv(os.path.join(out, "failures.csv"))
     with open(os.path.join(out, "selection.json")) as f:

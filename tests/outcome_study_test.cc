@@ -267,6 +267,88 @@ TEST(OutcomeAnswers, BaselinesGiveThePlantedPerceptionScoreCostAndWarning) {
   fs::remove_all(dir);
 }
 
+// Tuning, planted: one strategy in two variants (min_height_m 0.03 and 0.06),
+// 4 training worlds and 10 test worlds.
+//   A: 0.06 succeeds in every training world, 0.03 in none → 0.06 chosen;
+//      on the test worlds 0.06 succeeds in 8, 0.03 in all 10 (which the
+//      choice must not see).
+//   B: 0.03 succeeds in 3 of 4 training worlds, 0.06 in 1 → 0.03 chosen; on
+//      test 0.03 in 6, 0.06 in none.
+//   blind fails everywhere with both (a tie: the first variant), the oracle
+//   succeeds everywhere.
+TEST(OutcomeAnswers, TuningChoosesOnTrainingWorldsAndScoresOnTestWorlds) {
+  const fs::path dir = FreshDir("outcome_tuning");
+  fs::create_directories(dir);
+  OutcomeStudyConfig study;
+  study.source = "planted";
+  study.sets = {{"A", "[]", {"a1"}, 10.0, 2.0, {}}, {"B", "[]", {"b1"}, 5.0, 1.0, {}}};
+  for (const char* name : {"blind", "oracle"}) {
+    SensorSet baseline{name, "[]", {}, std::nan(""), std::nan(""), {}};
+    baseline.baseline = name;
+    study.sets.push_back(baseline);
+  }
+  study.strategies = {{"stop[min_height_m=0.03]", "{name: stop, min_height_m: 0.03}", "stop", "min_height_m=0.03"},
+                      {"stop[min_height_m=0.06]", "{name: stop, min_height_m: 0.06}", "stop", "min_height_m=0.06"}};
+  study.families = {{"room_d0.5", "room", 0.5, "", "", true}};
+  for (std::uint64_t seed = 1; seed <= 14; ++seed) study.jobs.push_back({0, seed, seed <= 4});
+  study.replay_files = 0;
+  const OutcomeRun ok{"reached_goal", 8.0, 4.4, 4.0, 0.2}, hit{"collided", 3.0, 1.5, 4.0, 0.0};
+  OutcomeResults results(14);
+  for (int j = 0; j < 14; ++j) {
+    const bool train = j < 4;
+    const int k = j - 4;  // the test world's index
+    // runs[set · 2 + variant]: A, B, blind, oracle, each with 0.03 then 0.06
+    results[j].runs = {train ? hit : ok,          train ? ok : (k < 8 ? ok : hit),
+                       train ? (j < 3 ? ok : hit) : (k < 6 ? ok : hit), train ? (j < 1 ? ok : hit) : hit,
+                       hit, hit, ok, ok};
+  }
+  const nlohmann::json selection = WriteOutcomeAnswers(study, results, dir.string());
+
+  const auto ranking = ReadCsv(dir / "ranking.csv");
+  ASSERT_EQ(ranking.rows.size(), 4u) << "one row per set and strategy, not per variant";
+  std::map<std::string, std::map<std::string, std::string>> by_set;
+  for (const auto& row : ranking.rows) by_set[row.at("set")] = row;
+  EXPECT_EQ(by_set["A"].at("strategy"), "stop");
+  EXPECT_EQ(by_set["A"].at("tuned"), "min_height_m=0.06");
+  EXPECT_EQ(by_set["A"].at("runs"), "10");
+  EXPECT_EQ(by_set["A"].at("success_rate"), "0.8") << "the test worlds only, the chosen variant only";
+  EXPECT_EQ(by_set["A"].at("train_runs"), "4");
+  EXPECT_EQ(by_set["A"].at("train_success_rate"), "1");
+  EXPECT_EQ(by_set["B"].at("tuned"), "min_height_m=0.03");
+  EXPECT_EQ(by_set["B"].at("success_rate"), "0.6");
+  EXPECT_EQ(by_set["B"].at("train_success_rate"), "0.75");
+  EXPECT_EQ(by_set["blind"].at("tuned"), "min_height_m=0.03") << "a tie goes to the first variant";
+  EXPECT_NEAR(std::stod(by_set["A"].at("perception_score")), 0.8, 1e-12);
+  EXPECT_NEAR(std::stod(by_set["B"].at("perception_score")), 0.6, 1e-12);
+  EXPECT_EQ(selection["tuning"]["train_worlds"], 4);
+  EXPECT_EQ(selection["tuning"]["test_worlds"], 10);
+
+  // the paired test on the test worlds: A alone in 6-7, B alone in none
+  const auto pairs = ReadCsv(dir / "pairs.csv");
+  bool found = false;
+  for (const auto& row : pairs.rows) {
+    if (row.at("set_a") != "A" || row.at("set_b") != "B") continue;
+    found = true;
+    EXPECT_EQ(row.at("runs"), "10");
+    EXPECT_EQ(row.at("a_only"), "2");
+    EXPECT_EQ(row.at("b_only"), "0");
+    EXPECT_EQ(row.at("both"), "6");
+  }
+  EXPECT_TRUE(found);
+  // every run in results.csv, split and choice named; the failures are the answer's
+  const auto rows = ReadCsv(dir / "results.csv");
+  EXPECT_EQ(rows.rows.size(), 14u * 4u * 2u);
+  int train_rows = 0, chosen_rows = 0;
+  for (const auto& row : rows.rows) {
+    train_rows += row.at("split") == "train";
+    chosen_rows += row.at("chosen") == "1";
+  }
+  EXPECT_EQ(train_rows, 4 * 4 * 2);
+  EXPECT_EQ(chosen_rows, 14 * 4);
+  EXPECT_EQ(ReadCsv(dir / "failures.csv").rows.size(), 2u + 4u + 10u);  // A, B, blind on the test worlds
+  fs::remove_all(dir);
+}
+
 // Without a way through, stopping counts only near the hazard (kStopBeforeHazard_m).
 TEST(OutcomeAnswers, AStopIsASuccessOnlyBeforeAnImpassableHazard) {
   OutcomeJob blocked;
@@ -315,6 +397,78 @@ TEST(OutcomeConfig, CombineMakesEverySetOfSizeAmongTheTopMountings) {
   const OutcomeStudyConfig listed = LoadOutcomeStudyFile((dir / "from_candidates.yaml").string());
   ASSERT_EQ(listed.sets.size(), 4u);  // C(4, 3)
   EXPECT_DOUBLE_EQ(listed.sets[0].price_usd, 2 * PartPriceOf("vl53l0x")->price_usd + 2.5);
+  fs::remove_all(dir);
+}
+
+// tune: makes every combination of the candidate values a variant named by
+// them; a repeated strategy is told apart by its parameters; the seeds split
+// into training and test worlds.
+TEST(OutcomeConfig, TuneMakesVariantsNamedByTheirValues) {
+  const fs::path dir = FreshDir("outcome_tune");
+  fs::create_directories(dir);
+  std::ofstream(dir / "tune.yaml")
+      << "proxsim_study: 1\nmode: outcomes\nbase: " << PROXSIM_SOURCE_DIR << "/data/scenarios/outcome_walker.yaml\n"
+      << "sets: [{name: s, sensors: [{name: a, type: vl53l0x, link: left_tibia}]}]\nbaselines: []\n"
+      << "strategies: [{name: stop, perception: map}, {name: stop}, {name: circumvent}]\n"
+      << "tune: {stop.min_height_m: [0.03, 0.05], stop.stop_distance_m: [0.4, 0.6]}\n"
+      << "worlds: {generate: {kind: room}, seeds: {train: {from: 1, to: 3}, test: [7, 8]}}\n";
+  const OutcomeStudyConfig study = LoadOutcomeStudyFile((dir / "tune.yaml").string());
+  std::vector<std::string> labels;
+  for (const StrategyChoice& s : study.strategies) labels.push_back(s.label);
+  EXPECT_EQ(labels, (std::vector<std::string>{
+                        "stop[perception=map][min_height_m=0.03,stop_distance_m=0.4]",
+                        "stop[perception=map][min_height_m=0.03,stop_distance_m=0.6]",
+                        "stop[perception=map][min_height_m=0.05,stop_distance_m=0.4]",
+                        "stop[perception=map][min_height_m=0.05,stop_distance_m=0.6]",
+                        "stop[min_height_m=0.03,stop_distance_m=0.4]", "stop[min_height_m=0.03,stop_distance_m=0.6]",
+                        "stop[min_height_m=0.05,stop_distance_m=0.4]", "stop[min_height_m=0.05,stop_distance_m=0.6]",
+                        "circumvent"}));
+  EXPECT_EQ(study.strategies[5].yaml, "{name: stop, min_height_m: 0.03, stop_distance_m: 0.6}");
+  const auto groups = study.strategy_groups();
+  ASSERT_EQ(groups.size(), 3u);
+  EXPECT_EQ(groups[0].first, "stop[perception=map]");
+  EXPECT_EQ(groups[1].second, (std::vector<std::size_t>{4, 5, 6, 7}));
+  ASSERT_EQ(study.jobs.size(), 5u);
+  EXPECT_TRUE(study.jobs[2].train);
+  EXPECT_FALSE(study.jobs[3].train);
+  EXPECT_EQ(study.jobs[3].seed, 7u);
+  fs::remove_all(dir);
+}
+
+// The test worlds are worlds the tuning never saw; tuning needs both kinds.
+TEST(OutcomeConfig, TrainingAndTestSeedsNeverOverlap) {
+  const fs::path dir = FreshDir("outcome_tune_bad");
+  fs::create_directories(dir);
+  const std::string head = "proxsim_study: 1\nmode: outcomes\nbase: " + std::string(PROXSIM_SOURCE_DIR) +
+                           "/data/scenarios/outcome_walker.yaml\n"
+                           "sets: [{name: s, sensors: [{name: a, type: vl53l0x, link: left_tibia}]}]\n";
+  const auto problems = [&](const std::string& body) {
+    std::ofstream(dir / "study.yaml") << head << body;
+    try {
+      LoadOutcomeStudyFile((dir / "study.yaml").string());
+    } catch (const InputError& error) {
+      std::string all;
+      for (const std::string& p : error.problems()) all += p + "\n";
+      return all;
+    }
+    return std::string("(loaded)");
+  };
+  EXPECT_NE(problems("tune: {stop.min_height_m: [0.03, 0.05]}\n"
+                     "worlds: {generate: {kind: room}, seeds: {train: {from: 1, to: 10}, test: {from: 8, to: 20}}}\n")
+                .find("3 seed(s) both train and test (8, 9, 10)"),
+            std::string::npos);
+  EXPECT_NE(problems("tune: {stop.min_height_m: [0.03, 0.05]}\nworlds: {generate: {kind: room}, seeds: [1, 2]}\n")
+                .find("tune: chooses values on training seeds"),
+            std::string::npos);
+  EXPECT_NE(problems("worlds: {generate: {kind: room}, seeds: {train: [1], test: [2]}}\n").find("nothing to tune"),
+            std::string::npos);
+  const std::string bad_keys = problems(
+      "strategies: [{name: stop}]\ntune: {stop.min_hieght_m: [0.03], circumvent.margin_m: [0.1], stop: [1],"
+      " stop.min_height_m: [-1, 0.05, 0.05]}\nworlds: {generate: {kind: room}, seeds: {train: [1], test: [2]}}\n");
+  for (const char* expected : {"min_hieght_m", "no strategy named 'circumvent'", "strategy.parameter",
+                               "0.05 appears twice"}) {
+    EXPECT_NE(bad_keys.find(expected), std::string::npos) << expected << " not in:\n" << bad_keys;
+  }
   fs::remove_all(dir);
 }
 

@@ -265,8 +265,11 @@ int OutcomeStudy(const std::string& study_path, const std::string& out_dir, int 
         row["perception_score"].is_null()
             ? std::string()
             : proxsim::FormatNumbers(", perception %.2f", row["perception_score"].get<double>());
+    // the strategy with the values tuned for this set (tune:), as its variant is named
+    const std::string tuned = row["tuned"].get<std::string>();
+    const std::string strategy = row["strategy"].get<std::string>() + (tuned.empty() ? "" : "[" + tuned + "]");
     std::printf("  %-40s %-12s success %.3f [%.3f, %.3f]%s%s%s\n", row["set"].get<std::string>().c_str(),
-                row["strategy"].get<std::string>().c_str(), row["success_rate"].get<double>(),
+                strategy.c_str(), row["success_rate"].get<double>(),
                 row["success_ci95"][0].get<double>(), row["success_ci95"][1].get<double>(), perception.c_str(),
                 row["price_usd"].is_null() ? "" : proxsim::FormatNumbers(", $%.2f", row["price_usd"].get<double>()).c_str(),
                 row["baseline"].is_null() ? "" : " (baseline)");

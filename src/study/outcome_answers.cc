@@ -37,10 +37,11 @@ std::string FileSafe(const std::string& text) {
   return out;
 }
 
-// the tally of one set with one strategy over every world
+// the tally of one set with one strategy group (its chosen variant) over the test worlds
 struct Tally {
-  std::size_t set = 0, strategy = 0;
+  std::size_t set = 0, group = 0, strategy = 0;  // strategy: the chosen variant
   std::int64_t runs = 0, successes = 0, reached = 0, collided = 0, fell = 0, stopped = 0, time_up = 0;
+  std::int64_t train_runs = 0, train_successes = 0;
   std::vector<double> time_to_goal_s, path_ratio, clearance_m;
   double min_clearance_m = std::numeric_limits<double>::infinity();
   double rate() const { return runs > 0 ? static_cast<double>(successes) / static_cast<double>(runs) : 0.0; }
@@ -54,17 +55,52 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   const auto run_of = [&](std::size_t job, std::size_t set, std::size_t strategy) -> const OutcomeRun& {
     return results[job].runs[set * n_strategies + strategy];
   };
+  const auto groups = study.strategy_groups();
+  const std::size_t n_groups = groups.size();
+  std::vector<std::size_t> group_of(n_strategies);
+  for (std::size_t g = 0; g < n_groups; ++g)
+    for (std::size_t v : groups[g].second) group_of[v] = g;
+  std::vector<std::size_t> train_jobs, test_jobs;
+  for (std::size_t job = 0; job < results.size(); ++job) (study.jobs[job].train ? train_jobs : test_jobs).push_back(job);
 
-  // results.csv: one row per run, in job order
-  std::string csv = "set,strategy,world,kind,difficulty,seed,way_through,outcome,outcome_t_s,success,time_to_goal_s,"
-                    "walked_m,straight_m,path_ratio,min_clearance_m,price_usd\n";
+  // each set's variant of each group, chosen on the training worlds: the most
+  // successes, then the fewest failure dollars, then the order given (the
+  // only variant when nothing is tuned)
+  const auto failure_usd = [&](const OutcomeRun& run) {
+    return run.outcome == "collided" ? study.costs.collision_usd : run.outcome == "fell" ? study.costs.fall_usd : 0.0;
+  };
   std::vector<Tally> tallies;
-  for (std::size_t s = 0; s < n_sets; ++s)
-    for (std::size_t g = 0; g < n_strategies; ++g) {
-      tallies.emplace_back();
-      tallies.back().set = s;
-      tallies.back().strategy = g;
+  for (std::size_t s = 0; s < n_sets; ++s) {
+    for (std::size_t g = 0; g < n_groups; ++g) {
+      Tally best;
+      double best_usd = 0;
+      for (std::size_t v : groups[g].second) {
+        Tally t;
+        t.set = s;
+        t.group = g;
+        t.strategy = v;
+        double usd = 0;
+        for (std::size_t job : train_jobs) {
+          ++t.train_runs;
+          t.train_successes += IsSuccess(run_of(job, s, v), results[job]);
+          usd += failure_usd(run_of(job, s, v));
+        }
+        if (v == groups[g].second.front() || t.train_successes > best.train_successes ||
+            (t.train_successes == best.train_successes && usd < best_usd)) {
+          best = t;
+          best_usd = usd;
+        }
+      }
+      tallies.push_back(best);
     }
+  }
+  const auto chosen = [&](std::size_t set, std::size_t strategy) {
+    return tallies[set * n_groups + group_of[strategy]].strategy == strategy;
+  };
+
+  // results.csv: one row per run, in job order (training runs too, and every variant)
+  std::string csv = "set,strategy,world,kind,difficulty,seed,way_through,outcome,outcome_t_s,success,time_to_goal_s,"
+                    "walked_m,straight_m,path_ratio,min_clearance_m,price_usd,split,chosen,tuned\n";
   for (std::size_t job = 0; job < results.size(); ++job) {
     const WorldFamily& family = study.families[study.jobs[job].family];
     for (std::size_t s = 0; s < n_sets; ++s) {
@@ -73,13 +109,15 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
         const bool success = IsSuccess(run, results[job]);
         const bool reached = run.outcome == "reached_goal";
         const double ratio = reached && run.straight_m > 0 ? run.walked_m / run.straight_m : NAN;
-        csv += CsvField(study.sets[s].name) + "," + CsvField(study.strategies[g].label) + "," + CsvField(family.name) +
+        csv += CsvField(study.sets[s].name) + "," + CsvField(groups[group_of[g]].first) + "," + CsvField(family.name) +
                "," + family.kind + "," + Number(family.difficulty) + "," + std::to_string(study.jobs[job].seed) + "," +
                (results[job].way_through ? "1" : "0") + "," + run.outcome + "," + Number(run.outcome_t_s) + "," +
                (success ? "1" : "0") + "," + (reached ? Number(run.outcome_t_s) : "") + "," + Number(run.walked_m) +
                "," + Number(run.straight_m) + "," + Number(ratio) + "," + Number(run.min_clearance_m) + "," +
-               Number(study.sets[s].price_usd) + "\n";
-        Tally& t = tallies[s * n_strategies + g];
+               Number(study.sets[s].price_usd) + "," + (study.jobs[job].train ? "train" : "test") + "," +
+               (chosen(s, g) ? "1" : "0") + "," + CsvField(study.strategies[g].tuned) + "\n";
+        if (study.jobs[job].train || !chosen(s, g)) continue;
+        Tally& t = tallies[s * n_groups + group_of[g]];
         ++t.runs;
         t.successes += success;
         t.reached += reached;
@@ -98,12 +136,12 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   }
   WriteFileAtomically((out / "results.csv").string(), csv);
 
-  // each set's and strategy's success world by world, for the paired statistics
-  std::vector<std::vector<char>> succeeded(n_sets * n_strategies, std::vector<char>(results.size(), 0));
-  for (std::size_t job = 0; job < results.size(); ++job)
-    for (std::size_t s = 0; s < n_sets; ++s)
-      for (std::size_t g = 0; g < n_strategies; ++g)
-        succeeded[s * n_strategies + g][job] = IsSuccess(run_of(job, s, g), results[job]) ? 1 : 0;
+  // each set's success with each group's chosen variant, test world by test
+  // world, for the paired statistics: succeeded[set · groups + group][i] on test_jobs[i]
+  std::vector<std::vector<char>> succeeded(n_sets * n_groups, std::vector<char>(test_jobs.size(), 0));
+  for (std::size_t i = 0; i < test_jobs.size(); ++i)
+    for (const Tally& t : tallies)
+      succeeded[t.set * n_groups + t.group][i] = IsSuccess(run_of(test_jobs[i], t.set, t.strategy), results[test_jobs[i]]);
   const auto baseline_index = [&](const char* name) -> std::optional<std::size_t> {
     for (std::size_t s = 0; s < n_sets; ++s)
       if (study.sets[s].baseline == name) return s;
@@ -113,9 +151,8 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   const auto perception = [&](const Tally& t) -> PerceptionScore {
     constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
     if (!blind || !oracle) return {kNone, kNone, kNone};
-    return PerceptionScoreOf(succeeded[t.set * n_strategies + t.strategy],
-                             succeeded[*blind * n_strategies + t.strategy],
-                             succeeded[*oracle * n_strategies + t.strategy]);
+    return PerceptionScoreOf(succeeded[t.set * n_groups + t.group], succeeded[*blind * n_groups + t.group],
+                             succeeded[*oracle * n_groups + t.group]);
   };
   // dollars per run: failures (collisions, falls), and the hardware amortised over its runs
   const auto failure_cost = [&](const Tally& t) {
@@ -144,7 +181,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
                         "success_ci95_high,reached_goal_rate,collision_rate,fall_rate,stopped_rate,time_up_rate,"
                         "median_time_to_goal_s,median_path_ratio,median_min_clearance_m,min_clearance_m,baseline,"
                         "perception_score,perception_ci95_low,perception_ci95_high,failure_cost_per_run_usd,"
-                        "expected_cost_per_run_usd\n";
+                        "expected_cost_per_run_usd,tuned,train_runs,train_success_rate\n";
   json rows = json::array();
   for (std::size_t r = 0; r < order.size(); ++r) {
     const Tally& t = tallies[order[r]];
@@ -154,7 +191,9 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     const auto share = [&](std::int64_t k) { return t.runs > 0 ? static_cast<double>(k) / static_cast<double>(t.runs) : 0.0; };
     std::string sensors;
     for (const std::string& name : set.sensor_names) sensors += (sensors.empty() ? "" : " ") + name;
-    ranking += std::to_string(r + 1) + "," + CsvField(set.name) + "," + CsvField(study.strategies[t.strategy].label) +
+    const double train_rate =
+        t.train_runs > 0 ? static_cast<double>(t.train_successes) / static_cast<double>(t.train_runs) : NAN;
+    ranking += std::to_string(r + 1) + "," + CsvField(set.name) + "," + CsvField(groups[t.group].first) +
                "," + CsvField(sensors) + "," + Number(set.price_usd) + "," + Number(set.mass_g) + "," +
                std::to_string(t.runs) + "," + std::to_string(t.successes) + "," + Number(t.rate()) + "," +
                Number(ci.low) + "," + Number(ci.high) + "," + Number(share(t.reached)) + "," +
@@ -162,13 +201,17 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
                Number(share(t.time_up)) + "," + Number(Median(t.time_to_goal_s)) + "," + Number(Median(t.path_ratio)) +
                "," + Number(Median(t.clearance_m)) + "," + Number(t.min_clearance_m) + "," + set.baseline + "," +
                Number(score.score) + "," + Number(score.low) + "," + Number(score.high) + "," +
-               Number(failure_cost(t)) + "," + Number(expected_cost(t)) + "\n";
+               Number(failure_cost(t)) + "," + Number(expected_cost(t)) + "," +
+               CsvField(study.strategies[t.strategy].tuned) + "," + std::to_string(t.train_runs) + "," +
+               Number(train_rate) + "\n";
     rows.push_back({{"set", set.name},
                     {"baseline", set.baseline.empty() ? json(nullptr) : json(set.baseline)},
                     {"perception_score", JsonNumber(score.score)},
                     {"perception_ci95", {JsonNumber(score.low), JsonNumber(score.high)}},
                     {"expected_cost_per_run_usd", JsonNumber(expected_cost(t))},
-                    {"strategy", study.strategies[t.strategy].label},
+                    {"strategy", groups[t.group].first},
+                    {"tuned", study.strategies[t.strategy].tuned},
+                    {"train_success_rate", JsonNumber(train_rate)},
                     {"price_usd", JsonNumber(set.price_usd)},
                     {"mass_g", JsonNumber(set.mass_g)},
                     {"runs", t.runs},
@@ -180,28 +223,28 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   // pairs.csv: every two sets with the same strategy, on the same worlds and seeds
   std::string pairs = "strategy,set_a,set_b,runs,a_only,b_only,both,neither,success_rate_a,success_rate_b,p_value,"
                       "verdict\n";
-  for (std::size_t g = 0; g < n_strategies; ++g) {
+  for (std::size_t g = 0; g < n_groups; ++g) {
     std::vector<std::size_t> sets;  // the strategy's sets in ranking order, the best kMaxPairedSets
     for (std::size_t i : order)
-      if (tallies[i].strategy == g && sets.size() < kMaxPairedSets) sets.push_back(tallies[i].set);
+      if (tallies[i].group == g && sets.size() < kMaxPairedSets) sets.push_back(tallies[i].set);
     for (std::size_t i = 0; i < sets.size(); ++i) {
       for (std::size_t j = i + 1; j < sets.size(); ++j) {
         std::int64_t a_only = 0, b_only = 0, both = 0, neither = 0;
-        for (std::size_t job = 0; job < results.size(); ++job) {
-          const bool a = IsSuccess(run_of(job, sets[i], g), results[job]);
-          const bool b = IsSuccess(run_of(job, sets[j], g), results[job]);
+        for (std::size_t k = 0; k < test_jobs.size(); ++k) {
+          const bool a = succeeded[sets[i] * n_groups + g][k];
+          const bool b = succeeded[sets[j] * n_groups + g][k];
           a_only += a && !b;
           b_only += b && !a;
           both += a && b;
           neither += !a && !b;
         }
         const double p = McNemarExactP(a_only, b_only);
-        const double runs = static_cast<double>(results.size());
+        const double runs = static_cast<double>(test_jobs.size());
         const std::string verdict = p >= 0.05         ? "no significant difference"
                                     : a_only > b_only ? "a better"
                                                       : "b better";
-        pairs += CsvField(study.strategies[g].label) + "," + CsvField(study.sets[sets[i]].name) + "," +
-                 CsvField(study.sets[sets[j]].name) + "," + std::to_string(results.size()) + "," +
+        pairs += CsvField(groups[g].first) + "," + CsvField(study.sets[sets[i]].name) + "," +
+                 CsvField(study.sets[sets[j]].name) + "," + std::to_string(test_jobs.size()) + "," +
                  std::to_string(a_only) + "," + std::to_string(b_only) + "," + std::to_string(both) + "," +
                  std::to_string(neither) + "," + Number(static_cast<double>(a_only + both) / runs) + "," +
                  Number(static_cast<double>(b_only + both) / runs) + "," + Number(p) + "," + verdict + "\n";
@@ -228,7 +271,8 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     const Tally& t = tallies[i];
     const Interval ci = WilsonInterval95(t.successes, t.runs);
     return json{{"set", study.sets[t.set].name},
-                {"strategy", study.strategies[t.strategy].label},
+                {"strategy", groups[t.group].first},
+                {"tuned", study.strategies[t.strategy].tuned},
                 {"price_usd", study.sets[t.set].price_usd},
                 {"mass_g", JsonNumber(study.sets[t.set].mass_g)},
                 {"sensors", study.sets[t.set].sensor_names},
@@ -249,13 +293,13 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   // warnings: where the worlds or the strategy, not the sensors, limit the answer
   json warnings = json::array();
   for (std::size_t f = 0; f < study.families.size() && blind && oracle; ++f) {
-    for (std::size_t g = 0; g < n_strategies; ++g) {
+    for (std::size_t g = 0; g < n_groups; ++g) {
       std::int64_t n = 0, blind_ok = 0, oracle_ok = 0;
-      for (std::size_t job = 0; job < results.size(); ++job) {
-        if (study.jobs[job].family != f) continue;
+      for (std::size_t k = 0; k < test_jobs.size(); ++k) {
+        if (study.jobs[test_jobs[k]].family != f) continue;
         ++n;
-        blind_ok += succeeded[*blind * n_strategies + g][job];
-        oracle_ok += succeeded[*oracle * n_strategies + g][job];
+        blind_ok += succeeded[*blind * n_groups + g][k];
+        oracle_ok += succeeded[*oracle * n_groups + g][k];
       }
       if (n == 0) continue;
       const double blind_rate = static_cast<double>(blind_ok) / static_cast<double>(n);
@@ -263,7 +307,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
       const auto warn = [&](const char* baseline, double rate, const char* bound, const char* meaning) {
         char text[400];
         std::snprintf(text, sizeof text, "world %s, strategy %s: %s succeeds in %.0f %% of %lld worlds (%s): %s",
-                      study.families[f].name.c_str(), study.strategies[g].label.c_str(), baseline, 100 * rate,
+                      study.families[f].name.c_str(), groups[g].first.c_str(), baseline, 100 * rate,
                       static_cast<long long>(n), bound, meaning);
         warnings.push_back(text);
       };
@@ -297,6 +341,12 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
        "within 2 m of the hazard in a world whose path the legs cannot walk (the reference walk, without a "
        "strategy, stood refused there)"},
       {"interval", "95 % Wilson score interval"},
+      {"tuning",
+       {{"train_worlds", train_jobs.size()},
+        {"test_worlds", test_jobs.size()},
+        {"rule", "each set's values of each strategy's tuned parameters (tune:) chosen on the training worlds: the "
+                 "most successes, then the fewest failure dollars, then the order given; every rate, score and test "
+                 "measured on the test worlds only"}}},
       {"pairs", "McNemar's exact two-sided test on the discordant worlds (pairs.csv)"},
       {"perception_score",
        "(success - blind) / (oracle - blind) on the same worlds, seeds and strategy: the share of what perfect "
@@ -319,15 +369,16 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
       {"ranking", rows}};
   WriteFileAtomically((out / "selection.json").string(), selection.dump(2) + "\n");
 
-  // failures.csv and the world files their replay commands run
-  std::string failures = "set,strategy,world,seed,outcome,outcome_t_s,world_file,command,viewer\n";
+  // failures.csv and the world files their replay commands run: the
+  // answer's failures (test worlds, each set's chosen variants)
+  std::string failures = "set,strategy,world,seed,outcome,outcome_t_s,world_file,command,viewer,tuned\n";
   std::size_t written = 0;
-  for (std::size_t job = 0; job < results.size(); ++job) {
+  for (std::size_t job : test_jobs) {
     const WorldFamily& family = study.families[study.jobs[job].family];
     for (std::size_t s = 0; s < n_sets; ++s) {
       for (std::size_t g = 0; g < n_strategies; ++g) {
         const OutcomeRun& run = run_of(job, s, g);
-        if (IsSuccess(run, results[job])) continue;
+        if (!chosen(s, g) || IsSuccess(run, results[job])) continue;
         const std::string stem = FileSafe(family.name) + "_seed" + std::to_string(study.jobs[job].seed) + "_set" +
                                  std::to_string(s + 1) + "_" + FileSafe(study.strategies[g].label);
         std::string file, command, viewer;
@@ -351,10 +402,10 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
           command = "proxsim run " + file + " --out replays/" + stem;
           viewer = "replays/" + stem + "/report/index.html";
         }
-        failures += CsvField(study.sets[s].name) + "," + CsvField(study.strategies[g].label) + "," +
+        failures += CsvField(study.sets[s].name) + "," + CsvField(groups[group_of[g]].first) + "," +
                     CsvField(family.name) + "," + std::to_string(study.jobs[job].seed) + "," + run.outcome + "," +
                     Number(run.outcome_t_s) + "," + CsvField(file) + "," + CsvField(command) + "," +
-                    CsvField(viewer) + "\n";
+                    CsvField(viewer) + "," + CsvField(study.strategies[g].tuned) + "\n";
       }
     }
   }
@@ -370,7 +421,11 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
         const json strategy = study.strategies[g].yaml.empty() ? json(nullptr) : json(study.strategies[g].yaml);
         episodes += json{{"set", study.sets[s].name},
                          {"baseline", study.sets[s].baseline.empty() ? json(nullptr) : json(study.sets[s].baseline)},
-                         {"strategy", study.strategies[g].label},
+                         {"strategy", groups[group_of[g]].first},
+                         {"variant", study.strategies[g].label},
+                         {"tuned", study.strategies[g].tuned},
+                         {"chosen", chosen(s, g)},
+                         {"split", study.jobs[job].train ? "train" : "test"},
                          {"strategy_parameters", strategy},
                          {"world", family.name},
                          {"kind", family.kind},

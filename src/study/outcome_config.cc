@@ -17,6 +17,7 @@
 #include "scenario/yaml_reader.h"
 #include "sensors/part_prices.h"
 #include "study/outcome_baselines.h"
+#include "study/outcome_strategies.h"
 #include "study/study_config.h"
 
 namespace proxsim {
@@ -31,15 +32,6 @@ std::string ReadText(const std::string& path) {
   std::ostringstream text;
   text << file.rdbuf();
   return text.str();
-}
-
-// a YAML node as one line of flow-style text (sets and strategies are small)
-std::string FlowText(const YAML::Node& node) {
-  YAML::Emitter out;
-  out.SetMapFormat(YAML::Flow);
-  out.SetSeqFormat(YAML::Flow);
-  out << node;
-  return out.c_str();
 }
 
 std::string Number(double value) {
@@ -97,6 +89,37 @@ std::vector<std::uint64_t> Seeds(YamlReader& reader, const Field& field, std::ve
     seeds.push_back(static_cast<std::uint64_t>(seed));
   }
   return seeds;
+}
+
+// A world's seeds: a list, a range, or {train: ..., test: ...} (tuning, docs/studies.md).
+struct SeedSplit {
+  std::vector<std::uint64_t> train, test;
+};
+
+SeedSplit ReadSeedSplit(YamlReader& reader, const Field& field, const SeedSplit& otherwise) {
+  if (!field) return otherwise;
+  const YAML::Node& node = field.node;  // (const: looking a key up must not add it)
+  if (!node.IsMap() || !(node["train"] || node["test"])) return {{}, Seeds(reader, field, {})};
+  SeedSplit split;
+  const auto map = reader.Map(field, {"train", "test"}, "seeds {train: [...], test: [...]}");
+  if (!map) return split;
+  split.train = Seeds(reader, (*map)["train"], {});
+  split.test = Seeds(reader, (*map)["test"], {});
+  if (!(*map)["train"]) reader.Fail(field, "expected train: the seeds each set's strategy values are chosen on");
+  if (!(*map)["test"]) reader.Fail(field, "expected test: the seeds the answer is measured on");
+  // a seed in both would score a set on the worlds its values were chosen on
+  const std::set<std::uint64_t> train(split.train.begin(), split.train.end());
+  std::string shared;
+  std::size_t n_shared = 0;
+  for (std::uint64_t seed : split.test) {
+    if (!train.contains(seed)) continue;
+    if (++n_shared <= 5) shared += (shared.empty() ? "" : ", ") + std::to_string(seed);
+  }
+  if (n_shared > 0) {
+    reader.Fail(field, std::to_string(n_shared) + " seed(s) both train and test (" + shared + (n_shared > 5 ? ", ..." : "") +
+                           "): the test seeds must be worlds the tuning never saw");
+  }
+  return split;
 }
 
 // ----- sets
@@ -238,44 +261,6 @@ void PriceSet(const std::vector<SensorConfig>& sensors, const std::map<std::stri
   }
 }
 
-// ----- strategies
-
-std::vector<StrategyChoice> ReadStrategies(YamlReader& reader, const Field& field) {
-  std::vector<StrategyChoice> strategies;
-  if (!field) {
-    strategies.push_back({"stop", "{name: stop}"});
-    return strategies;
-  }
-  const auto items = reader.List(field, "a list of strategies: {name: stop | circumvent, ...} or none");
-  if (!items) return strategies;
-  if (items->empty()) reader.Fail(field, "expected at least one strategy, got an empty list");
-  std::map<std::string, int> uses;
-  for (const Field& item : *items) {
-    StrategyChoice choice;
-    std::string name;
-    if (item.node.IsScalar()) {
-      name = item.node.Scalar();
-      if (name.find(':') != std::string::npos) {
-        reader.Fail(item, "'" + name + "': a Python strategy (module:Class) runs from Python (docs/strategies.md); "
-                                       "a study runs the built-in ones: {name: stop}, {name: circumvent} or none");
-        continue;
-      }
-      if (name != "none") {
-        reader.Fail(item, "expected a strategy map {name: stop | circumvent, ...} or none, got '" + name + "'");
-        continue;
-      }
-    } else {
-      if (!ReadStrategy(reader, item)) continue;
-      name = item.node["name"].Scalar();
-      choice.yaml = FlowText(item.node);
-    }
-    const int n = ++uses[name];
-    choice.label = n == 1 ? name : name + "_" + std::to_string(n);
-    strategies.push_back(choice);
-  }
-  return strategies;
-}
-
 // ----- worlds
 
 // the base scenario's document made a world of this family: its scene, path,
@@ -293,15 +278,16 @@ YAML::Node Unfurnished(const YAML::Node& document, bool generated) {
 }
 
 void ReadWorld(YamlReader& reader, const Field& item, const std::optional<YAML::Node>& base, const fs::path& base_path,
-               const fs::path& dir, const std::vector<std::uint64_t>& default_seeds, OutcomeStudyConfig& study,
+               const fs::path& dir, const SeedSplit& default_seeds, OutcomeStudyConfig& study,
                std::set<std::string>& names) {
   const auto map = reader.Map(item, {"name", "generate", "scenario", "seeds"});
   if (!map) return;
-  const std::vector<std::uint64_t> seeds = Seeds(reader, (*map)["seeds"], default_seeds);
+  const SeedSplit seeds = ReadSeedSplit(reader, (*map)["seeds"], default_seeds);
   const auto add = [&](WorldFamily family) {
     if (!names.insert(family.name).second) reader.Fail(item, "world family '" + family.name + "' appears twice");
     study.families.push_back(family);
-    for (std::uint64_t seed : seeds) study.jobs.push_back({study.families.size() - 1, seed});
+    for (std::uint64_t seed : seeds.train) study.jobs.push_back({study.families.size() - 1, seed, true});
+    for (std::uint64_t seed : seeds.test) study.jobs.push_back({study.families.size() - 1, seed, false});
   };
   if ((*map)["generate"] && (*map)["scenario"]) {
     reader.Fail(item, "expected generate or scenario, not both");
@@ -398,7 +384,7 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
   study.source = path;
   const auto top = reader.Map(reader.Root(document),
                               {"proxsim_study", "mode", "base", "sets", "combine", "candidates", "strategies", "worlds",
-                               "seeds", "target_success", "prices", "replay_files", "baselines", "cost"},
+                               "seeds", "target_success", "prices", "replay_files", "baselines", "cost", "tune"},
                               "a study map starting with 'proxsim_study: 1'");
   if (!top) throw InputError(reader.Problems());
   if (const auto version = reader.Count((*top)["proxsim_study"]); !version || *version != 1) {
@@ -522,10 +508,10 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
     }
   }
 
-  study.strategies = ReadStrategies(reader, (*top)["strategies"]);
+  study.strategies = ReadOutcomeStrategies(reader, (*top)["strategies"], (*top)["tune"]);
 
   // the worlds: one map or a list of them; each with its seeds, or the study's
-  const std::vector<std::uint64_t> default_seeds = Seeds(reader, (*top)["seeds"], {1});
+  const SeedSplit default_seeds = ReadSeedSplit(reader, (*top)["seeds"], {{}, {1}});
   std::set<std::string> family_names;
   if (const Field worlds = (*top)["worlds"]) {
     if (worlds.node.IsMap()) {
@@ -536,6 +522,21 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
     }
   } else {
     reader.Fail(worlds, "expected worlds: {generate: {kind, difficulty}, seeds} and/or scenario variants");
+  }
+
+  // tuning needs worlds to tune on, and worlds to test on that it never saw
+  bool tuned = false;
+  for (const StrategyChoice& s : study.strategies) tuned |= !s.tuned.empty();
+  std::vector<bool> has_train(study.families.size(), false), has_test(study.families.size(), false);
+  for (const OutcomeStudyConfig::Job& job : study.jobs) (job.train ? has_train : has_test)[job.family] = true;
+  for (std::size_t f = 0; f < study.families.size(); ++f) {
+    if (tuned && !has_train[f])
+      reader.Fail((*top)["worlds"], "world '" + study.families[f].name +
+                                        "': tune: chooses values on training seeds; give seeds: {train: [...], test: [...]}");
+    if (!tuned && has_train[f])
+      reader.Fail((*top)["worlds"], "world '" + study.families[f].name +
+                                        "': training seeds, but nothing to tune (give tune: {strategy.parameter: [values]})");
+    if (!has_test[f]) reader.Fail((*top)["worlds"], "world '" + study.families[f].name + "': no test seeds");
   }
 
   if (const Field field = (*top)["target_success"]) {
@@ -553,6 +554,16 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
   }
   if (reader.HasProblems()) throw InputError(reader.Problems());
   return study;
+}
+
+std::vector<std::pair<std::string, std::vector<std::size_t>>> OutcomeStudyConfig::strategy_groups() const {
+  std::vector<std::pair<std::string, std::vector<std::size_t>>> groups;
+  for (std::size_t i = 0; i < strategies.size(); ++i) {
+    const std::string& group = strategies[i].group.empty() ? strategies[i].label : strategies[i].group;
+    if (groups.empty() || groups.back().first != group) groups.push_back({group, {}});
+    groups.back().second.push_back(i);
+  }
+  return groups;
 }
 
 YAML::Node WorldNode(const OutcomeStudyConfig& study, std::size_t job) {

@@ -11,9 +11,11 @@
 //     - {name: two_tof, sensors: [{name: l, type: vl53l0x, link: left_tibia, pose: {...}}, ...]}
 //   combine: {from: study-out/ranking.csv, size: 2, top: 4}   # and/or every set of `size` of the top mountings
 //   strategies: [{name: stop}, {name: circumvent, margin_m: 0.2}, none]
+//   tune: {stop.min_height_m: [0.03, 0.05, 0.08]}   # each set's values chosen on the training seeds
 //   worlds:                                 # one map or a list of them
-//     - {generate: {kind: room, difficulty: [0.3, 0.6], size_m: [5, 5]}, seeds: {from: 1, to: 50}}
-//     - {name: corridor, scenario: my_corridor.yaml, seeds: [1, 2, 3]}
+//     - {generate: {kind: room, difficulty: [0.3, 0.6], size_m: [5, 5]},
+//        seeds: {train: {from: 1, to: 20}, test: {from: 21, to: 70}}}
+//     - {name: corridor, scenario: my_corridor.yaml, seeds: [1, 2, 3]}   # test seeds only (nothing tuned)
 //   target_success: 0.95
 //   prices: {vl53l0x: {price_usd: 9.5}, my_sensor: {price_usd: 120, mass_g: 30}}   # by sensor name, then part or type
 //   replay_files: 1000                      # failed runs whose replay world is written
@@ -50,10 +52,17 @@ struct RunCosts {
   double fall_usd = 500;        ///< a fall: a humanoid's repair and downtime
 };
 
-/// One strategy the sets are run with.
+/// One strategy the sets are run with: a strategy of the study file, or one
+/// variant of it when `tune:` gives candidate values for its parameters.
 struct StrategyChoice {
-  std::string label;          ///< its name, numbered when a name repeats (stop, stop_2)
+  /// its name, with its parameters where a name repeats (stop[min_height_m=0.05]), and
+  /// the tuned values of a variant after them: `group`[`tuned`]
+  std::string label;
   std::string yaml;           ///< the scenario's `robot.strategy` map; empty: none (the walk goes on)
+  /// the strategy of the study file this is a variant of (its label without
+  /// the tuned values): a set is ranked once per group, with its best variant
+  std::string group;
+  std::string tuned;          ///< the tuned values, "min_height_m=0.05,stop_distance_m=0.4"; "" when nothing is tuned
 };
 
 /// One kind of world: a generated kind at one difficulty, or a scenario.
@@ -76,6 +85,9 @@ struct OutcomeStudyConfig {
   struct Job {
     std::size_t family = 0;
     std::uint64_t seed = 0;
+    /// a training seed: its runs choose each set's strategy values (`tune:`),
+    /// and are not counted in the answer; the test seeds' runs are
+    bool train = false;
   };
   std::vector<Job> jobs;
   double target_success = 0.95;
@@ -84,6 +96,8 @@ struct OutcomeStudyConfig {
   /// The baselines run beside the sets (their rows last in `sets`): blind and oracle by default.
   std::vector<std::string> baselines{"blind", "oracle"};
   std::size_t runs_per_job() const { return sets.size() * strategies.size(); }
+  /// The strategy groups in the order given (StrategyChoice::group), each with its variants' indices.
+  std::vector<std::pair<std::string, std::vector<std::size_t>>> strategy_groups() const;
 };
 
 /// Bounds on an outcome study's size (each run is an episode of its own).
