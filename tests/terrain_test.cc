@@ -181,11 +181,39 @@ TEST(RayEvidenceTest, ADetectionIsAPointWithTheHeightVarianceOfItsNoiseAlongTheR
   cone.beam = BeamSpec{.aperture_deg = 20, .rays = 7};
   const RayEvidence c = InterpretReading(cone, Reading({0.1, 0.05, 0.3}, dir, true, d));
   const double sigma_lat = d * std::tan(DegToRad(10)) / 2;
-  EXPECT_NEAR(c.variance_z_m2, sigma_d * sigma_d * dir.z() * dir.z() + sigma_lat * sigma_lat * (1 - dir.z() * dir.z()), 1e-15);
+  // ... along the cone's lowest direction (the axis pitched 40° turned down by half the aperture: 50°)
+  const Vec3 low(std::cos(DegToRad(50)), 0, -std::sin(DegToRad(50)));
+  EXPECT_NEAR((c.dir_W - low).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(c.variance_z_m2, sigma_d * sigma_d * low.z() * low.z() + sigma_lat * sigma_lat * (1 - low.z() * low.z()), 1e-15);
   // a known mean is a bias: taken out of the distance
   SensorSpec biased = laser;
   biased.noise.mean = 0.02;
   EXPECT_NEAR(InterpretReading(biased, Reading({0, 0, 0.3}, dir, true, 1.02 * d)).d_m, d, 1e-12);
+}
+
+// A cone pitched 8° down from 0.3 m up (a VL53L0X on a shin: 25° cone) first
+// echoes from the floor at its lower edge, 20.5° down, d = 0.3 / sin 20.5°.
+// On the axis that distance stands 0.3 − d·sin 8° = 0.18 m above the floor
+// — an obstacle to a map that put it there; at the cone's lowest direction
+// it is the floor. Sideways, a yawed axis keeps its yaw.
+TEST(RayEvidenceTest, AConesFloorEchoIsFloorNotAPointAboveIt) {
+  SensorSpec cone = SensorSpec::Preset(SensorType::kLaser);
+  cone.beam = BeamSpec{.aperture_deg = 25, .rays = 7};
+  cone.noise.sigma = 0;
+  for (const double yaw_deg : {0.0, 30.0, -75.0}) {
+    const double pitch = DegToRad(8), yaw = DegToRad(yaw_deg);
+    const Vec3 axis(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), -std::sin(pitch));
+    const double d = 0.3 / std::sin(DegToRad(20.5));
+    const RayEvidence e = InterpretReading(cone, Reading({1, 2, 0.3}, axis, true, d));
+    EXPECT_NEAR(e.point_W().z(), 0.0, 1e-9) << yaw_deg;
+    EXPECT_NEAR(0.3 - d * std::sin(pitch), 0.18, 0.005);  // where the axis would have put it
+    // in the axis's vertical plane: the same heading
+    EXPECT_NEAR(std::atan2(e.dir_W.y(), e.dir_W.x()), yaw, 1e-12) << yaw_deg;
+    EXPECT_TRUE(e.proves_empty);
+  }
+  // straight down, every direction of the cone is as low: the axis
+  const RayEvidence down = InterpretReading(cone, Reading({0, 0, 0.3}, -Vec3::UnitZ(), true, 0.3));
+  EXPECT_NEAR(down.point_W().z(), 0.0, 1e-12);
 }
 
 TEST(RayEvidenceTest, SilenceBoundsHeightsOnlyWhereAFlatFloorWouldHaveEchoed) {

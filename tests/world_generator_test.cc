@@ -151,7 +151,7 @@ TEST(WorldGenerator, AThousandCoursesGenerateWithTheirRolesAndNothingAtTheStart)
 }
 
 TEST(WorldGenerator, AThousandRoomsKeepTheirCorridorByTheTestsOwnSearch) {
-  int people = 0, furniture = 0;
+  int people = 0, furniture = 0, blockers = 0;
   for (int seed = 1; seed <= 1000; ++seed) {
     const double difficulty = (seed % 11) / 10.0;
     const std::string what = "room seed " + std::to_string(seed);
@@ -172,11 +172,21 @@ TEST(WorldGenerator, AThousandRoomsKeepTheirCorridorByTheTestsOwnSearch) {
         if (object.name.ends_with("/torso")) EXPECT_GT(object.X_WO.translation().head<2>().norm(), 1.4) << what;
       }
       if (object.name.rfind("chair_", 0) == 0 || object.name.rfind("table_", 0) == 0) ++furniture;
+      // blockers stand in the way from 2.2 m along the walk on (the centre
+      // drawn there; a part of one, a chair's leg, up to its half-width
+      // nearer): a study never counts a stop in the first stride as one
+      // before them (kStopBeforeObstacle_m = 1.2 m short of where the blind walk meets one)
+      if (object.name.rfind("blocker_", 0) == 0) {
+        ++blockers;
+        const Vec2 along = goal.normalized();
+        EXPECT_GT(object.X_WO.translation().head<2>().dot(along), 2.2 - 0.35) << what << ": " << object.name;
+      }
       EXPECT_EQ(object.ground, object.name == "floor") << what << ": " << object.name;
     }
   }
   EXPECT_GT(people, 500);
   EXPECT_GT(furniture, 5000);
+  EXPECT_GT(blockers, 1000);
 }
 
 TEST(WorldGenerator, TheSameSeedGivesTheSameWorldAndAnotherSeedAnother) {

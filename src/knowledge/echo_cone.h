@@ -26,6 +26,17 @@ inline double LowestEchoZ_m(const Vec3& p_WS, const Vec3& dir_W, double d_m, dou
   return p_WS.z() + d_m * (std::cos(half_rad) * a_z - std::sin(half_rad) * std::sqrt(1.0 - a_z * a_z));
 }
 
+/// The cone's lowest direction (unit): the axis `dir_W` (unit) turned down by
+/// `half_rad` in its vertical plane; the axis itself when it is vertical.
+inline Vec3 LowestEchoDirection_W(const Vec3& dir_W, double half_rad) {
+  const double a_z = std::clamp(dir_W.z(), -1.0, 1.0);
+  const double horizontal = std::sqrt(1.0 - a_z * a_z);
+  if (horizontal < 1e-9) return dir_W;
+  // the unit vector across the axis in its vertical plane, pointing down
+  const Vec3 down_W = (a_z * dir_W - Vec3::UnitZ()) / horizontal;
+  return (std::cos(half_rad) * dir_W + std::sin(half_rad) * down_W).normalized();
+}
+
 /// Whether a detection of `sensor` (a fresh one) stands at least
 /// `min_height_m` above the ground at `ground_z_m` wherever in its cone it came from.
 inline bool EchoIsRaised(const SensorOutput& sensor, const SensorInfo& info, double ground_z_m, double min_height_m) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "knowledge/echo_cone.h"
 #include "sensors/multizone.h"
 #include "sensors/range_inverse.h"
 #include "sensors/range_table.h"
@@ -39,6 +40,15 @@ RayEvidence InterpretReading(const SensorSpec& spec, const EvidenceModel& model,
   evidence.p_WS = output.p_WS;
   evidence.dir_W = output.dir_W.normalized();
   evidence.detected = output.detected;
+  // a beam's echo may have come from anywhere in its cone: the point is
+  // put where the cone's lowest direction meets the distance, the lowest
+  // it can be (knowledge/echo_cone.h) — a floor that echoed at the cone's
+  // lower edge is floor, not a point above it on the axis; anything else
+  // stands at least that high. The cone is empty up to the echo in every
+  // direction, this one too.
+  if (output.detected && model.tan_half_aperture > 0) {
+    evidence.dir_W = LowestEchoDirection_W(evidence.dir_W, std::atan(model.tan_half_aperture));
+  }
   const double dir_z = evidence.dir_W.z();
   if (output.detected) {
     const double d_m = UnbiasedDistance_m(spec, output.d_m);

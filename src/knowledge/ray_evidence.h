@@ -4,7 +4,8 @@
 // reading's status, the true distance or the point hit.
 //
 //  - A detection puts a point at p_WS + d·dir_W (d corrected for the noise's
-//    known mean) whose height has the variance the noise model gives along
+//    known mean; dir_W the axis, or for a beam its cone's lowest direction,
+//    the lowest the echo can have come from: knowledge/echo_cone.h) whose height has the variance the noise model gives along
 //    the ray: σ_z² = σ_d²·dir_z² + σ_lat²·(1 − dir_z²), σ_d the range's
 //    standard deviation at d (paper §4.3: σ·d for the multiplicative law; σ,
 //    σ·d², the reflectance inversion's and the lookup table's slope for the

@@ -31,7 +31,11 @@ namespace {
 
 constexpr double kCell_m = 0.05;
 constexpr double kKeepClear_m = 0.7;  // around the start and the goal
-constexpr double kFirstBlocker_m = 1.5;  // along the walk from the start
+// along the walk from the start: the blind reference walk meets the first
+// blocker about 0.4 m short of it, and a study counts a stop as one before
+// the blocker within 1.2 m of there (study/outcome_runner.h) — from 2.2 m on,
+// a robot that stops in its first stride has not stopped before them
+constexpr double kFirstBlocker_m = 2.2;
 constexpr double kWallThickness_m = 0.1;
 
 /// An axis-aligned footprint in the plane.
@@ -358,7 +362,6 @@ GeneratedWorld GenerateRoom(const GenerateConfig& config) {
   {
     const Vec2 along = (goal - start).normalized(), across(-along.y(), along.x());
     const double walk_m = (goal - start).norm();
-    // from 1.5 m on: a robot that stops at its start has not stopped before them
     const double first_m = kFirstBlocker_m, last_m = walk_m - kKeepClear_m - 0.4;
     KeyedRandom count_random(config.seed, 50);
     const int count = std::max(1, static_cast<int>(std::lround(Draw(room.blockers, d, count_random) * walk_m / 5.0)));

@@ -75,6 +75,8 @@ void CircumventStrategy::Reset(const StrategySetup& setup) {
   started_ = false;
   mode_ = Mode::kFollowing;
   points_.clear();
+  cells_added_.clear();
+  cluster_walk_ = ClusterWalk{};
   extent_.reset();
   detour_.clear();
   shift_m_ = 0;
@@ -104,8 +106,15 @@ void CircumventStrategy::FindRaisedPoints(const Observation& observation) {
   const RobotKnowledge& self = *observation.robot;
   if (config_.perception == Perception::kMap) {
     // the map's obstacles, their outlines every cell of ours (steps and holes are the legs' to plan)
-    if (observation.map != nullptr)
-      ForEachObstacleOutlinePoint(*observation.map, kCell_m, [&](const Vec3& p_W) { raised_.push_back(p_W); });
+    // each at the centre of its cell: an outline that grows as more is
+    // mapped adds cells rather than moving the points of those it had
+    if (observation.map != nullptr) {
+      ForEachObstacleOutlinePoint(*observation.map, kCell_m, [&](const Vec3& p_W) {
+        const Cell cell = CellOf(p_W);
+        raised_.emplace_back((static_cast<double>(cell.first) + 0.5) * kCell_m,
+                             (static_cast<double>(cell.second) + 0.5) * kCell_m, p_W.z());
+      });
+    }
     return;
   }
   for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
@@ -117,7 +126,17 @@ void CircumventStrategy::FindRaisedPoints(const Observation& observation) {
 
 void CircumventStrategy::KeepPoints(const Observation& observation) {
   FindRaisedPoints(observation);
-  for (const Vec3& p_W : raised_) points_[CellOf(p_W)] = p_W;
+  for (const Vec3& p_W : raised_) {
+    const Cell cell = CellOf(p_W);
+    const auto [kept, added] = points_.try_emplace(cell, p_W);
+    if (added) {
+      cells_added_.push_back(cell);
+      continue;
+    }
+    // (the map's outlines come back every sample, in the same places)
+    if (kept->second.head<2>() != p_W.head<2>()) ++cells_moved_;
+    kept->second = p_W;
+  }
 }
 
 std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observation, const Vec3& walking_W,
@@ -252,33 +271,81 @@ CircumventStrategy::Segment CircumventStrategy::SegmentNear(const Vec2& p_W) con
   return best;
 }
 
-CircumventStrategy::Extent CircumventStrategy::MeasureCluster(const Cell& seed, const Segment& segment) const {
+void CircumventStrategy::GrowCluster(ClusterWalk& walk, std::deque<Cell> queue) const {
   // breadth-first over the kept cells, linking those closer than kClusterLink_m
   const auto reach = static_cast<std::int64_t>(std::ceil(kClusterLink_m / kCell_m));
-  std::set<Cell> seen = {seed};
-  std::deque<Cell> queue = {seed};
-  Extent extent{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-                std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-  const Vec2 left = Left(segment.u);
+  const Vec2 left = Left(walk.u);
   while (!queue.empty()) {
     const Cell cell = queue.front();
     queue.pop_front();
     const auto point = points_.find(cell);
-    if (point == points_.end()) continue;
-    const Vec2 d = point->second.head<2>() - segment.origin;
-    extent.s_min = std::min(extent.s_min, d.dot(segment.u));
-    extent.s_max = std::max(extent.s_max, d.dot(segment.u));
-    extent.l_min = std::min(extent.l_min, d.dot(left));
-    extent.l_max = std::max(extent.l_max, d.dot(left));
-    for (auto it = points_.lower_bound({cell.first - reach, std::numeric_limits<std::int64_t>::min()});
-         it != points_.end() && it->first.first <= cell.first + reach; ++it) {
-      if (std::abs(it->first.second - cell.second) > reach || seen.contains(it->first)) continue;
-      if ((it->second.head<2>() - point->second.head<2>()).norm() > kClusterLink_m) continue;
-      seen.insert(it->first);
-      queue.push_back(it->first);
+    if (point == points_.end()) continue;  // the seed, before a point falls in its cell
+    const Vec2 d = point->second.head<2>() - walk.origin;
+    walk.extent.s_min = std::min(walk.extent.s_min, d.dot(walk.u));
+    walk.extent.s_max = std::max(walk.extent.s_max, d.dot(walk.u));
+    walk.extent.l_min = std::min(walk.extent.l_min, d.dot(left));
+    walk.extent.l_max = std::max(walk.extent.l_max, d.dot(left));
+    // the neighbours within reach, row by row (a row's cells are contiguous
+    // in the ordered map: the scan never walks a whole stripe of the map)
+    for (std::int64_t row = cell.first - reach; row <= cell.first + reach; ++row) {
+      for (auto it = points_.lower_bound({row, cell.second - reach});
+           it != points_.end() && it->first.first == row && it->first.second <= cell.second + reach; ++it) {
+        if (walk.seen.contains(it->first)) continue;
+        if ((it->second.head<2>() - point->second.head<2>()).norm() > kClusterLink_m) continue;
+        walk.seen.insert(it->first);
+        queue.push_back(it->first);
+      }
     }
   }
-  return extent;
+}
+
+CircumventStrategy::Extent CircumventStrategy::MeasureCluster(const Cell& seed, const Segment& segment) const {
+  // The cluster is the seed's connected component among the kept cells
+  // (linked closer than kClusterLink_m), whatever order it is walked in. A
+  // walk of the same seed in the same frame is grown from the cells added
+  // since, not walked again (a mapped wall is thousands of cells, and the
+  // map's outlines grow every sample); a kept cell that moved walks it anew.
+  ClusterWalk& walk = cluster_walk_;
+  const bool same = walk.valid && walk.seed == seed && walk.origin == segment.origin && walk.u == segment.u &&
+                    walk.moved == cells_moved_;
+  if (!same) {
+    walk = ClusterWalk{};
+    walk.valid = true;
+    walk.seed = seed;
+    walk.origin = segment.origin;
+    walk.u = segment.u;
+    walk.moved = cells_moved_;
+    walk.added = cells_added_.size();
+    walk.seen = {seed};
+    GrowCluster(walk, {seed});
+    return walk.extent;
+  }
+  const auto reach = static_cast<std::int64_t>(std::ceil(kClusterLink_m / kCell_m));
+  for (; walk.added < cells_added_.size(); ++walk.added) {
+    const Cell cell = cells_added_[walk.added];
+    if (cell == seed) {  // the seed's own point, come at last
+      GrowCluster(walk, {seed});
+      continue;
+    }
+    if (walk.seen.contains(cell)) continue;  // reached from another new cell already
+    // linked to the walk: a reached cell within kClusterLink_m
+    const Vec2 p = points_.at(cell).head<2>();
+    bool linked = false;
+    for (std::int64_t row = cell.first - reach; row <= cell.first + reach && !linked; ++row) {
+      for (auto it = points_.lower_bound({row, cell.second - reach});
+           it != points_.end() && it->first.first == row && it->first.second <= cell.second + reach; ++it) {
+        if (walk.seen.contains(it->first) && points_.contains(it->first) &&
+            (it->second.head<2>() - p).norm() <= kClusterLink_m) {
+          linked = true;
+          break;
+        }
+      }
+    }
+    if (!linked) continue;
+    walk.seen.insert(cell);
+    GrowCluster(walk, {cell});
+  }
+  return walk.extent;
 }
 
 bool CircumventStrategy::PlanDetour(const Extent& extent, std::vector<Vec2>* waypoints, double* shift_m) const {

@@ -45,8 +45,11 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
+#include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -136,6 +139,22 @@ class CircumventStrategy : public Strategy {
   Mode mode_ = Mode::kFollowing;
   double half_width_m_ = 0;
   std::map<Cell, Vec3> points_;  // the kept points, one per cell
+  std::vector<Cell> cells_added_;   // the cells of points_ in the order they were added
+  std::uint64_t cells_moved_ = 0;   // how often a kept cell's point moved in x-y
+  // a walk of the kept cells from a seed in a segment's frame (MeasureCluster)
+  struct ClusterWalk {
+    bool valid = false;
+    Cell seed{};
+    Vec2 origin = Vec2::Zero(), u = Vec2::Zero();
+    std::uint64_t moved = 0;      // cells_moved_ when walked
+    std::size_t added = 0;        // cells_added_ taken into account
+    std::set<Cell> seen;          // the cells reached (and the seed)
+    Extent extent{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                  std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  };
+  mutable ClusterWalk cluster_walk_;
+  // the walk carried on from the cells in `queue` (each already in walk.seen)
+  void GrowCluster(ClusterWalk& walk, std::deque<Cell> queue) const;
   Cell seed_{};
   Segment segment_;
   std::optional<Extent> extent_;

@@ -70,11 +70,15 @@ void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, 
   const RobotKnowledge& self = *observation.robot;
   char detail[240];
   if (config_.perception == Perception::kMap) {
-    // the map's obstacles in the corridor ahead of the leading toe; the legs plan steps and holes on their own map
+    // the map's obstacles in the corridor ahead of the leading toe, centred
+    // on the pelvis's line (both feet's, not the leading foot's: furniture
+    // beside the path is not in the way); the legs plan steps and holes on their own map
     if (observation.map == nullptr) return;
+    const Vec2 heading = self.heading_W.head<2>().normalized();
+    const Vec2 p_WP = self.X_WP.translation().head<2>();
+    const Vec2 from = p_WP + (self.p_W_front.head<2>() - p_WP).dot(heading) * heading;
     const Hazard* obstacle =
-        ObstacleInCorridor(*observation.map, self.p_W_front.head<2>(), self.heading_W.head<2>().normalized(),
-                           config_.stop_distance_m, config_.corridor_half_width_m);
+        ObstacleInCorridor(*observation.map, from, heading, config_.stop_distance_m, config_.corridor_half_width_m);
     if (obstacle == nullptr) return;
     std::snprintf(detail, sizeof detail,
                   "the map shows an obstacle %.2f m high over (%.2f, %.2f)-(%.2f, %.2f), %.3f m from the leading toe",

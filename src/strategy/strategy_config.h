@@ -19,7 +19,9 @@ struct StopConfig {
   Perception perception = Perception::kReadings;  ///< readings | map
   double stop_distance_m = 0.5;         ///< look-ahead from the leading toe, > 0
   double min_height_m = 0.03;           ///< a point this far above the stance ground is an obstacle, > 0
-  double corridor_half_width_m = 0.30;  ///< lateral half-width of the corridor the feet sweep, > 0
+  /// lateral half-width of the corridor the feet sweep, > 0: about the
+  /// leading toe (readings, the paper's rule) or the pelvis's line (map)
+  double corridor_half_width_m = 0.30;
   double max_drop_m = 0.0;              ///< a drop ahead deeper than this stops the robot, > 0; 0: the legs' gait.max_step_m
 };
 

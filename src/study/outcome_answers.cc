@@ -166,14 +166,22 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     return hardware + failure_cost(t);
   };
 
-  // ranking.csv: by success rate, then price (unknown last), then the order given
+  // ranking.csv, in the order given, then sorted
   std::vector<std::size_t> order(tallies.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   const auto price_key = [&](const Tally& t) {
     const double p = study.sets[t.set].price_usd;
     return std::isfinite(p) ? p : std::numeric_limits<double>::infinity();
   };
+  // by perception score where both baselines ran (how much of what perfect
+  // sensing buys the set delivers; undefined last), then success rate, then price
+  std::vector<double> score_key(tallies.size());
+  for (std::size_t i = 0; i < tallies.size(); ++i) {
+    const double score = perception(tallies[i]).score;
+    score_key[i] = std::isfinite(score) ? score : -std::numeric_limits<double>::infinity();
+  }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (score_key[a] != score_key[b]) return score_key[a] > score_key[b];
     if (tallies[a].rate() != tallies[b].rate()) return tallies[a].rate() > tallies[b].rate();
     return price_key(tallies[a]) < price_key(tallies[b]);
   });
@@ -337,9 +345,10 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
       {"mode", "outcomes"},
       {"target_success", study.target_success},
       {"success",
-       "a run succeeds when the robot reached its goal, or stopped (its strategy, or its legs refusing a step) "
-       "within 2 m of the hazard in a world whose path the legs cannot walk (the reference walk, without a "
-       "strategy, stood refused there)"},
+       "a run succeeds when the robot reached its goal, or, where the path given has no way through (the "
+       "reference walk, blind and without a strategy, refused a step or collided), stopped (its strategy, or its "
+       "legs refusing a step) past half the way to where the reference met the hazard and within 2 m of it (a "
+       "refusal) or 1.2 m (a collision)"},
       {"interval", "95 % Wilson score interval"},
       {"tuning",
        {{"train_worlds", train_jobs.size()},

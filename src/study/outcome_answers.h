@@ -1,11 +1,15 @@
 // An outcome study's answers from its episodes (docs/studies.md "Outcome
-// mode"): one row per run (results.csv); each set with each strategy ranked
-// by success rate with its 95 % Wilson interval, collision, fall and stop
-// rates and median time to goal (ranking.csv); every two sets compared on
-// the same worlds and seeds by McNemar's exact test (pairs.csv); the cheapest
-// set reaching the target success rate and the Pareto front of price against
-// success (selection.json); and every failed run with the command that
-// replays it and its world file (failures.csv, failures/*.yaml).
+// mode"): one row per run (results.csv, training runs and every variant
+// too); each set with each strategy, at the variant chosen for it on the
+// training worlds (`tune:`), measured on the test worlds and ranked by
+// perception score (its success between the blind and oracle baselines'),
+// then success rate with its 95 % Wilson interval, with collision, fall and
+// stop rates, median time to goal and the expected cost per run
+// (ranking.csv); every two sets compared on the same worlds and seeds by
+// McNemar's exact test (pairs.csv); the cheapest set reaching the target
+// success rate, the lowest expected cost and the Pareto front of price
+// against success (selection.json); and every failed run of the answer with
+// the command that replays it and its world file (failures.csv, failures/*.yaml).
 #pragma once
 
 #include <string>
