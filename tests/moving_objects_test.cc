@@ -215,6 +215,49 @@ TEST(MovingObjects, ARobotStruckByAMovingBoxCollidesWithIt) {
   EXPECT_LT(sim.robot_outcome().collisions.front().t_s, 4.0);
 }
 
+// People as pedestrians: one whose way crosses the place where the robot
+// stands waits for it (kPedestrianKeep_m) and never walks into it — at
+// several crossings, starting before and after the robot stops — while a
+// robot that walks into a person has collided (the baseline that must fail).
+std::string PersonScenario(double cross_x_m, double start_s, const std::string& goal, double speed_m_s,
+                           const std::string& waypoints) {
+  return "proxsim: 1\nduration_s: 12\nrate_hz: 50\n"
+         "scene:\n  builtin: empty\n  objects:\n"
+         "    - {name: floor, plane: {}}\n"
+         "    - name: walker\n      person: {height_m: 1.7}\n"
+         "      motion: {waypoints_m: " + (waypoints.empty() ? "[[" + std::to_string(cross_x_m) + ", -3], [" +
+                                                                  std::to_string(cross_x_m) + ", 3]]"
+                                                            : waypoints) +
+         ", mode: back_and_forth, speed_m_s: " + std::to_string(speed_m_s) + ", start_s: " + std::to_string(start_s) +
+         "}\nrobot:\n  model: builtin:biped\n  path: {waypoints_m: [[0, 0], " + goal + "]}\n"
+         "sensors:\n  - {name: s, type: ideal, link: left_tibia}\n";
+}
+
+TEST(MovingObjects, APersonCrossingWhereTheRobotStandsWaitsAndNeverCollides) {
+  for (const double cross_x_m : {0.45, 0.6, 0.75, 0.9}) {
+    for (const double start_s : {0.0, 1.5}) {
+      Simulation sim(LoadScenarioText(PersonScenario(cross_x_m, start_s, "[0.6, 0]", 1.0, ""), "person.yaml"), 1);
+      while (!sim.done()) sim.Step();
+      const std::string what = "crossing x = " + std::to_string(cross_x_m) + " from t = " + std::to_string(start_s);
+      EXPECT_TRUE(sim.robot_outcome().collisions.empty()) << what << ": " << sim.robot_outcome().collisions.front().object;
+      EXPECT_EQ(sim.outcome().name, "reached_goal") << what;
+      // the person came up to the robot and waited: it is still on the crossing's first half
+      EXPECT_LT(sim.robot_outcome().min_clearance_m, 1.0) << what;
+    }
+  }
+}
+
+TEST(MovingObjects, ARobotWalkingIntoAPersonCollides) {
+  // a person lingering across the path 1.5 m ahead; the robot walks on blind
+  Simulation sim(LoadScenarioText(PersonScenario(0, 0, "[3, 0]", 0.1, "[[1.5, -0.2], [1.5, 0.2]]"), "person.yaml"),
+                 1);
+  while (!sim.done()) sim.Step();
+  ASSERT_FALSE(sim.robot_outcome().collisions.empty());
+  EXPECT_EQ(sim.robot_outcome().collisions.front().object.rfind("walker", 0), 0u)
+      << sim.robot_outcome().collisions.front().object;
+  EXPECT_EQ(sim.outcome().name, "collided");
+}
+
 // --- bad input -------------------------------------------------------------
 
 TEST(MovingObjects, BadInputNamesTheFault) {
