@@ -193,8 +193,23 @@ std::vector<LocomotionEvent> GaitWalker::TakeEvents() {
 
 namespace {
 // Steps tried in turn at a heel strike: {share of the turn asked for, share of
-// the stride}; the first is the step asked for.
-constexpr std::array<std::pair<double, double>, 4> kGentlerSteps = {{{1.0, 1.0}, {0.5, 1.0}, {1.0, 0.7}, {0.5, 0.7}}};
+// the stride}; the first is the step asked for, the last a short one that
+// turns a little (what a person does when a step feels wrong).
+constexpr std::array<std::pair<double, double>, 7> kGentlerSteps = {
+    {{1.0, 1.0}, {0.5, 1.0}, {1.0, 0.7}, {0.5, 0.7}, {1.0, 0.5}, {0.5, 0.5}, {0.25, 0.35}}};
+
+// Whether a step found its foothold (a refusal after that is the legs' or
+// the swing's clearance, not a missing floor).
+bool FootholdFound(const StepPlan& plan) { return plan.cannot_step.empty() || plan.terrain; }
+
+// Whether a step passes over level ground only (its stance's floor, its
+// landing and the highest ground under its swing within a centimetre): a
+// step refused there is refused by the legs' own limits, not by the terrain.
+bool OnLevelGround(const StepPlan& plan) {
+  constexpr double kLevel_m = 0.01;
+  return FootholdFound(plan) && std::abs(plan.landing_z_m - plan.floor_z_m) < kLevel_m &&
+         std::abs(plan.highest_ground_z_m - plan.floor_z_m) < kLevel_m;
+}
 // Rounds of slowing a step for its joints' speeds across its heel strike, and
 // the least each slows it by.
 constexpr int kStrikeSlowingRounds = 8;
@@ -248,10 +263,10 @@ std::string GaitWalker::Refusal(const StepPlan& plan, double duration_s, const S
   return UnsafeStepReason(*planner_, *limits_, plan, duration_s, sampled);
 }
 
-void GaitWalker::NoteCannotStep(const std::string& reason) {
+void GaitWalker::NoteCannotStep(const std::string& reason, bool level_ground) {
   if (reason == last_cannot_step_) return;
   last_cannot_step_ = reason;
-  events_.push_back({"cannot_step", reason, std::nullopt});
+  events_.push_back({"cannot_step", reason, std::nullopt, level_ground});
 }
 
 void GaitWalker::Start() {
@@ -408,12 +423,13 @@ RobotState GaitWalker::Advance(double t_s) {
           const std::string key = StepKey(next);
           next_duration_s = StrikeLimitedDuration_s(next, CheckedDuration_s(key, next, &windows_));
           refusal = CheckedRefusal(key, next, next_duration_s, &windows_);
-          // (no foothold within reach: a gentler step finds none either)
+          // (no foothold within reach, or none the swing clears: a gentler step finds none either)
           if (refusal.empty() || !next.cannot_step.empty()) break;
         }
-        // no foothold within reach, or a step beyond the legs' limits: stop before it
+        // no foothold within reach, or a step beyond the legs' limits: stop
+        // before it (on level ground the robot stands: its own limits, never a fall)
         if (!refusal.empty()) {
-          NoteCannotStep(refusal);
+          NoteCannotStep(refusal, OnLevelGround(next));
           stop = true;
         }
       }

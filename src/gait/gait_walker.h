@@ -151,7 +151,7 @@ class GaitWalker : public Locomotion {
   // A planted sole: heel at p_W_heel, along heading yaw, resting at z_m.
   Footprint SoleAt(Side side, const Vec3& p_W_heel, double yaw, double z_m) const;
   // Logs `cannot_step` once per reason in a row.
-  void NoteCannotStep(const std::string& reason);
+  void NoteCannotStep(const std::string& reason, bool level_ground = false);
   // Whether waypoint i counts as passed with the pelvis at p.
   bool Passed(std::size_t i, const Vec2& p) const;
 

@@ -53,6 +53,10 @@ struct LocomotionEvent {
   std::string event;   ///< snake_case name: cannot_step, fall (a foot landed where it cannot stand)
   std::string detail;  ///< one line for a person
   std::optional<Vec3> p_W;  ///< where it happened, when a place is known (a fall: the middle of the sole at the foothold it missed, as planned)
+  /// cannot_step: the step refused passes over level ground only, so the
+  /// legs' own limits refused it (no gentler step fits either): the robot
+  /// stands, whatever gait.unsafe_steps says — a planner's limit is not a fall
+  bool level_ground = false;
 };
 
 /// What moves the robot. Advance() is called with non-decreasing times.

@@ -237,8 +237,9 @@ const SampleFrame& Simulation::TakeSample() {
         cannot_step_t_s_ = frame_.t_s;
         cannot_step_detail_ = event.detail;
         // under unsafe_steps: fall the step is taken, not refused: the fall is the event
-        // (unless the gait plans on its own map: then the map said so, and the robot stands)
-        if (UnsafeStepsFall()) {
+        // (unless the gait plans on its own map: then the map said so, and the
+        // robot stands; or the step passes over level ground: the legs' own limits)
+        if (UnsafeStepsFall() && !event.level_ground) {
           unsafe_step = event.detail;
           continue;
         }
