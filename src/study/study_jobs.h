@@ -38,7 +38,7 @@ struct StudyOptions {
   std::shared_ptr<OutputFolder>* folder = nullptr;
   /// Run only this slice of the jobs (--shard), into a folder of the slice's
   /// own: its journal holds the slice's jobs only, OUT/slice.json says which.
-  std::optional<StudySlice> slice;
+  std::optional<StudySlice> slice = std::nullopt;
 };
 
 /// One study mode's jobs, for RunJobs.

@@ -45,11 +45,11 @@ StudySlice ParseStudySlice(const std::string& text, const EnvironmentLookup& env
 
 /// What a slice's folder says about itself (OUT/slice.json).
 struct SliceRecord {
-  std::string dir;           ///< the folder it was read from (for messages; not stored)
-  StudySlice slice;
-  std::string study_digest;  ///< StudyDigest of the study the slice belongs to
-  std::string study_file;    ///< the study file, absolute
-  std::string mode;          ///< "detection" or "outcomes"
+  std::string dir = {};           ///< the folder it was read from (for messages; not stored)
+  StudySlice slice = {};
+  std::string study_digest = {};  ///< StudyDigest of the study the slice belongs to
+  std::string study_file = {};    ///< the study file, absolute
+  std::string mode = {};          ///< "detection" or "outcomes"
   std::size_t jobs = 0;      ///< the whole study's job count
 };
 
