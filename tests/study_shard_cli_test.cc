@@ -98,12 +98,15 @@ Runs RunWholeAndSliced(const std::string& name, const std::string& yaml) {
   runs.study = runs.dir / "study.yaml";
   std::ofstream(runs.study) << yaml;
   runs.single = runs.dir / "single";
-  const auto single = RunProxsim("study " + runs.study.string() + " --no-report --threads 2 --out " + runs.single.string());
+  // from the study's folder, the study named relatively: the answers echo it
+  // so (a failure's replay file), and the merge, run from elsewhere, must too
+  const std::string in_dir = "cd " + runs.dir.string() + " && " + PROXSIM_BINARY + " study study.yaml ";
+  const auto single = testing::RunCommand(in_dir + "--no-report --threads 2 --out single");
   EXPECT_EQ(single.exit_code, 0) << single.output;
   for (int i = 1; i <= 3; ++i) {
     runs.slices.push_back(runs.dir / ("slice" + std::to_string(i)));
-    const auto slice = RunProxsim("study " + runs.study.string() + " --shard " + std::to_string(i) +
-                                  "/3 --threads 1 --out " + runs.slices.back().string());
+    const auto slice = testing::RunCommand(in_dir + "--shard " + std::to_string(i) + "/3 --threads 1 --out slice" +
+                                           std::to_string(i));
     EXPECT_EQ(slice.exit_code, 0) << slice.output;
     EXPECT_NE(slice.output.find("slice " + std::to_string(i) + "/3 done"), std::string::npos) << slice.output;
   }
@@ -127,6 +130,7 @@ void ExpectMergeEqualsSingleRun(const Runs& runs, std::size_t jobs, const std::v
     EXPECT_EQ(record["slice"], std::to_string(i + 1) + "/3");
     EXPECT_EQ(record["jobs"], jobs);
     EXPECT_EQ(record["study_file"], fs::canonical(runs.study).string());
+    EXPECT_EQ(record["study_file_given"], "study.yaml");
     digests.insert(record["study_digest"].get<std::string>());
     for (const std::size_t job : JournalJobs(runs.slices[i] / "journal.jsonl")) {
       EXPECT_EQ(job % 3, i) << "job " << job << " in slice " << i + 1;
@@ -150,23 +154,37 @@ void ExpectMergeEqualsSingleRun(const Runs& runs, std::size_t jobs, const std::v
   }
   // the merged folder is a finished study: --resume finds every job done and writes the same files
   EXPECT_EQ(JournalJobs(merged / "journal.jsonl").size(), jobs);
-  const auto resumed = RunProxsim("study " + runs.study.string() + " --no-report --resume --out " + merged.string());
+  const auto resumed = testing::RunCommand("cd " + runs.dir.string() + " && " + PROXSIM_BINARY +
+                                           " study study.yaml --no-report --resume --out merged");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_NE(resumed.output.find(std::to_string(jobs) + " jobs already done (resumed)"), std::string::npos)
       << resumed.output;
   EXPECT_EQ(FilesOf(merged), single_files);
 }
 
-class PlacementShardTest : public ::testing::Test {
+// One study (a mode's) run whole and in 3 slices, once for all the tests of its suite.
+template <typename Study>
+class SlicedStudyTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { runs_ = new Runs(RunWholeAndSliced("shard_placement", PlacementStudy())); }
+  static void SetUpTestSuite() { runs_ = new Runs(RunWholeAndSliced(Study::kName, Study::Yaml())); }
   static void TearDownTestSuite() {
     fs::remove_all(runs_->dir);
     delete runs_;
+    runs_ = nullptr;
   }
-  static Runs* runs_;
+  static inline Runs* runs_ = nullptr;
 };
-Runs* PlacementShardTest::runs_ = nullptr;
+
+struct Placement {
+  static constexpr const char* kName = "shard_placement";
+  static std::string Yaml() { return PlacementStudy(); }
+};
+struct Outcomes {
+  static constexpr const char* kName = "shard_outcomes";
+  static std::string Yaml() { return OutcomeStudy(); }
+};
+using PlacementShardTest = SlicedStudyTest<Placement>;
+using OutcomeShardTest = SlicedStudyTest<Outcomes>;
 
 TEST_F(PlacementShardTest, ThreeSlicesMergeToTheSingleRunsBytes) {
   ExpectMergeEqualsSingleRun(*runs_, 6, {"results.csv", "ranking.csv", "selection.json"});
@@ -249,17 +267,6 @@ TEST_F(PlacementShardTest, SlicesOfAnotherStudyAndAStudyChangedSinceAreRefused) 
   EXPECT_EQ(changed.exit_code, 2) << changed.output;
   EXPECT_NE(changed.output.find("changed since its slices ran"), std::string::npos) << changed.output;
 }
-
-class OutcomeShardTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { runs_ = new Runs(RunWholeAndSliced("shard_outcomes", OutcomeStudy())); }
-  static void TearDownTestSuite() {
-    fs::remove_all(runs_->dir);
-    delete runs_;
-  }
-  static Runs* runs_;
-};
-Runs* OutcomeShardTest::runs_ = nullptr;
 
 TEST_F(OutcomeShardTest, ThreeSlicesMergeToTheSingleRunsBytes) {
   ExpectMergeEqualsSingleRun(*runs_, 5,

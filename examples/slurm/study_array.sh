@@ -17,5 +17,5 @@
 set -euo pipefail
 study=$1
 slices=$2
-exec "${PROXSIM:-proxsim}" study "$study" --shard slurm --threads "${SLURM_CPUS_PER_TASK:-1}" --no-report \
+exec "${PROXSIM:-proxsim}" study "$study" --shard slurm --threads "${SLURM_CPUS_PER_TASK:-1}" \
   --out "$slices/slice-$SLURM_ARRAY_TASK_ID"

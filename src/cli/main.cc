@@ -366,17 +366,22 @@ int MergeStudy(const std::vector<std::string>& slice_dirs, const std::string& ou
   const std::string& study_path = slices.front().study_file;
   std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
   const proxsim::StudyOptions options{.out_dir = out_dir, .force = force, .folder = &folder};
-  // the slices ran it, so its size was accepted then
+  // read from its absolute path (the slices' working folders are not ours);
+  // the answers then echo it as the slices' command line named it, as a
+  // single run invoked that way does (a failure's replay file). The slices
+  // ran it, so its size was accepted then.
+  const std::string& given = slices.front().study_file_given;
   if (proxsim::IsOutcomeStudyFile(study_path)) {
-    const proxsim::OutcomeStudyConfig study = proxsim::LoadOutcomeStudyFile(study_path, true);
+    proxsim::OutcomeStudyConfig study = proxsim::LoadOutcomeStudyFile(study_path, true);
     const auto lines = proxsim::MergeStudySlices(proxsim::OutcomeJobSet(study), slices, options);
-    return AnswerOutcomeStudy(study, proxsim::OutcomeResultsFromJournal(study, lines), study_path, out_dir,
+    study.source = given;
+    return AnswerOutcomeStudy(study, proxsim::OutcomeResultsFromJournal(study, lines), given, out_dir,
                               folder->path(), report);
   }
-  const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, true);
+  proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, true);
   const auto lines = proxsim::MergeStudySlices(proxsim::StudyJobSet(study), slices, options);
-  return AnswerStudy(study, proxsim::StudyResultsFromJournal(study, lines), study_path, out_dir, folder->path(),
-                     report);
+  study.source = given;
+  return AnswerStudy(study, proxsim::StudyResultsFromJournal(study, lines), given, out_dir, folder->path(), report);
 }
 
 }  // namespace

@@ -185,6 +185,7 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
     WriteSliceRecord(folder->path(), {.slice = *slice,
                                       .study_digest = set.digest,
                                       .study_file = std::filesystem::absolute(set.study_file).lexically_normal().string(),
+                                      .study_file_given = set.study_file,
                                       .mode = set.mode,
                                       .jobs = set.jobs});
   }

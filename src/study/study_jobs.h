@@ -48,7 +48,7 @@ struct JobSet {
   std::string fingerprint;    ///< what makes a journal this study's (StudyFingerprint)
   std::string digest;         ///< the study's content (StudyDigest): what makes slices one study's
   std::string mode;           ///< "detection" or "outcomes", for a slice's record
-  std::string study_file;     ///< the study file, for a slice's record (merge reads it again)
+  std::string study_file;     ///< the study file as given, for a slice's record (merge reads it again)
   /// Checks a journal line or MPI message {"job": J, "metrics": ...} against
   /// the study's shape and returns J; throws InputError saying what does not fit.
   std::function<std::size_t(const nlohmann::json& line)> check;

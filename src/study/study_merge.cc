@@ -1,5 +1,6 @@
 #include "study/study_merge.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -81,6 +82,7 @@ std::vector<SliceRecord> ReadStudySlices(const std::vector<std::string>& dirs) {
     }
   }
   if (!problems.empty()) throw InputError(problems);
+  std::ranges::sort(records, {}, [](const SliceRecord& r) { return r.slice.index; });
   return records;
 }
 

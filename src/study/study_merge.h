@@ -27,7 +27,7 @@ namespace proxsim {
 /// Reads the slice folders' records and checks that they are one study's
 /// slices, each given once, none missing; throws InputError naming each
 /// folder that is not a slice or not of the study, each duplicated slice with
-/// its folders and each missing slice ("slice 2/3").
+/// its folders and each missing slice ("slice 2/3"). Returns them in slice order.
 std::vector<SliceRecord> ReadStudySlices(const std::vector<std::string>& dirs);
 
 /// Checks the slices against the study as it reads now (`set`: its digest,

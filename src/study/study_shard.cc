@@ -91,6 +91,7 @@ void WriteSliceRecord(const std::string& folder, const SliceRecord& record) {
                     {"count", record.slice.count},
                     {"study_digest", record.study_digest},
                     {"study_file", record.study_file},
+                    {"study_file_given", record.study_file_given},
                     {"mode", record.mode},
                     {"jobs", record.jobs},
                     {"slice_jobs", record.slice.JobsOf(record.jobs)}};
@@ -115,12 +116,15 @@ SliceRecord ReadSliceRecord(const std::string& dir) {
                      .slice = {count("index"), count("count")},
                      .study_digest = text("study_digest"),
                      .study_file = text("study_file"),
+                     .study_file_given = text("study_file_given"),
                      .mode = text("mode"),
                      .jobs = count("jobs")};
   if (record.slice.count == 0 || record.slice.index == 0 || record.slice.index > record.slice.count ||
-      record.study_digest.empty() || record.study_file.empty() || record.mode.empty()) {
+      record.study_digest.empty() || record.study_file.empty() || record.study_file_given.empty() ||
+      record.mode.empty()) {
     throw InputError(path.string() +
-                     ": expected a slice record (index, count, study_digest, study_file, mode, jobs), as "
+                     ": expected a slice record (index, count, study_digest, study_file, study_file_given, mode, "
+                     "jobs), as "
                      "`proxsim study --shard` writes it");
   }
   return record;

@@ -49,6 +49,9 @@ struct SliceRecord {
   StudySlice slice = {};
   std::string study_digest = {};  ///< StudyDigest of the study the slice belongs to
   std::string study_file = {};    ///< the study file, absolute
+  /// The study file as the slice's command line named it: what the answers
+  /// echo (a failure's replay file), as a single run invoked that way does.
+  std::string study_file_given = {};
   std::string mode = {};          ///< "detection" or "outcomes"
   std::size_t jobs = 0;      ///< the whole study's job count
 };

@@ -237,17 +237,17 @@ def test_a_job_array_of_three_slices_merges_to_the_single_runs_bytes(slurm):
     merged = os.path.join(work, "merged")
     slices = sorted(os.path.join(work, "slices", d) for d in os.listdir(os.path.join(work, "slices")))
     assert [os.path.basename(s) for s in slices] == ["slice-1", "slice-2", "slice-3"]
-    merge = subprocess.run([BINARY, "study", "merge", *slices, "--no-report", "--out", merged],
+    merge = subprocess.run([BINARY, "study", "merge", *slices, "--out", merged],
                            capture_output=True, text=True, timeout=60)
     assert merge.returncode == 0, merge.stdout + merge.stderr
 
     single = os.path.join(work, "single")
-    one = subprocess.run([BINARY, "study", study, "--no-report", "--out", single],
-                         capture_output=True, text=True, timeout=60)
+    one = subprocess.run([BINARY, "study", study, "--out", single], capture_output=True, text=True, timeout=60)
     assert one.returncode == 0, one.stdout + one.stderr
 
+    # the answers and the report drawn from them
     single_files, merged_files = answers(single), answers(merged)
-    assert {"results.csv", "ranking.csv", "selection.json"} <= set(single_files)
+    assert {"results.csv", "ranking.csv", "selection.json", "pareto.svg", "index.html"} <= set(single_files)
     assert sorted(merged_files) == sorted(single_files)
     for name, content in single_files.items():
         assert merged_files[name] == content, f"{name} differs from the single run's"
