@@ -3,11 +3,12 @@
 The test starts its own cluster on localhost from files it writes into a
 temporary folder: munged on a private socket and key, one slurmctld and one
 slurmd (NodeName=localhost, 2 CPUs) on two free ports, state and spool in the
-folder, no cgroups (proctrack/linuxproc, task/none). It submits
-examples/slurm/study_array.sh -- the script docs/studies.md shows -- as an
-array of 3 tasks, each running one slice with `--shard slurm`, waits for
-them, runs `proxsim study merge` and compares the answers byte for byte with
-a single-process run. The daemons are stopped at the end, whatever happened.
+folder, no cgroups (proctrack/linuxproc, task/none). For a study of each mode
+it submits examples/slurm/study_array.sh -- the script docs/studies.md shows --
+as an array of 3 tasks, each running one slice with `--shard slurm`, waits for
+them, runs `proxsim study merge` and compares every file (the answers and the
+report drawn from them) byte for byte with a single-process run's. The
+daemons are stopped at the end, whatever happened.
 If they cannot start, the test fails and says why: it is never skipped.
 """
 import os
@@ -27,10 +28,17 @@ START_TIMEOUT_S = 30
 JOBS_TIMEOUT_S = 60
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+def free_ports(count):
+    """`count` distinct ports free now (held open together, so none is given twice): the controller's and
+    the node's, never the default 6817/6818 another Slurm on the machine may hold."""
+    sockets = [socket.socket() for _ in range(count)]
+    try:
+        for s in sockets:
+            s.bind(("127.0.0.1", 0))
+        return [s.getsockname()[1] for s in sockets]
+    finally:
+        for s in sockets:
+            s.close()
 
 
 def tail(path, lines=15):
@@ -86,13 +94,14 @@ class LocalSlurm:
         host = socket.gethostname().split(".")[0]
         self.logs["slurmctld"] = self._path("log", "slurmctld.log")
         self.logs["slurmd"] = self._path("log", "slurmd.log")
+        controller_port, node_port = free_ports(2)
         config = {
             "ClusterName": "proxsimtest",
             "SlurmctldHost": f"{host}(127.0.0.1)",
             "SlurmUser": "root",
             "SlurmdUser": "root",
-            "SlurmctldPort": free_port(),
-            "SlurmdPort": free_port(),
+            "SlurmctldPort": controller_port,
+            "SlurmdPort": node_port,
             "AuthType": "auth/munge",
             "CredType": "cred/munge",
             "AuthInfo": f"socket={socket_path}",
@@ -163,7 +172,7 @@ class LocalSlurm:
                     pass
 
 
-@pytest.fixture
+@pytest.fixture(scope="module")
 def slurm():
     root = tempfile.mkdtemp(prefix="proxsim_slurm_")
     cluster = LocalSlurm(root)
@@ -175,7 +184,10 @@ def slurm():
         subprocess.run(["rm", "-rf", root])
 
 
-STUDY = """proxsim_study: 1
+# Small studies of both modes (seconds): 6 placement jobs (2 scenes x 3 seeds),
+# 5 outcome worlds (an obstacle room with no way through, small generated rooms).
+STUDIES = {
+    "placement": """proxsim_study: 1
 base: {scenarios}/paper_dining_room.yaml
 candidates:
   axes: {{type: [laser, ultrasonic], link: left_tibia, along_m: [-0.35, -0.25], forward_m: 0.06, pitch_deg: 10}}
@@ -185,7 +197,25 @@ scenes:
 seeds: [1, 2, 3]
 hazards: [obstacle]
 select: {{sensors: 2}}
-"""
+""",
+    "outcomes": """proxsim_study: 1
+mode: outcomes
+base: {scenarios}/outcome_walker.yaml
+sets:
+  - {{name: upward, sensors: [{{name: up, type: laser, link: left_tibia, pose: {{xyz_m: [0.06, 0, -0.35], rpy_deg: [0, -80, 0]}}}}]}}
+  - {{name: ahead, sensors: [{{name: ahead, type: laser, link: left_tibia, pose: {{xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 8, 0]}}}}]}}
+prices: {{laser: {{price_usd: 10}}}}
+strategies: [{{name: stop}}]
+worlds:
+  - {{name: obstacle_room, scenario: {scenarios}/circumvent_obstacle.yaml, seeds: [1, 2]}}
+  - {{generate: {{kind: room, difficulty: 0.3, size_m: [4, 4]}}, seeds: [1, 2, 3]}}
+""",
+}
+EXPECTED = {
+    "placement": {"results.csv", "ranking.csv", "selection.json", "pareto.svg", "index.html"},
+    "outcomes": {"results.csv", "ranking.csv", "pairs.csv", "selection.json", "failures.csv", "episodes.jsonl",
+                 "success_by_set.svg", "index.html"},
+}
 
 
 def answers(folder):
@@ -202,13 +232,14 @@ def answers(folder):
     return files
 
 
-def test_a_job_array_of_three_slices_merges_to_the_single_runs_bytes(slurm):
+@pytest.mark.parametrize("mode", ["placement", "outcomes"])
+def test_a_job_array_of_three_slices_merges_to_the_single_runs_bytes(slurm, mode):
     started = time.monotonic()
-    work = os.path.join(slurm.root, "work")
+    work = os.path.join(slurm.root, mode)
     os.makedirs(work)
     study = os.path.join(work, "study.yaml")
     with open(study, "w") as f:
-        f.write(STUDY.format(scenarios=os.path.join(os.path.abspath(SOURCE_DIR), "data", "scenarios")))
+        f.write(STUDIES[mode].format(scenarios=os.path.join(os.path.abspath(SOURCE_DIR), "data", "scenarios")))
 
     # the array: the script as docs/studies.md gives it, its tasks' environment carrying PROXSIM
     env = dict(slurm.env, PROXSIM=os.path.abspath(BINARY))
@@ -247,12 +278,12 @@ def test_a_job_array_of_three_slices_merges_to_the_single_runs_bytes(slurm):
 
     # the answers and the report drawn from them
     single_files, merged_files = answers(single), answers(merged)
-    assert {"results.csv", "ranking.csv", "selection.json", "pareto.svg", "index.html"} <= set(single_files)
+    assert EXPECTED[mode] <= set(single_files), sorted(single_files)
     assert sorted(merged_files) == sorted(single_files)
     for name, content in single_files.items():
         assert merged_files[name] == content, f"{name} differs from the single run's"
-    print(f"slurm job array {array_id}: 3 slices merged, {len(single_files)} files byte-identical to one process, "
-          f"{time.monotonic() - started:.1f} s after the cluster was up")
+    print(f"\n{mode} study, slurm job array {array_id}: 3 slices merged, {len(single_files)} files byte-identical "
+          f"to one process's, {time.monotonic() - started:.1f} s")
 
 
 def test_the_docs_show_the_script_the_array_runs():
