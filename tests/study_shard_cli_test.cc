@@ -36,7 +36,8 @@ const std::string kScenarios = std::string(PROXSIM_SOURCE_DIR) + "/data/scenario
 std::string PlacementStudy() {
   return "proxsim_study: 1\nbase: " + kScenarios + "paper_dining_room.yaml\n"
          "candidates:\n"
-         "  axes: {type: [laser, ultrasonic], link: left_tibia, along_m: [-0.35, -0.25], forward_m: 0.06, pitch_deg: 10}\n"
+         "  axes: {type: [laser, ultrasonic], link: left_tibia, along_m: [-0.35, -0.25], forward_m: 0.06,\n"
+         "         pitch_deg: 10}\n"
          "scenes:\n"
          "  - {name: obstacle_15cm, builtin: dining_room}\n"
          "  - {name: obstacle_30cm, builtin: dining_room, obstacle: {height_m: 0.30, x_m: 2.0}}\n"
@@ -380,8 +381,9 @@ TEST(StudySlice, TheSlurmTaskIsItsPositionInTheArrayCountedFromOne) {
   EXPECT_THROW(FromSlurm({{"SLURM_ARRAY_TASK_ID", "4"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_MAX", "9"},
                           {"SLURM_ARRAY_TASK_COUNT", "3"}, {"SLURM_ARRAY_TASK_STEP", "1"}}),
                InputError);
-  EXPECT_THROW(FromSlurm({{"SLURM_ARRAY_TASK_ID", "x"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_COUNT", "3"}}),
-               InputError);
+  EXPECT_THROW(
+      FromSlurm({{"SLURM_ARRAY_TASK_ID", "x"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_COUNT", "3"}}),
+      InputError);
   EXPECT_EQ(ParseStudySlice("2/3", [](const char*) { return nullptr; }).Name(), "2/3");
 }
 

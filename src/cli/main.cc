@@ -345,8 +345,10 @@ int AnswerStudy(const proxsim::StudyConfig& study, const proxsim::StudyResults& 
 int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
           bool force, bool allow_large, const std::string& shard) {
   CheckOutArgument(out_dir);
-  proxsim::StudyOptions options{.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true, .force = force};
-  if (!shard.empty()) options.slice = proxsim::ParseStudySlice(shard, [](const char* name) { return std::getenv(name); });
+  proxsim::StudyOptions options{
+      .out_dir = out_dir, .threads = threads, .resume = resume, .progress = true, .force = force};
+  if (!shard.empty())
+    options.slice = proxsim::ParseStudySlice(shard, [](const char* name) { return std::getenv(name); });
   if (proxsim::IsOutcomeStudyFile(study_path)) return OutcomeStudy(study_path, options, report, allow_large);
   const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, allow_large);
   bool writer = false;

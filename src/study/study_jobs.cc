@@ -182,9 +182,10 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
     std::filesystem::remove(std::filesystem::path(folder->path()) / kSliceRecordName, ignored);
   } else {
     // the slice says which study and which slice it is, once its journal is this slice's: merge reads it
+    const std::string study_file = std::filesystem::absolute(set.study_file).lexically_normal().string();
     WriteSliceRecord(folder->path(), {.slice = *slice,
                                       .study_digest = set.digest,
-                                      .study_file = std::filesystem::absolute(set.study_file).lexically_normal().string(),
+                                      .study_file = study_file,
                                       .study_file_given = set.study_file,
                                       .mode = set.mode,
                                       .jobs = set.jobs});

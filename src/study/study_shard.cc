@@ -75,8 +75,9 @@ std::string FileBytes(const std::string& path) {
 StudySlice ParseStudySlice(const std::string& text, const EnvironmentLookup& environment) {
   if (text == "slurm") return SliceFromSlurm(environment);
   const std::size_t slash = text.find('/');
-  const std::optional<std::size_t> index = slash == std::string::npos ? std::nullopt : WholeNumber(text.substr(0, slash));
-  const std::optional<std::size_t> count = slash == std::string::npos ? std::nullopt : WholeNumber(text.substr(slash + 1));
+  const bool split = slash != std::string::npos;
+  const std::optional<std::size_t> index = split ? WholeNumber(text.substr(0, slash)) : std::nullopt;
+  const std::optional<std::size_t> count = split ? WholeNumber(text.substr(slash + 1)) : std::nullopt;
   if (!index || !count || *count == 0 || *index == 0 || *index > *count) {
     throw InputError("--shard '" + text +
                      "': expected i/N, slice i of N counted from 1 (1/3, 2/3, 3/3), or slurm (a job array's task)");
