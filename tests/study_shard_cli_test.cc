@@ -235,6 +235,17 @@ TEST_F(PlacementShardTest, AFolderThatIsNoSliceAndAnUnfinishedSliceAreRefused) {
       << unfinished.output;
   EXPECT_NE(unfinished.output.find("--shard 2/3 --out " + cut.string() + " --resume"), std::string::npos)
       << unfinished.output;
+
+  // the command it names finishes the slice (its one missing job), and the merge then goes through
+  const auto finished = testing::RunCommand("cd " + runs_->dir.string() + " && " + PROXSIM_BINARY +
+                                            " study study.yaml --shard 2/3 --resume --out " + cut.string());
+  ASSERT_EQ(finished.exit_code, 0) << finished.output;
+  EXPECT_NE(finished.output.find("1 jobs already done (resumed)"), std::string::npos) << finished.output;
+  const fs::path merged = runs_->dir / "after_resume";
+  const auto merge = RunProxsim("study merge" + Folders({runs_->slices[0], cut, runs_->slices[2]}) +
+                                " --no-report --out " + merged.string());
+  ASSERT_EQ(merge.exit_code, 0) << merge.output;
+  EXPECT_EQ(FilesOf(merged), FilesOf(runs_->single));
 }
 
 TEST_F(PlacementShardTest, SlicesOfAnotherStudyAndAStudyChangedSinceAreRefused) {
