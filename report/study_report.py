@@ -150,6 +150,11 @@ def main():
         print(__doc__, file=sys.stderr)
         sys.exit(2)
     out = sys.argv[1]
+    # the same files draw the same figures, byte for byte (a merged study's as
+    # a single run's, docs/studies.md): SVG ids from a fixed salt rather than
+    # a random one, and the SVG date fixed (matplotlib reads SOURCE_DATE_EPOCH)
+    matplotlib.rcParams["svg.hashsalt"] = "proxsim-study"
+    os.environ.setdefault("SOURCE_DATE_EPOCH", "0")
     with open(os.path.join(out, "selection.json")) as f:
         if json.load(f).get("mode") == "outcomes":
             # a closed-loop study: its own figures (outcome_report.py, beside this file)

@@ -13,6 +13,7 @@ packages=(
   python3-matplotlib python3-numpy
   python3-dev pybind11-dev python3-pytest python3-venv
   libopenmpi-dev openmpi-bin
+  slurm-wlm munge   # test only: the job-array test starts its own slurmctld + slurmd on localhost (tests/slurm/)
   nodejs npm   # the viewer's bundle and the MCAP exporter; the build runs `npm ci` in viewer/ and foxglove/
 )
 # Extra groups, asked for by the caller: "browser" for the viewer's end-to-end test,

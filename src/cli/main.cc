@@ -7,6 +7,7 @@
 //   proxsim export OUT_DIR --mcap FILE (the run as an MCAP file for Foxglove, docs/foxglove.md)
 //   proxsim export OUT_DIR --ros2 DIR  (the run as a ROS 2 bag, docs/ros2.md)
 //   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
+//   proxsim study FILE [--shard i/N|slurm] [--out DIR], proxsim study merge DIR... --out DIR (docs/studies.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
 #include <signal.h>
@@ -14,6 +15,7 @@
 
 #include <atomic>
 #include <charconv>
+#include <cstdlib>
 #include <memory>
 #include <cstdio>
 #include <exception>
@@ -22,6 +24,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -46,7 +49,9 @@
 #include "study/outcome_runner.h"
 #include "study/study_answers.h"
 #include "study/study_config.h"
+#include "study/study_merge.h"
 #include "study/study_runner.h"
+#include "study/study_shard.h"
 
 namespace {
 
@@ -246,18 +251,19 @@ int Generate(const std::string& scenario_path, const std::string& out_path) {
   return 0;
 }
 
-// `mode: outcomes`: sensor sets with strategies, closed loop, ranked by how often the robot gets through
-int OutcomeStudy(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
-                 bool force, bool allow_large) {
-  const proxsim::OutcomeStudyConfig study = proxsim::LoadOutcomeStudyFile(study_path, allow_large);
-  bool writer = false;
-  std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
-  const proxsim::OutcomeResults results = proxsim::RunOutcomeStudy(
-      study,
-      {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true, .force = force, .folder = &folder},
-      &writer);
-  if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
-  const nlohmann::json selection = proxsim::WriteOutcomeAnswers(study, results, folder->path());
+// A slice of a study run (--shard): its journal and record written, the answers left to `study merge`
+int SliceDone(const std::string& study_path, const std::string& out_dir, const proxsim::StudySlice& slice) {
+  std::printf("proxsim study: %s — slice %s done in %s/ (journal.jsonl, %s); when every slice is done: "
+              "proxsim study merge SLICE_DIR... --out DIR\n",
+              study_path.c_str(), slice.Name().c_str(), out_dir.c_str(), proxsim::kSliceRecordName);
+  return 0;
+}
+
+// `mode: outcomes`: the answers from every job's results (a single run's, or the merged slices'), printed and drawn
+int AnswerOutcomeStudy(const proxsim::OutcomeStudyConfig& study, const proxsim::OutcomeResults& results,
+                       const std::string& study_path, const std::string& out_dir, const std::string& folder_path,
+                       bool report) {
+  const nlohmann::json selection = proxsim::WriteOutcomeAnswers(study, results, folder_path);
   std::printf("proxsim study: %s — %zu closed-loop runs\n", study_path.c_str(), study.runs_per_job() * study.jobs.size());
   for (std::size_t i = 0; i < std::min<std::size_t>(5, selection["ranking"].size()); ++i) {
     const auto& row = selection["ranking"][i];
@@ -299,20 +305,23 @@ int OutcomeStudy(const std::string& study_path, const std::string& out_dir, int 
   return 0;
 }
 
-int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
-          bool force, bool allow_large) {
-  CheckOutArgument(out_dir);
-  if (proxsim::IsOutcomeStudyFile(study_path))
-    return OutcomeStudy(study_path, out_dir, threads, resume, report, force, allow_large);
-  const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, allow_large);
+// `mode: outcomes`: sensor sets with strategies, closed loop, ranked by how often the robot gets through
+int OutcomeStudy(const std::string& study_path, const proxsim::StudyOptions& options, bool report, bool allow_large) {
+  const proxsim::OutcomeStudyConfig study = proxsim::LoadOutcomeStudyFile(study_path, allow_large);
   bool writer = false;
   std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
-  const proxsim::StudyResults results = proxsim::RunStudy(
-      study,
-      {.out_dir = out_dir, .threads = threads, .resume = resume, .progress = true, .force = force, .folder = &folder},
-      &writer);
+  proxsim::StudyOptions run_options = options;
+  run_options.folder = &folder;
+  const proxsim::OutcomeResults results = proxsim::RunOutcomeStudy(study, run_options, &writer);
   if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
-  const nlohmann::json selection = proxsim::WriteStudyAnswers(study, results, folder->path());
+  if (options.slice) return SliceDone(study_path, options.out_dir, *options.slice);
+  return AnswerOutcomeStudy(study, results, study_path, options.out_dir, folder->path(), report);
+}
+
+// a placement study: the answers from every job's metrics (a single run's, or the merged slices'), printed and drawn
+int AnswerStudy(const proxsim::StudyConfig& study, const proxsim::StudyResults& results, const std::string& study_path,
+                const std::string& out_dir, const std::string& folder_path, bool report) {
+  const nlohmann::json selection = proxsim::WriteStudyAnswers(study, results, folder_path);
   std::printf("proxsim study: %s — %zu runs\n", study_path.c_str(),
               study.candidates.size() * study.variants.size() * study.seeds.size());
   std::printf("best %d sensors (greedy, hazards covered then lead, over %zu items):\n", study.select_sensors,
@@ -334,6 +343,50 @@ int Study(const std::string& study_path, const std::string& out_dir, int threads
   }
   std::printf("report: %s/index.html\n", out_dir.c_str());
   return 0;
+}
+
+int Study(const std::string& study_path, const std::string& out_dir, int threads, bool resume, bool report,
+          bool force, bool allow_large, const std::string& shard) {
+  CheckOutArgument(out_dir);
+  proxsim::StudyOptions options{
+      .out_dir = out_dir, .threads = threads, .resume = resume, .progress = true, .force = force};
+  if (!shard.empty())
+    options.slice = proxsim::ParseStudySlice(shard, [](const char* name) { return std::getenv(name); });
+  if (proxsim::IsOutcomeStudyFile(study_path)) return OutcomeStudy(study_path, options, report, allow_large);
+  const proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, allow_large);
+  bool writer = false;
+  std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
+  options.folder = &folder;
+  const proxsim::StudyResults results = proxsim::RunStudy(study, options, &writer);
+  if (!writer) return 0;  // an MPI worker rank: rank 0 writes everything
+  if (options.slice) return SliceDone(study_path, out_dir, *options.slice);
+  return AnswerStudy(study, results, study_path, out_dir, folder->path(), report);
+}
+
+// `study merge`: the slices checked and joined into the study's journal, then
+// the answers written by the very code a single run's go through
+int MergeStudy(const std::vector<std::string>& slice_dirs, const std::string& out_dir, bool report, bool force) {
+  CheckOutArgument(out_dir);
+  const std::vector<proxsim::SliceRecord> slices = proxsim::ReadStudySlices(slice_dirs);
+  const std::string& study_path = slices.front().study_file;
+  std::shared_ptr<proxsim::OutputFolder> folder;  // locked until the answers and figures are written
+  const proxsim::StudyOptions options{.out_dir = out_dir, .force = force, .folder = &folder};
+  // read from its absolute path (the slices' working folders are not ours);
+  // the answers then echo it as the slices' command line named it, as a
+  // single run invoked that way does (a failure's replay file). The slices
+  // ran it, so its size was accepted then.
+  const std::string& given = slices.front().study_file_given;
+  if (proxsim::IsOutcomeStudyFile(study_path)) {
+    proxsim::OutcomeStudyConfig study = proxsim::LoadOutcomeStudyFile(study_path, true);
+    const auto lines = proxsim::MergeStudySlices(proxsim::OutcomeJobSet(study), slices, options);
+    study.source = given;
+    return AnswerOutcomeStudy(study, proxsim::OutcomeResultsFromJournal(study, lines), given, out_dir,
+                              folder->path(), report);
+  }
+  proxsim::StudyConfig study = proxsim::LoadStudyFile(study_path, true);
+  const auto lines = proxsim::MergeStudySlices(proxsim::StudyJobSet(study), slices, options);
+  study.source = given;
+  return AnswerStudy(study, proxsim::StudyResultsFromJournal(study, lines), given, out_dir, folder->path(), report);
 }
 
 }  // namespace
@@ -399,7 +452,7 @@ int main(int argc, char** argv) {
   int study_threads = 0;
   bool study_resume = false, study_no_report = false;
   CLI::App* study = app.add_subcommand("study", "rank sensor mountings over scene variants and seeds (mpirun: over ranks)");
-  study->add_option("study", study_path, "study YAML file (see data/studies/)")->required();
+  study->add_option("study", study_path, "study YAML file (see data/studies/)");
   study->add_option("--out", study_out, "output folder")->capture_default_str();
   study->add_option("--threads", study_threads, "worker threads (default: every core; 1 per rank under mpirun)")
       ->check(CLI::Range(0, 256));
@@ -410,6 +463,21 @@ int main(int argc, char** argv) {
                   "write into a non-empty folder that holds no previous study (its files are never removed)");
   study->add_flag("--allow-large", study_allow_large,
                   "run a study beyond the size bounds (10000 candidates, 1000000 runs; docs/studies.md)");
+  std::string study_shard;
+  study->add_option("--shard", study_shard,
+                    "run only slice i of N of the jobs (i/N, counted from 1), or slurm: the slice of this Slurm "
+                    "job array task (SLURM_ARRAY_TASK_ID); then `study merge` the slices' folders");
+  // `study merge DIR... --out DIR`: a subcommand of study, so the study file is not required with it
+  std::vector<std::string> merge_dirs;
+  std::string merge_out = "study-out";
+  bool merge_no_report = false, merge_force = false;
+  CLI::App* merge = study->add_subcommand(
+      "merge", "put the slices of one study (study --shard) back together: the answers of a single run, byte for byte");
+  merge->add_option("slices", merge_dirs, "every slice's output folder")->required();
+  merge->add_option("--out", merge_out, "output folder of the merged study")->capture_default_str();
+  merge->add_flag("--no-report", merge_no_report, "skip the figures and the HTML page");
+  merge->add_flag("--force", merge_force,
+                  "write into a non-empty folder that holds no previous study (its files are never removed)");
 
   std::string validate_path;
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
@@ -500,9 +568,15 @@ int main(int argc, char** argv) {
                  stdout);
       return 0;
     }
-    if (*study)
+    if (*study && *merge) return MergeStudy(merge_dirs, merge_out, !merge_no_report, merge_force);
+    if (*study) {
+      if (study_path.empty()) {
+        throw proxsim::InputError(
+            "study: no study file given; expected `proxsim study FILE` or `proxsim study merge DIR... --out DIR`");
+      }
       return Study(study_path, study_out, study_threads, study_resume, !study_no_report, study_force,
-                   study_allow_large);
+                   study_allow_large, study_shard);
+    }
   } catch (const proxsim::InputError& error) {
     return PrintInputError(error);
   } catch (const std::exception& error) {

@@ -1,5 +1,6 @@
 #include "study/outcome_runner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -140,6 +141,41 @@ OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const 
   return job;
 }
 
+JobSet OutcomeJobSet(const OutcomeStudyConfig& study) {
+  JobSet set;
+  set.jobs = study.jobs.size();
+  set.runs_per_job = study.runs_per_job();
+  set.fingerprint = Fingerprint(study);
+  std::vector<std::string> files{study.source};
+  for (const WorldFamily& f : study.families)
+    if (std::ranges::find(files, f.source) == files.end()) files.push_back(f.source);
+  set.digest = StudyDigest(set.fingerprint, files);
+  set.mode = "outcomes";
+  set.study_file = study.source;
+  set.check = [&study](const json& line) -> std::size_t {
+    if (!line.is_object()) Bad("expected an object {\"job\": ..., \"metrics\": {...}}");
+    const auto job = line.find("job");
+    if (job == line.end() || !job->is_number_unsigned() || job->get<std::uint64_t>() >= study.jobs.size())
+      Bad("job: expected a job index below " + std::to_string(study.jobs.size()));
+    const auto metrics = line.find("metrics");
+    if (metrics == line.end()) Bad("job " + job->dump() + ": no 'metrics'");
+    ParseOutcomeJob(*metrics, study.runs_per_job(), "job " + job->dump());
+    return job->get<std::size_t>();
+  };
+  set.header = std::to_string(study.sets.size()) + " sets x " + std::to_string(study.strategies.size()) +
+               " strategies x " + std::to_string(study.jobs.size()) + " worlds = " +
+               std::to_string(study.runs_per_job() * study.jobs.size()) +
+               " runs (closed loop; a job: one world, every set with every strategy)";
+  return set;
+}
+
+OutcomeResults OutcomeResultsFromJournal(const OutcomeStudyConfig& study, const std::map<std::size_t, json>& lines) {
+  OutcomeResults results(study.jobs.size());
+  for (const auto& [job, line] : lines)
+    results[job] = ParseOutcomeJob(line.at("metrics"), study.runs_per_job(), "job " + std::to_string(job));
+  return results;
+}
+
 OutcomeResults RunOutcomeStudy(const OutcomeStudyConfig& study, const StudyOptions& options, bool* is_writer) {
   StudyMpi mpi;  // a no-op unless started by mpirun with more than one rank
 
@@ -172,33 +208,13 @@ OutcomeResults RunOutcomeStudy(const OutcomeStudyConfig& study, const StudyOptio
     if (!problems.empty()) throw InputError(problems);
   }
 
-  JobSet set;
-  set.jobs = study.jobs.size();
-  set.runs_per_job = study.runs_per_job();
-  set.fingerprint = Fingerprint(study);
-  set.check = [&study](const json& line) -> std::size_t {
-    if (!line.is_object()) Bad("expected an object {\"job\": ..., \"metrics\": {...}}");
-    const auto job = line.find("job");
-    if (job == line.end() || !job->is_number_unsigned() || job->get<std::uint64_t>() >= study.jobs.size())
-      Bad("job: expected a job index below " + std::to_string(study.jobs.size()));
-    const auto metrics = line.find("metrics");
-    if (metrics == line.end()) Bad("job " + job->dump() + ": no 'metrics'");
-    ParseOutcomeJob(*metrics, study.runs_per_job(), "job " + job->dump());
-    return job->get<std::size_t>();
-  };
+  JobSet set = OutcomeJobSet(study);
   const int threads = WorkerThreads(options.threads, mpi);
   for (int t = 0; t < threads; ++t)
     set.workers.push_back([&study](std::size_t job) { return OutcomeJobJson(RunJob(study, job)); });
-  set.header = std::to_string(study.sets.size()) + " sets x " + std::to_string(study.strategies.size()) +
-               " strategies x " + std::to_string(study.jobs.size()) + " worlds = " +
-               std::to_string(study.runs_per_job() * study.jobs.size()) +
-               " runs (closed loop; a job: one world, every set with every strategy)";
   const std::map<std::size_t, json> lines = RunJobs(set, options, mpi, is_writer);
-  if (!*is_writer) return {};
-  OutcomeResults results(study.jobs.size());
-  for (const auto& [job, line] : lines)
-    results[job] = ParseOutcomeJob(line.at("metrics"), study.runs_per_job(), "job " + std::to_string(job));
-  return results;
+  if (!*is_writer || options.slice) return {};
+  return OutcomeResultsFromJournal(study, lines);
 }
 
 }  // namespace proxsim

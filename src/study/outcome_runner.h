@@ -7,6 +7,7 @@
 // text RunTextFromWorld makes — the same text a failed run's replay file holds.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -66,8 +67,18 @@ OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& sourc
 /// as from its text, without writing and parsing it.
 OutcomeRun RunEpisodeNode(const YAML::Node& scenario, const std::string& source);
 
+/// The study's jobs as RunJobs and a merge of slices take them: count,
+/// fingerprint, digest, the journal line's check (no workers).
+JobSet OutcomeJobSet(const OutcomeStudyConfig& study);
+
+/// Every job's episodes from its journal lines (one per job, each checked):
+/// what the answers are written from, whoever ran the jobs.
+OutcomeResults OutcomeResultsFromJournal(const OutcomeStudyConfig& study,
+                                         const std::map<std::size_t, nlohmann::json>& lines);
+
 /// Runs every job not in the journal; returns the results on rank 0 (and
-/// `is_writer` true there), nothing on the other ranks. Every family's first
+/// `is_writer` true there), nothing on the other ranks nor for a slice
+/// (options.slice: its journal is merged later). Every family's first
 /// world is built with every set before any run, so a bad link, a bad
 /// generate key or a set that does not fit the robot fails first (InputError).
 OutcomeResults RunOutcomeStudy(const OutcomeStudyConfig& study, const StudyOptions& options, bool* is_writer);

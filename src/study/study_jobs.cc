@@ -27,13 +27,16 @@ using nlohmann::json;
 
 class Journal {
  public:
-  Journal(const std::string& path, const std::string& fingerprint, bool resume, std::size_t jobs,
-          std::function<std::size_t(const json&)> check)
-      : path_(path), check_(std::move(check)), done_(jobs) {
-    if (resume) Load(fingerprint);
+  Journal(const std::string& path, const json& header, bool resume, std::size_t jobs,
+          const std::function<std::size_t(const json&)>& check, const std::optional<StudySlice>& slice)
+      : path_(path), done_(jobs) {
+    if (resume) {
+      lines_ = ReadJournal(path_, header, check, slice);
+      for (const auto& [job, line] : lines_) done_[job] = true;
+    }
     // rewrite what was read (a line cut by a kill is dropped), then append;
     // neither step follows a link planted under the journal's name
-    std::string text = json{{"study", fingerprint}}.dump() + "\n";
+    std::string text = header.dump() + "\n";
     for (const auto& [job, line] : lines_) text += line + "\n";
     WriteFileAtomically(path_, text);
     fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_NOFOLLOW | O_CLOEXEC);
@@ -60,36 +63,7 @@ class Journal {
   }
 
  private:
-  void Load(const std::string& fingerprint) {
-    std::ifstream in(path_);
-    if (!in) return;  // nothing to resume: start afresh
-    std::string line;
-    bool first = true;
-    for (int line_no = 1; std::getline(in, line); ++line_no) {
-      const json entry = json::parse(line, nullptr, false);
-      if (entry.is_discarded()) continue;  // the line a kill cut short
-      if (first) {
-        first = false;
-        if (!entry.contains("study") || entry["study"] != fingerprint) {
-          throw InputError(path_ + ": this journal belongs to another study (its candidates, scenes, seeds or "
-                                   "hazards differ); remove it or give another --out");
-        }
-        continue;
-      }
-      // every line checked against this study's shape before it is used
-      try {
-        const std::size_t job = check_(entry);
-        lines_[job] = line;
-        done_[job] = true;
-      } catch (const InputError& error) {
-        throw InputError(path_ + ":" + std::to_string(line_no) + ": " + error.problems().front() +
-                         "; remove the journal or give another --out");
-      }
-    }
-  }
-
   std::string path_;
-  std::function<std::size_t(const json&)> check_;
   std::vector<bool> done_;
   std::map<std::size_t, std::string> lines_;
   std::mutex mutex_;
@@ -134,6 +108,46 @@ int WorkerThreads(int requested, const StudyMpi& mpi) {
                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+json JournalHeader(const std::string& fingerprint, const std::optional<StudySlice>& slice) {
+  json header = {{"study", fingerprint}};
+  if (slice) header["slice"] = slice->Name();
+  return header;
+}
+
+std::map<std::size_t, std::string> ReadJournal(const std::string& path, const json& header,
+                                               const std::function<std::size_t(const json&)>& check,
+                                               const std::optional<StudySlice>& slice) {
+  std::map<std::size_t, std::string> lines;
+  std::ifstream in(path);
+  if (!in) return lines;  // nothing to resume: start afresh
+  std::string line;
+  bool first = true;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    const json entry = json::parse(line, nullptr, false);
+    if (entry.is_discarded()) continue;  // the line a kill cut short
+    if (first) {
+      first = false;
+      if (entry != header) {
+        throw InputError(path + ": this journal belongs to another study or slice (its candidates, sets, scenes, "
+                                "worlds, seeds or hazards differ, or its --shard): expected the header " +
+                         header.dump() + ", found " + entry.dump() + "; remove it or give another --out");
+      }
+      continue;
+    }
+    // every line checked against this study's shape before it is used
+    try {
+      const std::size_t job = check(entry);
+      if (slice && !slice->Holds(job))
+        throw InputError("job " + std::to_string(job) + " is not one of slice " + slice->Name() + "'s jobs");
+      lines[job] = line;
+    } catch (const InputError& error) {
+      throw InputError(path + ":" + std::to_string(line_no) + ": " + error.problems().front() +
+                       "; remove the journal or give another --out");
+    }
+  }
+  return lines;
+}
+
 std::string StudyFingerprint(const std::string& shape, const std::string& identity) {
   std::uint64_t hash = 1469598103934665603ull;
   for (const char c : identity) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
@@ -159,11 +173,30 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
   auto folder = std::make_shared<OutputFolder>(
       options.out_dir, ClaimOptions{.command = "study", .force = options.force, .ours = "journal.jsonl"});
   if (options.folder != nullptr) *options.folder = folder;
-  Journal journal((std::filesystem::path(folder->path()) / "journal.jsonl").string(), set.fingerprint,
-                  options.resume, set.jobs, set.check);
-  Progress progress(options.progress, set.jobs, journal.done_count(), set.runs_per_job);
+  const std::optional<StudySlice>& slice = options.slice;
+  Journal journal((std::filesystem::path(folder->path()) / "journal.jsonl").string(),
+                  JournalHeader(set.fingerprint, slice), options.resume, set.jobs, set.check, slice);
+  if (!slice) {
+    // a whole study where a slice ran before: its record would call this folder a slice
+    std::error_code ignored;
+    std::filesystem::remove(std::filesystem::path(folder->path()) / kSliceRecordName, ignored);
+  } else {
+    // the slice says which study and which slice it is, once its journal is this slice's: merge reads it
+    const std::string study_file = std::filesystem::absolute(set.study_file).lexically_normal().string();
+    WriteSliceRecord(folder->path(), {.slice = *slice,
+                                      .study_digest = set.digest,
+                                      .study_file = study_file,
+                                      .study_file_given = set.study_file,
+                                      .mode = set.mode,
+                                      .jobs = set.jobs});
+  }
+  const std::size_t my_jobs = slice ? slice->JobsOf(set.jobs) : set.jobs;
+  Progress progress(options.progress, my_jobs, journal.done_count(), set.runs_per_job);
   if (options.progress) {
-    std::fprintf(stderr, "proxsim study: %s, %zu thread%s x %d rank%s%s\n", set.header.c_str(), set.workers.size(),
+    const std::string of_slice =
+        slice ? ", slice " + slice->Name() + " (" + std::to_string(my_jobs) + " of the jobs)" : std::string();
+    std::fprintf(stderr, "proxsim study: %s%s, %zu thread%s x %d rank%s%s\n", set.header.c_str(), of_slice.c_str(),
+                 set.workers.size(),
                  set.workers.size() == 1 ? "" : "s", mpi.size(), mpi.size() == 1 ? "" : "s",
                  journal.done_count() > 0
                      ? (", " + std::to_string(journal.done_count()) + " jobs already done (resumed)").c_str()
@@ -173,7 +206,7 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
   // the jobs still to do, handed out one at a time
   std::vector<std::size_t> todo;
   for (std::size_t job = 0; job < set.jobs; ++job)
-    if (!journal.done(job)) todo.push_back(job);
+    if (!journal.done(job) && (!slice || slice->Holds(job))) todo.push_back(job);
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> finished{journal.done_count()};
   const auto take = [&]() -> long {

@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 
 #include "core/output_folder.h"
 #include "study/study_mpi.h"
+#include "study/study_shard.h"
 
 namespace proxsim {
 
@@ -34,6 +36,9 @@ struct StudyOptions {
   /// Receives the claimed, locked output folder (rank 0), to hold while the
   /// answers and figures are written; the lock ends with the last holder.
   std::shared_ptr<OutputFolder>* folder = nullptr;
+  /// Run only this slice of the jobs (--shard), into a folder of the slice's
+  /// own: its journal holds the slice's jobs only, OUT/slice.json says which.
+  std::optional<StudySlice> slice = std::nullopt;
 };
 
 /// One study mode's jobs, for RunJobs.
@@ -41,6 +46,9 @@ struct JobSet {
   std::size_t jobs = 0;       ///< job indices 0 .. jobs-1
   std::size_t runs_per_job = 1;  ///< for the progress line's run count
   std::string fingerprint;    ///< what makes a journal this study's (StudyFingerprint)
+  std::string digest;         ///< the study's content (StudyDigest): what makes slices one study's
+  std::string mode;           ///< "detection" or "outcomes", for a slice's record
+  std::string study_file;     ///< the study file as given, for a slice's record (merge reads it again)
   /// Checks a journal line or MPI message {"job": J, "metrics": ...} against
   /// the study's shape and returns J; throws InputError saying what does not fit.
   std::function<std::size_t(const nlohmann::json& line)> check;
@@ -58,10 +66,22 @@ int WorkerThreads(int requested, const StudyMpi& mpi);
 /// (the same in every build, unlike std::hash), after a readable `shape`.
 std::string StudyFingerprint(const std::string& shape, const std::string& identity);
 
+/// A journal's first line: the study's fingerprint, and the slice for a slice's journal.
+nlohmann::json JournalHeader(const std::string& fingerprint, const std::optional<StudySlice>& slice);
+
+/// Reads a journal's finished jobs, every line checked with `check` (a line
+/// cut short by a kill is dropped) and, for a slice, each job checked to be
+/// the slice's; a missing file has none. Throws InputError naming the file
+/// (and line) when its header is not `header` or a line does not fit.
+std::map<std::size_t, std::string> ReadJournal(const std::string& path, const nlohmann::json& header,
+                                               const std::function<std::size_t(const nlohmann::json&)>& check,
+                                               const std::optional<StudySlice>& slice);
+
 /// Runs every job not already in the journal (options.resume) on the workers
 /// and the other ranks; returns every job's journal line (one per job) on
 /// rank 0 with `is_writer` true, nothing on the other ranks, which run jobs
-/// for rank 0 until none is left.
+/// for rank 0 until none is left. With options.slice, only that slice's jobs
+/// (and lines), and OUT/slice.json written.
 std::map<std::size_t, nlohmann::json> RunJobs(const JobSet& set, const StudyOptions& options, StudyMpi& mpi,
                                               bool* is_writer);
 

@@ -1,5 +1,6 @@
 #include "study/study_runner.h"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 
@@ -75,9 +76,38 @@ class Worker {
 
 }  // namespace
 
+JobSet StudyJobSet(const StudyConfig& study) {
+  const std::size_t jobs = study.variants.size() * study.seeds.size();
+  JobSet set;
+  set.jobs = jobs;
+  set.runs_per_job = study.candidates.size();
+  set.fingerprint = Fingerprint(study);
+  // the study file and the scenario files its variants came from: an edit of
+  // the base (its timing, its robot) changes the answers, not the fingerprint
+  std::vector<std::string> files{study.source};
+  for (const SceneVariant& v : study.variants)
+    if (std::ranges::find(files, v.scenario.source) == files.end()) files.push_back(v.scenario.source);
+  set.digest = StudyDigest(set.fingerprint, files);
+  set.mode = "detection";
+  set.study_file = study.source;
+  set.check = [shape = ShapeOf(study)](const json& line) { return ParseJournalLine(line, shape).job; };
+  set.header = std::to_string(study.candidates.size()) + " candidates x " + std::to_string(study.variants.size()) +
+               " scenes x " + std::to_string(study.seeds.size()) + " seeds = " +
+               std::to_string(jobs * study.candidates.size()) + " runs in " + std::to_string(jobs) +
+               " jobs (a job: one scene and seed, every candidate)";
+  return set;
+}
+
+StudyResults StudyResultsFromJournal(const StudyConfig& study, const std::map<std::size_t, json>& lines) {
+  StudyResults results(study.variants.size(), std::vector<std::vector<RunMetrics>>(study.seeds.size()));
+  for (const auto& [job, line] : lines) {
+    results[job / study.seeds.size()][job % study.seeds.size()] = ParseJournalLine(line, ShapeOf(study)).metrics;
+  }
+  return results;
+}
+
 StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, bool* is_writer) {
   StudyMpi mpi;  // a no-op unless started by mpirun with more than one rank
-  const std::size_t jobs = study.variants.size() * study.seeds.size();
 
   // every variant's world, built before any run: a candidate on a link the
   // robot lacks fails here, with every problem listed
@@ -106,26 +136,12 @@ StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, boo
     if (!problems.empty()) throw InputError(problems);
   }
 
-  JobSet set;
-  set.jobs = jobs;
-  set.runs_per_job = study.candidates.size();
-  set.fingerprint = Fingerprint(study);
-  set.check = [shape = ShapeOf(study)](const json& line) { return ParseJournalLine(line, shape).job; };
+  JobSet set = StudyJobSet(study);
   for (auto& worker : workers)
     set.workers.push_back([w = worker.get()](std::size_t job) { return JournalMetricsJson(w->Run(job)); });
-  set.header = std::to_string(study.candidates.size()) + " candidates x " + std::to_string(study.variants.size()) +
-               " scenes x " + std::to_string(study.seeds.size()) + " seeds = " +
-               std::to_string(jobs * study.candidates.size()) + " runs in " + std::to_string(jobs) +
-               " jobs (a job: one scene and seed, every candidate)";
   const std::map<std::size_t, json> lines = RunJobs(set, options, mpi, is_writer);
-  if (!*is_writer) return {};
-
-  // every job's metrics, from the journal: the same whatever ran them
-  StudyResults results(study.variants.size(), std::vector<std::vector<RunMetrics>>(study.seeds.size()));
-  for (const auto& [job, line] : lines) {
-    results[job / study.seeds.size()][job % study.seeds.size()] = ParseJournalLine(line, ShapeOf(study)).metrics;
-  }
-  return results;
+  if (!*is_writer || options.slice) return {};
+  return StudyResultsFromJournal(study, lines);
 }
 
 }  // namespace proxsim

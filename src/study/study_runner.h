@@ -14,9 +14,12 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "study/run_metrics.h"
 #include "study/study_config.h"
@@ -24,13 +27,21 @@
 
 namespace proxsim {
 
-
 /// The metrics of every job: [variant][seed][candidate].
 using StudyResults = std::vector<std::vector<std::vector<RunMetrics>>>;
 
+/// The study's jobs as RunJobs and a merge of slices take them: count,
+/// fingerprint, digest, the journal line's check (no workers).
+JobSet StudyJobSet(const StudyConfig& study);
+
+/// Every job's metrics from its journal lines (one per job, each checked):
+/// what the answers are written from, whoever ran the jobs.
+StudyResults StudyResultsFromJournal(const StudyConfig& study, const std::map<std::size_t, nlohmann::json>& lines);
+
 /// Runs every job not in the journal; returns the results on rank 0 (and
-/// `is_writer` true there), empty results on the other ranks. Builds every
-/// variant's world before the first run, so a bad link fails first (InputError).
+/// `is_writer` true there), empty results on the other ranks and for a slice
+/// (options.slice: its journal is merged later). Builds every variant's world
+/// before the first run, so a bad link fails first (InputError).
 StudyResults RunStudy(const StudyConfig& study, const StudyOptions& options, bool* is_writer);
 
 }  // namespace proxsim
