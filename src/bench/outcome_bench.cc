@@ -32,13 +32,14 @@ constexpr const char* kBase =
     "robot:\n  model: builtin:biped\n  gait: {stride_m: 0.6, period_s: 1.2}\n";
 
 
-std::string WriteStudy(const fs::path& dir, const std::string& name, int rooms) {
+// the study; `baselines` false: without the blind and oracle baselines
+std::string WriteStudy(const fs::path& dir, const std::string& name, int rooms, bool baselines = true) {
   fs::create_directories(dir);
   std::ofstream(dir / "walker.yaml") << kBase;
   const fs::path path = dir / name;
   std::ofstream(path) << "proxsim_study: 1\nmode: outcomes\nbase: walker.yaml\n"
                       << "sets: [{name: eight_lasers, sensors: " << EightShinLasers() << "}]\n"
-                      << "strategies: [{name: stop}]\n"
+                      << "strategies: [{name: stop}]\n" << (baselines ? "" : "baselines: []\n")
                       << "worlds: {generate: {kind: room, difficulty: 0.5}, seeds: {from: 1, to: " << rooms << "}}\n";
   return path.string();
 }
@@ -92,12 +93,28 @@ nlohmann::json OutcomesSection(bool quick, const std::string& tmp) {
     section["outcome_cpu_s"] = cpu_s;
     section["outcome_runs_per_cpu_s"] = runs / cpu_s;
     section["load_average_1min"] = LoadAverage();
-    Progress("outcomes: %.0f closed-loop runs (8 lasers, stop rule, 10 x 10 m rooms at difficulty 0.5, episodes of "
+    Progress("outcomes: %.0f closed-loop runs (8 lasers and the blind and oracle baselines, stop rule, 10 x 10 m rooms "
+             "at difficulty 0.5, episodes of "
              "%.1f s on average) on one core in %.2f s: %.1f runs/s/core "
              "(target 200); %.1f runs per CPU second",
              runs, simulated_s / runs, wall_s, runs / wall_s, runs / cpu_s);
   }
 
+  // what the baselines cost: the same rooms with the set alone, per episode
+  // (the oracle's 279 rays and perfect map against the set's 8 lasers)
+  {
+    const OutcomeStudyConfig alone = LoadOutcomeStudyFile(WriteStudy(dir, "alone.yaml", rooms, false));
+    bool writer = false;
+    const double cpu_start_s = ProcessCpu_s();
+    const OutcomeResults results =
+        RunOutcomeStudy(alone, {.out_dir = (dir / "alone").string(), .threads = 1, .progress = false}, &writer);
+    const double cpu_s = ProcessCpu_s() - cpu_start_s;
+    double runs = 0;
+    for (const OutcomeJob& job : results) runs += static_cast<double>(job.runs.size());
+    section["outcome_without_baselines_runs_per_cpu_s"] = runs / cpu_s;
+    Progress("outcomes: the set alone (baselines: []): %.1f runs per CPU second; with blind and oracle %.1f",
+             runs / cpu_s, section["outcome_runs_per_cpu_s"].get<double>());
+  }
   // 2 MPI ranks against 1, one worker thread per rank
   if (Capture("command -v mpirun").empty()) {
     section["outcome_mpi_unavailable"] = "mpirun not found (scripts/install-deps.sh installs openmpi-bin)";
@@ -121,11 +138,12 @@ nlohmann::json OutcomesSection(bool quick, const std::string& tmp) {
 std::string OutcomesReport(const nlohmann::json& s) {
   char text[1024];
   std::snprintf(text, sizeof text,
-                "\noutcomes: %.1f closed-loop runs/s per core on generated 10 x 10 m rooms (8 lasers, the stop rule, "
-                "%.0f runs in %.2f s, episodes of %.1f s on average; target 200); %.1f runs per CPU second\n",
+                "\noutcomes: %.1f closed-loop runs/s per core on generated 10 x 10 m rooms (8 lasers with the blind and "
+                "oracle baselines, the stop rule, %.0f runs in %.2f s, episodes of %.1f s on average; target 200); "
+                "%.1f runs per CPU second (the set alone: %.1f)\n",
                 s.at("outcome_runs_per_s_per_core").get<double>(), s.at("outcome_runs").get<double>(),
                 s.at("outcome_wall_s").get<double>(), s.at("outcome_mean_episode_s").get<double>(),
-                s.value("outcome_runs_per_cpu_s", 0.0));
+                s.value("outcome_runs_per_cpu_s", 0.0), s.value("outcome_without_baselines_runs_per_cpu_s", 0.0));
   std::string report = text;
   if (s.contains("outcome_mpi_unavailable")) {
     report += "outcomes: MPI figures unavailable (" + s.at("outcome_mpi_unavailable").get<std::string>() + ")\n";
