@@ -178,6 +178,47 @@ TEST_F(OutcomeStudyCliTest, AFailedRunsReplayCommandReproducesItsOutcome) {
   EXPECT_EQ(std::string(t), failure->at("outcome_t_s"));
 }
 
+// A team's own robot, given by a path relative to its base scenario, in a
+// study written to another folder: every failure's replay command, run from
+// the study's folder as printed, runs and ends as the study said.
+TEST_F(OutcomeStudyCliTest, EveryReplayOfAUserRobotGivenByARelativePathReproducesItsOutcome) {
+  fs::create_directories(dir_ / "team" / "robots");
+  fs::create_directories(dir_ / "team" / "scenarios");
+  fs::create_directories(dir_ / "team" / "studies");
+  fs::copy_file(fs::path(PROXSIM_SOURCE_DIR) / "data" / "robots" / "biped.urdf", dir_ / "team" / "robots" / "our_biped.urdf");
+  std::ofstream(dir_ / "team" / "scenarios" / "base.yaml")
+      << "proxsim: 1\nduration_s: 20\nrate_hz: 50\nscene: {builtin: empty}\n"
+      << "robot:\n  model: ../robots/our_biped.urdf\n  gait: {stride_m: 0.6, period_s: 1.2}\n"
+      << "  path: {waypoints_m: [[0, 0], [4, 0]]}\nsensors: []\n";
+  std::ofstream(dir_ / "team" / "studies" / "ours.yaml")
+      << "proxsim_study: 1\nmode: outcomes\nbase: ../scenarios/base.yaml\n"
+      << "sets: [{name: one_laser, sensors: [{name: l, type: laser, link: left_tibia, "
+      << "pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 8, 0]}}]}]\n"
+      << "strategies: [{name: stop, perception: map}]\n"
+      << "worlds: {generate: {kind: room, difficulty: 0.9, size_m: [7, 5]}, seeds: [1, 2, 3]}\n";
+  const fs::path out = dir_ / "elsewhere" / "study-out";
+  const auto result = RunProxsim("study " + (dir_ / "team" / "studies" / "ours.yaml").string() +
+                                 " --no-report --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  int replayed = 0;
+  for (const auto& failure : ReadCsv(out / "failures.csv").rows) {
+    if (failure.at("command").empty()) continue;  // the blind baseline's, listed only
+    std::string command = failure.at("command");
+    ASSERT_EQ(command.rfind("proxsim run ", 0), 0u) << command;
+    command.replace(0, 7, PROXSIM_BINARY);
+    const auto replay = RunCommand("cd " + out.string() + " && " + command + " --no-report");
+    ASSERT_EQ(replay.exit_code, 0) << failure.at("world_file") << ": " << replay.output;
+    const std::string replay_dir = failure.at("viewer").substr(0, failure.at("viewer").find("/report/"));
+    const auto summary = nlohmann::json::parse(ReadFile(out / replay_dir / "summary.json"));
+    EXPECT_EQ(summary["robot"]["outcome"], failure.at("outcome")) << failure.at("world_file");
+    char t[32];
+    std::snprintf(t, sizeof t, "%.9g", summary["robot"]["outcome_t_s"].get<double>());
+    EXPECT_EQ(std::string(t), failure.at("outcome_t_s")) << failure.at("world_file");
+    ++replayed;
+  }
+  EXPECT_GT(replayed, 0) << "the oracle or the laser failed nowhere: nothing replayed\n" << ReadFile(out / "failures.csv");
+}
+
 // The stairs-hole example as a world: its legs cannot cross the 0.6 m hole, so
 // the reference walk stands refused; the stop rule stopping before it is a
 // success, walking on into it (no strategy) a fall.
