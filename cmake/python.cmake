@@ -68,5 +68,7 @@ if(PROXSIM_BUILD_TESTS)
   endif()
   add_test(NAME python_package
            COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_SOURCE_DIR}/tests/python)
-  set_tests_properties(python_package PROPERTIES ENVIRONMENT "${python_test_environment}" TIMEOUT 600)
+  # label rays too: its walks read Embree's hits (the release-isa-sse42 preset runs it again)
+  set_tests_properties(python_package PROPERTIES ENVIRONMENT "${python_test_environment}" TIMEOUT 600
+                       LABELS "python;rays")
 endif()
