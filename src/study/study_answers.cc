@@ -16,7 +16,7 @@ namespace proxsim {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kAnswerNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Student's t at 97.5 % (Boost.Math; the hand-kept table this replaced had
 // 2.182 for 3 degrees of freedom, where it is 3.182, and 1.96 beyond 30)
@@ -57,7 +57,7 @@ SeedFigures PerSeed(const StudyConfig& study, const StudyResults& results, std::
 }  // namespace
 
 MeanCi MeanWithCi95(const std::vector<double>& values) {
-  if (values.empty()) return {kNaN, kNaN};
+  if (values.empty()) return {kAnswerNaN, kAnswerNaN};
   const double n = static_cast<double>(values.size());
   const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
   // one value, or all equal: no spread (not the rounding noise of a sum)
