@@ -8,5 +8,5 @@ if(PROXSIM_BUILD_TESTS)
            COMMAND ${Python_EXECUTABLE} -m pytest -q -s -p no:cacheprovider ${CMAKE_SOURCE_DIR}/tests/slurm)
   set_tests_properties(slurm_job_array PROPERTIES
     ENVIRONMENT "PROXSIM_BINARY=$<TARGET_FILE:proxsim>;PROXSIM_SOURCE_DIR=${CMAKE_SOURCE_DIR}"
-    LABELS slurm TIMEOUT 120)
+    LABELS "slurm;python" TIMEOUT 120)
 endif()

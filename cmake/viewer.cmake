@@ -42,6 +42,7 @@ if(PROXSIM_BUILD_TESTS)
   set(report_python /usr/bin/python3)   # Debian's, which has python3-matplotlib
   add_test(NAME report_unit
            COMMAND ${report_python} -m unittest discover -s ${CMAKE_SOURCE_DIR}/tests/report -v)
+  set_tests_properties(report_unit PROPERTIES LABELS python)
 
   # The browser test opens the report of real runs: the default paper run
   # (walking robot), the world-mounted sensor demo (no robot), the
@@ -70,9 +71,11 @@ if(PROXSIM_BUILD_TESTS)
     add_test(NAME viewer_e2e_${kind}
              COMMAND ${PROXSIM_NODE} ${CMAKE_SOURCE_DIR}/tests/viewer_e2e/viewer_e2e.mjs ${run_dir}
                      --viewer-dir ${viewer_dir} ${e2e_options_${kind}})
-    set_tests_properties(viewer_e2e_${kind}_run PROPERTIES FIXTURES_SETUP e2e_${kind}_run TIMEOUT 180)
+    # label browser, the run too: it exists for the browser test only
+    set_tests_properties(viewer_e2e_${kind}_run PROPERTIES FIXTURES_SETUP e2e_${kind}_run TIMEOUT 180
+      LABELS browser)
     set_tests_properties(viewer_e2e_${kind} PROPERTIES
       FIXTURES_REQUIRED e2e_${kind}_run SKIP_RETURN_CODE 77 TIMEOUT 240
-      RESOURCE_LOCK chromium)
+      RESOURCE_LOCK chromium LABELS browser)
   endforeach()
 endif()

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -33,14 +34,13 @@ using testing::ReadCsv;
 using testing::RowsOf;
 using testing::RunProxsim;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kPoleFace_m = 0.485;  // a 3 cm pole centred 0.5 m ahead
 constexpr double kWall_m = 1.5;       // the wall's face
 
 // the 37-ray, 30° cone's rings of 6, 12 and 18 rays lie at 5°, 10° and 15°
 // (beam.h); the axis ray stands for the cap out to half the ring step (2.5°)
 // of the cone's 15° cap, a ray of the 10° ring for 1/12 of the band 7.5°–12.5°
-double Cos(double deg) { return std::cos(deg * kPi / 180); }
+double Cos(double deg) { return std::cos(deg * std::numbers::pi / 180); }
 double PoleSignal() { return ((1 - Cos(2.5)) + 2 * (Cos(7.5) - Cos(12.5)) / 12) / (1 - Cos(15)); }
 
 std::string PoleBeforeWall(const std::string& echoes, double wall_reflectivity) {
@@ -71,7 +71,7 @@ TEST(EchoesRun, AllHearsThePoleThenTheWallInOrder) {
   for (long k = 0; k < d.shape[0]; ++k) {
     EXPECT_EQ(count.values[k], 2.0) << k;
     EXPECT_NEAR(d.values[4 * k + 0], kPoleFace_m, 1e-6);
-    EXPECT_NEAR(d.values[4 * k + 1], kWall_m / std::cos(5 * kPi / 180), 1e-6);
+    EXPECT_NEAR(d.values[4 * k + 1], kWall_m / std::cos(5 * std::numbers::pi / 180), 1e-6);
     EXPECT_TRUE(std::isnan(d.values[4 * k + 2]) && std::isnan(d.values[4 * k + 3]));
     EXPECT_NEAR(signal.values[4 * k + 0], w0, 1e-6);
     EXPECT_NEAR(signal.values[4 * k + 1], 1 - w0, 1e-6);
@@ -87,7 +87,7 @@ TEST(EchoesRun, AllHearsThePoleThenTheWallInOrder) {
 TEST(EchoesRun, StrongestPicksTheWallWhenItReturnsMoreAndThePoleOtherwise) {
   // the wall's 34 rays return (1 − w0)·1 against the pole's w0
   for (const double d_m : ReadDistances(RunScenarioYaml("echoes_strongest", PoleBeforeWall("strongest", 1.0)))) {
-    EXPECT_NEAR(d_m, kWall_m / std::cos(5 * kPi / 180), 1e-6);
+    EXPECT_NEAR(d_m, kWall_m / std::cos(5 * std::numbers::pi / 180), 1e-6);
   }
   // a wall that returns 2 % of the sound: (1 − w0)·0.02 < w0
   ASSERT_LT((1 - PoleSignal()) * 0.02, PoleSignal());

@@ -56,7 +56,7 @@ ExampleRun RunFile(const std::string& path, const std::string& name) {
   return run;
 }
 
-std::string Example(const std::string& name) { return std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/" + name + ".yaml"; }
+std::string ExampleScenario(const std::string& name) { return std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/" + name + ".yaml"; }
 
 // A scenario file: `text` written under the test's folder.
 std::string WriteScenario(const std::string& name, const std::string& text) {
@@ -69,7 +69,7 @@ std::string WriteScenario(const std::string& name, const std::string& text) {
 
 // One example's text with `from` replaced by `to` (each must occur).
 std::string Edited(const std::string& example, const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::string text = ReadFile(Example(example));
+  std::string text = ReadFile(ExampleScenario(example));
   for (const auto& [from, to] : edits) {
     const auto at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
@@ -96,7 +96,7 @@ std::vector<Vec3> Footholds(const Csv& poses, const std::string& foot) {
 }
 
 TEST(FootholdsMapExamples, IdealSensorsThatSeeEveryTreadWalkTheStairsAsOnTheTruth) {
-  const ExampleRun map = RunFile(Example("stairs_footholds_map"), "footholds_map");
+  const ExampleRun map = RunFile(ExampleScenario("stairs_footholds_map"), "footholds_map");
   const ExampleRun truth = RunFile(WriteScenario("footholds_truth", Edited("stairs_footholds_map", {{"footholds: map}", "footholds: truth}"}})),
                             "footholds_truth");
   ASSERT_EQ(map.exit_code, 0) << map.output;
@@ -121,7 +121,7 @@ TEST(FootholdsMapExamples, IdealSensorsThatSeeEveryTreadWalkTheStairsAsOnTheTrut
 }
 
 TEST(FootholdsMapExamples, WithNothingFeedingTheMapItWalksIntoTheFirstRiser) {
-  const ExampleRun run = RunFile(Example("stairs_footholds_blind"), "footholds_blind");
+  const ExampleRun run = RunFile(ExampleScenario("stairs_footholds_blind"), "footholds_blind");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.robot["outcome"], "collided") << run.robot["outcome_detail"];
   ASSERT_FALSE(run.robot["collisions"].empty());
@@ -133,7 +133,7 @@ TEST(FootholdsMapExamples, WithNothingFeedingTheMapItWalksIntoTheFirstRiser) {
 TEST(FootholdsMapExamples, ThePapersSingleTibiaLaserWalksIntoTheFirstRiser) {
   // measured (docs/terrain.md): the laser on the left tibia maps a strip along
   // the left foot's line only; the right foot steps level into the riser
-  const ExampleRun run = RunFile(Example("stairs_footholds_tibia"), "footholds_tibia");
+  const ExampleRun run = RunFile(ExampleScenario("stairs_footholds_tibia"), "footholds_tibia");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(run.robot["outcome"], "collided") << run.robot["outcome_detail"];
   ASSERT_FALSE(run.robot["collisions"].empty());

@@ -89,7 +89,7 @@ Course BuiltinCourse() {
   return c;
 }
 
-struct Walk {
+struct TerrainWalk {
   double worst_sole_below_m = 0;      // deepest any sole point went below the surface
   double max_pivot_slip_m = 0;        // stance pivot against its latched point
   double max_trailing_toe_slip_m = 0; // the other toe through double support
@@ -104,7 +104,7 @@ struct Walk {
   std::vector<double> heel_strike_x;  // the stance heels, in order
 };
 
-Walk WalkCourse(const Course& course, double stride_m, double end_x_m, double limit_s) {
+TerrainWalk WalkCourse(const Course& course, double stride_m, double end_x_m, double limit_s) {
   const Scene scene = course.MakeScene();
   RayCaster caster;
   std::vector<BodyShape> shapes;
@@ -123,7 +123,7 @@ Walk WalkCourse(const Course& course, double stride_m, double end_x_m, double li
   const BipedLegs& legs = walker.legs();
   const std::vector<Vec2> edges = course.Edges();
 
-  Walk w;
+  TerrainWalk w;
   double last_z = NAN;
   RobotState s;
   for (int i = 0; i <= limit_s * kRate_hz; ++i) {
@@ -182,7 +182,7 @@ Walk WalkCourse(const Course& course, double stride_m, double end_x_m, double li
   return w;
 }
 
-void Print(const char* name, const Walk& w) {
+void Print(const char* name, const TerrainWalk& w) {
   std::printf("[ measured ] %s: deepest sole below the surface %.3f mm, pivot slip %.3g mm, trailing toe slip %.3g mm, "
               "least edge clearance %.1f mm (%d swing samples over an edge), max pelvis dz %.2f mm / 5 ms, "
               "ended at x = %.3f m (front toe %.3f m), %zu steps\n",
@@ -192,7 +192,7 @@ void Print(const char* name, const Walk& w) {
   for (const LocomotionEvent& e : w.events) std::printf("[ measured ]   %s: %s\n", e.event.c_str(), e.detail.c_str());
 }
 
-void ExpectTheQualityBar(const Walk& w) {
+void ExpectTheQualityBar(const TerrainWalk& w) {
   EXPECT_LT(w.worst_sole_below_m, 1e-3);
   EXPECT_LT(w.max_pivot_slip_m, 1e-3);
   EXPECT_LT(w.max_trailing_toe_slip_m, 1e-3);
@@ -202,7 +202,7 @@ void ExpectTheQualityBar(const Walk& w) {
 
 TEST(GaitTerrain, WalksTheBuiltinCourseAndStopsBeforeTheWideHole) {
   const Course course = BuiltinCourse();
-  const Walk w = WalkCourse(course, 0.6, 8.5, 30);
+  const TerrainWalk w = WalkCourse(course, 0.6, 8.5, 30);
   Print("built-in stairs course, stride 0.6 m", w);
   ExpectTheQualityBar(w);
   EXPECT_GT(w.edges_passed, 0);
@@ -219,7 +219,7 @@ TEST(GaitTerrain, WalksTheBuiltinCourseAndStopsBeforeTheWideHole) {
 TEST(GaitTerrain, OtherRisesAndTreads) {
   {
     const Course course = Stairs(3, 0.10, 0.35, 0.9);
-    const Walk w = WalkCourse(course, 0.6, 6.0, 30);
+    const TerrainWalk w = WalkCourse(course, 0.6, 6.0, 30);
     Print("rise 0.10 m, tread 0.35 m", w);
     ExpectTheQualityBar(w);
     EXPECT_GT(w.max_pelvis_z_m, 3 * 0.10 + 0.9);
@@ -232,7 +232,7 @@ TEST(GaitTerrain, OtherRisesAndTreads) {
     // toe, heel high, and its front face would sweep through the riser ahead:
     // the legs stand before that step and say why (docs/terrain.md)
     const Course course = Stairs(3, 0.18, 0.29, 0.9);
-    const Walk w = WalkCourse(course, 0.6, 6.0, 30);
+    const TerrainWalk w = WalkCourse(course, 0.6, 6.0, 30);
     Print("rise 0.18 m, tread 0.29 m", w);
     ExpectTheQualityBar(w);
     EXPECT_GT(w.max_pelvis_z_m, 0.18 + 0.9);  // up the first riser

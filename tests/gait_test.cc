@@ -13,7 +13,7 @@
 namespace proxsim {
 namespace {
 
-constexpr double kRate_hz = 200.0;
+constexpr double kGaitRate_hz = 200.0;
 
 // The 4 corners of a foot's sole in the world.
 std::vector<Vec3> SoleCorners(const BipedLegs& legs, Side side, const std::vector<Pose>& X_WL) {
@@ -80,13 +80,13 @@ WalkFigures WalkStraight(double stride_m, double period_s, int cycles) {
   GaitWalker walker(RobotModel::Builtin("biped"), StraightConfig(stride_m, period_s));
   const BipedLegs legs(walker.model());
   WalkFigures f;
-  const int per_cycle = static_cast<int>(std::lround(period_s * kRate_hz));
+  const int per_cycle = static_cast<int>(std::lround(period_s * kGaitRate_hz));
   std::vector<std::vector<double>> q_hist;
   std::vector<double> dist_hist;
   double last_z = NAN;
   Side last_stance = Side::kRight;
   for (int i = 0; i <= cycles * per_cycle; ++i) {
-    const RobotState s = walker.Advance(i / kRate_hz);
+    const RobotState s = walker.Advance(i / kGaitRate_hz);
     const std::vector<Pose> X_WL = walker.model().ForwardKinematics(s.X_WP, s.q);
     const StepPlan& plan = walker.current_step();
     const double p = walker.step_phase();
@@ -143,7 +143,7 @@ TEST(GaitWalker, FollowsWaypointsWithATurnAndStopsAtTheLast) {
   RobotState s;
   double lowest = 1e9;
   for (int i = 0; i <= 60 * 200; ++i) {
-    s = walker.Advance(i / kRate_hz);
+    s = walker.Advance(i / kGaitRate_hz);
     const auto X_WL = walker.model().ForwardKinematics(s.X_WP, s.q);
     lowest = std::min({lowest, LowestSoleZ(legs, Side::kLeft, X_WL), LowestSoleZ(legs, Side::kRight, X_WL)});
     if (s.stopped) break;
@@ -205,10 +205,10 @@ TEST(GaitWalker, RequestStopStandsStillInDoubleSupportThenResumes) {
   const BipedLegs legs(walker.model());
   RobotState s;
   int i = 0;
-  for (; i <= 2.3 * 200; ++i) s = walker.Advance(i / kRate_hz);
+  for (; i <= 2.3 * 200; ++i) s = walker.Advance(i / kGaitRate_hz);
   walker.RequestStop();
   const double requested_at = s.t_s;
-  for (; !s.stopped; ++i) s = walker.Advance(i / kRate_hz);
+  for (; !s.stopped; ++i) s = walker.Advance(i / kGaitRate_hz);
   // stopped within one step (half a period) of the request
   EXPECT_LE(s.t_s - requested_at, 0.6 + 1e-9);
   EXPECT_EQ(s.support, SupportLeg::kDouble);
@@ -216,13 +216,13 @@ TEST(GaitWalker, RequestStopStandsStillInDoubleSupportThenResumes) {
   EXPECT_NEAR(LowestSoleZ(legs, Side::kLeft, X_WL), 0.0, 1e-3);   // both feet down
   EXPECT_NEAR(LowestSoleZ(legs, Side::kRight, X_WL), 0.0, 1e-3);
   const RobotState frozen = s;
-  for (int j = 0; j < 400; ++j, ++i) s = walker.Advance(i / kRate_hz);
+  for (int j = 0; j < 400; ++j, ++i) s = walker.Advance(i / kGaitRate_hz);
   EXPECT_TRUE(s.stopped);
   EXPECT_TRUE(s.X_WP.isApprox(frozen.X_WP, 1e-12));
   EXPECT_EQ(s.q, frozen.q);
   EXPECT_DOUBLE_EQ(s.distance_walked_m, frozen.distance_walked_m);
   walker.Resume();
-  for (int j = 0; j < 400; ++j, ++i) s = walker.Advance(i / kRate_hz);
+  for (int j = 0; j < 400; ++j, ++i) s = walker.Advance(i / kGaitRate_hz);
   EXPECT_FALSE(s.stopped);
   EXPECT_GT(s.distance_walked_m, frozen.distance_walked_m + 0.5);
 }
@@ -235,7 +235,7 @@ TEST(GaitWalker, SetStrideChangesTheStrideWithoutPenetration) {
   double lowest = 1e9, max_dz = 0, last_z = NAN;
   for (int i = 0; i <= 12 * 240; ++i) {
     if (i == 3 * 240) walker.SetStride(0.9);
-    const RobotState s = walker.Advance(i / kRate_hz);
+    const RobotState s = walker.Advance(i / kGaitRate_hz);
     const auto X_WL = walker.model().ForwardKinematics(s.X_WP, s.q);
     lowest = std::min({lowest, LowestSoleZ(legs, Side::kLeft, X_WL), LowestSoleZ(legs, Side::kRight, X_WL)});
     if (!std::isnan(last_z)) max_dz = std::max(max_dz, std::abs(s.X_WP.translation().z() - last_z));

@@ -26,7 +26,7 @@ std::vector<std::string> GroundNames(const Scene& scene) {
 }
 
 // The problems LoadScenarioText reports for `text`; fails the test if it loads.
-std::vector<std::string> ProblemsOf(const std::string& text) {
+std::vector<std::string> GroundFlagProblemsOf(const std::string& text) {
   try {
     LoadScenarioText(text, "scenario.yaml");
   } catch (const InputError& error) {
@@ -65,7 +65,7 @@ TEST(GroundFlagTest, APlaneIsGroundUnlessItSaysOtherwiseAnyOtherShapeOnlyWhenItS
 }
 
 TEST(GroundFlagTest, AGroundThatIsNotTrueOrFalseIsRefusedAtItsLine) {
-  const auto problems = ProblemsOf(
+  const auto problems = GroundFlagProblemsOf(
       "proxsim: 1\n"
       "scene:\n"
       "  objects:\n"
@@ -103,12 +103,12 @@ Scenario StandingOn(const std::string& name, const std::string& ground_key) {
 }
 
 // The least clearance of the walk, and the world's ground ids.
-struct Walked {
+struct GroundWalked {
   double min_clearance_m = 0;
   std::vector<std::int32_t> ground_ids;
 };
 
-Walked Walk(Scenario scenario) {
+GroundWalked WalkOn(Scenario scenario) {
   Simulation sim(std::move(scenario));
   while (!sim.done()) sim.Step();
   const auto ids = sim.world().ground_ids();
@@ -117,12 +117,12 @@ Walked Walk(Scenario scenario) {
 
 TEST(GroundFlagTest, TheClearanceLeavesOutTheDeclaredGroundNotWhatIsNamedFloor) {
   // named slab, declared ground: left out, the wall ahead is the nearest thing
-  const Walked slab = Walk(StandingOn("slab", ", ground: true"));
+  const GroundWalked slab = WalkOn(StandingOn("slab", ", ground: true"));
   EXPECT_EQ(slab.ground_ids, std::vector<std::int32_t>{0});
   EXPECT_GT(slab.min_clearance_m, 1.0);
   // named floor_x, not declared but started on on purpose (robot.start.on): the
   // robot's ground for that run, left out the same way
-  const Walked floor_x = Walk(StandingOn("floor_x", ""));
+  const GroundWalked floor_x = WalkOn(StandingOn("floor_x", ""));
   EXPECT_EQ(floor_x.ground_ids, std::vector<std::int32_t>{0});
   EXPECT_GT(floor_x.min_clearance_m, 1.0);
   // a name is not a declaration: floor_y, beside the walk and not declared, is
@@ -134,7 +134,7 @@ TEST(GroundFlagTest, TheClearanceLeavesOutTheDeclaredGroundNotWhatIsNamedFloor) 
   floor_y.X_WO = Pose::Identity();
   floor_y.X_WO.translation() = Vec3(0.0, 0.35, 0.01);
   beside.scene.objects.push_back(floor_y);
-  const Walked with_floor_y = Walk(beside);
+  const GroundWalked with_floor_y = WalkOn(beside);
   EXPECT_EQ(with_floor_y.ground_ids, std::vector<std::int32_t>{0});
   EXPECT_LT(with_floor_y.min_clearance_m, 0.15);
 }

@@ -35,7 +35,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using testing::kH1Dir;
-const fs::path kExample = fs::path(PROXSIM_SOURCE_DIR) / "data" / "scenarios" / "h1_dining_room.yaml";
+const fs::path kH1Example = fs::path(PROXSIM_SOURCE_DIR) / "data" / "scenarios" / "h1_dining_room.yaml";
 
 #define SKIP_WITHOUT_H1()                                                                                    \
   if (!fs::is_regular_file(kH1Dir / "urdf" / "h1.urdf"))                                                     \
@@ -43,7 +43,7 @@ const fs::path kExample = fs::path(PROXSIM_SOURCE_DIR) / "data" / "scenarios" / 
                << " (the H1 tests read ../shared/robots/h1_description from beside the project)"
 
 // The example scenario's robot section, with its package paths and leg map.
-RobotConfig H1Config() { return LoadScenarioFile(kExample.string()).robot.value(); }
+RobotConfig H1Config() { return LoadScenarioFile(kH1Example.string()).robot.value(); }
 
 // Link poses by forward kinematics written here from urdfdom's joint origins
 // and axes: X_WC = X_WP·origin·Rot(axis, q) (revolute) for every joint.
@@ -215,7 +215,7 @@ TEST(H1Test, ASensorOnOneShinReadsTheOtherShinsRealGeometryAsSelf) {
 TEST(H1Test, TheExampleScenarioRunsAndStopsBeforeTheObstacle) {
   SKIP_WITHOUT_H1();
   const fs::path out = testing::FreshDir("h1_example");
-  const auto result = testing::RunProxsim("run " + kExample.string() + " --out " + out.string() + " --no-report");
+  const auto result = testing::RunProxsim("run " + kH1Example.string() + " --out " + out.string() + " --no-report");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::ifstream file(out / "summary.json");
   const auto summary = nlohmann::json::parse(file);

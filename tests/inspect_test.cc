@@ -28,7 +28,7 @@ using testing::RunProxsim;
 const fs::path kH1Urdf =
     fs::path(PROXSIM_SOURCE_DIR) / ".." / "shared" / "robots" / "h1_description" / "urdf" / "h1.urdf";
 
-#define SKIP_WITHOUT_H1()                                                                              \
+#define SKIP_WITHOUT_H1_URDF()                                                                              \
   if (!fs::is_regular_file(kH1Urdf))                                                                   \
   GTEST_SKIP() << "skipped: the Unitree H1 is not at " << kH1Urdf.lexically_normal().string()          \
                << " (the H1 tests read ../shared/robots/h1_description from beside the project)"
@@ -153,7 +153,7 @@ TEST(InspectTest, TextOutputAndScenarioTarget) {
 }
 
 TEST(InspectTest, H1LegMapFoundByGeometryWalks) {
-  SKIP_WITHOUT_H1();
+  SKIP_WITHOUT_H1_URDF();
   const std::string urdf = kH1Urdf.lexically_normal().string();
   const nlohmann::json inspect = InspectJson(urdf);
   EXPECT_EQ(inspect["links"].size(), 25u);
@@ -174,7 +174,7 @@ TEST(InspectTest, H1LegMapFoundByGeometryWalks) {
 }
 
 TEST(InspectTest, H1SensorInsideItsShinMeshIsWarned) {
-  SKIP_WITHOUT_H1();
+  SKIP_WITHOUT_H1_URDF();
   // halfway down, the H1's shin mesh is a shell from about x = 0 (behind) to
   // the reported front: a sensor at half the front's x is inside the mesh,
   // one at the front is on it (no warning)

@@ -28,7 +28,7 @@ using testing::FreshDir;
 using testing::ReadCsv;
 using testing::RunProxsim;
 
-void Write(const fs::path& path, const std::string& text) {
+void WriteText(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
   std::ofstream(path) << text;
 }
@@ -128,7 +128,7 @@ constexpr const char* kUrdfLeg = R"(  <link name="S_thigh"><visual><origin xyz="
     <axis xyz="0 -1 0"/><limit lower="-0.6981317007977318" upper="0.6981317007977318" effort="0" velocity="0"/></joint>
 )";
 
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
+std::string ReplaceAll(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
     text.replace(at, from.size(), to);
   return text;
@@ -147,18 +147,18 @@ std::string TwinUrdf() {
   const Eigen::Matrix3d R = q.normalized().toRotationMatrix();
   const Vec3 rpy(std::atan2(R(2, 1), R(2, 2)), -std::asin(R(2, 0)), std::atan2(R(1, 0), R(0, 0)));
   const Vec3 anchor = Vec3(-0.05, 0, 0.12) + R * Vec3(0.01, 0, 0.02);
-  std::string urdf = Replace(kUrdf, "%MAST_RPY%", Number(rpy.x()) + " " + Number(rpy.y()) + " " + Number(rpy.z()));
-  urdf = Replace(urdf, "%MAST_YAW_XYZ%", Number(anchor.x()) + " " + Number(anchor.y()) + " " + Number(anchor.z()));
-  urdf = Replace(urdf, "%LEG:left:0.1%", Replace(Replace(kUrdfLeg, "S_", "left_"), " Y ", " 0.1 "));
-  return Replace(urdf, "%LEG:right:-0.1%", Replace(Replace(kUrdfLeg, "S_", "right_"), " Y ", " -0.1 "));
+  std::string urdf = ReplaceAll(kUrdf, "%MAST_RPY%", Number(rpy.x()) + " " + Number(rpy.y()) + " " + Number(rpy.z()));
+  urdf = ReplaceAll(urdf, "%MAST_YAW_XYZ%", Number(anchor.x()) + " " + Number(anchor.y()) + " " + Number(anchor.z()));
+  urdf = ReplaceAll(urdf, "%LEG:left:0.1%", ReplaceAll(ReplaceAll(kUrdfLeg, "S_", "left_"), " Y ", " 0.1 "));
+  return ReplaceAll(urdf, "%LEG:right:-0.1%", ReplaceAll(ReplaceAll(kUrdfLeg, "S_", "right_"), " Y ", " -0.1 "));
 }
 
 class MjcfModelTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = FreshDir("mjcf");
-    Write(dir_ / "twin.xml", kMjcf);
-    Write(dir_ / "twin.urdf", TwinUrdf());
+    WriteText(dir_ / "twin.xml", kMjcf);
+    WriteText(dir_ / "twin.urdf", TwinUrdf());
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
@@ -229,7 +229,7 @@ sensors:
 )";
   std::map<std::string, testing::Csv> poses, readings;
   for (const std::string model : {"twin.xml", "twin.urdf"}) {
-    Write(dir_ / ("walk_" + model + ".yaml"), Replace(scenario, "MODEL", model));
+    WriteText(dir_ / ("walk_" + model + ".yaml"), ReplaceAll(scenario, "MODEL", model));
     const fs::path out = dir_ / ("out_" + model);
     const auto result = RunProxsim("run " + (dir_ / ("walk_" + model + ".yaml")).string() + " --no-report --out " + out.string());
     ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -267,7 +267,7 @@ sensors:
 // One body per geom type, each at x = 0 on its own height; a ray along +x from
 // x = −1 at the geom's height hits it at its closed-form distance.
 TEST_F(MjcfModelTest, EachGeomTypeIsHitAtItsClosedFormDistance) {
-  Write(dir_ / "geoms.xml", R"(<mujoco model="geoms">
+  WriteText(dir_ / "geoms.xml", R"(<mujoco model="geoms">
   <asset>
     <mesh name="tetra" vertex="0 0 0  0.2 0 0  0 0.2 0  0 0 0.2"/>
   </asset>
@@ -329,7 +329,7 @@ TEST_F(MjcfModelTest, EachGeomTypeIsHitAtItsClosedFormDistance) {
 
 TEST_F(MjcfModelTest, WhatProxsimCannotFollowIsNamed) {
   const auto error_of = [&](const std::string& name, const std::string& body) {
-    Write(dir_ / name, "<mujoco><worldbody>" + body + "</worldbody></mujoco>");
+    WriteText(dir_ / name, "<mujoco><worldbody>" + body + "</worldbody></mujoco>");
     return ErrorOf([&] { RobotModel::FromFile((dir_ / name).string()); });
   };
   EXPECT_NE(error_of("ball.xml", R"(<body name="b"><freejoint/><geom size="0.1"/><body name="c"><joint name="shoulder" type="ball"/><geom size="0.1"/></body></body>)")
@@ -346,7 +346,7 @@ TEST_F(MjcfModelTest, WhatProxsimCannotFollowIsNamed) {
   // a joint coupling that holds at the reference pose is kept (a gripper's fingers: TALOS's); one that
   // does not, and any other equality (a closed chain), is named
   const auto equality = [&](const std::string& name, const std::string& refs, const std::string& eq) {
-    Write(dir_ / name, R"(<mujoco><worldbody><body name="a"><freejoint/><geom size="0.1"/>
+    WriteText(dir_ / name, R"(<mujoco><worldbody><body name="a"><freejoint/><geom size="0.1"/>
       <body name="b"><joint name="j1" )" + refs + R"(/><geom size="0.1"/></body><body name="c"><joint name="j2"/><geom size="0.1"/></body>
       </body></worldbody><equality>)" + eq + "</equality></mujoco>");
     return ErrorOf([&] { RobotModel::FromFile((dir_ / name).string()); });
@@ -359,16 +359,16 @@ TEST_F(MjcfModelTest, WhatProxsimCannotFollowIsNamed) {
                 .find("equality constraint 'loop' is not supported"),
             std::string::npos);
   // MuJoCo's own refusal, with its reason
-  Write(dir_ / "bad.xml", "<mujoco><worldbody><body><bogus/></body></worldbody></mujoco>");
+  WriteText(dir_ / "bad.xml", "<mujoco><worldbody><body><bogus/></body></worldbody></mujoco>");
   const std::string bad = ErrorOf([&] { RobotModel::FromFile((dir_ / "bad.xml").string()); });
   EXPECT_NE(bad.find("MuJoCo " PROXSIM_MUJOCO_VERSION " could not load the MJCF"), std::string::npos) << bad;
   EXPECT_NE(bad.find("bogus"), std::string::npos) << bad;
   // and through the CLI: exit 2, named
-  Write(dir_ / "ball_run.yaml", "proxsim: 1\nduration_s: 1\nrate_hz: 10\nrobot: {model: ball.xml}\nsensors: []\n");
+  WriteText(dir_ / "ball_run.yaml", "proxsim: 1\nduration_s: 1\nrate_hz: 10\nrobot: {model: ball.xml}\nsensors: []\n");
   const auto result = RunProxsim("validate " + (dir_ / "ball_run.yaml").string());
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("ball joint 'shoulder'"), std::string::npos) << result.output;
-  Write(dir_ / "group.yaml", "proxsim: 1\nduration_s: 1\nrate_hz: 10\nrobot: {model: twin.xml, geom_group: 9}\nsensors: []\n");
+  WriteText(dir_ / "group.yaml", "proxsim: 1\nduration_s: 1\nrate_hz: 10\nrobot: {model: twin.xml, geom_group: 9}\nsensors: []\n");
   const auto group = RunProxsim("validate " + (dir_ / "group.yaml").string());
   EXPECT_EQ(group.exit_code, 2) << group.output;
   EXPECT_NE(group.output.find("robot.geom_group"), std::string::npos) << group.output;

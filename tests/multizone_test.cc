@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,6 @@ using testing::NpyArray;
 using testing::ReadFile;
 using testing::RunProxsim;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Sub-ray (a, b) of zone (column, row) for an nx × ny grid over h × v degrees,
 // k × k rays per zone: the unit direction through the centre of its sub-cell
@@ -39,7 +39,7 @@ struct Dir {
   double x, y, z;
 };
 Dir ZoneRay(int nx, int ny, double h_deg, double v_deg, int k, int column, int row, int a, int b) {
-  const double tu = std::tan(h_deg * kPi / 360), tv = std::tan(v_deg * kPi / 360);
+  const double tu = std::tan(h_deg * std::numbers::pi / 360), tv = std::tan(v_deg * std::numbers::pi / 360);
   const double u = tu - (column + (a + 0.5) / k) * 2 * tu / nx;
   const double v = tv - (row + (b + 0.5) / k) * 2 * tv / ny;
   const double norm = std::sqrt(1 + u * u + v * v);
@@ -69,7 +69,7 @@ sensors:
   ASSERT_EQ(d.shape, (std::vector<long>{1, 64, 1}));
   ASSERT_EQ(p_W.shape, (std::vector<long>{1, 64, 1, 3}));
   ASSERT_EQ(count.shape, (std::vector<long>{1, 64}));
-  const double c = std::cos(20 * kPi / 180), s = std::sin(20 * kPi / 180);
+  const double c = std::cos(20 * std::numbers::pi / 180), s = std::sin(20 * std::numbers::pi / 180);
   int valid = 0, too_low = 0;
   for (int zone = 0; zone < 64; ++zone) {
     double sum_m = 0;
@@ -78,7 +78,7 @@ sensors:
       for (int a = 0; a < 2; ++a) {
         const Dir r = ZoneRay(8, 8, 45, 45, 2, zone % 8, zone / 8, a, b);
         const double cos_alpha = c * r.x + s * r.y;  // |n·d|, n = −(cos20, sin20, 0)
-        if (std::acos(cos_alpha) * 180 / kPi > 30) continue;
+        if (std::acos(cos_alpha) * 180 / std::numbers::pi > 30) continue;
         sum_m += c / cos_alpha;
         ++counted;
       }
@@ -252,7 +252,7 @@ sensors:
   const NpyArray d = LoadNpy(out / "zones" / "grid" / "d_m.npy");
   const NpyArray status = LoadNpy(out / "zones" / "grid" / "status.npy");
   ASSERT_EQ(d.shape, (std::vector<long>{1, 64, 1}));
-  const double t22 = std::tan(22.5 * kPi / 180), cell = 2 * t22 / 8;
+  const double t22 = std::tan(22.5 * std::numbers::pi / 180), cell = 2 * t22 / 8;
   const auto radius = [&](int column, int row) { return std::hypot((column - 3.5) * cell, (row - 3.5) * cell); };
   const double r_centre = radius(3, 3), r_corner = radius(0, 0);
   for (int zone = 0; zone < 64; ++zone) {

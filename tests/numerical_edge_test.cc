@@ -19,7 +19,7 @@
 namespace proxsim {
 namespace {
 
-Ray MakeRay(const Vec3& origin_W, const Vec3& direction_W, double max_range_m = 10.0) {
+Ray EdgeRay(const Vec3& origin_W, const Vec3& direction_W, double max_range_m = 10.0) {
   Ray ray;
   ray.origin_W = origin_W.cast<float>();
   ray.direction_W = direction_W.normalized().cast<float>();
@@ -27,13 +27,13 @@ Ray MakeRay(const Vec3& origin_W, const Vec3& direction_W, double max_range_m = 
   return ray;
 }
 
-Hit CastOne(const RayCaster& caster, const Ray& ray) {
+Hit CastEdgeRay(const RayCaster& caster, const Ray& ray) {
   Hit hit;
   caster.Cast(std::span<const Ray>(&ray, 1), std::span<Hit>(&hit, 1));
   return hit;
 }
 
-Pose Translation(const Vec3& p) {
+Pose Translated(const Vec3& p) {
   Pose X = Pose::Identity();
   X.translation() = p;
   return X;
@@ -52,16 +52,16 @@ TEST(NumericalEdgeTest, RayStartingOnASurfaceGoingAwayHitsItAtZero) {
   // a sensor flush on the top face (z = 0.1) of a box, looking up at a plate
   RayCaster caster;
   caster.AddBody({BodyShape{Box{Vec3(1, 1, 0.2)}, Pose::Identity(), 0},
-                  BodyShape{Box{Vec3(1, 1, 0.2)}, Translation(Vec3(0, 0, 1.2)), 1}},
+                  BodyShape{Box{Vec3(1, 1, 0.2)}, Translated(Vec3(0, 0, 1.2)), 1}},
                  BodyKind::kWorld);
   caster.Commit();
-  const Hit hit = CastOne(caster, MakeRay(Vec3(0.1, 0.2, 0.1), Vec3(0, 0, 1)));
+  const Hit hit = CastEdgeRay(caster, EdgeRay(Vec3(0.1, 0.2, 0.1), Vec3(0, 0, 1)));
   ExpectNoNan(hit);
   ASSERT_TRUE(hit.is_hit());
   EXPECT_EQ(hit.object_id, 0);
   EXPECT_NEAR(hit.distance_m, 0.0f, 1e-6f);  // a few float ulps of the metre scale: Embree's paths differ by CPU
   // a millimetre off the surface it sees the plate, 1 m minus that millimetre away
-  const Hit off = CastOne(caster, MakeRay(Vec3(0.1, 0.2, 0.101), Vec3(0, 0, 1)));
+  const Hit off = CastEdgeRay(caster, EdgeRay(Vec3(0.1, 0.2, 0.101), Vec3(0, 0, 1)));
   ASSERT_TRUE(off.is_hit());
   EXPECT_EQ(off.object_id, 1);
   EXPECT_NEAR(off.distance_m, 0.999, 1e-6);
@@ -73,7 +73,7 @@ TEST(NumericalEdgeTest, RayStartingOnASurfaceGoingInSeesItAtZeroOrItsFarSide) {
   RayCaster caster;
   caster.AddBody({BodyShape{Box{Vec3(1, 1, 0.2)}, Pose::Identity(), 0}}, BodyKind::kWorld);
   caster.Commit();
-  const Hit hit = CastOne(caster, MakeRay(Vec3(0.1, 0.2, 0.1), Vec3(0, 0, -1)));
+  const Hit hit = CastEdgeRay(caster, EdgeRay(Vec3(0.1, 0.2, 0.1), Vec3(0, 0, -1)));
   ExpectNoNan(hit);
   ASSERT_TRUE(hit.is_hit());
   EXPECT_TRUE(std::abs(hit.distance_m) < 1e-6 || std::abs(hit.distance_m - 0.2) < 1e-6) << hit.distance_m;
@@ -92,13 +92,13 @@ TEST(NumericalEdgeTest, DegenerateTrianglesAreNeverHitAndGiveNoNan) {
   caster.AddBody({BodyShape{shape, Pose::Identity(), 7}}, BodyKind::kWorld);
   caster.Commit();
   // through the good one: exact
-  const Hit good = CastOne(caster, MakeRay(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)));
+  const Hit good = CastEdgeRay(caster, EdgeRay(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)));
   ASSERT_TRUE(good.is_hit());
   EXPECT_NEAR(good.distance_m, 1.0, 1e-6);
   // along and through the degenerate ones: a miss, never a NaN
   for (const Vec3& target : {Vec3(3, 0, 0), Vec3(2.5, 0, 0), Vec3(2.25, 0.5, 0), Vec3(2, 0, 0)}) {
     for (const Vec3& direction : {Vec3(0, 0, -1), Vec3(0.3, 0.1, -1), Vec3(0, 1, -0.01)}) {
-      const Hit hit = CastOne(caster, MakeRay(target - direction.normalized(), direction));
+      const Hit hit = CastEdgeRay(caster, EdgeRay(target - direction.normalized(), direction));
       ExpectNoNan(hit);
       EXPECT_FALSE(hit.is_hit()) << "target " << target.transpose() << " distance " << hit.distance_m;
     }
@@ -116,7 +116,7 @@ TEST(NumericalEdgeTest, MeshLoaderKeepsDegenerateTrianglesHarmlessly) {
   shape.data = mesh;
   caster.AddBody({BodyShape{shape, Pose::Identity(), 0}}, BodyKind::kWorld);
   caster.Commit();
-  const Hit hit = CastOne(caster, MakeRay(Vec3(2.5, 0, 1), Vec3(0, 0, -1)));
+  const Hit hit = CastEdgeRay(caster, EdgeRay(Vec3(2.5, 0, 1), Vec3(0, 0, -1)));
   ExpectNoNan(hit);
   EXPECT_FALSE(hit.is_hit());
   std::filesystem::remove(path);
@@ -129,7 +129,7 @@ TEST(NumericalEdgeTest, MeshLoaderKeepsDegenerateTrianglesHarmlessly) {
 TEST(NumericalEdgeTest, FarFromTheOriginTheErrorIsAboutOneFloatSpacing) {
   const Vec3 far(1e4, 1e4, 0);
   RayCaster caster;
-  caster.AddBody({BodyShape{Box{Vec3(0.2, 2, 2)}, Translation(far + Vec3(1.1, 0, 1)), 0}}, BodyKind::kWorld);
+  caster.AddBody({BodyShape{Box{Vec3(0.2, 2, 2)}, Translated(far + Vec3(1.1, 0, 1)), 0}}, BodyKind::kWorld);
   caster.Commit();
   const double spacing_m = std::nextafter(1e4f, 2e4f) - 1e4f;
   EXPECT_NEAR(spacing_m, 0.0009765625, 1e-12);
@@ -137,7 +137,7 @@ TEST(NumericalEdgeTest, FarFromTheOriginTheErrorIsAboutOneFloatSpacing) {
   for (int k = 0; k < 10; ++k) {
     const Vec3 origin = far + Vec3(k * 1e-4, 0.01 * k, 1);  // offsets finer than the float spacing
     const double expected_m = 1.0 - k * 1e-4;               // the face is at x = 1e4 + 1.0
-    const Hit hit = CastOne(caster, MakeRay(origin, Vec3(1, 0, 0)));
+    const Hit hit = CastEdgeRay(caster, EdgeRay(origin, Vec3(1, 0, 0)));
     ASSERT_TRUE(hit.is_hit());
     worst_m = std::max(worst_m, std::abs(hit.distance_m - expected_m));
   }
@@ -150,31 +150,31 @@ TEST(NumericalEdgeTest, FarFromTheOriginTheErrorIsAboutOneFloatSpacing) {
 
 TEST(NumericalEdgeTest, OneMillimetreObjectsAreHitExactly) {
   RayCaster caster;
-  caster.AddBody({BodyShape{Box{Vec3(0.001, 0.001, 0.001)}, Translation(Vec3(0.5, 0, 0)), 0},
-                  BodyShape{Sphere{0.0005}, Translation(Vec3(0, 0.5, 0)), 1}},
+  caster.AddBody({BodyShape{Box{Vec3(0.001, 0.001, 0.001)}, Translated(Vec3(0.5, 0, 0)), 0},
+                  BodyShape{Sphere{0.0005}, Translated(Vec3(0, 0.5, 0)), 1}},
                  BodyKind::kWorld);
   caster.Commit();
-  const Hit box = CastOne(caster, MakeRay(Vec3::Zero(), Vec3(1, 0, 0)));
+  const Hit box = CastEdgeRay(caster, EdgeRay(Vec3::Zero(), Vec3(1, 0, 0)));
   ASSERT_TRUE(box.is_hit());
   EXPECT_NEAR(box.distance_m, 0.4995, 1e-6);
-  const Hit sphere = CastOne(caster, MakeRay(Vec3::Zero(), Vec3(0, 1, 0)));
+  const Hit sphere = CastEdgeRay(caster, EdgeRay(Vec3::Zero(), Vec3(0, 1, 0)));
   ASSERT_TRUE(sphere.is_hit());
   EXPECT_NEAR(sphere.distance_m, 0.4995, 1e-6);
   // a ray passing 0.6 mm beside the 1 mm box misses it
-  EXPECT_FALSE(CastOne(caster, MakeRay(Vec3(0, 0.0011, 0), Vec3(1, 0, 0))).is_hit());
+  EXPECT_FALSE(CastEdgeRay(caster, EdgeRay(Vec3(0, 0.0011, 0), Vec3(1, 0, 0))).is_hit());
 }
 
 TEST(NumericalEdgeTest, OneKilometreObjectsAreHitExactly) {
   // a 1 km wall 10 m ahead, and a sphere of radius 1 km whose surface is 3 m ahead
   RayCaster caster;
-  caster.AddBody({BodyShape{Box{Vec3(1, 1000, 1000)}, Translation(Vec3(10.5, 0, 0)), 0},
-                  BodyShape{Sphere{1000}, Translation(Vec3(0, 1003, 0)), 1}},
+  caster.AddBody({BodyShape{Box{Vec3(1, 1000, 1000)}, Translated(Vec3(10.5, 0, 0)), 0},
+                  BodyShape{Sphere{1000}, Translated(Vec3(0, 1003, 0)), 1}},
                  BodyKind::kWorld);
   caster.Commit();
-  const Hit wall = CastOne(caster, MakeRay(Vec3::Zero(), Vec3(1, 0, 0), 100));
+  const Hit wall = CastEdgeRay(caster, EdgeRay(Vec3::Zero(), Vec3(1, 0, 0), 100));
   ASSERT_TRUE(wall.is_hit());
   EXPECT_NEAR(wall.distance_m, 10.0, 1e-5);
-  const Hit sphere = CastOne(caster, MakeRay(Vec3::Zero(), Vec3(0, 1, 0), 100));
+  const Hit sphere = CastEdgeRay(caster, EdgeRay(Vec3::Zero(), Vec3(0, 1, 0), 100));
   ASSERT_TRUE(sphere.is_hit());
   EXPECT_NEAR(sphere.distance_m, 3.0, 1e-4);  // float: 1003 m carries 6e-5 m of spacing
 }

@@ -33,7 +33,7 @@ struct WalkingRobot {
 
 constexpr std::int32_t kFloorId = 0;
 
-Pose XyzRpyDeg(double x, double y, double z, double roll, double pitch, double yaw) {
+Pose PoseXyzRpyDeg(double x, double y, double z, double roll, double pitch, double yaw) {
   return PoseFromXyzRpy(Vec3(x, y, z), Vec3(DegToRad(roll), DegToRad(pitch), DegToRad(yaw)));
 }
 
@@ -63,11 +63,11 @@ Mesh Panel(double width_m, double height_m, double cell_m) {
 // the right, and a low box the path turns towards.
 void AddWorld(RayCaster& caster) {
   caster.AddBody({BodyShape{Plane{}, Pose::Identity(), kFloorId},
-                  BodyShape{Box{Vec3(0.4, 0.3, 0.5)}, XyzRpyDeg(0.6, 0.42, 0.25, 0, 0, 10), 1},
-                  BodyShape{Sphere{0.15}, XyzRpyDeg(1.1, -0.4, 0.35, 0, 0, 0), 2},
-                  BodyShape{Cylinder{0.05, 1.0}, XyzRpyDeg(0.5, -0.33, 0.7, 0, 90, 0), 3},
-                  BodyShape{Panel(0.6, 1.2, 0.05), XyzRpyDeg(1.0, 0.38, 0, 0, 0, -5), 4},
-                  BodyShape{Box{Vec3(0.3, 0.3, 0.1)}, XyzRpyDeg(1.6, -0.6, 0.05, 0, 0, 30), 5}},
+                  BodyShape{Box{Vec3(0.4, 0.3, 0.5)}, PoseXyzRpyDeg(0.6, 0.42, 0.25, 0, 0, 10), 1},
+                  BodyShape{Sphere{0.15}, PoseXyzRpyDeg(1.1, -0.4, 0.35, 0, 0, 0), 2},
+                  BodyShape{Cylinder{0.05, 1.0}, PoseXyzRpyDeg(0.5, -0.33, 0.7, 0, 90, 0), 3},
+                  BodyShape{Panel(0.6, 1.2, 0.05), PoseXyzRpyDeg(1.0, 0.38, 0, 0, 0, -5), 4},
+                  BodyShape{Box{Vec3(0.3, 0.3, 0.1)}, PoseXyzRpyDeg(1.6, -0.6, 0.05, 0, 0, 30), 5}},
                  BodyKind::kWorld);
 }
 
@@ -163,8 +163,8 @@ TEST(RobotInSceneTest, ClearanceOfARobotTurningOnTheSpotEqualsTheBruteForceOne) 
   }
   RayCaster caster;
   caster.AddBody({BodyShape{Plane{}, Pose::Identity(), kFloorId},
-                  BodyShape{Box{Vec3(0.3, 0.6, 0.6)}, XyzRpyDeg(0.45, 0, 1.4, 0, 0, 0), 1},
-                  BodyShape{Sphere{0.1}, XyzRpyDeg(-0.2, -0.5, 0.4, 0, 0, 0), 2}},
+                  BodyShape{Box{Vec3(0.3, 0.6, 0.6)}, PoseXyzRpyDeg(0.45, 0, 1.4, 0, 0, 0), 1},
+                  BodyShape{Sphere{0.1}, PoseXyzRpyDeg(-0.2, -0.5, 0.4, 0, 0, 0), 2}},
                  BodyKind::kWorld);
   RobotConfig config;
   config.trajectory_file = csv_path.string();

@@ -31,9 +31,9 @@ using testing::ReadCsv;
 using testing::ReadFile;
 using testing::RunProxsim;
 
-const fs::path kBiped = fs::path(PROXSIM_SOURCE_DIR) / "data" / "robots" / "biped.urdf";
+const fs::path kBipedUrdf = fs::path(PROXSIM_SOURCE_DIR) / "data" / "robots" / "biped.urdf";
 
-void Replace(std::string& text, const std::string& from, const std::string& to, std::size_t after) {
+void ReplaceAfter(std::string& text, const std::string& from, const std::string& to, std::size_t after) {
   const std::size_t at = text.find(from, after);
   ASSERT_NE(at, std::string::npos) << from;
   text.replace(at, from.size(), to);
@@ -42,15 +42,15 @@ void Replace(std::string& text, const std::string& from, const std::string& to, 
 // The biped with each ankle joint's frame turned by Rx(π/2): in that frame the
 // world's −y axis is +z, and the foot's box centre (0.07, 0, −0.05) is (0.07, −0.05, 0)
 std::string RotatedBiped() {
-  std::string urdf = ReadFile(kBiped);
+  std::string urdf = ReadFile(kBipedUrdf);
   for (const std::string side : {"left", "right"}) {
     const std::size_t joint = urdf.find("<joint name=\"" + side + "_ankle_pitch\"");
-    Replace(urdf, "<origin xyz=\"0 0 -0.45\" rpy=\"0 0 0\"/>",
+    ReplaceAfter(urdf, "<origin xyz=\"0 0 -0.45\" rpy=\"0 0 0\"/>",
             "<origin xyz=\"0 0 -0.45\" rpy=\"1.5707963267948966 0 0\"/>", joint);
-    Replace(urdf, "<axis xyz=\"0 -1 0\"/>", "<axis xyz=\"0 0 1\"/>", joint);
+    ReplaceAfter(urdf, "<axis xyz=\"0 -1 0\"/>", "<axis xyz=\"0 0 1\"/>", joint);
     const std::size_t link = urdf.find("<link name=\"" + side + "_foot\">");
     for (int i = 0; i < 3; ++i) {  // inertial, visual, collision
-      Replace(urdf, "<origin xyz=\"0.07 0 -0.05\" rpy=\"0 0 0\"/>",
+      ReplaceAfter(urdf, "<origin xyz=\"0.07 0 -0.05\" rpy=\"0 0 0\"/>",
               "<origin xyz=\"0.07 -0.05 0\" rpy=\"-1.5707963267948966 0 0\"/>", link);
     }
   }
@@ -66,14 +66,14 @@ struct WalkRun {
 
 // The biped with each foot's geometry turned 10° toe up about the ankle (its frame's origin)
 std::string PitchedBiped() {
-  std::string urdf = ReadFile(kBiped);
+  std::string urdf = ReadFile(kBipedUrdf);
   const double th = -10.0 * M_PI / 180.0;  // Ry(−10°) lifts +x
   char origin[160];
   std::snprintf(origin, sizeof origin, "<origin xyz=\"%.17g 0 %.17g\" rpy=\"0 %.17g 0\"/>",
                 std::cos(th) * 0.07 + std::sin(th) * -0.05, -std::sin(th) * 0.07 + std::cos(th) * -0.05, th);
   for (const std::string side : {"left", "right"}) {
     const std::size_t link = urdf.find("<link name=\"" + side + "_foot\">");
-    for (int i = 0; i < 3; ++i) Replace(urdf, "<origin xyz=\"0.07 0 -0.05\" rpy=\"0 0 0\"/>", origin, link);
+    for (int i = 0; i < 3; ++i) ReplaceAfter(urdf, "<origin xyz=\"0.07 0 -0.05\" rpy=\"0 0 0\"/>", origin, link);
   }
   return urdf;
 }
@@ -132,7 +132,7 @@ TEST(RotatedFootFrame, WalksExactlyAsTheOriginal) {
   fs::create_directories(original_dir);
   fs::create_directories(rotated_dir);
   std::ofstream(rotated_dir / "biped_rotated.urdf") << RotatedBiped();
-  const WalkRun original = Walk(original_dir, kBiped.string());
+  const WalkRun original = Walk(original_dir, kBipedUrdf.string());
   const WalkRun rotated = Walk(rotated_dir, "biped_rotated.urdf");
   ExpectTheSameWalk(original, rotated, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX())));
   fs::remove_all(original_dir);
@@ -156,10 +156,10 @@ TEST(PitchedSole, WalkedFlatWithAnkleZeroDeg) {
   EXPECT_NE(refused.output.find("its geometry lies flattest at 10.0 deg"), std::string::npos) << refused.output;
   std::string legs = legs_without;
   for (const std::string foot : {"left_foot}", "right_foot}"}) {
-    Replace(legs, foot, foot.substr(0, foot.size() - 1) + ", ankle_zero_deg: 10}", 0);
+    ReplaceAfter(legs, foot, foot.substr(0, foot.size() - 1) + ", ankle_zero_deg: 10}", 0);
   }
   fs::remove_all(pitched_dir / "out");
-  const WalkRun original = Walk(original_dir, kBiped.string());
+  const WalkRun original = Walk(original_dir, kBipedUrdf.string());
   const WalkRun pitched = Walk(pitched_dir, "biped_pitched.urdf", legs);
   ExpectTheSameWalk(original, pitched, Eigen::Quaterniond(Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitY())));
   fs::remove_all(original_dir);

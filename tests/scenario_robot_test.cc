@@ -19,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> ProblemsOf(const std::string& text, const std::string& source) {
+std::vector<std::string> RobotProblemsOf(const std::string& text, const std::string& source) {
   try {
     LoadScenarioText(text, source);
   } catch (const InputError& error) {
@@ -99,7 +99,7 @@ TEST_F(ScenarioRobotTest, DefaultsVisualGeometryBuiltinLegsAndAGaitScaledToTheLe
 }
 
 TEST_F(ScenarioRobotTest, MistakesAreReportedAtTheirKeys) {
-  const std::vector<std::string> problems = ProblemsOf(R"(proxsim: 1
+  const std::vector<std::string> problems = RobotProblemsOf(R"(proxsim: 1
 robot:
   model: robot.urdf
   geometry: meshes
@@ -121,7 +121,7 @@ robot:
       << Join(problems);
   // an angle that is not a number
   const std::vector<std::string> more =
-      ProblemsOf("proxsim: 1\nrobot:\n  model: robot.urdf\n  joints_deg:\n    a: 1\n    b: wide\n", Source());
+      RobotProblemsOf("proxsim: 1\nrobot:\n  model: robot.urdf\n  joints_deg:\n    a: 1\n    b: wide\n", Source());
   EXPECT_TRUE(HasProblem(more, {"scenario.yaml:6:", "robot.joints_deg.b", "expected a finite number, got wide"})) << Join(more);
 }
 

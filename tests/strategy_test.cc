@@ -63,15 +63,15 @@ std::string Scene(const std::string& box_size, double box_x, double box_y, const
          "  - {name: ro, type: laser, link: right_tibia, pose: {xyz_m: [0.06, -0.02, -0.35], rpy_deg: [0, 8, -30]}}\n";
 }
 
-struct Walk {
+struct StrategyWalk {
   double max_abs_y_m = 0;  // the pelvis's largest distance from the path line
   double sum_y_m = 0;      // signed: which side it went round
   std::vector<std::string> events;
   Simulation::RobotOutcome outcome;
 };
 
-Walk RunToEnd(Simulation& sim) {
-  Walk walk;
+StrategyWalk RunToEnd(Simulation& sim) {
+  StrategyWalk walk;
   while (!sim.done()) {
     sim.Step();
     const double y = sim.robot_state()->X_WP.translation().y();
@@ -83,7 +83,7 @@ Walk RunToEnd(Simulation& sim) {
   return walk;
 }
 
-bool Logged(const Walk& walk, const std::string& event) {
+bool Logged(const StrategyWalk& walk, const std::string& event) {
   return std::find(walk.events.begin(), walk.events.end(), event) != walk.events.end();
 }
 
@@ -91,7 +91,7 @@ TEST(StopStrategy, StopsBeforeABoxFromTheReadingsAlone) {
   Simulation sim(LoadScenarioText(Scene("[0.2, 0.3, 0.15]", 2.5, 0.0, "{name: stop, stop_distance_m: 0.5}", 6.0),
                                   "stop.yaml"),
                  1);
-  const Walk walk = RunToEnd(sim);
+  const StrategyWalk walk = RunToEnd(sim);
   ASSERT_TRUE(walk.outcome.stopped);
   EXPECT_TRUE(Logged(walk, "obstacle_ahead"));
   EXPECT_GT(walk.outcome.min_clearance_m, 0.0);
@@ -111,7 +111,7 @@ TEST_P(CircumventSides, WalksAroundTheBoxToItsGoal) {
   const SideCase c = GetParam();
   const CircumventConfig config;
   Simulation sim(LoadScenarioText(Scene("[0.2, 0.3, 0.15]", 2.5, c.box_y_m, "{name: circumvent}"), "c.yaml"), 1);
-  const Walk walk = RunToEnd(sim);
+  const StrategyWalk walk = RunToEnd(sim);
   EXPECT_TRUE(walk.outcome.reached_goal);
   EXPECT_FALSE(walk.outcome.stop_requested);
   EXPECT_GT(walk.outcome.min_clearance_m, config.margin_m / 2);
@@ -132,7 +132,7 @@ INSTANTIATE_TEST_SUITE_P(BoxBesideThePath, CircumventSides,
 TEST(CircumventStrategy, StopsBeforeAWallItCannotPass) {
   // 4 m wide: more than max_detour_m each side
   Simulation sim(LoadScenarioText(Scene("[0.2, 4.0, 0.15]", 2.5, 0.0, "{name: circumvent}", 8.0), "wall.yaml"), 1);
-  const Walk walk = RunToEnd(sim);
+  const StrategyWalk walk = RunToEnd(sim);
   EXPECT_TRUE(walk.outcome.stopped);
   EXPECT_FALSE(walk.outcome.reached_goal);
   EXPECT_GT(walk.outcome.min_clearance_m, 0.0);

@@ -30,11 +30,11 @@ using testing::ReadFile;
 using testing::RunCommand;
 using testing::RunProxsim;
 
-const std::string kExample = std::string(PROXSIM_SOURCE_DIR) + "/data/studies/tibia_placement.yaml";
+const std::string kTibiaStudy = std::string(PROXSIM_SOURCE_DIR) + "/data/studies/tibia_placement.yaml";
 // as root, mpirun needs these; under the ASan preset, OpenMPI's own plug-ins
 // leak at exit (unloaded modules, not proxsim's memory): leak checks stay on
 // for every run of this file but the ranks'
-constexpr const char* kMpiEnv =
+constexpr const char* kStudyMpiEnv =
     "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
 
 std::size_t LineCount(const fs::path& path) {
@@ -53,7 +53,7 @@ class StudyCliTest : public ::testing::Test {
 
 TEST_F(StudyCliTest, TheExampleRanksPicksThreePartsAndDrawsIt) {
   const auto out = dir_ / "example";
-  const auto result = RunProxsim("study " + kExample + " --out " + out.string());
+  const auto result = RunProxsim("study " + kTibiaStudy + " --out " + out.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   // 4 types x 2 links x 3 positions x 3 pitches, in 4 scenes with 3 seeds
   EXPECT_EQ(ReadCsv(out / "results.csv").rows.size(), 72u * 4u * 3u);
@@ -100,12 +100,12 @@ TEST_F(StudyCliTest, CandidatesAreKeyedByTheirPartNotOnlyTheirType) {
 }
 
 TEST_F(StudyCliTest, FilesAreByteIdenticalWithOneThreadTwoThreadsAndTwoMpiRanks) {
-  const std::string common = "study " + kExample + " --no-report --out ";
+  const std::string common = "study " + kTibiaStudy + " --no-report --out ";
   ASSERT_EQ(RunProxsim(common + (dir_ / "t1").string() + " --threads 1").exit_code, 0);
   ASSERT_EQ(RunProxsim(common + (dir_ / "t2").string() + " --threads 2").exit_code, 0);
   std::vector<std::string> outs = {"t2"};
   if (RunCommand("command -v mpirun").exit_code == 0) {
-    const auto mpi = RunCommand(std::string(kMpiEnv) + "mpirun --oversubscribe -x ASAN_OPTIONS -np 2 " + PROXSIM_BINARY + " " + common +
+    const auto mpi = RunCommand(std::string(kStudyMpiEnv) + "mpirun --oversubscribe -x ASAN_OPTIONS -np 2 " + PROXSIM_BINARY + " " + common +
                                 (dir_ / "mpi2").string() + " --threads 1");
     ASSERT_EQ(mpi.exit_code, 0) << mpi.output;
     EXPECT_NE(mpi.output.find("1 thread x 2 ranks"), std::string::npos) << mpi.output;
@@ -179,7 +179,7 @@ TEST_F(StudyCliTest, ResumingAnotherStudysJournalIsRefused) {
   std::ofstream(dir_ / "long.yaml") << kLongStudy;
   const std::string out = (dir_ / "out").string();
   ASSERT_EQ(RunProxsim("study " + (dir_ / "long.yaml").string() + " --no-report --out " + out).exit_code, 0);
-  const auto other = RunProxsim("study " + kExample + " --no-report --resume --out " + out);
+  const auto other = RunProxsim("study " + kTibiaStudy + " --no-report --resume --out " + out);
   EXPECT_EQ(other.exit_code, 2) << other.output;
   EXPECT_NE(other.output.find("belongs to another study"), std::string::npos) << other.output;
 }

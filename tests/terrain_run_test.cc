@@ -41,9 +41,9 @@ BodyShape BoxShape(const Vec3& min_W, const Vec3& max_W, int id) {
 
 // An ideal sensor's sweep: a fan of rays from 0.5 m up, moved along x from
 // x0 to x1, every ray an ideal reading (the true distance, or silence over 2 m).
-class Sweep {
+class TerrainSweep {
  public:
-  explicit Sweep(std::vector<BodyShape> shapes) {
+  explicit TerrainSweep(std::vector<BodyShape> shapes) {
     caster_.AddBody(std::move(shapes), BodyKind::kWorld);
     caster_.Commit();
     for (double pitch_deg = 35; pitch_deg <= 90; pitch_deg += 5) {
@@ -115,7 +115,7 @@ std::vector<Hazard> HazardsAt(const TerrainMap& map, double x, double y) {
 
 TEST(TerrainSweepTest, ABoxTopIsRecoveredWithinOneCentimetreAndIsAnObstacle) {
   // the paper's obstacle: 0.20 × 0.30 × 0.15 m at x = 1.5
-  Sweep sweep(FloorWith({BoxShape({1.4, -0.15, 0}, {1.6, 0.15, 0.15}, 1)}));
+  TerrainSweep sweep(FloorWith({BoxShape({1.4, -0.15, 0}, {1.6, 0.15, 0.15}, 1)}));
   TerrainMap map = sweep.MakeMap();
   sweep.Run(map, 0.0, 1.2);
   int top_cells = 0;
@@ -153,7 +153,7 @@ std::vector<BodyShape> PitScene(double x0, double x1, double y0, double y1, doub
 }
 
 TEST(TerrainSweepTest, AHolesDepthIsRecoveredWithinOneCentimetreAndIsAHole) {
-  Sweep sweep(PitScene(1.3, 1.7, -0.5, 0.5, 0.3));
+  TerrainSweep sweep(PitScene(1.3, 1.7, -0.5, 0.5, 0.3));
   TerrainMap map = sweep.MakeMap();
   sweep.Run(map, 0.0, 2.0);
   int bottom_cells = 0;
@@ -175,7 +175,7 @@ TEST(TerrainSweepTest, AHolesDepthIsRecoveredWithinOneCentimetreAndIsAHole) {
 
 TEST(TerrainSweepTest, AStepUpAStepDownAndATallObstacleAreClassifiedSo) {
   {
-    Sweep sweep(FloorWith({BoxShape({1.0, -1.0, 0}, {3.0, 1.0, 0.12}, 1)}));  // a platform 0.12 up
+    TerrainSweep sweep(FloorWith({BoxShape({1.0, -1.0, 0}, {3.0, 1.0, 0.12}, 1)}));  // a platform 0.12 up
     TerrainMap map = sweep.MakeMap();
     sweep.Run(map, 0.0, 0.8);
     const auto found = HazardsAt(map, 1.05, 0.0);
@@ -184,7 +184,7 @@ TEST(TerrainSweepTest, AStepUpAStepDownAndATallObstacleAreClassifiedSo) {
     EXPECT_NEAR(found[0].height_m, 0.12, 0.01);
   }
   {
-    Sweep sweep(PitScene(1.0, 3.0, -1.0, 1.0, 0.12));  // a lower floor 0.12 down
+    TerrainSweep sweep(PitScene(1.0, 3.0, -1.0, 1.0, 0.12));  // a lower floor 0.12 down
     TerrainMap map = sweep.MakeMap();
     sweep.Run(map, 0.0, 0.8);
     const auto found = HazardsAt(map, 1.1, 0.0);
@@ -193,7 +193,7 @@ TEST(TerrainSweepTest, AStepUpAStepDownAndATallObstacleAreClassifiedSo) {
     EXPECT_NEAR(found[0].height_m, -0.12, 0.01);
   }
   {
-    Sweep sweep(FloorWith({BoxShape({1.0, -1.0, 0}, {3.0, 1.0, 0.35}, 1)}));  // too high to step on
+    TerrainSweep sweep(FloorWith({BoxShape({1.0, -1.0, 0}, {3.0, 1.0, 0.35}, 1)}));  // too high to step on
     TerrainMap map = sweep.MakeMap();
     sweep.Run(map, 0.0, 0.8);
     const auto found = HazardsAt(map, 1.0, 0.0);  // its face: the top is above the fan's reach
@@ -204,7 +204,7 @@ TEST(TerrainSweepTest, AStepUpAStepDownAndATallObstacleAreClassifiedSo) {
 }
 
 TEST(TerrainSweepTest, TheTruthFieldIsTheHighestSurfaceBelowTheCeiling) {
-  Sweep sweep(FloorWith({BoxShape({1.0, -0.1, 0}, {1.2, 0.1, 0.15}, 1), BoxShape({2.0, -0.1, 0}, {2.2, 0.1, 1.5}, 2),
+  TerrainSweep sweep(FloorWith({BoxShape({1.0, -0.1, 0}, {1.2, 0.1, 0.15}, 1), BoxShape({2.0, -0.1, 0}, {2.2, 0.1, 1.5}, 2),
                          BoxShape({3.0, -0.1, 0.7}, {3.2, 0.1, 0.75}, 3)}));
   const CellBox row{0, 0, 199, 0};
   const std::vector<float> truth = TrueHeights(sweep.caster(), row, kR, 0.6);
@@ -216,7 +216,7 @@ TEST(TerrainSweepTest, TheTruthFieldIsTheHighestSurfaceBelowTheCeiling) {
   EXPECT_NEAR(truth[55], 0.15f, kUlps_m);     // the box's top
   EXPECT_NEAR(truth[105], 0.6f, kUlps_m);     // a tall cupboard: full to the ceiling
   EXPECT_NEAR(truth[155], 0.0f, kUlps_m);     // under a table top at 0.75 m: the floor
-  const Sweep nothing({BoxShape({0, -1, -0.1}, {1, 1, 0}, 0)});
+  const TerrainSweep nothing({BoxShape({0, -1, -0.1}, {1, 1, 0}, 0)});
   const std::vector<float> void_row = TrueHeights(nothing.caster(), CellBox{40, 0, 60, 0}, kR, 0.6);
   EXPECT_NEAR(void_row[0], 0.0f, kUlps_m);
   EXPECT_TRUE(std::isnan(void_row[20]));      // beyond the floor's edge: no surface
@@ -451,7 +451,7 @@ TEST(OctomapRecorderTest, ADetectionMarksItsPointOccupiedAndItsRayFree) {
 
 // ------------------------------------------------------------ the scenario's map section
 
-std::vector<std::string> ProblemsOf(const std::string& text) {
+std::vector<std::string> TerrainProblemsOf(const std::string& text) {
   try {
     LoadScenarioText(text, "s.yaml");
   } catch (const InputError& error) {
@@ -478,7 +478,7 @@ TEST(TerrainScenarioTest, TheMapSectionIsReadAndEveryMistakeInItListed) {
   EXPECT_FALSE(by_default.terrain_map()->feeds_map(1));
   EXPECT_EQ(Simulation(LoadScenarioText(robot + "map: {enabled: false}\n", "s.yaml")).terrain_map(), nullptr);
 
-  const auto problems = ProblemsOf(robot + R"(map:
+  const auto problems = TerrainProblemsOf(robot + R"(map:
   resolution_m: 0
   step_max_m: 0.01
   sensors: [a, c, a]
@@ -490,7 +490,7 @@ TEST(TerrainScenarioTest, TheMapSectionIsReadAndEveryMistakeInItListed) {
   EXPECT_EQ(problems[2], "s.yaml:7: map.sensors[1]: unknown sensor 'c' (did you mean 'a'?); expected one of a, b");
   EXPECT_EQ(problems[3], "s.yaml:7: map.sensors[2]: sensor 'a' is listed twice");
   EXPECT_NE(problems[4].find("s.yaml:8: map.colour: unknown key 'colour'"), std::string::npos) << problems[4];
-  const auto no_robot = ProblemsOf("proxsim: 1\nmap: {resolution_m: 0.02}\n");
+  const auto no_robot = TerrainProblemsOf("proxsim: 1\nmap: {resolution_m: 0.02}\n");
   ASSERT_EQ(no_robot.size(), 1u);
   EXPECT_EQ(no_robot[0], "s.yaml:2: map: the terrain map is built by a walking robot; expected a robot section with it");
 }

@@ -39,15 +39,15 @@ Scenario StraightWalk(double length_m, double window_m) {
   return LoadScenarioText(yaml.str(), "straight_walk.yaml");
 }
 
-struct Walked {
+struct WindowWalked {
   std::vector<std::size_t> tiles, octomap_nodes;  // held, every 5 m walked
   std::size_t retired_tiles = 0, retired_subtrees = 0;
   nlohmann::json score;
 };
 
 // Walks, keeps the archive as a run does, writes the files into `dir`.
-Walked Walk(double length_m, double window_m, const std::filesystem::path& dir) {
-  Walked out;
+WindowWalked WalkWindowed(double length_m, double window_m, const std::filesystem::path& dir) {
+  WindowWalked out;
   Simulation sim(StraightWalk(length_m, window_m), 1);
   TerrainArchive archive(*sim.terrain_map(), true);
   double next_m = 5.0;
@@ -74,8 +74,8 @@ TEST(TerrainWindow, MemoryStaysFlatAlongALongWalkAndTheFilesAreThoseOfAMapThatKe
   const std::filesystem::path root = std::filesystem::temp_directory_path() / "proxsim_terrain_window_test";
   std::filesystem::remove_all(root);
   const double length_m = 60.0;
-  const Walked windowed = Walk(length_m, 3.0, root / "windowed");
-  const Walked unbounded = Walk(length_m, 1e9, root / "unbounded");
+  const WindowWalked windowed = WalkWindowed(length_m, 3.0, root / "windowed");
+  const WindowWalked unbounded = WalkWindowed(length_m, 1e9, root / "unbounded");
 
   // the window rolled: tiles and subtrees left memory
   ASSERT_GT(windowed.retired_tiles, 100u);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <vector>
 #include <string>
 
@@ -27,7 +28,6 @@ using testing::ReadCsv;
 using testing::RowsOf;
 using testing::RunProxsim;
 
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(UltrasonicBeamTest, TheHcSr04sReachIsItsPublishedLobeInterpolated) {
   const auto spec = SensorSpec::PartPreset("hc_sr04");
@@ -48,7 +48,7 @@ TEST(UltrasonicBeamTest, TheHcSr04sReachIsItsPublishedLobeInterpolated) {
 // 15° incidence window holds): heard near the sensor, where the lobe is 30°
 // wide, not at 1 m, where it is 13.4° (30 − 20·(1 − 0.305)/0.838).
 std::string PoleScenario(double range_m, double azimuth_deg) {
-  const double x = range_m * std::cos(azimuth_deg * kPi / 180), y = range_m * std::sin(azimuth_deg * kPi / 180);
+  const double x = range_m * std::cos(azimuth_deg * std::numbers::pi / 180), y = range_m * std::sin(azimuth_deg * std::numbers::pi / 180);
   return "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nscene:\n  objects:\n"
          "    - {name: pole, box: {size_m: [0.04, 0.04, 2]}, pose: {xyz_m: [" +
          std::to_string(x) + ", " + std::to_string(y) + ", 1], rpy_deg: [0, 0, " + std::to_string(azimuth_deg) +

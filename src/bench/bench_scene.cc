@@ -311,7 +311,10 @@ Scenario HeavyScenario(const BenchScene& scene, int mounts, int rays_per_mount, 
     const char* link = kLinks[m / per_link % kLinks.size()];
     const int slot = m % per_link;
     SensorConfig sensor;
-    sensor.name = "m" + std::to_string(m);
+    // appended, not `"m" + std::to_string(m)`: GCC 12 takes that for an
+    // overlapping memcpy (a false -Wrestrict at -O3)
+    sensor.name = "m";
+    sensor.name += std::to_string(m);
     sensor.spec = SensorSpec::Preset(SensorType::kUltrasonic);
     // a beam of rays_per_mount rays in a 25° cone (sensor beams: the first echo that counts wins)
     BeamSpec beam;

@@ -22,7 +22,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 /// proxsim's pipeline as the simulation runs it: one batched Cast, then per
 /// ray the echo and the sensor model (laser preset), with the keyed draws
@@ -213,7 +213,7 @@ json RaceOnRays(const char* set_name, std::span<const Ray> rays, Pipeline& pipel
   if (proxsim_distances) {
     proxsim_distances->resize(rays.size());
     for (std::size_t i = 0; i < rays.size(); ++i) {
-      (*proxsim_distances)[i] = hits_1t[i].is_hit() ? hits_1t[i].distance_m : kInf;
+      (*proxsim_distances)[i] = hits_1t[i].is_hit() ? hits_1t[i].distance_m : kInfinity;
     }
   }
   out["bullet_rays"] = bullet ? bullet_rays : 0;

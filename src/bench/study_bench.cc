@@ -33,7 +33,7 @@ std::string PaperStudy(int seeds) {
          "hazards: [obstacle]\n";
 }
 
-std::string WriteStudy(const fs::path& dir, const std::string& name, int seeds) {
+std::string WriteSeedStudy(const fs::path& dir, const std::string& name, int seeds) {
   fs::create_directories(dir);
   std::ofstream(dir / "paper_dining_room.yaml")
       << EmbeddedFiles().at("data/scenarios/paper_dining_room.yaml");
@@ -47,7 +47,7 @@ std::string WriteStudy(const fs::path& dir, const std::string& name, int seeds) 
 nlohmann::json StudySection(bool quick, const std::string& tmp) {
   nlohmann::json section;
   const fs::path dir = fs::path(tmp) / "study-bench";
-  const std::string study_1000 = WriteStudy(dir, "study_1000.yaml", 10);
+  const std::string study_1000 = WriteSeedStudy(dir, "study_1000.yaml", 10);
   const std::string self = SelfExecutable();
 
   // runs per second on one core: one worker thread, in this process
@@ -78,7 +78,7 @@ nlohmann::json StudySection(bool quick, const std::string& tmp) {
     section["mpi_unavailable"] = "mpirun not found (scripts/install-deps.sh installs openmpi-bin)";
   } else {
     const int seeds = quick ? 80 : 200;  // enough work (~5-12 s on one core) for mpirun's start-up not to count
-    const std::string study = WriteStudy(dir, "study_mpi.yaml", seeds);
+    const std::string study = WriteSeedStudy(dir, "study_mpi.yaml", seeds);
     const auto mpirun = [&](int ranks) {
       return TimeCommand_s("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe -np " +
                            std::to_string(ranks) + " '" + self + "' study '" + study + "' --no-report --threads 1 --out '" +

@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
-bool Hit(const ReadingRow& row) { return row.sample.object_id >= 0; }
+bool IsHit(const ReadingRow& row) { return row.sample.object_id >= 0; }
 
 // one entry per column, in the files' order; a value is a double whatever
 // the column's type (codes and 32-bit integers are exact in a double)
@@ -34,10 +34,10 @@ const std::array<ReadingsColumn, 24> kColumns = {{
      [](const ReadingRow& r) { return r.sample.reading.d_m; }},
     {"d_true_m", ColumnType::kFloat64, ColumnCodes::kNone, "m",
      "the noise-free distance of the ray's first hit within d_max; none when the ray hit nothing",
-     [](const ReadingRow& r) { return Hit(r) ? r.sample.echo.distance_m : kNone; }},
+     [](const ReadingRow& r) { return IsHit(r) ? r.sample.echo.distance_m : kNone; }},
     {"incidence_deg", ColumnType::kFloat64, ColumnCodes::kNone, "degrees",
      "the incidence at that hit, in [0, 90]; none without a hit",
-     [](const ReadingRow& r) { return Hit(r) ? r.sample.echo.incidence_deg : kNone; }},
+     [](const ReadingRow& r) { return IsHit(r) ? r.sample.echo.incidence_deg : kNone; }},
     {"signal", ColumnType::kFloat64, ColumnCodes::kNone, "",
      "the reflectance signal s of the paper's Eq. (1); none for the time-of-flight sensors",
      [](const ReadingRow& r) { return r.sample.reading.signal; }},
@@ -62,7 +62,7 @@ const std::array<ReadingsColumn, 24> kColumns = {{
      [](const ReadingRow& r) { return r.sample.dir_W.z(); }},
     {"object", ColumnType::kCode32, ColumnCodes::kObjects, "",
      "the hit object's name (a scene object or a robot link); none without a hit",
-     [](const ReadingRow& r) { return Hit(r) ? static_cast<double>(r.sample.object_id) : -1.0; }},
+     [](const ReadingRow& r) { return IsHit(r) ? static_cast<double>(r.sample.object_id) : -1.0; }},
     {"gait_phase", ColumnType::kFloat64, ColumnCodes::kNone, "[0, 1)",
      "the left leg's phase, 0 at its heel strike; none without a robot",
      [](const ReadingRow& r) { return r.frame.robot.present ? r.frame.robot.gait_phase : kNone; }},

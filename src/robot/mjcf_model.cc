@@ -182,7 +182,7 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
     if (!model.link_of_.try_emplace(name, index).second) {
       problems.push_back(where + "the name '" + name + "' is used by two links (bodies, sites or a body's joint links)");
     }
-    model.links_.push_back(RobotLink{.name = name, .mass_kg = mass_kg});
+    model.links_.push_back(RobotLink{.name = name, .child_joints = {}, .shapes = {}, .mass_kg = mass_kg});
     return index;
   };
   const auto add_joint = [&](const std::string& name, JointType type, int parent, int child, const Pose& X_PJ,

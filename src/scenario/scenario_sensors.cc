@@ -34,7 +34,7 @@ const std::vector<std::string>& AllTypeNames() {
   return names;
 }
 
-std::string JoinNames(const std::vector<std::string>& names) {
+std::string JoinSensorNames(const std::vector<std::string>& names) {
   std::string all;
   for (const auto& name : names) all += (all.empty() ? "" : ", ") + name;
   return all;
@@ -299,7 +299,7 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
 
   // type picks the preset
   const Field type = map["type"];
-  if (reader.Require(type, "type, one of " + JoinNames(AllTypeNames()))) {
+  if (reader.Require(type, "type, one of " + JoinSensorNames(AllTypeNames()))) {
     if (const auto name = reader.String(type)) {
       if (const auto sensor_type = SensorTypeFromName(*name)) {
         sensor.spec = SensorSpec::Preset(*sensor_type);
@@ -309,7 +309,7 @@ SensorConfig ReadSensor(YamlReader& reader, const MapView& map, bool has_robot) 
         const auto nearest = NearestKey(*name, AllTypeNames());
         reader.Fail(type, "unknown sensor type '" + *name + "' (" +
                               (nearest ? "did you mean '" + *nearest + "'? " : "") + "expected one of " +
-                              JoinNames(AllTypeNames()) + ")");
+                              JoinSensorNames(AllTypeNames()) + ")");
       }
     }
   }

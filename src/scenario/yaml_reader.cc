@@ -138,7 +138,12 @@ void YamlReader::FailFile(const std::string& message) { problems_.emplace_back(0
 
 void YamlReader::FailAtLine(int line, const std::string& path, const std::string& message) {
   std::string text = source_;
-  if (line > 0) text += ":" + std::to_string(line);
+  // two appends, not `":" + std::to_string(line)`: GCC 12 misreads that
+  // temporary's insert as an overlapping memcpy (a false -Wrestrict at -O3)
+  if (line > 0) {
+    text += ':';
+    text += std::to_string(line);
+  }
   text += ": ";
   if (!path.empty()) text += path + ": ";
   problems_.emplace_back(line, text + message);

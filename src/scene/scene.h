@@ -35,7 +35,7 @@ struct SceneObject {
   /// `ground`), never read from the name.
   bool ground = false;
   /// How it moves (scene/motion.h); absent: it stands still. A moving object is never ground.
-  std::optional<Motion> motion;
+  std::optional<Motion> motion = std::nullopt;
 };
 
 struct Scene {

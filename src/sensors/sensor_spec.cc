@@ -282,7 +282,7 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     // indoors, 7 % (60 cm) and 12 % (40 cm) outdoors overcast; it replaces
     // the 3 % above, which stays the σ a scenario's own noise.sigma replaces
     spec.sigma_table = {{0.88, 0.0, 0.04}, {0.17, 0.0, 0.07}, {0.88, 5.0, 0.07}, {0.17, 5.0, 0.12}};
-    spec.beam = BeamSpec{.aperture_deg = 25.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    spec.beam = BeamSpec{.aperture_deg = 25.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}, .reach = {}};
     spec.single_echo_source = "VL53L0X datasheet DocID029104: one ranging result per measurement";
     return spec;
   }
@@ -299,7 +299,7 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.part = "vl53l1x";
     spec.min_range_m = 0.04;
     spec.noise = {.sigma = 0.020, .mean = 0.0, .model = NoiseModel::kAdditive, .resolution_m = 0.001};
-    spec.beam = BeamSpec{.aperture_deg = 27.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}};
+    spec.beam = BeamSpec{.aperture_deg = 27.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}, .reach = {}};
     spec.roi_spads = {kVl53l1xFullRoi, kVl53l1xFullRoi};
     spec.timing_budget_ms = kVl53l1xDefaultBudget_ms;
     ApplyDistanceMode(*FindDistanceMode("vl53l1x", DefaultDistanceMode("vl53l1x")), spec);

@@ -34,8 +34,13 @@ std::string UnknownLinkProblem(const Scenario& scenario, const SensorConfig& sen
     known += (i ? ", " : "") + names.back();
   }
   const auto nearest = NearestKey(sensor.link, names);
-  const std::string where =
-      scenario.source + (sensor.link_line > 0 ? ":" + std::to_string(sensor.link_line) : std::string());
+  // appended piece by piece: GCC 12 takes `":" + std::to_string(...)` for an
+  // overlapping memcpy (a false -Wrestrict at -O3)
+  std::string where = scenario.source;
+  if (sensor.link_line > 0) {
+    where += ':';
+    where += std::to_string(sensor.link_line);
+  }
   return where + ": sensors." + sensor.name + ".link: unknown link '" + sensor.link + "'" +
          (nearest ? " (did you mean '" + *nearest + "'?)" : "") + "; expected world" +
          (known.empty() ? "" : " or one of " + known);

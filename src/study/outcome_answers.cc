@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string Number(double value) {
+std::string Format(double value) {
   if (!std::isfinite(value)) return "";
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", value);
@@ -110,11 +110,11 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
         const bool reached = run.outcome == "reached_goal";
         const double ratio = reached && run.straight_m > 0 ? run.walked_m / run.straight_m : NAN;
         csv += CsvField(study.sets[s].name) + "," + CsvField(groups[group_of[g]].first) + "," + CsvField(family.name) +
-               "," + family.kind + "," + Number(family.difficulty) + "," + std::to_string(study.jobs[job].seed) + "," +
-               (results[job].way_through ? "1" : "0") + "," + run.outcome + "," + Number(run.outcome_t_s) + "," +
-               (success ? "1" : "0") + "," + (reached ? Number(run.outcome_t_s) : "") + "," + Number(run.walked_m) +
-               "," + Number(run.straight_m) + "," + Number(ratio) + "," + Number(run.min_clearance_m) + "," +
-               Number(study.sets[s].price_usd) + "," + (study.jobs[job].train ? "train" : "test") + "," +
+               "," + family.kind + "," + Format(family.difficulty) + "," + std::to_string(study.jobs[job].seed) + "," +
+               (results[job].way_through ? "1" : "0") + "," + run.outcome + "," + Format(run.outcome_t_s) + "," +
+               (success ? "1" : "0") + "," + (reached ? Format(run.outcome_t_s) : "") + "," + Format(run.walked_m) +
+               "," + Format(run.straight_m) + "," + Format(ratio) + "," + Format(run.min_clearance_m) + "," +
+               Format(study.sets[s].price_usd) + "," + (study.jobs[job].train ? "train" : "test") + "," +
                (chosen(s, g) ? "1" : "0") + "," + CsvField(study.strategies[g].tuned) + "\n";
         if (study.jobs[job].train || !chosen(s, g)) continue;
         Tally& t = tallies[s * n_groups + group_of[g]];
@@ -202,16 +202,16 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     const double train_rate =
         t.train_runs > 0 ? static_cast<double>(t.train_successes) / static_cast<double>(t.train_runs) : NAN;
     ranking += std::to_string(r + 1) + "," + CsvField(set.name) + "," + CsvField(groups[t.group].first) +
-               "," + CsvField(sensors) + "," + Number(set.price_usd) + "," + Number(set.mass_g) + "," +
-               std::to_string(t.runs) + "," + std::to_string(t.successes) + "," + Number(t.rate()) + "," +
-               Number(ci.low) + "," + Number(ci.high) + "," + Number(share(t.reached)) + "," +
-               Number(share(t.collided)) + "," + Number(share(t.fell)) + "," + Number(share(t.stopped)) + "," +
-               Number(share(t.time_up)) + "," + Number(Median(t.time_to_goal_s)) + "," + Number(Median(t.path_ratio)) +
-               "," + Number(Median(t.clearance_m)) + "," + Number(t.min_clearance_m) + "," + set.baseline + "," +
-               Number(score.score) + "," + Number(score.low) + "," + Number(score.high) + "," +
-               Number(failure_cost(t)) + "," + Number(expected_cost(t)) + "," +
+               "," + CsvField(sensors) + "," + Format(set.price_usd) + "," + Format(set.mass_g) + "," +
+               std::to_string(t.runs) + "," + std::to_string(t.successes) + "," + Format(t.rate()) + "," +
+               Format(ci.low) + "," + Format(ci.high) + "," + Format(share(t.reached)) + "," +
+               Format(share(t.collided)) + "," + Format(share(t.fell)) + "," + Format(share(t.stopped)) + "," +
+               Format(share(t.time_up)) + "," + Format(Median(t.time_to_goal_s)) + "," + Format(Median(t.path_ratio)) +
+               "," + Format(Median(t.clearance_m)) + "," + Format(t.min_clearance_m) + "," + set.baseline + "," +
+               Format(score.score) + "," + Format(score.low) + "," + Format(score.high) + "," +
+               Format(failure_cost(t)) + "," + Format(expected_cost(t)) + "," +
                CsvField(study.strategies[t.strategy].tuned) + "," + std::to_string(t.train_runs) + "," +
-               Number(train_rate) + "\n";
+               Format(train_rate) + "\n";
     rows.push_back({{"set", set.name},
                     {"baseline", set.baseline.empty() ? json(nullptr) : json(set.baseline)},
                     {"perception_score", JsonNumber(score.score)},
@@ -254,8 +254,8 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
         pairs += CsvField(groups[g].first) + "," + CsvField(study.sets[sets[i]].name) + "," +
                  CsvField(study.sets[sets[j]].name) + "," + std::to_string(test_jobs.size()) + "," +
                  std::to_string(a_only) + "," + std::to_string(b_only) + "," + std::to_string(both) + "," +
-                 std::to_string(neither) + "," + Number(static_cast<double>(a_only + both) / runs) + "," +
-                 Number(static_cast<double>(b_only + both) / runs) + "," + Number(p) + "," + verdict + "\n";
+                 std::to_string(neither) + "," + Format(static_cast<double>(a_only + both) / runs) + "," +
+                 Format(static_cast<double>(b_only + both) / runs) + "," + Format(p) + "," + verdict + "\n";
       }
     }
   }
@@ -401,7 +401,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
           YAML::Emitter emitted;
           emitted << replay;
           const std::string text =
-              "# " + run.outcome + " at t = " + Number(run.outcome_t_s) + " s: set '" + study.sets[s].name +
+              "# " + run.outcome + " at t = " + Format(run.outcome_t_s) + " s: set '" + study.sets[s].name +
               "', strategy " + study.strategies[g].label + ", world " + family.name + " seed " +
               std::to_string(study.jobs[job].seed) + " (written by proxsim study " + study.source + ")\n" +
               emitted.c_str() + "\n";
@@ -413,7 +413,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
         }
         failures += CsvField(study.sets[s].name) + "," + CsvField(groups[group_of[g]].first) + "," +
                     CsvField(family.name) + "," + std::to_string(study.jobs[job].seed) + "," + run.outcome + "," +
-                    Number(run.outcome_t_s) + "," + CsvField(file) + "," + CsvField(command) + "," +
+                    Format(run.outcome_t_s) + "," + CsvField(file) + "," + CsvField(command) + "," +
                     CsvField(viewer) + "," + CsvField(study.strategies[g].tuned) + "\n";
       }
     }

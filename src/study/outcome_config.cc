@@ -34,7 +34,7 @@ std::string ReadText(const std::string& path) {
   return text.str();
 }
 
-std::string Number(double value) {
+std::string ConfigNumber(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.10g", value);
   return text;
@@ -59,7 +59,7 @@ std::vector<double> NumbersOrRange(YamlReader& reader, const Field& field, std::
       return values;
     }
     if (*from > *to) {
-      reader.Fail(field, "empty range: from " + Number(*from) + " is beyond to " + Number(*to));
+      reader.Fail(field, "empty range: from " + ConfigNumber(*from) + " is beyond to " + ConfigNumber(*to));
       return values;
     }
     const auto count = static_cast<std::size_t>(std::floor((*to - *from) / step + 1e-9)) + 1;
@@ -175,8 +175,8 @@ YAML::Node SensorNode(const Candidate& c) {
   node["link"] = c.sensor.link;
   YAML::Node pose;
   for (int i = 0; i < 3; ++i) {
-    pose["xyz_m"].push_back(Number(c.xyz_m[i]));
-    pose["rpy_deg"].push_back(Number(c.rpy_deg[i]));
+    pose["xyz_m"].push_back(ConfigNumber(c.xyz_m[i]));
+    pose["rpy_deg"].push_back(ConfigNumber(c.rpy_deg[i]));
   }
   node["pose"] = pose;
   return node;
@@ -193,7 +193,7 @@ void CombineSets(YamlReader& reader, const Field& field, const std::vector<Candi
   double count = 1;  // C(n, size), counted before any set is made
   for (std::size_t i = 0; i < size; ++i) count = count * static_cast<double>(n - i) / static_cast<double>(i + 1);
   if (count > static_cast<double>(kMaxOutcomeSets)) {
-    reader.Fail(field, "C(" + std::to_string(n) + ", " + std::to_string(size) + ") = " + Number(count) +
+    reader.Fail(field, "C(" + std::to_string(n) + ", " + std::to_string(size) + ") = " + ConfigNumber(count) +
                            " sets; expected at most " + std::to_string(kMaxOutcomeSets) + " (lower top or size)");
     return;
   }
@@ -321,16 +321,16 @@ void ReadWorld(YamlReader& reader, const Field& item, const std::optional<YAML::
     const auto name = (*map)["name"] ? reader.String((*map)["name"]) : std::optional<std::string>(*kind);
     for (double d : difficulties) {
       if (!(d >= 0 && d <= 1)) {
-        reader.Fail(generate, "difficulty " + Number(d) + ": expected values in [0, 1]");
+        reader.Fail(generate, "difficulty " + ConfigNumber(d) + ": expected values in [0, 1]");
         continue;
       }
       YAML::Node doc = Unfurnished(*base, true);
       YAML::Node gen = YAML::Clone(generate.node);
-      gen["difficulty"] = Number(d);
+      gen["difficulty"] = ConfigNumber(d);
       YAML::Node scene;
       scene["generate"] = gen;
       doc["scene"] = scene;
-      add({name.value_or(*kind) + "_d" + Number(d), *kind, d, YAML::Dump(doc), base_path.string(), true});
+      add({name.value_or(*kind) + "_d" + ConfigNumber(d), *kind, d, YAML::Dump(doc), base_path.string(), true});
     }
     return;
   }
@@ -548,7 +548,7 @@ OutcomeStudyConfig LoadOutcomeStudyFile(const std::string& path, bool allow_larg
   if (!allow_large && runs > static_cast<double>(kMaxOutcomeRuns)) {
     reader.Fail((*top)["worlds"], std::to_string(study.sets.size()) + " sets x " +
                                       std::to_string(study.strategies.size()) + " strategies x " +
-                                      std::to_string(study.jobs.size()) + " worlds = " + Number(runs) +
+                                      std::to_string(study.jobs.size()) + " worlds = " + ConfigNumber(runs) +
                                       " runs; expected at most " + std::to_string(kMaxOutcomeRuns) +
                                       " (pass --allow-large to run it anyway)");
   }

@@ -15,12 +15,12 @@ namespace proxsim {
 namespace {
 
 using nlohmann::json;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRunNaN = std::numeric_limits<double>::quiet_NaN();
 
 [[noreturn]] void Bad(const std::string& what) { throw InputError("journal line: " + what); }
 
 double NumberOrNaN(const json& value, const std::string& where) {
-  if (value.is_null()) return kNaN;
+  if (value.is_null()) return kRunNaN;
   if (!value.is_number()) Bad(where + ": expected a number, got " + value.dump());
   return value.get<double>();
 }
@@ -87,12 +87,12 @@ OutcomeRun RunLoaded(Scenario scenario) {
   run.outcome_t_s = outcome.t_s;
   const RobotKnowledge* robot = sim.observation().robot;
   run.walked_m = robot != nullptr ? robot->distance_walked_m : 0.0;
-  run.straight_m = kNaN;
+  run.straight_m = kRunNaN;
   if (const auto& config = sim.scenario().robot; config && !config->waypoints_m.empty()) {
     run.straight_m = (config->waypoints_m.back() - config->start_xyz_m.head<2>()).norm();
   }
   const double clearance = sim.robot_outcome().min_clearance_m;
-  run.min_clearance_m = std::isfinite(clearance) ? clearance : kNaN;
+  run.min_clearance_m = std::isfinite(clearance) ? clearance : kRunNaN;
   return run;
 }
 

@@ -16,7 +16,7 @@ namespace proxsim {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kAnswerNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Student's t at 97.5 % (Boost.Math; the hand-kept table this replaced had
 // 2.182 for 3 degrees of freedom, where it is 3.182, and 1.96 beyond 30)
@@ -57,7 +57,7 @@ SeedFigures PerSeed(const StudyConfig& study, const StudyResults& results, std::
 }  // namespace
 
 MeanCi MeanWithCi95(const std::vector<double>& values) {
-  if (values.empty()) return {kNaN, kNaN};
+  if (values.empty()) return {kAnswerNaN, kAnswerNaN};
   const double n = static_cast<double>(values.size());
   const double mean = std::accumulate(values.begin(), values.end(), 0.0) / n;
   // one value, or all equal: no spread (not the rounding noise of a sum)
@@ -75,8 +75,14 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
   // results.csv: one row per run, every parameter and metric
   std::string csv = "candidate,type,part,link,along_m,forward_m,pitch_deg,yaw_deg,scene,seed,samples,false_alarms,"
                     "self_share,grazing_share,floor_coverage,outcome,outcome_t_s";
-  for (const std::string& h : study.hazards)
-    csv += "," + CsvField(h + "_detected") + "," + CsvField(h + "_first_t_s") + "," + CsvField(h + "_lead_m");
+  // the "," + temporary string pieces appended one by one: GCC 12 takes
+  // `"," + f()` for an overlapping memcpy (a false -Wrestrict at -O3)
+  for (const std::string& h : study.hazards) {
+    for (const char* column : {"_detected", "_first_t_s", "_lead_m"}) {
+      csv += ',';
+      csv += CsvField(h + column);
+    }
+  }
   csv += "\n";
   for (std::size_t c = 0; c < n; ++c) {
     const Candidate& cand = study.candidates[c];
@@ -91,8 +97,12 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
                Number(m.grazing_share) + "," + Number(m.floor_coverage) + "," + m.outcome + "," +
                Number(m.outcome_t_s);
         for (const HazardResult& h : m.hazards) {
-          csv += h.applies ? "," + std::string(h.detected ? "1" : "0") : std::string(",");
-          csv += "," + (h.detected ? Number(h.first_t_s) : "") + "," + (h.detected ? Number(h.lead_m) : "");
+          csv += ',';
+          if (h.applies) csv += h.detected ? "1" : "0";
+          csv += ',';
+          if (h.detected) csv += Number(h.first_t_s);
+          csv += ',';
+          if (h.detected) csv += Number(h.lead_m);
         }
         csv += "\n";
       }
