@@ -24,24 +24,24 @@ namespace {
 namespace fs = std::filesystem;
 using testing::kH1Dir;
 
-constexpr int kEpisodes = 500;
+constexpr int kFlatFloorEpisodes = 500;
 
-double Uniform(std::mt19937_64& rng, double low, double high) {
+double FlatFloorUniform(std::mt19937_64& rng, double low, double high) {
   return low + (high - low) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
 // A path from the origin: four legs of 0.8 to 2 m, each turned up to 90° from the last.
-std::vector<Vec2> RandomPath(std::mt19937_64& rng) {
+std::vector<Vec2> FlatFloorRandomPath(std::mt19937_64& rng) {
   std::vector<Vec2> path{Vec2::Zero()};
   double yaw = 0;
   for (int leg = 0; leg < 4; ++leg) {
-    yaw += Uniform(rng, -M_PI / 2, M_PI / 2);
-    path.push_back(path.back() + Uniform(rng, 0.8, 2.0) * Vec2(std::cos(yaw), std::sin(yaw)));
+    yaw += FlatFloorUniform(rng, -M_PI / 2, M_PI / 2);
+    path.push_back(path.back() + FlatFloorUniform(rng, 0.8, 2.0) * Vec2(std::cos(yaw), std::sin(yaw)));
   }
   return path;
 }
 
-std::map<std::string, int> WalkEpisodes(const std::string& robot_yaml) {
+std::map<std::string, int> FlatFloorWalkEpisodes(const std::string& robot_yaml) {
   const Scenario scenario = LoadScenarioText(
       "proxsim: 1\nduration_s: 30\nrate_hz: 50\n"
       "scene: {builtin: empty, objects: [{name: floor, plane: {}}]}\n"
@@ -49,14 +49,14 @@ std::map<std::string, int> WalkEpisodes(const std::string& robot_yaml) {
       "flat.yaml");
   Simulation sim(scenario, 1);
   std::map<std::string, int> outcomes;
-  for (int episode = 0; episode < kEpisodes; ++episode) {
+  for (int episode = 0; episode < kFlatFloorEpisodes; ++episode) {
     std::mt19937_64 rng(1000 + static_cast<std::uint64_t>(episode));
     sim.Reset(static_cast<std::uint64_t>(episode));
-    sim.commands()->SetPath(RandomPath(rng));
+    sim.commands()->SetPath(FlatFloorRandomPath(rng));
     for (int sample = 0; !sim.done(); ++sample) {
-      if (sample % 50 == 0) sim.commands()->SetStride(Uniform(rng, 0.3, 0.9));
+      if (sample % 50 == 0) sim.commands()->SetStride(FlatFloorUniform(rng, 0.3, 0.9));
       // now and then a stop, and a second later the walk resumes
-      if (sample % 50 == 25 && Uniform(rng, 0, 1) < 0.1) sim.commands()->Stop();
+      if (sample % 50 == 25 && FlatFloorUniform(rng, 0, 1) < 0.1) sim.commands()->Stop();
       if (sample % 50 == 24) sim.commands()->Resume();
       sim.Step();
     }
@@ -72,33 +72,33 @@ std::map<std::string, int> WalkEpisodes(const std::string& robot_yaml) {
 }
 
 TEST(FlatFloorWalks, TheBuiltInBipedNeverFallsOverRandomStridesAndTurns) {
-  const auto outcomes = WalkEpisodes("  model: builtin:biped\n");
+  const auto outcomes = FlatFloorWalkEpisodes("  model: builtin:biped\n");
   EXPECT_EQ(outcomes.count("fell"), 0u);
-  EXPECT_GT(outcomes.at("metres walked"), kEpisodes * 3);
+  EXPECT_GT(outcomes.at("metres walked"), kFlatFloorEpisodes * 3);
 }
 
 TEST(FlatFloorWalks, TheH1NeverFallsOverRandomStridesAndTurns) {
   if (!fs::is_regular_file(kH1Dir / "urdf" / "h1.urdf")) GTEST_SKIP() << "the Unitree H1 is not at " << kH1Dir;
-  const auto outcomes = WalkEpisodes(
+  const auto outcomes = FlatFloorWalkEpisodes(
       "  model: " + (kH1Dir / "urdf" / "h1.urdf").string() + "\n  package_paths: [" +
       kH1Dir.parent_path().string() +
       "]\n  legs:\n"
       "    left:  {hip: left_hip_pitch_joint,  knee: left_knee_joint,  ankle: left_ankle_joint,  foot: left_ankle_link}\n"
       "    right: {hip: right_hip_pitch_joint, knee: right_knee_joint, ankle: right_ankle_joint, foot: right_ankle_link}\n");
   EXPECT_EQ(outcomes.count("fell"), 0u);
-  EXPECT_GT(outcomes.at("metres walked"), kEpisodes * 3);
+  EXPECT_GT(outcomes.at("metres walked"), kFlatFloorEpisodes * 3);
 }
 
 // A stride beyond the legs, asked on level ground with gait.unsafe_steps:
 // fall: where no gentler step (half the turn, 0.7, 0.5 or 0.35 of the
 // stride) fits its legs either, the robot stands before the step — its own
 // limits (a refusal), never a fall. (Before: "fell".)
-struct Walked {
+struct FlatFloorWalked {
   Simulation::Outcome outcome;
   double distance_m;
 };
 
-Walked AskedStride(double stride_m) {
+FlatFloorWalked FlatFloorAskedStride(double stride_m) {
   Simulation sim(LoadScenarioText("proxsim: 1\nduration_s: 8\nrate_hz: 50\n"
                                   "scene: {builtin: empty, objects: [{name: floor, plane: {}}]}\n"
                                   "robot:\n  model: builtin:biped\n  gait: {unsafe_steps: fall}\n"
@@ -114,7 +114,7 @@ Walked AskedStride(double stride_m) {
 
 TEST(FlatFloorWalks, AStrideBeyondTheLegsOnLevelGroundIsStoodNeverFallen) {
   for (const double stride_m : {3.0, 30.0}) {
-    const Walked walked = AskedStride(stride_m);
+    const FlatFloorWalked walked = FlatFloorAskedStride(stride_m);
     EXPECT_EQ(walked.outcome.name, "refused") << stride_m << ": " << walked.outcome.detail;
     EXPECT_GT(walked.distance_m, 0.3) << stride_m << ": the steps before it were walked";
   }
