@@ -2,7 +2,8 @@
 # Fresh machine → every test: installs what is missing, builds the release and
 # the sanitizer (ASan+UBSan) presets, runs the whole CTest suite (but the
 # `long` label) in release, its C++ tests (labels unit and cli; not python,
-# browser) under the sanitizers, and the ray-dependent tests (label rays) once
+# browser, nor heavy: whole studies whose C++ paths the smaller tests cover)
+# under the sanitizers, and the ray-dependent tests (label rays) once
 # more on Embree's SSE4.2 code path.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -131,7 +131,7 @@ TEST(GridTraversalTest, StopsWhenTheVisitorSaysSo) {
 
 // ------------------------------------------------------------ one reading
 
-SensorOutput Reading(const Vec3& p_WS, const Vec3& dir_W, bool detected, double d_m) {
+SensorOutput EvidenceReading(const Vec3& p_WS, const Vec3& dir_W, bool detected, double d_m) {
   SensorOutput out;
   out.fresh = true;
   out.detected = detected;
@@ -169,7 +169,7 @@ TEST(RayEvidenceTest, ADetectionIsAPointWithTheHeightVarianceOfItsNoiseAlongTheR
   const SensorSpec laser = SensorSpec::Preset(SensorType::kLaser);
   const Vec3 dir = Vec3(std::cos(DegToRad(40)), 0, -std::sin(DegToRad(40)));
   const double d = 0.3 / std::sin(DegToRad(40));  // to the floor from 0.3 m up
-  const RayEvidence e = InterpretReading(laser, Reading({0.1, 0.05, 0.3}, dir, true, d));
+  const RayEvidence e = InterpretReading(laser, EvidenceReading({0.1, 0.05, 0.3}, dir, true, d));
   EXPECT_NEAR(e.point_W().z(), 0.0, 1e-12);
   const double sigma_d = 0.01 * d;
   EXPECT_NEAR(e.variance_z_m2, sigma_d * sigma_d * dir.z() * dir.z(), 1e-15);
@@ -179,7 +179,7 @@ TEST(RayEvidenceTest, ADetectionIsAPointWithTheHeightVarianceOfItsNoiseAlongTheR
   // a beam adds the cone's lateral spread: σ_lat = d·tan(aperture/2)/2, across the axis
   SensorSpec cone = laser;
   cone.beam = BeamSpec{.aperture_deg = 20, .rays = 7};
-  const RayEvidence c = InterpretReading(cone, Reading({0.1, 0.05, 0.3}, dir, true, d));
+  const RayEvidence c = InterpretReading(cone, EvidenceReading({0.1, 0.05, 0.3}, dir, true, d));
   const double sigma_lat = d * std::tan(DegToRad(10)) / 2;
   // ... along the cone's lowest direction (the axis pitched 40° turned down by half the aperture: 50°)
   const Vec3 low(std::cos(DegToRad(50)), 0, -std::sin(DegToRad(50)));
@@ -188,7 +188,7 @@ TEST(RayEvidenceTest, ADetectionIsAPointWithTheHeightVarianceOfItsNoiseAlongTheR
   // a known mean is a bias: taken out of the distance
   SensorSpec biased = laser;
   biased.noise.mean = 0.02;
-  EXPECT_NEAR(InterpretReading(biased, Reading({0, 0, 0.3}, dir, true, 1.02 * d)).d_m, d, 1e-12);
+  EXPECT_NEAR(InterpretReading(biased, EvidenceReading({0, 0, 0.3}, dir, true, 1.02 * d)).d_m, d, 1e-12);
 }
 
 // A cone pitched 8° down from 0.3 m up (a VL53L0X on a shin: 25° cone) first
@@ -204,7 +204,7 @@ TEST(RayEvidenceTest, AConesFloorEchoIsFloorNotAPointAboveIt) {
     const double pitch = DegToRad(8), yaw = DegToRad(yaw_deg);
     const Vec3 axis(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), -std::sin(pitch));
     const double d = 0.3 / std::sin(DegToRad(20.5));
-    const RayEvidence e = InterpretReading(cone, Reading({1, 2, 0.3}, axis, true, d));
+    const RayEvidence e = InterpretReading(cone, EvidenceReading({1, 2, 0.3}, axis, true, d));
     EXPECT_NEAR(e.point_W().z(), 0.0, 1e-9) << yaw_deg;
     EXPECT_NEAR(0.3 - d * std::sin(pitch), 0.18, 0.005);  // where the axis would have put it
     // in the axis's vertical plane: the same heading
@@ -212,7 +212,7 @@ TEST(RayEvidenceTest, AConesFloorEchoIsFloorNotAPointAboveIt) {
     EXPECT_TRUE(e.proves_empty);
   }
   // straight down, every direction of the cone is as low: the axis
-  const RayEvidence down = InterpretReading(cone, Reading({0, 0, 0.3}, -Vec3::UnitZ(), true, 0.3));
+  const RayEvidence down = InterpretReading(cone, EvidenceReading({0, 0, 0.3}, -Vec3::UnitZ(), true, 0.3));
   EXPECT_NEAR(down.point_W().z(), 0.0, 1e-12);
 }
 
@@ -220,19 +220,19 @@ TEST(RayEvidenceTest, SilenceBoundsHeightsOnlyWhereAFlatFloorWouldHaveEchoed) {
   const SensorSpec laser = SensorSpec::Preset(SensorType::kLaser);  // α* = 45°
   const auto silent = [&](double pitch_down_deg) {
     const Vec3 dir(std::cos(DegToRad(pitch_down_deg)), 0, -std::sin(DegToRad(pitch_down_deg)));
-    return InterpretReading(laser, Reading({0, 0, 0.3}, dir, false, laser.max_range_m));
+    return InterpretReading(laser, EvidenceReading({0, 0, 0.3}, dir, false, laser.max_range_m));
   };
   EXPECT_FALSE(silent(30).bounds_height);  // the floor meets it at 60°: grazing, it would not echo
   EXPECT_TRUE(silent(50).bounds_height);   // at 40°: the floor would have echoed
   EXPECT_FALSE(silent(50).proves_empty);
   EXPECT_DOUBLE_EQ(silent(50).free_end_m, 2.0);
   const SensorSpec ultrasonic = SensorSpec::Preset(SensorType::kUltrasonic);  // d_min 0.1: the dead zone is not known empty
-  const RayEvidence u = InterpretReading(ultrasonic, Reading({0, 0, 0.3}, -Vec3::UnitZ(), false, 1.0));
+  const RayEvidence u = InterpretReading(ultrasonic, EvidenceReading({0, 0, 0.3}, -Vec3::UnitZ(), false, 1.0));
   EXPECT_TRUE(u.bounds_height);
   EXPECT_DOUBLE_EQ(u.free_begin_m, 0.1);
   SensorSpec dropping = laser;
   dropping.noise.dropout = 0.1;  // a silence may be a lost echo
-  EXPECT_FALSE(InterpretReading(dropping, Reading({0, 0, 0.3}, -Vec3::UnitZ(), false, 2.0)).bounds_height);
+  EXPECT_FALSE(InterpretReading(dropping, EvidenceReading({0, 0, 0.3}, -Vec3::UnitZ(), false, 2.0)).bounds_height);
 }
 
 // ------------------------------------------------------------ the map, one ray at a time
@@ -263,7 +263,7 @@ TEST(TerrainMapTest, OneRayOnAFlatFloorUpdatesExactlyTheCellItHitsWithItsNoiseMo
   TerrainMap map(TerrainMapConfig{}, {laser}, {true});
   const Vec3 p_WS(0.101, 0.053, 0.3), dir = Vec3(std::cos(DegToRad(50)), 0.1, -std::sin(DegToRad(50))).normalized();
   const double d = -p_WS.z() / dir.z();  // the floor z = 0, exactly
-  const SensorOutput reading = Reading(p_WS, dir, true, d);
+  const SensorOutput reading = EvidenceReading(p_WS, dir, true, d);
   const RobotKnowledge robot = Standing({0, 0});
   map.Update(Observation{.t_s = 0.25, .sensors = std::span(&reading, 1), .robot = &robot});
 
@@ -291,7 +291,7 @@ TEST(TerrainMapTest, AnEmptyRayLowersTheUpperBoundOfTheCellsItCrossesAndOnlyThos
   config.max_height_m = 10;  // nothing clipped: the whole ray counts
   TerrainMap map(config, {ideal}, {true});
   const Vec3 p_WS(0.013, -0.027, 0.4), dir = Vec3(0.35, 0.2, -1).normalized();
-  const SensorOutput reading = Reading(p_WS, dir, false, 2.0);
+  const SensorOutput reading = EvidenceReading(p_WS, dir, false, 2.0);
   const RobotKnowledge robot = Standing({0, 0});
   map.Update(Observation{.t_s = 1.0, .sensors = std::span(&reading, 1), .robot = &robot});
   TerrainArchive archive(map, false);
@@ -327,7 +327,7 @@ TEST(TerrainScoreTest, CountsTheBoundsThatPutTheSurfaceLowerThanTheTruthByMoreTh
   config.max_height_m = 10;
   TerrainMap map(config, {ideal}, {true});
   const Vec3 p_WS(0.013, -0.027, 0.4), dir = Vec3(0.35, 0.2, -1).normalized();
-  const SensorOutput reading = Reading(p_WS, dir, false, 2.0);
+  const SensorOutput reading = EvidenceReading(p_WS, dir, false, 2.0);
   const RobotKnowledge robot = Standing({0, 0});
   map.Update(Observation{.t_s = 1.0, .sensors = std::span(&reading, 1), .robot = &robot});
   TerrainArchive archive(map, false);
@@ -362,8 +362,8 @@ TEST(TerrainMapTest, TheMapsCeilingKeepsPointsAndBoundsBelowMaxHeight) {
   TerrainMap map(TerrainMapConfig{}, {ideal}, {true});  // max_height_m 0.6
   const RobotKnowledge robot = Standing({0, 0});
   // a table top at 0.75 m seen from below, and a ray passing at 0.7 m: neither is the map's business
-  const SensorOutput readings[] = {Reading({0.5, 0, 0.5}, Vec3::UnitZ(), true, 0.25),
-                                   Reading({0.0, 0.3, 0.7}, Vec3::UnitX(), false, 2.0)};
+  const SensorOutput readings[] = {EvidenceReading({0.5, 0, 0.5}, Vec3::UnitZ(), true, 0.25),
+                                   EvidenceReading({0.0, 0.3, 0.7}, Vec3::UnitX(), false, 2.0)};
   map.Update(Observation{.t_s = 0, .sensors = readings, .robot = &robot});
   EXPECT_EQ(map.grid().tile_count(), 1u);  // the vertical ray's own column, bounded below 0.6
   EXPECT_EQ(map.CellAt(0.5, 0.0)->upper_bound_m, 0.5f);
@@ -374,7 +374,7 @@ TEST(TerrainMapTest, TheMapsCeilingKeepsPointsAndBoundsBelowMaxHeight) {
 TEST(TerrainMapTest, TheCeilingRidesWithTheGroundTheRobotStandsOn) {
   // a landing top at z = 0.6 m, read from the floor and from the landing
   const SensorSpec ideal = SensorSpec::Preset(SensorType::kIdeal);
-  const SensorOutput reading = Reading({0.5, 0.0, 0.9}, -Vec3::UnitZ(), true, 0.3);
+  const SensorOutput reading = EvidenceReading({0.5, 0.0, 0.9}, -Vec3::UnitZ(), true, 0.3);
   TerrainMap from_floor(TerrainMapConfig{}, {ideal}, {true});  // max_height_m 0.6
   const RobotKnowledge on_floor = Standing({0, 0});
   from_floor.Update(Observation{.t_s = 0, .sensors = std::span(&reading, 1), .robot = &on_floor});
@@ -604,11 +604,11 @@ TEST(TerrainMapTest, TheHazardPassKeepingUnchangedClustersFindsWhatAFillOfEveryL
       if (Inside(x, y, 0.4, 0.6, 0.1, 0.3)) z += 0.1;   // a raised patch
       if (Inside(x, y, 0.9, 1.1, 0.3, 0.5)) z -= 0.12;  // a pit
       const Vec3 p_WS(x, y, 0.5);
-      readings.push_back(k % 7 == 0 ? Reading(p_WS, Vec3(0.3, 0.1, -1), false, 0.45)
-                                    : Reading(p_WS, -Vec3::UnitZ(), true, p_WS.z() - z));
+      readings.push_back(k % 7 == 0 ? EvidenceReading(p_WS, Vec3(0.3, 0.1, -1), false, 0.45)
+                                    : EvidenceReading(p_WS, -Vec3::UnitZ(), true, p_WS.z() - z));
     }
     // a new raised cell far off: a label changes, so that this sample has a hazard pass
-    readings.push_back(Reading(Vec3(3 + 0.1 * step, 3, 0.5), -Vec3::UnitZ(), true, 0.4));
+    readings.push_back(EvidenceReading(Vec3(3 + 0.1 * step, 3, 0.5), -Vec3::UnitZ(), true, 0.4));
     map.Update(Observation{.t_s = 0.02 * step, .sensors = readings, .robot = &robot});
     clusters_kept += map.clusters_kept_at_last_pass();
     clusters_filled += map.clusters_filled_at_last_pass();
