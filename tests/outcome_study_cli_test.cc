@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -46,6 +47,22 @@ std::string SmallStudy() {
          "worlds:\n"
          "  - {name: obstacle_room, scenario: " + data + "circumvent_obstacle.yaml, seeds: [1, 2]}\n"
          "  - {generate: {kind: room, difficulty: 0.3, size_m: [4, 4]}, seeds: [1, 2]}\n";
+}
+
+// Runs a failures.csv row's replay command from the study's folder `out`, as
+// printed, and checks that the replay ends as the study said.
+void ExpectReplayReproduces(const fs::path& out, const std::map<std::string, std::string>& failure) {
+  std::string command = failure.at("command");
+  ASSERT_EQ(command.rfind("proxsim run ", 0), 0u) << command;
+  command.replace(0, 7, PROXSIM_BINARY);
+  const auto replay = RunCommand("cd " + out.string() + " && " + command + " --no-report");
+  ASSERT_EQ(replay.exit_code, 0) << failure.at("world_file") << ": " << replay.output;
+  const std::string replay_dir = failure.at("viewer").substr(0, failure.at("viewer").find("/report/"));
+  const auto summary = nlohmann::json::parse(ReadFile(out / replay_dir / "summary.json"));
+  EXPECT_EQ(summary["robot"]["outcome"], failure.at("outcome")) << failure.at("world_file");
+  char t[32];
+  std::snprintf(t, sizeof t, "%.9g", summary["robot"]["outcome_t_s"].get<double>());
+  EXPECT_EQ(std::string(t), failure.at("outcome_t_s")) << failure.at("world_file");
 }
 
 class OutcomeStudyCliTest : public ::testing::Test {
@@ -118,17 +135,7 @@ TEST_F(OutcomeStudyCliTest, AFailedRunsReplayCommandReproducesItsOutcome) {
   for (const auto& row : failures.rows)
     if (row.at("set") == "upward" && row.at("world") == "obstacle_room") failure = &row;
   ASSERT_NE(failure, nullptr);
-  std::string command = failure->at("command");
-  ASSERT_EQ(command.rfind("proxsim run ", 0), 0u) << command;
-  command.replace(0, 7, PROXSIM_BINARY);
-  const auto replay = RunCommand("cd " + out.string() + " && " + command + " --no-report");
-  ASSERT_EQ(replay.exit_code, 0) << replay.output;
-  const std::string replay_dir = failure->at("viewer").substr(0, failure->at("viewer").find("/report/"));
-  const auto summary = nlohmann::json::parse(ReadFile(out / replay_dir / "summary.json"));
-  EXPECT_EQ(summary["robot"]["outcome"], failure->at("outcome"));
-  char t[32];
-  std::snprintf(t, sizeof t, "%.9g", summary["robot"]["outcome_t_s"].get<double>());
-  EXPECT_EQ(std::string(t), failure->at("outcome_t_s"));
+  ExpectReplayReproduces(out, *failure);
 }
 
 // A team's own robot, given by a path relative to its base scenario, in a
@@ -156,17 +163,7 @@ TEST_F(OutcomeStudyCliTest, EveryReplayOfAUserRobotGivenByARelativePathReproduce
   int replayed = 0;
   for (const auto& failure : ReadCsv(out / "failures.csv").rows) {
     if (failure.at("command").empty()) continue;  // the blind baseline's, listed only
-    std::string command = failure.at("command");
-    ASSERT_EQ(command.rfind("proxsim run ", 0), 0u) << command;
-    command.replace(0, 7, PROXSIM_BINARY);
-    const auto replay = RunCommand("cd " + out.string() + " && " + command + " --no-report");
-    ASSERT_EQ(replay.exit_code, 0) << failure.at("world_file") << ": " << replay.output;
-    const std::string replay_dir = failure.at("viewer").substr(0, failure.at("viewer").find("/report/"));
-    const auto summary = nlohmann::json::parse(ReadFile(out / replay_dir / "summary.json"));
-    EXPECT_EQ(summary["robot"]["outcome"], failure.at("outcome")) << failure.at("world_file");
-    char t[32];
-    std::snprintf(t, sizeof t, "%.9g", summary["robot"]["outcome_t_s"].get<double>());
-    EXPECT_EQ(std::string(t), failure.at("outcome_t_s")) << failure.at("world_file");
+    ExpectReplayReproduces(out, failure);
     ++replayed;
   }
   EXPECT_GT(replayed, 0) << "the oracle or the laser failed nowhere: nothing replayed\n" << ReadFile(out / "failures.csv");

@@ -20,6 +20,7 @@ constexpr double kFreeMargin_m = 0.001;
 
 EvidenceModel::EvidenceModel(const SensorSpec& spec, bool with_zones)
     : tan_half_aperture(std::tan(SpreadHalfAngleRad(spec))),
+      half_aperture_rad(SpreadHalfAngleRad(spec)),
       floor_echo_min_dir_z(std::cos(DegToRad(EchoIncidenceLimitDeg(spec))) - 1e-12),
       silence_range_m(SilenceRange_m(spec)) {
   if (!spec.zones || !with_zones) return;
@@ -47,7 +48,7 @@ RayEvidence InterpretReading(const SensorSpec& spec, const EvidenceModel& model,
   // stands at least that high. The cone is empty up to the echo in every
   // direction, this one too.
   if (output.detected && model.tan_half_aperture > 0) {
-    evidence.dir_W = LowestEchoDirection_W(evidence.dir_W, std::atan(model.tan_half_aperture));
+    evidence.dir_W = LowestEchoDirection_W(evidence.dir_W, model.half_aperture_rad);
   }
   const double dir_z = evidence.dir_W.z();
   if (output.detected) {

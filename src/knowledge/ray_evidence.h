@@ -57,6 +57,7 @@ struct EvidenceModel {
   /// `with_zones` false: no zone's range found (InterpretReading finds the one it needs)
   explicit EvidenceModel(const SensorSpec& spec, bool with_zones = true);
   double tan_half_aperture = 0.0;      ///< of the spread of an echo across the beam
+  double half_aperture_rad = 0.0;      ///< the same angle (the cone's lowest direction is turned down by it)
   double floor_echo_min_dir_z = 0.0;   ///< |dir_z| from which a flat floor would echo
   double silence_range_m = 0.0;        ///< the range the sensor's silence vouches for
   std::vector<double> zone_silence_range_m;  ///< the same per zone of a multi-zone sensor

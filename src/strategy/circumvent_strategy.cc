@@ -271,9 +271,23 @@ CircumventStrategy::Segment CircumventStrategy::SegmentNear(const Vec2& p_W) con
   return best;
 }
 
+template <typename Visit>
+void CircumventStrategy::ForEachLinkedCell(const Cell& cell, const Vec2& p_W, Visit visit) const {
+  // the kept cells within reach, row by row (a row's cells are contiguous in
+  // the ordered map: the scan never walks a whole stripe of the map), whose
+  // points lie within kClusterLink_m of p_W; stops when visit returns false
+  const auto reach = static_cast<std::int64_t>(std::ceil(kClusterLink_m / kCell_m));
+  for (std::int64_t row = cell.first - reach; row <= cell.first + reach; ++row) {
+    for (auto it = points_.lower_bound({row, cell.second - reach});
+         it != points_.end() && it->first.first == row && it->first.second <= cell.second + reach; ++it) {
+      if ((it->second.head<2>() - p_W).norm() > kClusterLink_m) continue;
+      if (!visit(it->first)) return;
+    }
+  }
+}
+
 void CircumventStrategy::GrowCluster(ClusterWalk& walk, std::deque<Cell> queue) const {
   // breadth-first over the kept cells, linking those closer than kClusterLink_m
-  const auto reach = static_cast<std::int64_t>(std::ceil(kClusterLink_m / kCell_m));
   const Vec2 left = Left(walk.u);
   while (!queue.empty()) {
     const Cell cell = queue.front();
@@ -285,17 +299,10 @@ void CircumventStrategy::GrowCluster(ClusterWalk& walk, std::deque<Cell> queue) 
     walk.extent.s_max = std::max(walk.extent.s_max, d.dot(walk.u));
     walk.extent.l_min = std::min(walk.extent.l_min, d.dot(left));
     walk.extent.l_max = std::max(walk.extent.l_max, d.dot(left));
-    // the neighbours within reach, row by row (a row's cells are contiguous
-    // in the ordered map: the scan never walks a whole stripe of the map)
-    for (std::int64_t row = cell.first - reach; row <= cell.first + reach; ++row) {
-      for (auto it = points_.lower_bound({row, cell.second - reach});
-           it != points_.end() && it->first.first == row && it->first.second <= cell.second + reach; ++it) {
-        if (walk.seen.contains(it->first)) continue;
-        if ((it->second.head<2>() - point->second.head<2>()).norm() > kClusterLink_m) continue;
-        walk.seen.insert(it->first);
-        queue.push_back(it->first);
-      }
-    }
+    ForEachLinkedCell(cell, point->second.head<2>(), [&](const Cell& linked) {
+      if (walk.seen.insert(linked).second) queue.push_back(linked);
+      return true;
+    });
   }
 }
 
@@ -320,7 +327,6 @@ CircumventStrategy::Extent CircumventStrategy::MeasureCluster(const Cell& seed, 
     GrowCluster(walk, {seed});
     return walk.extent;
   }
-  const auto reach = static_cast<std::int64_t>(std::ceil(kClusterLink_m / kCell_m));
   for (; walk.added < cells_added_.size(); ++walk.added) {
     const Cell cell = cells_added_[walk.added];
     if (cell == seed) {  // the seed's own point, come at last
@@ -329,18 +335,11 @@ CircumventStrategy::Extent CircumventStrategy::MeasureCluster(const Cell& seed, 
     }
     if (walk.seen.contains(cell)) continue;  // reached from another new cell already
     // linked to the walk: a reached cell within kClusterLink_m
-    const Vec2 p = points_.at(cell).head<2>();
     bool linked = false;
-    for (std::int64_t row = cell.first - reach; row <= cell.first + reach && !linked; ++row) {
-      for (auto it = points_.lower_bound({row, cell.second - reach});
-           it != points_.end() && it->first.first == row && it->first.second <= cell.second + reach; ++it) {
-        if (walk.seen.contains(it->first) && points_.contains(it->first) &&
-            (it->second.head<2>() - p).norm() <= kClusterLink_m) {
-          linked = true;
-          break;
-        }
-      }
-    }
+    ForEachLinkedCell(cell, points_.at(cell).head<2>(), [&](const Cell& near) {
+      linked = walk.seen.contains(near);
+      return !linked;
+    });
     if (!linked) continue;
     walk.seen.insert(cell);
     GrowCluster(walk, {cell});

@@ -155,6 +155,10 @@ class CircumventStrategy : public Strategy {
   mutable ClusterWalk cluster_walk_;
   // the walk carried on from the cells in `queue` (each already in walk.seen)
   void GrowCluster(ClusterWalk& walk, std::deque<Cell> queue) const;
+  // visit(cell) for each kept cell linked to a point p_W of `cell` (closer than
+  // kClusterLink_m), until visit returns false
+  template <typename Visit>
+  void ForEachLinkedCell(const Cell& cell, const Vec2& p_W, Visit visit) const;
   Cell seed_{};
   Segment segment_;
   std::optional<Extent> extent_;
