@@ -12,6 +12,7 @@
 #include "sensors/beam.h"
 #include "sensors/multizone.h"
 #include "sensors/sensor_measure.h"
+#include "strategy/stop_strategy.h"
 
 namespace proxsim {
 namespace {
@@ -128,6 +129,45 @@ TEST(MeasurementTest, ABeamWithSeveralEchoesListsThemNearestFirstAlongItsAxis) {
   // the reading is the first echo, the paper's beam reading
   EXPECT_DOUBLE_EQ(out.headline.reading.d_m, 0.6);
   EXPECT_EQ(out.headline_dir_W, at.dir_W);
+}
+
+}  // namespace
+}  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// The robot at the origin heading +x, its toe at x = 0.1, standing on z = 0.
+RobotKnowledge StandingAtOrigin() {
+  RobotKnowledge self;
+  self.p_W_front = Vec3(0.1, 0, 0);
+  self.heading_W = Vec3::UnitX();
+  self.ground_z_m = 0.0;
+  return self;
+}
+
+TEST(MeasurementTest, TheStopRuleSeesARaisedEchoBehindAFloorEcho) {
+  // a sonar on the shin pitched down: its reading (first echo) is the floor,
+  // its second echo a box edge 0.3 m ahead, 0.1 m up
+  SensorOutput sonar;
+  sonar.fresh = sonar.detected = true;
+  sonar.p_WS = Vec3(0.1, 0, 0.3);
+  sonar.dir_W = Vec3(1, 0, -1).normalized();
+  sonar.d_m = 0.3 * std::sqrt(2.0);  // the floor at x = 0.4
+  const Vec3 box_W(0.4, 0, 0.1);
+  const Vec3 to_box = box_W - sonar.p_WS;
+  sonar.measurements = {
+      Measurement{.p_WS = sonar.p_WS, .dir_W = sonar.dir_W, .d_m = sonar.d_m, .status = ReadingStatus::kOk, .rank = 0},
+      Measurement{.p_WS = sonar.p_WS, .dir_W = to_box.normalized(), .d_m = to_box.norm(), .status = ReadingStatus::kOk,
+                  .rank = 1}};
+  const SensorInfo info{.name = "sonar", .type = SensorType::kUltrasonic, .max_range_m = 1.0};
+  const StopConfig rule;
+  const std::optional<Vec3> seen = ObstaclePointAhead(sonar, info, StandingAtOrigin(), rule);
+  ASSERT_TRUE(seen.has_value());
+  EXPECT_NEAR((*seen - box_W).norm(), 0.0, 1e-12);
+  // without its second echo, the floor alone is no obstacle
+  sonar.measurements.resize(1);
+  EXPECT_FALSE(ObstaclePointAhead(sonar, info, StandingAtOrigin(), rule).has_value());
 }
 
 }  // namespace
