@@ -18,38 +18,43 @@ set(PYBIND11_FINDPYTHON ON)
 find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)
 find_package(pybind11 CONFIG REQUIRED)
 
-set(python_package_dir ${CMAKE_BINARY_DIR}/python/proxsim)
-# pybind11 links the module with -flto unless told otherwise: over its three
-# binding files (the modules it links are not LTO objects) that bought nothing
-# but a serial LTRANS pass at every link and lto-wrapper's warning about it
-set(CMAKE_INTERPROCEDURAL_OPTIMIZATION OFF)
-pybind11_add_module(proxsim_python MODULE python/bindings/module.cc python/bindings/robot_state.cc
-                    python/bindings/vec_walk_env.cc)
-set_target_properties(proxsim_python PROPERTIES OUTPUT_NAME _core LIBRARY_OUTPUT_DIRECTORY ${python_package_dir})
-target_link_libraries(proxsim_python PRIVATE proxsim_lib)
-target_compile_options(proxsim_python PRIVATE -Wall -Wextra)
+# The sanitizer pass runs no Python test (the interpreter is not ours to
+# judge): its preset leaves the module out (PROXSIM_BUILD_PYTHON_MODULE OFF).
+if(PROXSIM_BUILD_PYTHON_MODULE)
+  set(python_package_dir ${CMAKE_BINARY_DIR}/python/proxsim)
+  # pybind11 links the module with -flto unless told otherwise: over its three
+  # binding files (the modules it links are not LTO objects) that bought nothing
+  # but a serial LTRANS pass at every link and lto-wrapper's warning about it
+  set(CMAKE_INTERPROCEDURAL_OPTIMIZATION OFF)
+  pybind11_add_module(proxsim_python MODULE python/bindings/module.cc python/bindings/robot_state.cc
+                      python/bindings/vec_walk_env.cc)
+  set_target_properties(proxsim_python PROPERTIES OUTPUT_NAME _core LIBRARY_OUTPUT_DIRECTORY ${python_package_dir})
+  target_link_libraries(proxsim_python PRIVATE proxsim_lib)
+  target_compile_options(proxsim_python PRIVATE -Wall -Wextra)
 
-file(GLOB python_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/python/proxsim/*.py)
-set(python_copies "")
-foreach(source ${python_sources})
-  get_filename_component(name ${source} NAME)
-  add_custom_command(OUTPUT ${python_package_dir}/${name}
-                     COMMAND ${CMAKE_COMMAND} -E copy_if_different ${source} ${python_package_dir}/${name}
-                     DEPENDS ${source} VERBATIM)
-  list(APPEND python_copies ${python_package_dir}/${name})
-endforeach()
-add_custom_target(proxsim_python_package ALL DEPENDS ${python_copies})
-add_dependencies(proxsim_python proxsim_python_package)
-# `proxsim bench` drives the paper run from Python too (bench/python_loop.py)
-target_compile_definitions(proxsim_bench PRIVATE PROXSIM_PYTHON_DIR="${CMAKE_BINARY_DIR}/python")
-add_dependencies(proxsim proxsim_python)
+  file(GLOB python_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/python/proxsim/*.py)
+  set(python_copies "")
+  foreach(source ${python_sources})
+    get_filename_component(name ${source} NAME)
+    add_custom_command(OUTPUT ${python_package_dir}/${name}
+                       COMMAND ${CMAKE_COMMAND} -E copy_if_different ${source} ${python_package_dir}/${name}
+                       DEPENDS ${source} VERBATIM)
+    list(APPEND python_copies ${python_package_dir}/${name})
+  endforeach()
+  add_custom_target(proxsim_python_package ALL DEPENDS ${python_copies})
+  add_dependencies(proxsim_python proxsim_python_package)
+  # `proxsim bench` drives the paper run from Python too (bench/python_loop.py)
+  target_compile_definitions(proxsim_bench PRIVATE PROXSIM_PYTHON_DIR="${CMAKE_BINARY_DIR}/python")
+  add_dependencies(proxsim proxsim_python)
+endif()
+
 # `proxsim export --ros2` runs the bag writer from the source tree with this
 # Python (the venv's, where rosbags is): set on its one source file, so that
 # nothing else recompiles when the interpreter changes.
 set_source_files_properties(${CMAKE_SOURCE_DIR}/src/report/ros2_export.cc PROPERTIES COMPILE_DEFINITIONS
   "PROXSIM_PYTHON_PROGRAM=\"${Python_EXECUTABLE}\";PROXSIM_ROS2_BAG_WRITER=\"${CMAKE_SOURCE_DIR}/python/proxsim/ros2_bag.py\"")
 
-if(PROXSIM_BUILD_TESTS)
+if(PROXSIM_BUILD_TESTS AND PROXSIM_BUILD_PYTHON_MODULE)
   set(python_test_environment
       "PYTHONPATH=${CMAKE_BINARY_DIR}/python"
       "PROXSIM_BINARY=$<TARGET_FILE:proxsim>"

@@ -57,7 +57,8 @@ class TerrainSweep {
   void Run(TerrainMap& map, double x0, double x1, double height_m = 0.5) {
     std::vector<Ray> rays(fan_.size());
     std::vector<Hit> hits(fan_.size());
-    std::vector<SensorOutput> outputs(fan_.size());
+    outputs_.resize(fan_.size());
+    std::vector<SensorOutput>& outputs = outputs_;
     double t_s = 0;
     for (double x = x0; x <= x1; x += 0.01, t_s += 0.01) {
       const Vec3 p_WS(x, 0.003, height_m);
@@ -90,6 +91,7 @@ class TerrainSweep {
  private:
   RayCaster caster_;
   std::vector<Vec3> fan_;
+  std::vector<SensorOutput> outputs_;  // the fan's outputs, reused sweep after sweep
 };
 
 std::vector<BodyShape> FloorWith(std::vector<BodyShape> more) {

@@ -41,6 +41,7 @@
 #include "run/run_recorder.h"
 #include "sim/simulation.h"
 #include "knowledge/terrain_map.h"
+#include "sensors/multizone.h"
 
 namespace py = pybind11;
 
@@ -125,7 +126,8 @@ struct ObservationKeys {
   py::str t_s{"t_s"}, readings{"readings"}, robot{"robot"};
   py::str d_m{"d_m"}, detected{"detected"}, fresh{"fresh"}, signal{"signal"}, output{"output"},
       t_reported_s{"t_reported_s"}, origin_W{"origin_W"}, dir_W{"dir_W"}, zones{"zones"}, status{"status"},
-      target_count{"target_count"}, echoes{"echoes"}, count{"count"};
+      target_count{"target_count"}, echoes{"echoes"}, count{"count"}, measurements{"measurements"}, code{"code"},
+      group{"group"}, rank{"rank"};
   py::str left{"left"}, right{"right"}, pelvis_W{"pelvis_W"}, yaw_deg{"yaw_deg"}, joints_rad{"joints_rad"},
       gait_phase{"gait_phase"}, support_leg{"support_leg"}, has_feet{"has_feet"}, soles_W{"soles_W"},
       toes_W{"toes_W"}, heading_W{"heading_W"}, stopped{"stopped"}, distance_walked_m{"distance_walked_m"},
@@ -403,6 +405,86 @@ class PySimulation {
     start_ = Clock::now();
   }
 
+  // a sensor's measurements as arrays of one length: distances, whether
+  // each is a detection, the part's codes, signals, groups, ranks, origins and directions
+  py::dict MeasurementsDict(const Measurements& list) const {
+    const ObservationKeys& k = keys_;
+    const auto count = static_cast<py::ssize_t>(list.size());
+    py::array_t<double> d_m(count), signal(count), origin({count, py::ssize_t{3}}), dir({count, py::ssize_t{3}});
+    py::array_t<bool> detected(count);
+    py::array_t<std::uint8_t> code(count);
+    py::array_t<std::int32_t> group(count), rank(count);
+    for (py::ssize_t m = 0; m < count; ++m) {
+      const Measurement& measurement = list[static_cast<std::size_t>(m)];
+      d_m.mutable_at(m) = measurement.d_m;
+      signal.mutable_at(m) = measurement.signal;
+      detected.mutable_at(m) = measurement.detected();
+      code.mutable_at(m) = measurement.code;
+      group.mutable_at(m) = measurement.group;
+      rank.mutable_at(m) = measurement.rank;
+      for (int c = 0; c < 3; ++c) {
+        origin.mutable_at(m, c) = measurement.p_WS[c];
+        dir.mutable_at(m, c) = measurement.dir_W[c];
+      }
+    }
+    py::dict out;
+    out[k.d_m] = d_m;
+    out[k.detected] = detected;
+    out[k.code] = code;
+    out[k.signal] = signal;
+    out[k.group] = group;
+    out[k.rank] = rank;
+    out[k.origin_W] = origin;
+    out[k.dir_W] = dir;
+    return out;
+  }
+
+  // a multi-zone part's grid: (zones, targets) distances (0 without a target)
+  // and ST's status codes, (zones,) target counts and (zones, 3) zone axes
+  py::dict ZonesDict(const Measurements& list, int zone_count, int targets) const {
+    const ObservationKeys& k = keys_;
+    py::array_t<double> zone_d({py::ssize_t{zone_count}, py::ssize_t{targets}});
+    py::array_t<std::uint8_t> zone_status({py::ssize_t{zone_count}, py::ssize_t{targets}});
+    py::array_t<std::uint8_t> zone_counts(zone_count);
+    py::array_t<double> zone_dir({py::ssize_t{zone_count}, py::ssize_t{3}});
+    std::fill_n(zone_d.mutable_data(), zone_count * targets, 0.0);
+    std::fill_n(zone_status.mutable_data(), zone_count * targets, kZoneNoTarget);
+    std::fill_n(zone_counts.mutable_data(), zone_count, std::uint8_t{0});
+    for (const Measurement& measurement : list) {
+      zone_status.mutable_at(measurement.group, measurement.rank) = measurement.code;
+      if (measurement.rank == 0) {
+        for (int c = 0; c < 3; ++c) zone_dir.mutable_at(measurement.group, c) = measurement.dir_W[c];
+      }
+      if (!measurement.detected()) continue;
+      zone_d.mutable_at(measurement.group, measurement.rank) = measurement.d_m;
+      ++zone_counts.mutable_at(measurement.group);
+    }
+    py::dict out;
+    out[k.d_m] = zone_d;
+    out[k.status] = zone_status;
+    out[k.target_count] = zone_counts;
+    out[k.dir_W] = zone_dir;
+    return out;
+  }
+
+  // a beam's echoes: (4,) distances and signals, nearest first, NaN past the echoes heard, and their count
+  py::dict EchoesDict(const Measurements& list) const {
+    const ObservationKeys& k = keys_;
+    py::array_t<double> echo_d(kMaxEchoes), echo_signal(kMaxEchoes);
+    std::fill_n(echo_d.mutable_data(), kMaxEchoes, std::numeric_limits<double>::quiet_NaN());
+    std::fill_n(echo_signal.mutable_data(), kMaxEchoes, std::numeric_limits<double>::quiet_NaN());
+    const std::size_t heard = std::min(list.size(), static_cast<std::size_t>(kMaxEchoes));
+    for (std::size_t e = 0; e < heard; ++e) {
+      echo_d.mutable_at(static_cast<py::ssize_t>(e)) = list[e].d_m;
+      echo_signal.mutable_at(static_cast<py::ssize_t>(e)) = list[e].signal;
+    }
+    py::dict out;
+    out[k.d_m] = echo_d;
+    out[k.signal] = echo_signal;
+    out[k.count] = static_cast<int>(heard);
+    return out;
+  }
+
   py::dict ObservationDict() const {
     const Observation& obs = sim_->observation();
     const std::size_t n = obs.sensors.size();
@@ -442,50 +524,27 @@ class PySimulation {
     readings[k.origin_W] = origin;
     readings[k.dir_W] = dir;
 
-    // a multi-zone sensor's zones by its name: (zones, targets) distances and
-    // ST's status codes, (zones,) target counts and (zones, 3) zone axes
-    py::dict zones;
+    // what each sensor reports beside its reading, by its name, one shape for
+    // every part (sensors/measurement.h), and the same as a multi-zone part's
+    // (zones, targets) grid and a beam's (4,) echoes
+    py::dict measurements, zones, echoes;
     for (std::size_t i = 0; i < n; ++i) {
       const SensorOutput& s = obs.sensors[i];
-      if (s.zones.empty()) continue;
-      const auto zone_count = static_cast<py::ssize_t>(s.zones.size());
-      const auto targets = static_cast<py::ssize_t>(s.zone_d_m.size()) / zone_count;
-      py::array_t<double> zone_d({zone_count, targets});
-      py::array_t<std::uint8_t> zone_status({zone_count, targets});
-      py::array_t<std::uint8_t> zone_count_array(zone_count);
-      py::array_t<double> zone_dir({zone_count, py::ssize_t{3}});
-      std::copy(s.zone_d_m.begin(), s.zone_d_m.end(), zone_d.mutable_data());
-      std::copy(s.zone_status.begin(), s.zone_status.end(), zone_status.mutable_data());
-      std::copy(s.zone_target_count.begin(), s.zone_target_count.end(), zone_count_array.mutable_data());
-      for (py::ssize_t z = 0; z < zone_count; ++z) {
-        for (int c = 0; c < 3; ++c) zone_dir.mutable_at(z, c) = s.zones[static_cast<std::size_t>(z)].dir_W[c];
-      }
-      py::dict sensor;
-      sensor[k.d_m] = zone_d;
-      sensor[k.status] = zone_status;
-      sensor[k.target_count] = zone_count_array;
-      sensor[k.dir_W] = zone_dir;
-      zones[py::str(sim_->scenario().sensors[i].name)] = sensor;
+      if (s.measurements.empty()) continue;
+      const SensorSpec& spec = sim_->scenario().sensors[i].spec;
+      const py::str name(sim_->scenario().sensors[i].name);
+      measurements[name] = MeasurementsDict(s.measurements);
+      if (spec.zones) zones[name] = ZonesDict(s.measurements, ZoneCount(*spec.zones), spec.zones->targets);
+      if (spec.echoes != EchoSelection::kFirst) echoes[name] = EchoesDict(s.measurements);
     }
+    // a beam with several echoes that has heard none yet still has its entry
+    for (std::size_t i = 0; i < n; ++i) {
+      const py::str name(sim_->scenario().sensors[i].name);
+      if (sim_->scenario().sensors[i].spec.echoes != EchoSelection::kFirst && !echoes.contains(name))
+        echoes[name] = EchoesDict(obs.sensors[i].measurements);
+    }
+    readings[k.measurements] = measurements;
     readings[k.zones] = zones;
-
-    // a beam's several echoes (echoes: strongest | all) by its name: (4,)
-    // distances and signals, nearest first, NaN past the echoes heard, and their count
-    py::dict echoes;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (sim_->scenario().sensors[i].spec.echoes == EchoSelection::kFirst) continue;
-      const SensorOutput& s = obs.sensors[i];
-      py::array_t<double> echo_d(kMaxEchoes), echo_signal(kMaxEchoes);
-      std::fill_n(echo_d.mutable_data(), kMaxEchoes, std::numeric_limits<double>::quiet_NaN());
-      std::fill_n(echo_signal.mutable_data(), kMaxEchoes, std::numeric_limits<double>::quiet_NaN());
-      std::copy(s.echo_d_m.begin(), s.echo_d_m.end(), echo_d.mutable_data());
-      std::copy(s.echo_signal.begin(), s.echo_signal.end(), echo_signal.mutable_data());
-      py::dict sensor;
-      sensor[k.d_m] = echo_d;
-      sensor[k.signal] = echo_signal;
-      sensor[k.count] = static_cast<int>(s.echo_d_m.size());
-      echoes[py::str(sim_->scenario().sensors[i].name)] = sensor;
-    }
     readings[k.echoes] = echoes;
 
     py::dict result;

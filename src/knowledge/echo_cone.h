@@ -37,10 +37,29 @@ inline Vec3 LowestEchoDirection_W(const Vec3& dir_W, double half_rad) {
   return (std::cos(half_rad) * dir_W + std::sin(half_rad) * down_W).normalized();
 }
 
-/// Whether a detection of `sensor` (a fresh one) stands at least
-/// `min_height_m` above the ground at `ground_z_m` wherever in its cone it came from.
-inline bool EchoIsRaised(const SensorOutput& sensor, const SensorInfo& info, double ground_z_m, double min_height_m) {
-  return LowestEchoZ_m(sensor.p_WS, sensor.dir_W, sensor.d_m, info.aperture_deg) - ground_z_m >= min_height_m;
+/// Whether a detection (a fresh reading's headline, a zone's target, a beam's
+/// echo) stands at least `min_height_m` above the ground at `ground_z_m`
+/// wherever in the sensor's cone it came from (a zone's own axis: the parts
+/// with zones have no beam, aperture 0).
+inline bool EchoIsRaised(const Measurement& measurement, const SensorInfo& info, double ground_z_m,
+                         double min_height_m) {
+  return measurement.detected() &&
+         LowestEchoZ_m(measurement.p_WS, measurement.dir_W, measurement.d_m, info.aperture_deg) - ground_z_m >=
+             min_height_m;
+}
+
+/// Calls `visit(measurement)` for each detection a fresh sensor output puts
+/// in the world that stands `min_height_m` above the ground (EchoIsRaised):
+/// its reading first, then every one the part reports beside it.
+template <typename Visit>
+void ForEachRaisedEcho(const SensorOutput& sensor, const SensorInfo& info, double ground_z_m, double min_height_m,
+                       Visit&& visit) {
+  if (!sensor.fresh) return;
+  if (const Measurement headline = sensor.headline(); EchoIsRaised(headline, info, ground_z_m, min_height_m))
+    visit(headline);
+  for (const Measurement& measurement : sensor.measurements) {
+    if (EchoIsRaised(measurement, info, ground_z_m, min_height_m)) visit(measurement);
+  }
 }
 
 }  // namespace proxsim

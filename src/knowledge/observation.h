@@ -25,20 +25,12 @@
 #include "core/geometry.h"
 #include "knowledge/support_leg.h"
 #include "sensors/measured_point.h"
+#include "sensors/measurement.h"
 #include "sensors/sensor_spec.h"
 
 namespace proxsim {
 
 class TerrainMap;  // knowledge/terrain_map.h: built from the readings only
-
-/// One zone of a multi-zone sensor as the device reports it: its nearest
-/// target (ST's status "range valid") and, from the datasheet's geometry and
-/// the robot's kinematics, the zone's axis.
-struct ZoneOutput {
-  bool detected = false;       ///< the zone reports a valid target
-  double d_m = 0.0;            ///< its distance; the sensor's maximum range when none
-  Vec3 dir_W = Vec3::UnitX();  ///< the zone's axis (unit) when the sensor measured
-};
 
 /// What one sensor device delivered at a sample: its outputs, and where the
 /// robot's kinematics put the sensor when it measured.
@@ -52,23 +44,19 @@ struct SensorOutput {
   Vec3 p_WS = Vec3::Zero();    ///< the sensor's origin when it measured
   Vec3 dir_W = Vec3::UnitX();  ///< its axis (unit) when it measured
 
-  /// A multi-zone sensor's zones (empty for the others), each zone's nearest target.
-  std::vector<ZoneOutput> zones;
-  /// Every target of every zone as the device reports it (zone-major,
-  /// `targets` per zone, sensors/multizone.h): distance (0 without a
-  /// target), ST's target status code, and each zone's count of targets.
-  std::vector<double> zone_d_m;
-  std::vector<std::uint8_t> zone_status;
-  std::vector<std::uint8_t> zone_target_count;
-  /// A beam with `echoes: strongest | all`: its echoes as reported, nearest
-  /// first (at most 4; empty for the other sensors), distance and signal.
-  std::vector<double> echo_d_m;
-  std::vector<double> echo_signal;
+  /// What the device reports beside its reading, each with where it lies
+  /// (sensors/measurement.h): a multi-zone part's targets, zone by zone; a
+  /// beam's several echoes. Empty for the other sensors; kept as last
+  /// delivered while no news arrives.
+  Measurements measurements;
 
   /// The point the reading puts in the world: origin + d_m along the axis.
   Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
-  /// The point zone `zone`'s target puts in the world, along the zone's axis.
-  Vec3 p_W_zone(std::size_t zone) const { return MeasuredPoint_W(p_WS, zones[zone].dir_W, zones[zone].d_m); }
+  /// The reading as a measurement (status ok when detected, no_echo otherwise; group -1: the sensor's own).
+  Measurement headline() const {
+    return Measurement{.p_WS = p_WS, .dir_W = dir_W, .d_m = d_m,
+                       .status = detected ? ReadingStatus::kOk : ReadingStatus::kNoEcho, .signal = signal, .group = -1};
+  }
 };
 
 /// What the robot's datasheets and mounting tell it about one sensor.

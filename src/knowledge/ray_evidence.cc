@@ -31,27 +31,28 @@ EvidenceModel::EvidenceModel(const SensorSpec& spec, bool with_zones)
   }
 }
 
-RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output, int zone) {
-  return InterpretReading(spec, EvidenceModel(spec, false), output, zone);
+RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output) {
+  return InterpretMeasurement(spec, EvidenceModel(spec, false), output.headline());
 }
 
-RayEvidence InterpretReading(const SensorSpec& spec, const EvidenceModel& model, const SensorOutput& output,
-                             int zone) {
+RayEvidence InterpretMeasurement(const SensorSpec& spec, const EvidenceModel& model, const Measurement& output) {
+  // a zone's silence vouches for that zone's range
+  const int zone = spec.zones && output.group >= 0 ? output.group : -1;
   RayEvidence evidence;
   evidence.p_WS = output.p_WS;
   evidence.dir_W = output.dir_W.normalized();
-  evidence.detected = output.detected;
+  evidence.detected = output.detected();
   // a beam's echo may have come from anywhere in its cone: the point is
   // put where the cone's lowest direction meets the distance, the lowest
   // it can be (knowledge/echo_cone.h) — a floor that echoed at the cone's
   // lower edge is floor, not a point above it on the axis; anything else
   // stands at least that high. The cone is empty up to the echo in every
   // direction, this one too.
-  if (output.detected && model.tan_half_aperture > 0) {
+  if (evidence.detected && model.tan_half_aperture > 0) {
     evidence.dir_W = LowestEchoDirection_W(evidence.dir_W, model.half_aperture_rad);
   }
   const double dir_z = evidence.dir_W.z();
-  if (output.detected) {
+  if (evidence.detected) {
     const double d_m = UnbiasedDistance_m(spec, output.d_m);
     const double sigma_d = RangeSigma_m(spec, d_m);
     const double sigma_lat = d_m * model.tan_half_aperture / 2;

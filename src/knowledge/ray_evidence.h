@@ -63,11 +63,11 @@ struct EvidenceModel {
   std::vector<double> zone_silence_range_m;  ///< the same per zone of a multi-zone sensor
 };
 
-/// What a fresh reading says (the output must be fresh); `zone`: the
-/// multi-zone sensor's zone it is the reading of (-1: the sensor's own).
-RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output, int zone = -1);
-/// The same, with the sensor's model found once (`model` made from `spec`).
-RayEvidence InterpretReading(const SensorSpec& spec, const EvidenceModel& model, const SensorOutput& output,
-                             int zone = -1);
+/// What one measurement says (sensors/measurement.h): a fresh reading's
+/// headline, a zone's target or silence, a beam's nearest echo. A multi-zone
+/// sensor's measurement is read with its zone's (its group's) range.
+RayEvidence InterpretMeasurement(const SensorSpec& spec, const EvidenceModel& model, const Measurement& measurement);
+/// The same for a fresh reading's headline (the output must be fresh).
+RayEvidence InterpretReading(const SensorSpec& spec, const SensorOutput& output);
 
 }  // namespace proxsim

@@ -111,18 +111,15 @@ void TerrainMap::Update(const Observation& observation) {
   for (std::size_t i = 0; i < observation.sensors.size() && i < specs_.size(); ++i) {
     if (!feeds_map_[i] || !observation.sensors[i].fresh) continue;
     const SensorOutput& output = observation.sensors[i];
-    if (output.zones.empty()) {
-      AddEvidence(InterpretReading(specs_[i], models_[i], output), observation);
+    if (output.measurements.empty()) {
+      AddEvidence(InterpretMeasurement(specs_[i], models_[i], output.headline()), observation);
       continue;
     }
-    // a multi-zone sensor: every zone's nearest target (or its silence) along the zone's axis
-    SensorOutput zone_output = output;
-    zone_output.zones.clear();
-    for (std::size_t zone = 0; zone < output.zones.size(); ++zone) {
-      zone_output.detected = output.zones[zone].detected;
-      zone_output.d_m = output.zones[zone].d_m;
-      zone_output.dir_W = output.zones[zone].dir_W;
-      AddEvidence(InterpretReading(specs_[i], models_[i], zone_output, static_cast<int>(zone)), observation);
+    // what the part reports beside its reading, each along its own direction:
+    // every group's first (a zone's target or its silence, a beam's nearest
+    // echo); a later one lies behind it, where its ray is not empty
+    for (const Measurement& measurement : output.measurements) {
+      if (measurement.rank == 0) AddEvidence(InterpretMeasurement(specs_[i], models_[i], measurement), observation);
     }
   }
   if (observation.robot == nullptr) return;

@@ -31,12 +31,14 @@ void EchoesNpyWriter::Add(const SampleFrame& frame) {
     const SensorSample& sample = frame.sensors[sensor.index];
     if (sample.reading.status == ReadingStatus::kNotSampled) continue;  // its own samples only
     sensor.t_s.push_back(frame.t_s);
+    // the echoes the beam reports, nearest first (sensors/measurement.h), NaN past the last
+    const std::vector<Measurement>& echoes = sample.measurements;
     for (std::size_t k = 0; k < static_cast<std::size_t>(kMaxEchoes); ++k) {
-      const bool heard = k < sample.echoes.size();
-      sensor.d_m.push_back(heard ? sample.echoes[k].d_m : kNaN);
-      sensor.signal.push_back(heard ? sample.echoes[k].signal : kNaN);
+      const bool heard = k < echoes.size();
+      sensor.d_m.push_back(heard ? echoes[k].d_m : kNaN);
+      sensor.signal.push_back(heard ? echoes[k].signal : kNaN);
     }
-    sensor.count.push_back(static_cast<std::uint8_t>(sample.echoes.size()));
+    sensor.count.push_back(static_cast<std::uint8_t>(echoes.size()));
   }
 }
 

@@ -16,22 +16,19 @@ void ProfilePlyWriter::Append(const SampleFrame& frame) {
     const SensorSample& s = frame.sensors[i];
     if (!s.reading.detected()) continue;
     // the profile is built from what the sensor measured, not from the truth
-    if (!s.zone_dir_W.empty()) {
-      AppendZones(frame, i);
+    if (!s.measurements.empty()) {
+      AppendMeasurements(frame, i);
       continue;
     }
     AppendPoint(MeasuredPoint_W(s.p_WS, s.dir_W, s.reading.d_m), i, frame.t_s, s.object_id);
   }
 }
 
-void ProfilePlyWriter::AppendZones(const SampleFrame& frame, std::size_t i) {
-  // every valid target of every zone, along its zone's axis (no object: the truth is per ray)
-  const SensorSample& s = frame.sensors[i];
-  const std::size_t per_zone = s.zones.targets.size() / s.zone_dir_W.size();
-  for (std::size_t k = 0; k < s.zones.targets.size(); ++k) {
-    const ZoneTarget& target = s.zones.targets[k];
-    if (target.status != kZoneRangeValid) continue;
-    AppendPoint(MeasuredPoint_W(s.p_WS, s.zone_dir_W[k / per_zone], target.d_m), i, frame.t_s, -1);
+void ProfilePlyWriter::AppendMeasurements(const SampleFrame& frame, std::size_t i) {
+  // every detection the part reports beside its reading (a multi-zone part's
+  // targets, a beam's echoes), each along its own direction (no object: the truth is per ray)
+  for (const Measurement& measurement : frame.sensors[i].measurements) {
+    if (measurement.detected()) AppendPoint(measurement.p_W(), i, frame.t_s, -1);
   }
 }
 

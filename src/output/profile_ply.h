@@ -29,7 +29,7 @@ class ProfilePlyWriter : public RunSink {
 
  private:
   void WriteWithHeader(const std::string& body_path);
-  void AppendZones(const SampleFrame& frame, std::size_t sensor);
+  void AppendMeasurements(const SampleFrame& frame, std::size_t sensor);
   void AppendPoint(const Vec3& p_W, std::size_t sensor, double t_s, std::int32_t object_id);
 
   std::string path_;

@@ -31,17 +31,28 @@ void ZonesNpyWriter::Add(const SampleFrame& frame) {
     const SensorSample& sample = frame.sensors[sensor.index];
     if (sample.reading.status == ReadingStatus::kNotSampled) continue;  // its own samples only
     sensor.t_s.push_back(frame.t_s);
-    for (std::size_t k = 0; k < sample.zones.targets.size(); ++k) {
-      const ZoneTarget& target = sample.zones.targets[k];
-      sensor.d_m.push_back(target.d_m);
-      sensor.status.push_back(target.status);
+    // the zones' slots, zones × targets: a target where the part reports one,
+    // its zone's code in the first slot of a zone without, "no target" elsewhere
+    const auto slots = static_cast<std::size_t>(sensor.zones * sensor.targets);
+    const std::size_t first = sensor.status.size();
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    sensor.d_m.resize(first + slots, 0.0);
+    sensor.status.resize(first + slots, kZoneNoTarget);
+    sensor.p_W.resize(3 * (first + slots), kNaN);
+    sensor.target_count.resize(sensor.target_count.size() + static_cast<std::size_t>(sensor.zones), 0);
+    std::uint8_t* counts = &sensor.target_count[sensor.target_count.size() - static_cast<std::size_t>(sensor.zones)];
+    for (const Measurement& measurement : sample.measurements) {
+      const std::size_t slot = first + static_cast<std::size_t>(measurement.group * sensor.targets + measurement.rank);
+      sensor.status[slot] = measurement.code;
+      if (!measurement.detected()) continue;
+      ++counts[measurement.group];
+      sensor.d_m[slot] = measurement.d_m;
       // along its zone's axis, as the map and the profile place it
-      const Vec3 p_W = target.d_m > 0 ? MeasuredPoint_W(sample.p_WS, sample.zone_dir_W[k / sensor.targets], target.d_m)
-                                      : Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-      sensor.p_W.insert(sensor.p_W.end(), {p_W.x(), p_W.y(), p_W.z()});
+      if (measurement.d_m > 0) {
+        const Vec3 p_W = measurement.p_W();
+        for (int c = 0; c < 3; ++c) sensor.p_W[3 * slot + static_cast<std::size_t>(c)] = p_W[c];
+      }
     }
-    sensor.target_count.insert(sensor.target_count.end(), sample.zones.target_count.begin(),
-                               sample.zones.target_count.end());
   }
 }
 

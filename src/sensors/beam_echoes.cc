@@ -21,7 +21,7 @@ std::vector<BeamEcho> BeamEchoes(const SensorSpec& spec, std::span<const Echo> e
   std::vector<BeamEcho> out;
   out.reserve(groups.size());
   for (const EchoGroup& group : groups) {
-    BeamEcho echo{.d_m = heard[group.begin].d_m, .signal = 0.0, .ray = heard[group.begin].ray};
+    BeamEcho echo{.d_m = heard[group.begin].d_m, .signal = 0.0, .ray = heard[group.begin].ray, .truth_d_m = heard[group.begin].d_m};
     for (std::size_t k = group.begin; k < group.end; ++k) {
       const auto ray = static_cast<std::size_t>(heard[k].ray);
       echo.signal += rays[ray].weight * ReturnedEnergy(spec, echoes[ray]);

@@ -26,6 +26,7 @@ struct BeamEcho {
   double d_m = 0.0;
   double signal = 0.0;
   int ray = -1;
+  double truth_d_m = 0.0;  ///< the noise-free arrival (d_m before the noise)
 };
 
 /// The beam's echoes, nearest first, at most `max_echoes`, noise-free.

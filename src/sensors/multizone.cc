@@ -176,7 +176,7 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
       const double mean_m = sum_m / static_cast<double>(group.end - group.begin);
       const int ray = counted[group.begin].ray;
       const NoiseSpec noise = NoiseAt(spec, echoes[static_cast<std::size_t>(ray)].ir_albedo);
-      targets[found] = {TimeOfFlightReading_m(noise, mean_m, draw(ray).gaussian_g), kZoneRangeValid, ray};
+      targets[found] = {TimeOfFlightReading_m(noise, mean_m, draw(ray).gaussian_g), kZoneRangeValid, ray, mean_m};
     }
     out.target_count[static_cast<std::size_t>(zone)] = static_cast<std::uint8_t>(groups.size());
   }

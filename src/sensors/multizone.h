@@ -62,6 +62,7 @@ struct ZoneTarget {
   double d_m = 0.0;                     ///< the reported distance; 0 where there is no target
   std::uint8_t status = kZoneNoTarget;  ///< ST's code
   std::int32_t ray = -1;                ///< the sensor's ray nearest in the target (truth), -1: none
+  double truth_d_m = 0.0;               ///< the noise-free distance: the mean of its rays' arrivals
 };
 
 /// A sensor's zones in one sample: zones × targets, zone-major.

@@ -9,8 +9,7 @@
 
 #include "core/geometry.h"
 #include "gait/locomotion.h"
-#include "sensors/beam_echoes.h"
-#include "sensors/multizone.h"
+#include "sensors/measurement.h"
 #include "sensors/sensor_model.h"
 
 namespace proxsim {
@@ -25,13 +24,12 @@ struct SensorSample {
   Vec3 p_WH = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());  ///< hit point, NaN when none
   Vec3 p_WS = Vec3::Zero();       ///< ray origin: the sensor frame's origin in world
   Vec3 dir_W = Vec3::UnitX();     ///< the sensor's axis: its frame's +x in world (a beam's rays spread around it)
-  /// A multizone sensor's zones (empty for the others): targets and counts
-  /// (all kZoneNotUpdated between its own samples), and each zone's axis in W.
-  ZoneReadings zones;
-  std::vector<Vec3> zone_dir_W;
-  /// A beam with `echoes: strongest | all`: its ping's echoes as reported,
-  /// nearest first, at most kMaxEchoes (empty otherwise and between its samples).
-  std::vector<BeamEcho> echoes;
+  /// What the sensor reports beside its reading (sensors/measurement.h): a
+  /// multi-zone part's targets, a beam's echoes; empty for the others and
+  /// between its own samples.
+  Measurements measurements;
+  /// The same list with noise-free distances (the truth beside each).
+  Measurements measurements_truth;
 };
 
 struct RobotSample {

@@ -6,8 +6,8 @@
 
 #include "sensors/echo.h"
 #include "sim/crosstalk.h"
-#include "sensors/multizone.h"
 #include "sensors/measured_point.h"
+#include "sensors/multizone.h"
 #include "sensors/noise.h"
 #include "sensors/wave_speed.h"
 
@@ -33,6 +33,8 @@ SensorReader::SensorReader(const Scenario& scenario, World& world) : scenario_(s
     heard_by_others_[sonar] = sonars_.size() > 1;
   }
   zone_axes_S_.resize(scenario.sensors.size());
+  zone_axes_W_.resize(scenario.sensors.size());
+  measured_.resize(scenario.sensors.size());
   for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
     if (const auto& zones = scenario.sensors[i].spec.zones) {
       for (int zone = 0; zone < ZoneCount(*zones); ++zone) zone_axes_S_[i].push_back(ZoneAxis_S(*zones, zone));
@@ -219,32 +221,6 @@ bool SensorReader::IsSensorSample(std::size_t sensor, std::int64_t sample) const
   return period(sample) > period(sample - 1);
 }
 
-void SensorReader::MeasureZonesInto(std::size_t i, SensorSample& out, const DrawOfRay& draw) {
-  const SensorSpec& spec = scenario_.sensors[i].spec;
-  const std::size_t begin = world_.ray_begin(i), count = world_.ray_begin(i + 1) - begin;
-  MeasureZones(spec, std::span(echoes_).subspan(begin, count), draw, out.zones);
-  // the sensor's own reading (readings.csv): the nearest target of any zone, or why there is none
-  const ZoneTarget* nearest = nullptr;
-  for (const ZoneTarget& target : out.zones.targets) {
-    if (target.status == kZoneRangeValid && (nearest == nullptr || target.d_m < nearest->d_m)) nearest = &target;
-  }
-  if (nearest != nullptr) {
-    out.reading = Reading{};
-    out.reading.status = ReadingStatus::kOk;
-    out.reading.d_m = nearest->d_m;
-    out.ray = out.truth_ray = nearest->ray;
-    // the row's axis is that zone's, so that its point is the zone's point
-    const auto zone = static_cast<std::size_t>(nearest - out.zones.targets.data()) / static_cast<std::size_t>(spec.zones->targets);
-    out.dir_W = out.zone_dir_W[zone];
-    return;
-  }
-  const BeamReading beam = MeasureBeam(spec, std::span(echoes_).subspan(begin, count),
-                                       std::span(world_.beam_rays()).subspan(begin, count), draw);
-  out.reading = beam.reading;
-  out.truth_ray = beam.truth_ray;
-  out.ray = -1;
-}
-
 bool SensorReader::CastsAt(std::size_t sensor, std::int64_t sample) const {
   return heard_by_others_[sensor] || IsSensorSample(sensor, sample);
 }
@@ -258,8 +234,8 @@ void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame, bool rays) {
   out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x
   if (!rays) return;
   const std::vector<Vec3>& zone_axes_S = zone_axes_S_[i];
-  out.zone_dir_W.resize(zone_axes_S.size());
-  for (std::size_t zone = 0; zone < zone_axes_S.size(); ++zone) out.zone_dir_W[zone] = X_WS.linear() * zone_axes_S[zone];
+  zone_axes_W_[i].resize(zone_axes_S.size());
+  for (std::size_t zone = 0; zone < zone_axes_S.size(); ++zone) zone_axes_W_[i][zone] = X_WS.linear() * zone_axes_S[zone];
   for (std::size_t r = world_.ray_begin(i); r < world_.ray_begin(i + 1); ++r) {
     rays_[r].origin_W = out.p_WS.cast<float>();
     ray_dir_W_[r] = BeamRayDir_W(X_WS, world_.beam_rays()[r]);
@@ -287,10 +263,8 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
     out.ray = -1;
     out.truth_ray = 0;
     out.p_WH.setConstant(std::numeric_limits<double>::quiet_NaN());
-    // a multizone sensor's zones say "not updated"
-    for (ZoneTarget& target : out.zones.targets) target = ZoneTarget{.d_m = 0.0, .status = kZoneNotUpdated, .ray = -1};
-    std::fill(out.zones.target_count.begin(), out.zones.target_count.end(), 0);
-    out.echoes.clear();
+    out.measurements.clear();
+    out.measurements_truth.clear();
     return;
   }
 
@@ -342,24 +316,17 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
                                        static_cast<std::uint64_t>(frame.sample), static_cast<std::uint32_t>(ray)});
   };
 
-  // the reading: a grid of zones, the paper's single ray, or the beam's combination
-  if (spec.zones) {
-    MeasureZonesInto(i, out, draw);
-  } else if (end - begin == 1) {
-    out.reading = Measure(spec, echoes_[begin], draw);
-    out.truth_ray = 0;
-    out.ray = (out.reading.status == ReadingStatus::kOk || out.reading.status == ReadingStatus::kSelf) ? 0 : -1;
-  } else {
-    const BeamReading beam = MeasureBeam(spec, std::span(echoes_).subspan(begin, end - begin),
-                                         std::span(world_.beam_rays()).subspan(begin, end - begin), draw);
-    out.reading = beam.reading;
-    out.truth_ray = beam.truth_ray;
-    out.ray = beam.ray;
-    if (spec.echoes != EchoSelection::kFirst) {
-      out.echoes = ReportedEchoes(spec, std::span(echoes_).subspan(begin, end - begin),
-                                  std::span(world_.beam_rays()).subspan(begin, end - begin), draw);
-    }
-  }
+  // the reading and what the part reports beside it (sensors/sensor_measure.h)
+  SensorMeasurement& measured = measured_[i];
+  MeasureSensorSample(spec, SensorPlacement{out.p_WS, out.dir_W, zone_axes_W_[i]},
+                      std::span(echoes_).subspan(begin, end - begin),
+                      std::span(world_.beam_rays()).subspan(begin, end - begin), draw, measured);
+  out.reading = measured.headline.reading;
+  out.ray = measured.headline.ray;
+  out.truth_ray = measured.headline.truth_ray;
+  out.dir_W = measured.headline_dir_W;
+  out.measurements.swap(measured.measured);
+  out.measurements_truth.swap(measured.truth);
 
   // the truth beside it: the echo, object and hit point of the ray it came from
   const std::size_t truth = begin + static_cast<std::size_t>(out.truth_ray);

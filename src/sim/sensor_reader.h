@@ -21,6 +21,7 @@
 
 #include "core/parallel.h"
 #include "scenario/scenario.h"
+#include "sensors/sensor_measure.h"
 #include "sim/crosstalk.h"
 #include "sim/sample_frame.h"
 #include "sim/world.h"
@@ -48,8 +49,6 @@ class SensorReader {
   bool CastsAt(std::size_t sensor, std::int64_t sample) const;
   // one sensor's hits into its reading
   void MeasureSensor(std::size_t sensor, SampleFrame& frame);
-  // a multizone sensor's zones, and its own reading from them
-  void MeasureZonesInto(std::size_t sensor, SensorSample& out, const DrawOfRay& draw);
   // whether sample k is one of the sensor's own samples (its pings)
   bool IsSensorSample(std::size_t sensor, std::int64_t sample) const;
   // before the sensors are read: each emitter's next ping, and whether any
@@ -104,6 +103,8 @@ class SensorReader {
   std::vector<Vec3> p_WS_previous_;  // each sensor's origin at the previous sample, for flight_time
   std::vector<std::size_t> sonars_;    // ultrasonic sensors with a beam: they ping and hear each other
   std::vector<std::vector<Vec3>> zone_axes_S_;  // each multizone sensor's zone axes in its frame (multizone.h)
+  std::vector<std::vector<Vec3>> zone_axes_W_;  // the same in W where the sensor last measured
+  std::vector<SensorMeasurement> measured_;     // by sensor: its sample's buffers, swapped with the frame's
   // ApplyCrosstalk's per-emitter echo sources (sim/crosstalk.h), by sensor;
   // found in the emitter's read task when a listener may need them (buffers
   // kept across samples; one slot per sensor, so tasks never share one)

@@ -298,28 +298,7 @@ void Simulation::FillObservation() {
       out.t_reported_s = sample.t_reported_s;
       out.p_WS = sample.p_WS;
       out.dir_W = sample.dir_W;
-      // each zone's nearest target (the zones are zone-major, `targets` per zone)
-      const auto& zones = scenario_.sensors[i].spec.zones;
-      out.zones.resize(zones ? static_cast<std::size_t>(ZoneCount(*zones)) : 0);
-      out.zone_d_m.resize(sample.zones.targets.size());
-      out.zone_status.resize(sample.zones.targets.size());
-      for (std::size_t k = 0; k < sample.zones.targets.size(); ++k) {
-        out.zone_d_m[k] = sample.zones.targets[k].d_m;
-        out.zone_status[k] = sample.zones.targets[k].status;
-      }
-      out.zone_target_count = sample.zones.target_count;
-      out.echo_d_m.resize(sample.echoes.size());
-      out.echo_signal.resize(sample.echoes.size());
-      for (std::size_t k = 0; k < sample.echoes.size(); ++k) {
-        out.echo_d_m[k] = sample.echoes[k].d_m;
-        out.echo_signal[k] = sample.echoes[k].signal;
-      }
-      for (std::size_t zone = 0; zone < out.zones.size(); ++zone) {
-        const ZoneTarget& first = sample.zones.targets[zone * static_cast<std::size_t>(zones->targets)];
-        out.zones[zone].detected = first.status == kZoneRangeValid;
-        out.zones[zone].d_m = out.zones[zone].detected ? first.d_m : scenario_.sensors[i].spec.max_range_m;
-        out.zones[zone].dir_W = sample.zone_dir_W[zone];
-      }
+      out.measurements = sample.measurements;
     } else {
       // no news: the device shows its maximum range, at the pose the kinematics give now
       out.d_m = scenario_.sensors[i].spec.max_range_m;

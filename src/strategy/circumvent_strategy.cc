@@ -88,10 +88,6 @@ void CircumventStrategy::Reset(const StrategySetup& setup) {
   passed_ = false;
 }
 
-bool CircumventStrategy::RaisedEcho(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self) const {
-  return sensor.fresh && sensor.detected && EchoIsRaised(sensor, info, self.ground_z_m, config_.min_height_m);
-}
-
 CircumventStrategy::Cell CircumventStrategy::CellOf(const Vec3& p_W) const {
   return {static_cast<std::int64_t>(std::floor(p_W.x() / kCell_m)),
           static_cast<std::int64_t>(std::floor(p_W.y() / kCell_m))};
@@ -119,8 +115,9 @@ void CircumventStrategy::FindRaisedPoints(const Observation& observation) {
   }
   for (std::size_t i = 0; i < observation.sensors.size() && i < sensors_.size(); ++i) {
     const SensorOutput& sensor = observation.sensors[i];
-    if (!RaisedEcho(sensor, sensors_[i], self)) continue;  // the floor, wherever in its cone it echoed
-    raised_.push_back(sensor.p_W_measured());
+    // the points it reports above the floor, wherever in its cone they echoed
+    ForEachRaisedEcho(sensor, sensors_[i], self.ground_z_m, config_.min_height_m,
+                      [&](const Measurement& measurement) { raised_.push_back(measurement.p_W()); });
   }
 }
 

@@ -121,9 +121,6 @@ class CircumventStrategy : public Strategy {
   Vec2 ToWorld(double s, double l) const;
 
   CircumventConfig config_;
-  // a fresh detection standing min_height_m above the ground wherever in its cone it echoed
-  bool RaisedEcho(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self) const;
-
   // this sample's raised points (fresh readings' or the map's obstacles' outlines: config_.perception)
   void FindRaisedPoints(const Observation& observation);
 

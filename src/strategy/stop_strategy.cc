@@ -23,19 +23,14 @@ bool PointIsAhead(const Vec3& p_W, const RobotKnowledge& self, const StopConfig&
 
 std::optional<Vec3> ObstaclePointAhead(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self,
                                        const StopConfig& rule) {
-  if (!sensor.fresh) return std::nullopt;
   // the points the sensor reports, not the truth: its reading's (raised
   // wherever in its cone the echo came from: knowledge/echo_cone.h), and
-  // each zone's of a multi-zone sensor
-  if (sensor.detected && EchoIsRaised(sensor, info, self.ground_z_m, rule.min_height_m) &&
-      PointIsAhead(sensor.p_W_measured(), self, rule))
-    return sensor.p_W_measured();
-  for (std::size_t zone = 0; zone < sensor.zones.size(); ++zone) {
-    const Vec3 p_W = sensor.p_W_zone(zone);
-    if (sensor.zones[zone].detected && p_W.z() - self.ground_z_m >= rule.min_height_m && PointIsAhead(p_W, self, rule))
-      return p_W;
-  }
-  return std::nullopt;
+  // every one the part reports beside it (a multi-zone part's targets, a beam's echoes)
+  std::optional<Vec3> ahead;
+  ForEachRaisedEcho(sensor, info, self.ground_z_m, rule.min_height_m, [&](const Measurement& measurement) {
+    if (!ahead && PointIsAhead(measurement.p_W(), self, rule)) ahead = measurement.p_W();
+  });
+  return ahead;
 }
 
 bool IsObstacleAhead(const SensorOutput& sensor, const SensorInfo& info, const RobotKnowledge& self,

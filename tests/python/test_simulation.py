@@ -254,8 +254,17 @@ def test_a_multizone_sensor_gives_its_zones_by_name():
     # the sensor's own reading is its nearest zone's target
     i = sim.sensor_names.index("tof_left_shin")
     assert obs["readings"]["d_m"][i] == pytest.approx(zones["d_m"][valid, 0].min(), abs=0)
-    # the paper's sensors have no zones
-    assert proxsim.Simulation.builtin("paper").step()["readings"]["zones"] == {}
+    # the same zones in the one shape every part reports in: one measurement per zone here (one target each)
+    listed = obs["readings"]["measurements"]["tof_left_shin"]
+    np.testing.assert_array_equal(listed["group"], np.arange(64))
+    np.testing.assert_array_equal(listed["rank"], np.zeros(64))
+    np.testing.assert_array_equal(listed["detected"], valid)
+    np.testing.assert_array_equal(listed["code"], zones["status"][:, 0])
+    np.testing.assert_array_equal(listed["d_m"][valid], zones["d_m"][valid, 0])
+    np.testing.assert_array_equal(listed["dir_W"], zones["dir_W"])
+    # the paper's sensors have no zones, and report nothing beside their readings
+    paper = proxsim.Simulation.builtin("paper").step()["readings"]
+    assert paper["zones"] == {} and paper["measurements"] == {}
 
 
 def test_a_beam_with_several_echoes_gives_them_by_name(tmp_path):
@@ -276,5 +285,10 @@ def test_a_beam_with_several_echoes_gives_them_by_name(tmp_path):
     assert np.isnan(echoes["d_m"][2:]).all() and np.isnan(echoes["signal"][2:]).all()
     assert echoes["signal"][1] > echoes["signal"][0]  # the wall fills 34 of the 37 rays
     assert obs["readings"]["d_m"][0] == pytest.approx(0.485, abs=1e-6)  # the reading is the first echo
+    # the same echoes in the one shape every part reports in: along the beam's axis, nearest first
+    listed = obs["readings"]["measurements"]["sonar"]
+    np.testing.assert_array_equal(listed["d_m"], echoes["d_m"][:2])
+    np.testing.assert_array_equal(listed["rank"], [0, 1])
+    np.testing.assert_allclose(listed["dir_W"], [[1, 0, 0], [1, 0, 0]], atol=1e-12)
     # the paper's sensors report one echo each
     assert proxsim.Simulation.builtin("paper").step()["readings"]["echoes"] == {}
