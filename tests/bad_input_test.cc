@@ -185,7 +185,9 @@ TEST(BadInputTest, StartOnAnUnknownObject) {
 }
 
 TEST(BadInputTest, SensorInsideItsOwnLinkIsAWarning) {
-  // the same warning as a sensor inside a scene object; one mounted on its link's surface gets none
+  // the same warning as a sensor inside a scene object; one mounted on its link's
+  // surface is not inside (but, facing straight out of it, its ray meets that
+  // surface at 0 mm: every reading `self`, which the end of the run says)
   const auto out = FreshDir("bad_input_inside_link");
   const CommandResult result =
       RunProxsim("run " + kBadDir + "/sensor_inside_link.yaml --out " + out.string() + " --no-report");
@@ -194,7 +196,11 @@ TEST(BadInputTest, SensorInsideItsOwnLinkIsAWarning) {
                                "/sensor_inside_link.yaml: sensor 'swallowed' is inside its own link 'left_tibia'"),
             std::string::npos)
       << result.output;
-  EXPECT_EQ(result.output.find("sensor 'mounted'"), std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find("sensor 'mounted' is inside"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("sensor 'mounted' saw only the robot's own body: all 1 of its readings were `self`, the "
+                               "nearest 'right_tibia' at 0.00 mm"),
+            std::string::npos)
+      << result.output;
   EXPECT_NE(testing::ReadFile(out / "summary.json").find("is inside its own link 'left_tibia'"), std::string::npos);
 }
 

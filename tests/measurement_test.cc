@@ -81,7 +81,7 @@ TEST(MeasurementTest, AZoneGridListsEveryZoneAlongItsAxisAndTheNearestIsTheReadi
   EXPECT_EQ(out.headline.ray, 1);
 }
 
-TEST(MeasurementTest, AZoneWithTwoTargetsRanksThemAndTheTruthKeepsTheNoiseFreeMean) {
+TEST(MeasurementTest, AZoneWithTwoTargetsRanksThemAndTheTruthKeepsTheNoiseFreeCentre) {
   SensorSpec spec = Grid2x2();
   spec.zones->nx = spec.zones->ny = 1;
   spec.zones->rays_per_zone = 4;
@@ -97,10 +97,13 @@ TEST(MeasurementTest, AZoneWithTwoTargetsRanksThemAndTheTruthKeepsTheNoiseFreeMe
   ASSERT_EQ(out.measured.size(), 2u);
   EXPECT_EQ(out.measured[0].rank, 0);
   EXPECT_EQ(out.measured[1].rank, 1);
-  EXPECT_DOUBLE_EQ(out.truth[0].d_m, 0.51);
+  // the near target: its rays' centre weighed by their signals, 1/d² each (head-on, one albedo)
+  const double near_m = (0.5 / (0.5 * 0.5) + 0.52 / (0.52 * 0.52)) / (1 / (0.5 * 0.5) + 1 / (0.52 * 0.52));
+  EXPECT_NEAR(out.truth[0].d_m, near_m, 1e-12);
+  EXPECT_LT(out.truth[0].d_m, 0.51);  // it leans to the nearer, stronger return
   EXPECT_DOUBLE_EQ(out.truth[1].d_m, 1.5);
   // the reported distances carry the draw (σ = 1 %, G = 1): d·(1 + 0.01)
-  EXPECT_NEAR(out.measured[0].d_m, 0.51 * 1.01, 1e-12);
+  EXPECT_NEAR(out.measured[0].d_m, near_m * 1.01, 1e-12);
   EXPECT_NEAR(out.measured[1].d_m, 1.5 * 1.01, 1e-12);
 }
 
@@ -168,6 +171,41 @@ TEST(MeasurementTest, TheStopRuleSeesARaisedEchoBehindAFloorEcho) {
   // without its second echo, the floor alone is no obstacle
   sonar.measurements.resize(1);
   EXPECT_FALSE(ObstaclePointAhead(sonar, info, StandingAtOrigin(), rule).has_value());
+}
+
+}  // namespace
+}  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// A VL53L5CX (8x8, DS13754's ranges: a 17 % target to 1.3 m in the inner
+// zones) sees a grey (ρ = 0.5) surface 1.5 m away in every ray. Facing it,
+// the surface is a target of 0.5, seen to ≈ 2.6 m: every zone valid. Met at
+// 80° (a floor far ahead), it returns ρ·cos θ = 0.087 of the light, seen to
+// 1.3·√(0.087/0.17) ≈ 0.93 m: every zone "signal rate too low" (ST's 8).
+TEST(MeasurementTest, AGrazingSurfaceFallsBelowTheSignalAPartNeedsWhereAFacingOneDoesNot) {
+  const SensorSpec spec = *SensorSpec::PartPreset("vl53l5cx");
+  const std::vector<BeamRay> rays = MakeSensorRays(spec);
+  std::vector<Vec3> zone_dir_W;
+  for (int zone = 0; zone < ZoneCount(*spec.zones); ++zone) zone_dir_W.push_back(ZoneAxis_S(*spec.zones, zone));
+  const SensorPlacement at{.zone_dir_W = zone_dir_W};
+  const auto zones_valid = [&](double incidence_deg) {
+    Echo echo = EchoAt(1.5);
+    echo.ir_albedo = 0.5;
+    echo.incidence_deg = incidence_deg;
+    const std::vector<Echo> echoes(rays.size(), echo);
+    SensorMeasurement out;
+    MeasureSensorSample(spec, at, echoes, rays, NoDraw, out);
+    int valid = 0, too_low = 0;
+    for (const Measurement& m : out.measured) {
+      valid += m.code == kZoneRangeValid;
+      too_low += m.code == kZoneSignalTooLow;
+    }
+    return std::pair{valid, too_low};
+  };
+  EXPECT_EQ(zones_valid(0.0), (std::pair{64, 0}));
+  EXPECT_EQ(zones_valid(80.0), (std::pair{0, 64}));
 }
 
 }  // namespace

@@ -47,12 +47,16 @@ Dir ZoneRay(int nx, int ny, double h_deg, double v_deg, int k, int column, int r
 }
 
 // An 8x8 sensor (4 rays per zone, no noise) at the origin, facing a plane
-// through (1, 0, 0) turned 20° about z: ray d meets it at t = cos20/(cos20·dx + sin20·dy);
-// a zone reads the mean of its rays' t. With max_incidence_deg 30, a ray counts
-// when its incidence α, cos α = |n·d|, is at most 30°; a zone with none reads
-// status 8 (signal too low), the others 5.
-TEST(MultizoneTest, EachZoneOfAnEightByEightReadsItsRaysMeanDistanceToATiltedPlane) {
-  const fs::path out = RunScenarioYaml("multizone_plane", R"(proxsim: 1
+// through (1, 0, 0) turned 20° about z: ray d meets it at t = cos20/(cos20·dx + sin20·dy)
+// at incidence α, cos α = |n·d|. A ray counts when α is at most 30°
+// (max_incidence_deg); a zone with none reads status 8 (signal too low), the
+// others 5. A zone reads the centre of its rays' distances weighed by the
+// signal each returns, cos α / t² (one surface: its albedo cancels): the
+// distance along each ray (radial) or projected on the sensor's axis,
+// t·dx (perpendicular), and its point lies along the zone's axis at that
+// distance, over the axis's cosine for the perpendicular one.
+void ExpectZonesOfATiltedPlane(const std::string& distance) {
+  const fs::path out = RunScenarioYaml("multizone_plane_" + distance, R"(proxsim: 1
 duration_s: 0.1
 rate_hz: 10
 scene:
@@ -60,8 +64,9 @@ scene:
     - {name: wall, plane: {}, pose: {xyz_m: [1, 0, 0], rpy_deg: [0, -90, 20]}}
 sensors:
   - {name: grid, type: multizone, zones: [8, 8], fov_deg: [45, 45], zone_rays: 4, max_incidence_deg: 30,
-     pose: {xyz_m: [0, 0, 1]}}
+     distance: )" + distance + R"(, pose: {xyz_m: [0, 0, 1]}}
 )");
+  const bool perpendicular = distance == "perpendicular";
   const NpyArray d = LoadNpy(out / "zones" / "grid" / "d_m.npy");
   const NpyArray status = LoadNpy(out / "zones" / "grid" / "status.npy");
   const NpyArray count = LoadNpy(out / "zones" / "grid" / "target_count.npy");
@@ -72,27 +77,29 @@ sensors:
   const double c = std::cos(20 * std::numbers::pi / 180), s = std::sin(20 * std::numbers::pi / 180);
   int valid = 0, too_low = 0;
   for (int zone = 0; zone < 64; ++zone) {
-    double sum_m = 0;
-    int counted = 0;
+    double sum_weighted_m = 0, sum_weight = 0;
     for (int b = 0; b < 2; ++b) {
       for (int a = 0; a < 2; ++a) {
         const Dir r = ZoneRay(8, 8, 45, 45, 2, zone % 8, zone / 8, a, b);
         const double cos_alpha = c * r.x + s * r.y;  // |n·d|, n = −(cos20, sin20, 0)
         if (std::acos(cos_alpha) * 180 / std::numbers::pi > 30) continue;
-        sum_m += c / cos_alpha;
-        ++counted;
+        const double t = c / cos_alpha;
+        const double weight = cos_alpha / (t * t);
+        sum_weighted_m += weight * (perpendicular ? t * r.x : t);
+        sum_weight += weight;
       }
     }
-    if (counted > 0) {
+    if (sum_weight > 0) {
       ++valid;
       EXPECT_EQ(status.values[zone], 5) << "zone " << zone;
       EXPECT_EQ(count.values[zone], 1) << "zone " << zone;
-      EXPECT_NEAR(d.values[zone], sum_m / counted, 1e-5) << "zone " << zone;
-      // its point: the sensor's origin (0, 0, 1) + d along the zone's axis (the cell's centre)
+      EXPECT_NEAR(d.values[zone], sum_weighted_m / sum_weight, 1e-5) << "zone " << zone;
+      // its point: the sensor's origin (0, 0, 1) + along the zone's axis (the cell's centre)
       const Dir axis = ZoneRay(8, 8, 45, 45, 1, zone % 8, zone / 8, 0, 0);
-      EXPECT_NEAR(p_W.values[3 * zone + 0], d.values[zone] * axis.x, 1e-9) << "zone " << zone;
-      EXPECT_NEAR(p_W.values[3 * zone + 1], d.values[zone] * axis.y, 1e-9) << "zone " << zone;
-      EXPECT_NEAR(p_W.values[3 * zone + 2], 1 + d.values[zone] * axis.z, 1e-9) << "zone " << zone;
+      const double along_m = perpendicular ? d.values[zone] / axis.x : d.values[zone];
+      EXPECT_NEAR(p_W.values[3 * zone + 0], along_m * axis.x, 1e-9) << "zone " << zone;
+      EXPECT_NEAR(p_W.values[3 * zone + 1], along_m * axis.y, 1e-9) << "zone " << zone;
+      EXPECT_NEAR(p_W.values[3 * zone + 2], 1 + along_m * axis.z, 1e-9) << "zone " << zone;
     } else {
       ++too_low;
       EXPECT_EQ(status.values[zone], 8) << "zone " << zone;
@@ -106,6 +113,39 @@ sensors:
   // the row of readings.csv is the nearest zone's target
   const auto csv = testing::ReadCsv(out / "readings.csv");
   ASSERT_EQ(csv.rows.size(), 1u);
+}
+
+TEST(MultizoneTest, EachZoneOfAnEightByEightReadsItsSignalWeightedRadialDistanceToATiltedPlane) {
+  ExpectZonesOfATiltedPlane("radial");
+}
+
+TEST(MultizoneTest, EachZoneOfAnEightByEightReadsItsSignalWeightedPerpendicularDistanceToATiltedPlane) {
+  ExpectZonesOfATiltedPlane("perpendicular");
+}
+
+// ST's parts report the perpendicular distance: a wall facing a VL53L5CX
+// 1.2 m ahead reads 1.2 m in every zone (within its millimetre resolution),
+// where a radial distance would read 1.2 / cos of each zone's angle (up to
+// 1.08 times more in the corners).
+TEST(MultizoneTest, AWallFacingAnStPartReadsTheSameInEveryZone) {
+  const fs::path out = RunScenarioYaml("multizone_facing_wall", R"(proxsim: 1
+duration_s: 0.1
+rate_hz: 10
+scene:
+  objects:
+    - {name: wall, box: {size_m: [0.1, 6, 6]}, pose: {xyz_m: [1.25, 0, 1]}, material: {albedo: 0.88}}
+sensors:
+  - {name: tof, type: vl53l5cx, noise: {sigma: 0}, pose: {xyz_m: [0, 0, 1]}}
+)");
+  const NpyArray d = LoadNpy(out / "zones" / "tof" / "d_m.npy");
+  const NpyArray status = LoadNpy(out / "zones" / "tof" / "status.npy");
+  ASSERT_EQ(d.shape, (std::vector<long>{1, 64, 1}));
+  for (int zone = 0; zone < 64; ++zone) {
+    EXPECT_EQ(status.values[zone], 5) << "zone " << zone;
+    EXPECT_NEAR(d.values[zone], 1.2, 1e-3) << "zone " << zone;
+  }
+  const auto summary = nlohmann::json::parse(ReadFile(out / "summary.json"));
+  EXPECT_EQ(summary["inputs"]["sensors"][0]["distance"], "perpendicular") << summary["inputs"]["sensors"][0].dump();
 }
 
 // One zone of 4x4 rays: the left half sees a box's face at x = 0.8 m, the
@@ -128,16 +168,33 @@ sensors:
          std::to_string(targets) + sensor_extra + "}\n";
 }
 
-double MeanDistance(double x_m, bool left) {
-  double sum = 0;
+// A face across the zone at x_m, filling its left (or right) half.
+struct HalfFace {
+  double x_m;
+  bool left;
+};
+
+// The zone's target distance over the faces given: the centre of its rays'
+// distances weighed by the signal each returns. Ray r meets a face at
+// t = x_m / r.x (radial: the generic multizone's default), at incidence
+// cos α = r.x, returning cos α / t² (the faces' albedo is the same).
+double WeightedDistance(std::initializer_list<HalfFace> faces) {
+  double sum_weighted_m = 0, sum_weight = 0;
   for (int b = 0; b < 4; ++b) {
     for (int a = 0; a < 4; ++a) {
       const Dir r = ZoneRay(1, 1, 20, 20, 4, 0, 0, a, b);
-      if ((r.y > 0) == left) sum += x_m / r.x;
+      for (const HalfFace& face : faces) {
+        if ((r.y > 0) != face.left) continue;
+        const double t = face.x_m / r.x;
+        sum_weighted_m += r.x / (t * t) * t;
+        sum_weight += r.x / (t * t);
+      }
     }
   }
-  return sum / 8;
+  return sum_weighted_m / sum_weight;
 }
+
+double MeanDistance(double x_m, bool left) { return WeightedDistance({{x_m, left}}); }
 
 TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
   const fs::path out = RunScenarioYaml("multizone_two_targets", BoxBeforeWall(0.8, 2));
@@ -160,7 +217,9 @@ TEST(MultizoneTest, ABoxEdgeBeforeAWallGivesTwoTargetsNearestFirst) {
   const NpyArray dm = LoadNpy(merged / "zones" / "zone" / "d_m.npy");
   const NpyArray cm = LoadNpy(merged / "zones" / "zone" / "target_count.npy");
   EXPECT_EQ(cm.values[0], 1);
-  EXPECT_NEAR(dm.values[0], 0.5 * (MeanDistance(1.6, true) + MeanDistance(2.0, false)), 1e-5);
+  // merged, the target leans to the nearer box: its rays return (2/1.6)² times the wall's signal
+  EXPECT_NEAR(dm.values[0], WeightedDistance({{1.6, true}, {2.0, false}}), 1e-5);
+  EXPECT_LT(dm.values[0], 0.5 * (MeanDistance(1.6, true) + MeanDistance(2.0, false)));
   EXPECT_EQ(LoadNpy(merged / "zones" / "zone" / "status.npy").values[1], 255);
 
   // columns.json describes the arrays and names the codes
@@ -258,19 +317,17 @@ sensors:
   for (int zone = 0; zone < 64; ++zone) {
     const double t = (radius(zone % 8, zone / 8) - r_centre) / (r_corner - r_centre);
     const double range_m = 1.3 + t * (1.1 - 1.3);
-    double sum_m = 0;
     int counted = 0;
     for (int b = 0; b < 2; ++b) {
       for (int a = 0; a < 2; ++a) {
         const Dir r = ZoneRay(8, 8, 45, 45, 2, zone % 8, zone / 8, a, b);
-        if (1.0 / r.x > range_m) continue;
-        sum_m += 1.0 / r.x;
-        ++counted;
+        if (1.0 / r.x <= range_m) ++counted;
       }
     }
     if (counted > 0) {
+      // a wall facing the part: its perpendicular distance, 1 m, in every zone
       EXPECT_EQ(status.values[zone], 5) << "zone " << zone;
-      EXPECT_NEAR(d.values[zone], sum_m / counted, 1e-6) << "zone " << zone;
+      EXPECT_NEAR(d.values[zone], 1.0, 1e-6) << "zone " << zone;
     } else {
       EXPECT_EQ(status.values[zone], 8) << "zone " << zone;
     }

@@ -105,6 +105,7 @@ sensors:
     targets: 3
     target_separation_m: 0.4
     target_order: strongest
+    distance: perpendicular
   - name: sonar
     type: ultrasonic
     beam: {aperture_deg: 40, rays: 19, reach: [[0.2, 20], [1.0, 8]]}

@@ -44,19 +44,24 @@ inline Vec3 LowestEchoDirection_W(const Vec3& dir_W, double half_rad) {
 inline bool EchoIsRaised(const Measurement& measurement, const SensorInfo& info, double ground_z_m,
                          double min_height_m) {
   return measurement.detected() &&
-         LowestEchoZ_m(measurement.p_WS, measurement.dir_W, measurement.d_m, info.aperture_deg) - ground_z_m >=
+         LowestEchoZ_m(measurement.p_WS, measurement.dir_W, measurement.ray_d_m(), info.aperture_deg) - ground_z_m >=
              min_height_m;
 }
 
 /// Calls `visit(measurement)` for each detection a fresh sensor output puts
 /// in the world that stands `min_height_m` above the ground (EchoIsRaised):
-/// its reading first, then every one the part reports beside it.
+/// every one the part reports beside its reading (its reading is one of
+/// them: a zone's nearest target, a beam's first or strongest echo), or the
+/// reading alone.
 template <typename Visit>
 void ForEachRaisedEcho(const SensorOutput& sensor, const SensorInfo& info, double ground_z_m, double min_height_m,
                        Visit&& visit) {
   if (!sensor.fresh) return;
-  if (const Measurement headline = sensor.headline(); EchoIsRaised(headline, info, ground_z_m, min_height_m))
-    visit(headline);
+  if (sensor.measurements.empty()) {
+    if (const Measurement headline = sensor.headline(); EchoIsRaised(headline, info, ground_z_m, min_height_m))
+      visit(headline);
+    return;
+  }
   for (const Measurement& measurement : sensor.measurements) {
     if (EchoIsRaised(measurement, info, ground_z_m, min_height_m)) visit(measurement);
   }

@@ -43,6 +43,7 @@ struct SensorOutput {
   double t_reported_s = std::numeric_limits<double>::quiet_NaN();  ///< when the reading was reported
   Vec3 p_WS = Vec3::Zero();    ///< the sensor's origin when it measured
   Vec3 dir_W = Vec3::UnitX();  ///< its axis (unit) when it measured
+  double cos_to_axis = 1.0;    ///< a zone part reporting distances on its axis: the point lies d_m / cos_to_axis along dir_W
 
   /// What the device reports beside its reading, each with where it lies
   /// (sensors/measurement.h): a multi-zone part's targets, zone by zone; a
@@ -51,11 +52,12 @@ struct SensorOutput {
   Measurements measurements;
 
   /// The point the reading puts in the world: origin + d_m along the axis.
-  Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
+  Vec3 p_W_measured() const { return MeasuredPoint_W(p_WS, dir_W, d_m / cos_to_axis); }
   /// The reading as a measurement (status ok when detected, no_echo otherwise; group -1: the sensor's own).
   Measurement headline() const {
     return Measurement{.p_WS = p_WS, .dir_W = dir_W, .d_m = d_m,
-                       .status = detected ? ReadingStatus::kOk : ReadingStatus::kNoEcho, .signal = signal, .group = -1};
+                       .status = detected ? ReadingStatus::kOk : ReadingStatus::kNoEcho, .signal = signal, .group = -1,
+                       .cos_to_axis = cos_to_axis};
   }
 };
 

@@ -53,7 +53,7 @@ RayEvidence InterpretMeasurement(const SensorSpec& spec, const EvidenceModel& mo
   }
   const double dir_z = evidence.dir_W.z();
   if (evidence.detected) {
-    const double d_m = UnbiasedDistance_m(spec, output.d_m);
+    const double d_m = UnbiasedDistance_m(spec, output.ray_d_m());
     const double sigma_d = RangeSigma_m(spec, d_m);
     const double sigma_lat = d_m * model.tan_half_aperture / 2;
     evidence.d_m = d_m;

@@ -69,7 +69,7 @@ std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const Sampl
 
 RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, ReadingsFormat format,
                          std::function<void(const std::string&)> warn, bool force)
-    : sim_(sim), warn_(std::move(warn)) {
+    : sim_(sim), warn_(std::move(warn)), mounting_(sim.scenario(), sim.world().object_names()) {
   if (!out_dir.empty()) {
     folder_ = std::make_shared<OutputFolder>(out_dir, ClaimOptions{.command = "run", .force = force});
     out_dir_ = folder_->path();
@@ -115,6 +115,7 @@ void RunRecorder::Add(const SampleFrame& frame) {
       for (const std::string& warning : warnings_) warn_(warning);
   }
   for (const auto& sink : sinks_) sink->Add(frame);
+  mounting_.Add(frame);
 }
 
 nlohmann::json RunRecorder::Summary(bool interrupted) const {
@@ -128,6 +129,7 @@ nlohmann::json RunRecorder::Summary(bool interrupted) const {
   for (const auto& sink : sinks_) sink->AddToSummary(summary);
   for (const char* file : {"scene.json", "summary.json", "timings.json"}) summary["outputs"].push_back(file);
   summary["warnings"] = warnings_;
+  for (const std::string& warning : mounting_.Warnings()) summary["warnings"].push_back(warning);
   if (interrupted) {
     // the files hold every sample up to and including this one
     summary["samples_planned"] = sim_.sample_count();
@@ -142,6 +144,8 @@ nlohmann::json RunRecorder::Finish(bool interrupted) {
   // the sinks' files first: the summary reports them (the terrain map its score)
   for (const auto& sink : sinks_) sink->Commit();
   const nlohmann::json summary = Summary(interrupted);
+  if (warn_)
+    for (const std::string& warning : mounting_.Warnings()) warn_(warning);
   const std::filesystem::path out(out_dir_);
   const auto links = sim_.robot() ? sim_.robot()->LinkGeometry() : std::vector<LinkShapes>{};
   WriteFileAtomically((out / "scene.json").string(), SceneJsonText(sim_.scenario(), links));

@@ -17,6 +17,7 @@
 #include "core/output_folder.h"
 #include "output/readings_sink.h"
 #include "output/run_sink.h"
+#include "run/mounting_warnings.h"
 #include "sim/simulation.h"
 
 namespace proxsim {
@@ -60,7 +61,8 @@ class RunRecorder {
   std::string out_dir_;                   ///< folder_'s real path
   std::function<void(const std::string&)> warn_;
   std::vector<std::unique_ptr<RunSink>> sinks_;
-  std::vector<std::string> warnings_;
+  std::vector<std::string> warnings_;  // said at the first sample
+  MountingWatch mounting_;            // said at the end
   std::int64_t samples_ = 0;
   double last_t_s_ = 0;
 };

@@ -159,10 +159,10 @@ void ReadAmbientTable(YamlReader& reader, const Field& field, const std::string&
   }
 }
 
-// zones: [nx, ny], fov_deg: [h, v], zone_rays, targets, target_separation_m, target_order (multizone.h)
+// zones: [nx, ny], fov_deg: [h, v], zone_rays, targets, target_separation_m, target_order, distance (multizone.h)
 void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
   const bool given = map.Has("zones") || map.Has("fov_deg") || map.Has("zone_rays") || map.Has("targets") ||
-                     map.Has("target_separation_m") || map.Has("target_order");
+                     map.Has("target_separation_m") || map.Has("target_order") || map.Has("distance");
   if (!given) return;
   ZoneSpec zones = spec.zones.value_or(ZoneSpec{});
   if (const auto grid = reader.Numbers(map["zones"], 2, PositiveNumber(""), "[nx, ny], whole numbers of zones")) {
@@ -184,6 +184,13 @@ void ReadZones(YamlReader& reader, const MapView& map, SensorSpec& spec) {
       zones.strongest_first = *order == "strongest";
     else
       reader.Fail(map["target_order"], "expected closest or strongest (ST's target orders), got '" + *order + "'");
+  }
+  if (const auto distance = reader.String(map["distance"])) {
+    if (*distance == "perpendicular" || *distance == "radial")
+      zones.perpendicular = *distance == "perpendicular";
+    else
+      reader.Fail(map["distance"], "expected perpendicular (projected on the sensor's axis, as ST's parts report) or "
+                                   "radial (along the zone's rays), got '" + *distance + "'");
   }
   spec.zones = zones;
 }

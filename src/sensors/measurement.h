@@ -33,10 +33,16 @@ struct Measurement {
   double signal = std::numeric_limits<double>::quiet_NaN();  ///< its signal, NaN where the part reports none
   std::int32_t group = 0;      ///< the zone it belongs to (0 for a beam's echoes; -1 a sensor's own reading)
   std::int32_t rank = 0;       ///< its place in its group's order, 0 first (the part's target order; echoes nearest first)
+  /// A part that reports distances projected on its axis (ST's multi-zone
+  /// parts): the cosine between dir_W and the sensor's axis, so that the
+  /// point lies d_m / cos_to_axis along dir_W; 1 for a distance along dir_W.
+  double cos_to_axis = 1.0;
 
   bool detected() const { return status == ReadingStatus::kOk; }
-  /// The point it puts in the world: origin + d_m along its direction.
-  Vec3 p_W() const { return MeasuredPoint_W(p_WS, dir_W, d_m); }
+  /// The distance along dir_W from the origin to the point it measured.
+  double ray_d_m() const { return d_m / cos_to_axis; }
+  /// The point it puts in the world: origin + ray_d_m() along its direction.
+  Vec3 p_W() const { return MeasuredPoint_W(p_WS, dir_W, ray_d_m()); }
 };
 
 /// A sensor's measurements at one sample; empty for a sensor that reports

@@ -114,7 +114,8 @@ ZoneRangeEnds ZoneRangeEndsFor(const SensorSpec& spec, double reflectance) {
 
 }  // namespace
 
-void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out) {
+void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
+                  const DrawOfRay& draw, ZoneReadings& out) {
   const ZoneSpec& zones = *spec.zones;
   const int zone_count = ZoneCount(zones);
   const int per_zone = zones.rays_per_zone;
@@ -124,6 +125,10 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
   std::vector<EchoGroup> groups, strongest;
   std::vector<double> signal;
   std::vector<std::size_t> order;
+  // each ray's return as the zone's histogram weighs it: the signal a
+  // diffuse target sends back, E / d² (E = ρ·cos θ for a matte surface:
+  // PhysicalEchoEnergy), by ray index within the zone
+  std::vector<double> weight(static_cast<std::size_t>(per_zone));
   counted.reserve(per_zone);
   const bool by_target = !spec.range_table.empty() || !spec.corner_range_table.empty();
   // the floor and walls repeat one reflectance: its ranges are found once
@@ -138,13 +143,29 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
     for (int i = zone * per_zone; i < (zone + 1) * per_zone; ++i) {
       const Echo& echo = echoes[static_cast<std::size_t>(i)];
       double target_range_m = std::numeric_limits<double>::infinity();
+      // the signal falls with incidence (Lambert): a grazing floor's range is
+      // the range of a darker target, so it falls silent first. The
+      // datasheets' ranges are for a flat target facing the sensor, met by
+      // this ray at its own angle off the axis: relative to that, the surface
+      // returns E(θ)/E(θ_facing) of the light its reflectance would
+      const std::size_t ray = static_cast<std::size_t>(i);
+      const double energy = PhysicalEchoEnergy(spec, echo);
+      Echo facing = echo;
+      facing.incidence_deg = rays[ray].off_axis_deg;
+      const double facing_energy = PhysicalEchoEnergy(spec, facing);
+      const double reflectance = facing_energy > 0 ? echo.ir_albedo * energy / facing_energy : 0.0;
       if (by_target && echo.distance_m <= spec.max_range_m) {
-        if (!(echo.ir_albedo == ends_reflectance)) ends = ZoneRangeEndsFor(spec, ends_reflectance = echo.ir_albedo);
+        if (!(reflectance == ends_reflectance)) ends = ZoneRangeEndsFor(spec, ends_reflectance = reflectance);
         target_range_m = ends.At(corner_weight);
       }
       const ReadingStatus status = EchoStatusWithin(spec, echo, 1.0, target_range_m);
       if (echo.distance_m <= spec.max_range_m && !echo.from_robot) surface_in_range = true;
-      if (status == ReadingStatus::kOk) counted.push_back({echo.distance_m + echo.flight_shift_m, i});
+      if (status != ReadingStatus::kOk) continue;
+      const double arrival_m = echo.distance_m + echo.flight_shift_m;
+      // the part's distance: projected on the sensor's axis (ST's chips), or along the ray
+      const double d_m = zones.perpendicular ? arrival_m * rays[ray].dir_S.x() : arrival_m;
+      counted.push_back({d_m, i});
+      weight[static_cast<std::size_t>(i - zone * per_zone)] = energy / (arrival_m * arrival_m);
     }
     ZoneTarget* targets = &out.targets[static_cast<std::size_t>(zone * zones.targets)];
     if (counted.empty()) {
@@ -171,9 +192,18 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const Dr
     }
     for (std::size_t found = 0; found < groups.size(); ++found) {
       const EchoGroup& group = groups[found];
-      double sum_m = 0.0;
-      for (std::size_t k = group.begin; k < group.end; ++k) sum_m += counted[k].d_m;
-      const double mean_m = sum_m / static_cast<double>(group.end - group.begin);
+      // the target's distance: its returns' centre, each weighed by its signal
+      // (the histogram's peak leans to the nearer, brighter surface); the
+      // plain mean when no return carries signal (a mirror's off-lobe rays)
+      double sum_m = 0.0, sum_weighted_m = 0.0, sum_weight = 0.0;
+      for (std::size_t k = group.begin; k < group.end; ++k) {
+        const double w = weight[static_cast<std::size_t>(counted[k].ray - zone * per_zone)];
+        sum_m += counted[k].d_m;
+        sum_weighted_m += w * counted[k].d_m;
+        sum_weight += w;
+      }
+      const double mean_m =
+          sum_weight > 0 ? sum_weighted_m / sum_weight : sum_m / static_cast<double>(group.end - group.begin);
       const int ray = counted[group.begin].ray;
       const NoiseSpec noise = NoiseAt(spec, echoes[static_cast<std::size_t>(ray)].ir_albedo);
       targets[found] = {TimeOfFlightReading_m(noise, mean_m, draw(ray).gaussian_g), kZoneRangeValid, ray, mean_m};

@@ -18,10 +18,20 @@
 // part's minimum target separation or more: ST gives 600 mm for the
 // VL53L5CX/L7CX/L8CX ("the minimum distance between two targets to be
 // detected is 600 mm", UM2884, UM3038, UM3109); closer surfaces merge into one
-// target. A target's distance is the mean of its rays' distances (the rays
-// stand for equal parts of the zone), with the sensor's noise model applied
-// once per target (the draw of the target's nearest ray). Rays that hit the
-// robot's own body never make a target (the `self` convention).
+// target. A ray's distance is the one the part reports: projected on the
+// sensor's axis for ST's parts (`perpendicular`: a flat wall facing the
+// sensor reads the same in every zone; ST does the conversion on the chip),
+// or along the ray (`radial`). A target's distance is the centre of its
+// rays' distances weighed by the signal each returns, ρ·cos θ / d² for a
+// matte surface (the histogram's peak: a zone straddling a near bright edge
+// and a far wall leans to the edge), with the sensor's noise model applied
+// once per target (the draw of the target's nearest ray). The same signal
+// sets a ray's range: a part whose range depends on the target (its range
+// tables, measured on a flat target facing the sensor, which a ray meets at
+// its own angle φ off the axis) sees a surface met at incidence θ as a target
+// of reflectance ρ·cos θ / cos φ, so a grazing floor falls silent ("signal
+// rate too low") before a wall facing it. Rays that hit the robot's own body
+// never make a target (the `self` convention).
 //
 // Status, per zone and target, as ST's ULD API codes it (UM2884 Table 4):
 // 5 "range valid" for a target; for a zone without one, 8 "signal rate too
@@ -99,8 +109,9 @@ Vec3 ZoneAxis_S(const ZoneSpec& zones, int zone);
 std::vector<BeamRay> MakeSensorRays(const SensorSpec& spec);
 
 /// The zones' targets from every ray's echo (echoes[i] belongs to the
-/// sensor's ray i); `draw` gives ray i's noise draws. Writes `out`, sized here.
-void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, const DrawOfRay& draw, ZoneReadings& out);
+/// sensor's ray rays[i]); `draw` gives ray i's noise draws. Writes `out`, sized here.
+void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, std::span<const BeamRay> rays,
+                  const DrawOfRay& draw, ZoneReadings& out);
 
 /// Sets a named part's tables at the sensor's resolution from its datasheet:
 /// range_table (the inner zones' longest range), corner_range_table (the

@@ -54,7 +54,9 @@ nlohmann::json SensorSpecJson(const SensorSpec& spec) {
           {"targets", spec.zones ? nlohmann::json(spec.zones->targets) : nlohmann::json(nullptr)},
           {"target_separation_m", spec.zones ? nlohmann::json(spec.zones->target_separation_m) : nlohmann::json(nullptr)},
           {"target_order", spec.zones ? nlohmann::json(spec.zones->strongest_first ? "strongest" : "closest")
-                                      : nlohmann::json(nullptr)}};
+                                      : nlohmann::json(nullptr)},
+          {"distance", spec.zones ? nlohmann::json(spec.zones->perpendicular ? "perpendicular" : "radial")
+                                  : nlohmann::json(nullptr)}};
 }
 
 }  // namespace proxsim

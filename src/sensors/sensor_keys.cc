@@ -62,6 +62,8 @@ const std::vector<SensorKey>& SensorKeys() {
      "surfaces closer in range than this merge into one target (ST: 600 mm)"},
     {"target_order", R"(`closest` \| `strongest`)", "`closest`",
      "`multizone` and the ST parts only: a zone's targets nearest first, or the one returning the most signal first (ST's two target orders; its driver's default is `strongest`)"},
+    {"distance", R"(`perpendicular` \| `radial`)", "`perpendicular` (the ST parts), `radial` (`multizone`)",
+     "`multizone` and the ST parts only: a zone's distance projected on the sensor's axis, as ST's chips report it (a flat wall facing the sensor reads the same in every zone), or along the zone's rays"},
     {"range_table", "`[[reflectance, ambient_klux, max_range_m], ...]`", "`vl53l0x`, `vl53l1x` (by `distance_mode`, `roi`, `timing_budget_ms`), the ST multi-zone parts (by `zones`, their inner zones'): their datasheets'; otherwise none",
      "laser and multizone only: the longest range by the target's IR albedo and `scene.ambient_klux`, interpolated as docs/sensors.md says; `[]` turns a part's off"},
     {"corner_range_table", "`[[reflectance, ambient_klux, max_range_m], ...]`", "the ST multi-zone parts (by `zones`): their datasheets' corner zones'; otherwise none",

@@ -11,13 +11,14 @@ namespace {
 void MeasureZoneGrid(const SensorSpec& spec, const SensorPlacement& at, std::span<const Echo> echoes,
                      std::span<const BeamRay> rays, const DrawOfRay& draw, SensorMeasurement& out) {
   thread_local ZoneReadings zones;
-  MeasureZones(spec, echoes, draw, zones);
+  MeasureZones(spec, echoes, rays, draw, zones);
   const auto per_zone = static_cast<std::size_t>(spec.zones->targets);
   const ZoneTarget* nearest = nullptr;
   std::size_t nearest_zone = 0;
   for (std::size_t zone = 0; zone < zones.target_count.size(); ++zone) {
     const ZoneTarget* targets = &zones.targets[zone * per_zone];
     Measurement m{.p_WS = at.p_WS, .dir_W = at.zone_dir_W[zone], .group = static_cast<std::int32_t>(zone)};
+    const double cos_to_axis = spec.zones->perpendicular ? at.zone_dir_W[zone].dot(at.dir_W) : 1.0;
     // a zone without a target says why in its first slot (signal too low, or nothing)
     if (zones.target_count[zone] == 0) {
       m.d_m = spec.max_range_m;
@@ -33,6 +34,7 @@ void MeasureZoneGrid(const SensorSpec& spec, const SensorPlacement& at, std::spa
       m.status = ReadingStatus::kOk;
       m.code = target.status;
       m.rank = static_cast<std::int32_t>(j);
+      m.cos_to_axis = cos_to_axis;
       out.measured.push_back(m);
       m.d_m = target.truth_d_m;
       out.truth.push_back(m);
@@ -48,6 +50,7 @@ void MeasureZoneGrid(const SensorSpec& spec, const SensorPlacement& at, std::spa
     out.headline.reading.d_m = nearest->d_m;
     // the reading's axis is its zone's, so that its point is the zone's point
     out.headline_dir_W = at.zone_dir_W[nearest_zone];
+    out.headline_cos_to_axis = spec.zones->perpendicular ? at.zone_dir_W[nearest_zone].dot(at.dir_W) : 1.0;
     return;
   }
   // no zone has a target: the reading says why, as a beam of all its rays would
@@ -75,6 +78,7 @@ void MeasureSensorSample(const SensorSpec& spec, const SensorPlacement& at, std:
   out.measured.clear();
   out.truth.clear();
   out.headline_dir_W = at.dir_W;
+  out.headline_cos_to_axis = 1.0;
   if (spec.zones) {
     MeasureZoneGrid(spec, at, echoes, rays, draw, out);
   } else if (echoes.size() == 1) {

@@ -30,6 +30,7 @@ struct SensorPlacement {
 struct SensorMeasurement {
   BeamReading headline;               ///< the reading, the ray it came from, the ray whose truth stands beside it
   Vec3 headline_dir_W = Vec3::UnitX();  ///< the axis the reading lies along: the sensor's, or its zone's
+  double headline_cos_to_axis = 1.0;    ///< as Measurement::cos_to_axis: a perpendicular zone's reading lies d / cos along it
   Measurements measured;              ///< what the part reports beside the reading (empty for most parts)
   Measurements truth;                 ///< the same list with noise-free distances
 };

@@ -319,7 +319,7 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.max_range_m = part->max_range_m;
     spec.noise = {.sigma = 0.03, .mean = 0.0, .model = NoiseModel::kMultiplicative, .resolution_m = 0.001};
     spec.zones = ZoneSpec{.nx = 8, .ny = 8, .fov_h_deg = part->fov_deg, .fov_v_deg = part->fov_deg,
-                          .rays_per_zone = 4, .targets = 1, .target_separation_m = 0.6};
+                          .rays_per_zone = 4, .targets = 1, .target_separation_m = 0.6, .perpendicular = true};
     ApplyMultizonePartTables(spec);
     return spec;
   }

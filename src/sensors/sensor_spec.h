@@ -97,6 +97,12 @@ struct ZoneSpec {
   /// the ULD's own default — kept off here so that a zone reports what it
   /// always did unless asked (docs/sensors.md#multi-zone-time-of-flight).
   bool strongest_first = false;
+  /// The distance a zone reports: true, the perpendicular distance (projected
+  /// on the sensor's axis, as ST's chips report it: "the radial to
+  /// perpendicular conversion is done on the chip", an ST engineer on ST's
+  /// community forum); false, the radial one along the zone's rays. The ST
+  /// parts' presets set it; `distance: perpendicular | radial` in a scenario.
+  bool perpendicular = false;
 };
 
 /// Which echoes of a ping a time-of-flight beam reports (docs/sensors.md#several-echoes).

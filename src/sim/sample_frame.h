@@ -24,6 +24,9 @@ struct SensorSample {
   Vec3 p_WH = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());  ///< hit point, NaN when none
   Vec3 p_WS = Vec3::Zero();       ///< ray origin: the sensor frame's origin in world
   Vec3 dir_W = Vec3::UnitX();     ///< the sensor's axis: its frame's +x in world (a beam's rays spread around it)
+  /// A zone part reporting distances on its axis (sensors/measurement.h):
+  /// the reading's point lies d_m / cos_to_axis along dir_W; 1 otherwise.
+  double cos_to_axis = 1.0;
   /// What the sensor reports beside its reading (sensors/measurement.h): a
   /// multi-zone part's targets, a beam's echoes; empty for the others and
   /// between its own samples.

@@ -325,6 +325,7 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
   out.ray = measured.headline.ray;
   out.truth_ray = measured.headline.truth_ray;
   out.dir_W = measured.headline_dir_W;
+  out.cos_to_axis = measured.headline_cos_to_axis;
   out.measurements.swap(measured.measured);
   out.measurements_truth.swap(measured.truth);
 

@@ -298,6 +298,7 @@ void Simulation::FillObservation() {
       out.t_reported_s = sample.t_reported_s;
       out.p_WS = sample.p_WS;
       out.dir_W = sample.dir_W;
+      out.cos_to_axis = sample.cos_to_axis;
       out.measurements = sample.measurements;
     } else {
       // no news: the device shows its maximum range, at the pose the kinematics give now
@@ -305,6 +306,7 @@ void Simulation::FillObservation() {
       out.signal = out.output = out.t_reported_s = std::numeric_limits<double>::quiet_NaN();
       out.p_WS = frame_.sensors[i].p_WS;
       out.dir_W = frame_.sensors[i].dir_W;
+      out.cos_to_axis = 1.0;
     }
   }
   observation_ = Observation{.t_s = frame_.t_s,

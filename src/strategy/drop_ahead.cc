@@ -43,7 +43,7 @@ std::optional<DropSign> SeeDropAhead(const SensorOutput& sensor, const SensorInf
 
   if (sensor.detected) {
     // a surface met deeper than the legs step down
-    const double z_high_m = sensor.p_WS.z() + sensor.d_m * SinHighestRay(sensor, info);
+    const double z_high_m = sensor.p_WS.z() + sensor.d_m / sensor.cos_to_axis * SinHighestRay(sensor, info);
     if (!(z_high_m < deep_z_m)) return std::nullopt;
     const Vec3 p_W = sensor.p_W_measured();
     const auto ahead_m = ahead_in_corridor(p_W);

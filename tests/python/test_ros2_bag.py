@@ -249,8 +249,10 @@ def test_profile_events_and_metadata(status_run):
     summary = json.loads((run / "summary.json").read_text())
     logs = messages["/events"]
     robot = summary["robot"]
-    assert [m.msg for _, m in logs] == [f"{e['event']}: {e['detail']}" for e in robot["events"]] + [
-        f"{robot['outcome']}: {robot['outcome_detail']}"]
+    # (the run's warnings first: here its sensor 'back' sees only the robot)
+    assert [m.msg for _, m in logs] == summary["warnings"] + [
+        f"{e['event']}: {e['detail']}" for e in robot["events"]] + [f"{robot['outcome']}: {robot['outcome_detail']}"]
+    assert any("sensor 'back' saw only the robot's own body" in w for w in summary["warnings"])
     assert logs[-1][1].name == "outcome"
     # metadata.yaml: what `ros2 bag info` reads, its counts the bag's
     import yaml  # Debian's python3-yaml, which rosbags needs too

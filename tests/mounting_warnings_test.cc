@@ -1,0 +1,75 @@
+// Mounting mistakes said at the end of a run (src/run/mounting_warnings.h),
+// through the CLI: a sensor turned into its own shin, and radians typed into
+// rpy_deg; and no such warning for a sensor mounted as the paper mounts it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_helpers.h"
+
+namespace proxsim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::FreshDir;
+using testing::ReadFile;
+using testing::RunProxsim;
+
+// The biped walks 2 s in the dining room with one sensor on its left tibia at `pose`.
+testing::CommandResult RunWithTibiaSensor(const std::string& name, const std::string& link, const std::string& pose,
+                                          nlohmann::json& summary) {
+  const fs::path dir = FreshDir(name);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scenario.yaml") << "proxsim: 1\nseed: 1\nduration_s: 2\nrate_hz: 50\n"
+                                          "scene: {builtin: dining_room}\n"
+                                          "robot: {model: builtin:biped}\n"
+                                          "sensors:\n  - {name: tof, type: laser, link: " + link + ", pose: " + pose + "}\n";
+  const auto run = RunProxsim("run " + (dir / "scenario.yaml").string() + " --no-report --out " + (dir / "out").string());
+  summary = nlohmann::json::parse(ReadFile(dir / "out" / "summary.json"));
+  return run;
+}
+
+TEST(MountingWarnings, ASensorTurnedIntoItsOwnShinIsSaidToSeeOnlyTheRobot) {
+  nlohmann::json summary;
+  // the paper's tibia point, facing back into the tibia
+  const auto run = RunWithTibiaSensor("mount_self", "left_tibia", "{xyz_m: [0.06, 0, -0.15], rpy_deg: [0, 0, 180]}",
+                                      summary);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string warnings = summary["warnings"].dump();
+  EXPECT_NE(warnings.find("sensor 'tof' saw only the robot's own body: all 100 of its readings were `self`, the nearest "
+                          "'left_tibia' at"),
+            std::string::npos)
+      << warnings;
+  EXPECT_NE(run.output.find("saw only the robot's own body"), std::string::npos) << run.output;
+}
+
+TEST(MountingWarnings, RadiansTypedIntoRpyDegAreSuspectedWhenNothingIsSeen) {
+  nlohmann::json summary;
+  // the example: the angles of a shin sensor typed in radians, on a world
+  // sensor high above the room looking nearly level over it
+  const auto run = RunWithTibiaSensor("mount_radians", "world", "{xyz_m: [0, 0, 5], rpy_deg: [1.616, 0.168, 1.836]}",
+                                      summary);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string warnings = summary["warnings"].dump();
+  EXPECT_NE(warnings.find("sensor 'tof' detected nothing, and its rpy_deg [1.616, 0.168, 1.836] are all below 2π: "
+                          "radians typed as degrees?"),
+            std::string::npos)
+      << warnings;
+}
+
+TEST(MountingWarnings, ThePapersTibiaSensorGetsNoWarning) {
+  nlohmann::json summary;
+  const auto run = RunWithTibiaSensor("mount_paper", "left_tibia", "{xyz_m: [0.06, 0, -0.15], rpy_deg: [0, 8, 0]}",
+                                      summary);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(summary["warnings"].empty()) << summary["warnings"].dump();
+  // nor does a level sensor that sees nothing (its angles are all 0: nothing was typed)
+  const auto level = RunWithTibiaSensor("mount_level", "world", "{xyz_m: [0, 0, 5], rpy_deg: [0, 0, 0]}", summary);
+  ASSERT_EQ(level.exit_code, 0) << level.output;
+  EXPECT_TRUE(summary["warnings"].empty()) << summary["warnings"].dump();
+}
+
+}  // namespace
+}  // namespace proxsim
