@@ -1,6 +1,7 @@
 #include "study/study_jobs.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,12 +10,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "core/regular_file.h"
 
 namespace proxsim {
 
@@ -118,8 +121,15 @@ std::map<std::size_t, std::string> ReadJournal(const std::string& path, const js
                                                const std::function<std::size_t(const json&)>& check,
                                                const std::optional<StudySlice>& slice) {
   std::map<std::size_t, std::string> lines;
+  // a FIFO blocks its reader for ever, /dev/zero is read until memory runs out: stat() first, never open()
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return lines;  // nothing to resume: start afresh
+  if (const std::string problem = RegularFileProblem(path, std::numeric_limits<unsigned long long>::max());
+      !problem.empty()) {
+    throw InputError(problem + "; the study journal must be the regular file a study wrote");
+  }
   std::ifstream in(path);
-  if (!in) return lines;  // nothing to resume: start afresh
+  if (!in) return lines;
   std::string line;
   bool first = true;
   for (int line_no = 1; std::getline(in, line); ++line_no) {

@@ -1,0 +1,257 @@
+// Issue 40, "trust under attack, second round", through the real binary:
+// outputs that would replace a device or one of the run's own files, names
+// that would share a file, inputs that are FIFOs or devices, sizes and
+// coordinates without a bound, links planted where a run writes, and the
+// messages the last round left vague. Each case must end with the exit code
+// and the message trust.md gives, within a wall-clock bound (under `timeout`,
+// so that a regression is a failure, not a hung suite), and leave every file
+// outside the output folder as it was.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_helpers.h"
+#include "core/text_fields.h"
+
+namespace proxsim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CommandResult;
+using testing::FreshDir;
+using testing::ReadFile;
+using testing::RunCommand;
+
+// Far above the seconds each case takes: an overrun is a hang.
+constexpr int kRound2Limit_s = 60;
+
+CommandResult ProxsimBounded(const std::string& args) {
+  return RunCommand("timeout -s KILL " + std::to_string(kRound2Limit_s) + " " + PROXSIM_BINARY + " " + args);
+}
+
+// A scenario of one world sensor in an empty scene: runs in well under a second.
+constexpr const char* kTinyScenario =
+    "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nsensors:\n  - {name: s, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n";
+
+bool IsFifo(const fs::path& path) {
+  struct stat info {};
+  return ::lstat(path.c_str(), &info) == 0 && S_ISFIFO(info.st_mode);
+}
+
+class TrustRound2Test : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = FreshDir("trust2");
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path Write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name, std::ios::binary) << text;
+    return dir_ / name;
+  }
+  // exit `code` and every fragment in the output
+  static void Expect(const CommandResult& result, int code, const std::vector<std::string>& fragments) {
+    EXPECT_EQ(result.exit_code, code) << result.output;
+    for (const std::string& fragment : fragments)
+      EXPECT_NE(result.output.find(fragment), std::string::npos) << fragment << " not in:\n" << result.output;
+  }
+  // `proxsim validate` on `yaml`: exit 2 and every fragment
+  void ExpectInvalid(const std::string& yaml, const std::vector<std::string>& fragments) {
+    Expect(ProxsimBounded("validate " + Write("case.yaml", yaml).string()), 2, fragments);
+  }
+
+  fs::path dir_;
+};
+
+// ----- outputs that would replace what is not the run's
+
+TEST_F(TrustRound2Test, GenerateOutAndMcapOntoAFifoAreRefusedAndTheFifoStays) {
+  const fs::path fifo = dir_ / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const fs::path room = Write("room.yaml", "proxsim: 1\nscene:\n  generate: {kind: room, seed: 1, size_m: [4, 4]}\n"
+                                           "sensors:\n  - {name: s, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n");
+  Expect(ProxsimBounded("generate " + room.string() + " --out " + fifo.string()), 2,
+         {"--out " + fifo.string() + ": a FIFO, not a regular file; proxsim never replaces one"});
+  const fs::path scenario = Write("tiny.yaml", kTinyScenario);
+  Expect(ProxsimBounded("run " + scenario.string() + " --no-report --out " + (dir_ / "out").string() + " --mcap " +
+                        fifo.string()),
+         2, {"--mcap " + fifo.string() + ": a FIFO"});
+  EXPECT_TRUE(IsFifo(fifo)) << "replaced by a regular file";
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(TrustRound2Test, McapOverTheRunsOwnFilesIsRefusedBeforeTheRun) {
+  const fs::path scenario = Write("tiny.yaml", kTinyScenario);
+  for (const char* own : {"summary.json", "readings.csv", "./summary.json"}) {
+    SCOPED_TRACE(own);
+    const std::string out = (dir_ / "out").string();
+    Expect(ProxsimBounded("run " + scenario.string() + " --no-report --out " + out + "/ --mcap " + out + "/" + own), 2,
+           {"one of the run's files"});
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
+  }
+}
+
+// ----- names that would share a file
+
+TEST_F(TrustRound2Test, SensorsWhoseFoldersWouldCollideAreRefusedNamingBoth) {
+  ExpectInvalid("proxsim: 1\nsensors:\n"
+                "  - {name: a, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n"
+                "  - {name: \"..\", type: ideal, pose: {xyz_m: [0, 0, 1]}}\n"
+                "  - {name: sensor_1, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n",
+                {"sensor 'sensor_1' and sensor '..' would write the same folder 'sensor_1' under zones/ and echoes/"});
+}
+
+TEST(TrustRound2Names, QuotedForCommentKeepsEveryNameOnItsLine) {
+  EXPECT_EQ(QuotedForComment("x\nrobot: {model: evil.urdf}"), "\"x\\nrobot: {model: evil.urdf}\"");
+  EXPECT_EQ(QuotedForComment("a\"b\\c\r\t\x01"), "\"a\\\"b\\\\c\\r\\t\\x01\"");
+  EXPECT_EQ(QuotedForComment("plain"), "\"plain\"");
+}
+
+TEST_F(TrustRound2Test, AGeneratedWorldsCommentEscapesItsSourcesName) {
+  // a scenario whose file name holds a newline and a key: the written world must not gain that key
+  const fs::path odd = dir_ / "r\nduration_s: 999\n#.yaml";
+  std::ofstream(odd) << "proxsim: 1\nduration_s: 1\nscene:\n  generate: {kind: room, seed: 1, size_m: [4, 4]}\n"
+                        "sensors:\n  - {name: s, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n";
+  const fs::path world = dir_ / "world.yaml";
+  Expect(ProxsimBounded("generate '" + odd.string() + "' --out " + world.string()), 0, {});
+  const std::string text = ReadFile(world);
+  EXPECT_EQ(text.find("\nduration_s: 999"), std::string::npos) << text.substr(0, 200);
+  EXPECT_NE(text.find("r\\nduration_s: 999\\n#.yaml\""), std::string::npos) << text.substr(0, 200);
+}
+
+// ----- inputs that are not regular files
+
+TEST_F(TrustRound2Test, AStudyJournalThatIsAFifoOrDevZeroIsRefusedAtOnce) {
+  const std::string study = std::string(PROXSIM_SOURCE_DIR) + "/data/studies/tibia_placement.yaml";
+  for (const char* kind : {"fifo", "zero"}) {
+    SCOPED_TRACE(kind);
+    const fs::path out = dir_ / kind;
+    fs::create_directories(out);
+    if (std::string(kind) == "fifo") {
+      ASSERT_EQ(::mkfifo((out / "journal.jsonl").c_str(), 0600), 0);
+    } else {
+      fs::create_symlink("/dev/zero", out / "journal.jsonl");
+    }
+    Expect(ProxsimBounded("study " + study + " --no-report --force --resume --out " + out.string()), 2,
+           {"journal.jsonl: not a regular file (a device, FIFO or socket is never read)"});
+  }
+}
+
+// ----- sizes and coordinates
+
+TEST_F(TrustRound2Test, AHugeLatencyIsRefusedNamingTheBound) {
+  ExpectInvalid("proxsim: 1\nduration_s: 3\nsensors:\n"
+                "  - {name: s, type: ideal, latency_s: 1e5, pose: {xyz_m: [0, 0, 1]}}\n",
+                {"sensors[0].latency_s: expected a latency in [0, 10] s", "got 1e5"});
+}
+
+TEST_F(TrustRound2Test, ZoneArraysCountInTheRunsSizeAndMemory) {
+  // 64 x 64 zones for ten hours: about 4.8 TB of zones/ alone
+  ExpectInvalid("proxsim: 1\nduration_s: 36000\nrate_hz: 10\nsensors:\n"
+                "  - {name: grid, type: multizone, zones: [64, 64], fov_deg: [45, 45], pose: {xyz_m: [0, 0, 1]}}\n",
+                {"duration_s: the run is too large"});
+  // within the output guard, beyond what a run may hold in memory to its end
+  ExpectInvalid("proxsim: 1\nduration_s: 3000\nrate_hz: 10\nsensors:\n"
+                "  - {name: grid, type: multizone, zones: [64, 64], fov_deg: [45, 45], pose: {xyz_m: [0, 0, 1]}}\n",
+                {"duration_s: the run is too large", "held in memory to the run's end", "expected at most 2 GB"});
+}
+
+TEST_F(TrustRound2Test, ARateGivingNoSampleIsRefused) {
+  ExpectInvalid("proxsim: 1\nduration_s: 10\nrate_hz: 1e-300\nsensors:\n  - {name: s, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n",
+                {"rate_hz: the run takes no sample", "expected at least one"});
+}
+
+TEST_F(TrustRound2Test, ATrajectoryRowBeyondTheCoordinateLimitIsRefused) {
+  Write("walk.csv", "t_s,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg\n0,0,0,1,0,0,0\n0.1,1e308,0,1,0,0,0\n");
+  ExpectInvalid("proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nrobot:\n  model: builtin:biped\n  trajectory: walk.csv\n"
+                "sensors:\n  - {name: s, type: ideal, link: pelvis, pose: {xyz_m: [0, 0, 0]}}\n",
+                {"walk.csv:3: column 'x_m': 1e308 m is beyond the coordinate limit"});
+}
+
+// ----- the messages the last round left vague
+
+TEST_F(TrustRound2Test, DeepYamlIsRefusedNamingTheDepth) {
+  ExpectInvalid("proxsim: 1\nduration_s: " + std::string(100000, '[') + std::string(100000, ']') + "\n",
+                {"case.yaml:2: YAML nested deeper than 256 levels"});
+  std::string maps = "proxsim: 1\nscene:\n";
+  for (int i = 0; i < 600; ++i) maps += std::string(2 * (i + 1), ' ') + "a" + std::to_string(i) + ":\n";
+  ExpectInvalid(maps, {"YAML nested deeper than 256 levels", "docs/trust.md"});
+}
+
+TEST_F(TrustRound2Test, AScenarioInASymlinkLoopIsNamedAsALoop) {
+  fs::create_symlink(dir_ / "loop.yaml", dir_ / "loop.yaml");
+  const std::string loop = (dir_ / "loop.yaml").string();
+  Expect(ProxsimBounded("run " + loop + " --no-report --out " + (dir_ / "out").string()), 2,
+         {loop + ": a loop of symbolic links"});
+  Expect(ProxsimBounded("validate " + loop), 2, {"cannot read the scenario file: a loop of symbolic links"});
+}
+
+// ----- writes where a run should not
+
+TEST_F(TrustRound2Test, ALinkedZonesFolderIsRefusedBeforeAnythingIsWritten) {
+  const fs::path scenario = Write("zones.yaml", "proxsim: 1\nduration_s: 0.1\nrate_hz: 10\nsensors:\n"
+                                                "  - {name: grid, type: multizone, zones: [2, 2], fov_deg: [20, 20], "
+                                                "pose: {xyz_m: [0, 0, 1]}}\n");
+  const fs::path elsewhere = dir_ / "elsewhere", out = dir_ / "out";
+  fs::create_directories(elsewhere);
+  fs::create_directories(out);
+  fs::create_directory_symlink(elsewhere, out / "zones");
+  const auto result = ProxsimBounded("run " + scenario.string() + " --no-report --force --out " + out.string());
+  Expect(result, 1, {"zones: it is a symbolic link or not a folder; proxsim never writes through a link"});
+  EXPECT_TRUE(fs::is_empty(elsewhere)) << "written through the link";
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+TEST_F(TrustRound2Test, ManifestDigestsAreStandardFnv1a) {
+  const fs::path scenario = Write("tiny.yaml", kTinyScenario);
+  const fs::path out = dir_ / "out";
+  Expect(ProxsimBounded("run " + scenario.string() + " --no-report --out " + out.string()), 0, {});
+  // FNV-1a 64 as its authors define it: offset basis 0xcbf29ce484222325, prime 0x100000001b3
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  for (const char c : ReadFile(out / "summary.json")) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  const auto manifest = nlohmann::json::parse(ReadFile(out / "manifest.json"));
+  EXPECT_EQ(manifest["summary_fnv1a64"], hex);
+}
+
+// ----- MPI: a failure on rank 0 before the jobs reaches every rank
+
+// as root mpirun needs these; OpenMPI's plug-ins leak at exit under ASan (not proxsim's memory)
+constexpr const char* kRound2MpiEnv =
+    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
+
+TEST_F(TrustRound2Test, AnEarlyFailureOnRankZeroEndsEveryRankInBothStudyModes) {
+  if (RunCommand("command -v mpirun").exit_code != 0) GTEST_SKIP() << "mpirun not found (scripts/install-deps.sh)";
+  const std::string data = std::string(PROXSIM_SOURCE_DIR) + "/data/";
+  const fs::path outcome = Write("outcome.yaml", "proxsim_study: 1\nmode: outcomes\nbase: " + data +
+                                                     "scenarios/outcome_walker.yaml\nsets:\n"
+                                                     "  - {name: one, sensors: [{name: l, type: laser, link: left_tibia, "
+                                                     "pose: {xyz_m: [0.06, 0, -0.35]}}]}\n"
+                                                     "strategies: [{name: stop}]\n"
+                                                     "worlds:\n  - {generate: {kind: room, size_m: [4, 4]}, seeds: [1]}\n");
+  // --out a file (exit 1, as without MPI): rank 0 fails on it while rank 1 waits for its first job
+  const fs::path file = Write("not_a_folder", "mine\n");
+  for (const std::string& study : {data + "studies/tibia_placement.yaml", outcome.string()}) {
+    SCOPED_TRACE(study);
+    const auto result = RunCommand(std::string(kRound2MpiEnv) + "timeout -s KILL " + std::to_string(kRound2Limit_s) +
+                                   " mpirun --oversubscribe -x ASAN_OPTIONS -np 2 " + PROXSIM_BINARY + " study " +
+                                   study + " --no-report --threads 1 --out " + file.string());
+    EXPECT_EQ(result.exit_code, 1) << result.output;  // 137 is the timeout's kill: a deadlock
+    EXPECT_NE(result.output.find(file.string()), std::string::npos) << result.output;
+    EXPECT_EQ(ReadFile(file), "mine\n");
+  }
+}
+
+}  // namespace
+}  // namespace proxsim
