@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -20,7 +21,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.h"
+#include "core/input_error.h"
 #include "core/text_fields.h"
+#include "input_error_helpers.h"
+#include "study/outcome_runner.h"
 
 namespace proxsim {
 namespace {
@@ -223,6 +227,71 @@ TEST_F(TrustRound2Test, ManifestDigestsAreStandardFnv1a) {
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
   const auto manifest = nlohmann::json::parse(ReadFile(out / "manifest.json"));
   EXPECT_EQ(manifest["summary_fnv1a64"], hex);
+}
+
+TEST_F(TrustRound2Test, OutcomeWorldsWhoseFileNamesWouldCollideGetAReplayEach) {
+  const std::string data = std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/";
+  // a set name that would inject a key into the replay file's comment line
+  const fs::path study = Write(
+      "names.yaml", "proxsim_study: 1\nmode: outcomes\nbase: " + data + "outcome_walker.yaml\nsets:\n"
+                    "  - {name: \"up\\nduration_s: 0.1\", sensors: [{name: up, type: laser, link: left_tibia, "
+                    "pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, -80, 0]}}]}\n"
+                    "strategies: [{name: stop}]\nbaselines: []\nworlds:\n"
+                    "  - {name: x y, scenario: " + data + "circumvent_obstacle.yaml, seeds: [1]}\n"
+                    "  - {name: x_y, scenario: " + data + "circumvent_obstacle.yaml, seeds: [1]}\n");
+  const fs::path out = dir_ / "out";
+  Expect(ProxsimBounded("study " + study.string() + " --no-report --out " + out.string()), 0, {});
+  // (failures.csv quotes the set's name over two lines: the replay files are read instead)
+  std::vector<std::string> worlds;
+  for (const auto& entry : fs::directory_iterator(out / "failures")) {
+    const std::string text = ReadFile(entry.path());
+    SCOPED_TRACE(entry.path().filename().string());
+    EXPECT_EQ(text.find("\nduration_s: 0.1"), std::string::npos) << "the set's name injected a key";
+    EXPECT_NE(text.find("set \"up\\nduration_s: 0.1\""), std::string::npos) << text.substr(0, 300);
+    worlds.push_back(text.substr(text.find("world \""), 11));
+  }
+  std::sort(worlds.begin(), worlds.end());
+  EXPECT_EQ(worlds, (std::vector<std::string>{"world \"x y\"", "world \"x_y\""}));
+}
+
+TEST_F(TrustRound2Test, ACombineRankingThatIsAFifoIsRefusedAtOnce) {
+  ASSERT_EQ(::mkfifo((dir_ / "ranking.csv").c_str(), 0600), 0);
+  const fs::path study = Write("combine.yaml", "proxsim_study: 1\nmode: outcomes\nbase: " +
+                                                   std::string(PROXSIM_SOURCE_DIR) +
+                                                   "/data/scenarios/outcome_walker.yaml\nworlds: {generate: {kind: room}}\n"
+                                                   "combine: {from: ranking.csv, size: 2, top: 3}\nbaselines: []\n");
+  Expect(ProxsimBounded("study " + study.string() + " --no-report --out " + (dir_ / "out").string()), 2,
+         {"ranking.csv: not a regular file (a device, FIFO or socket is never read)"});
+}
+
+TEST_F(TrustRound2Test, AnMjcfRobotOfTooManyBodiesIsRefusedBeforeMuJoCo) {
+  std::string bodies;
+  for (int i = 0; i < 2001; ++i) bodies += "<body name=\"b" + std::to_string(i) + "\"><geom size=\"0.01\"/></body>";
+  Write("many.xml", "<mujoco><worldbody>" + bodies + "</worldbody></mujoco>\n");
+  ExpectInvalid("proxsim: 1\nrobot: {model: many.xml}\nsensors:\n  - {name: s, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n",
+                {"many.xml: 2001 <body> elements (with its includes), beyond the limit of 2000"});
+}
+
+TEST_F(TrustRound2Test, TheMcapExporterRefusesALinkPlantedUnderItsTemporaryName) {
+  const fs::path scenario = Write("tiny.yaml", kTinyScenario);
+  const fs::path out = dir_ / "out", mcap = dir_ / "run.mcap", victim = Write("victim.txt", "mine\n");
+  Expect(ProxsimBounded("run " + scenario.string() + " --no-report --out " + out.string()), 0, {});
+  fs::create_symlink(victim, dir_ / "run.mcap.tmp");
+  Expect(ProxsimBounded("export " + out.string() + " --mcap " + mcap.string()), 1,
+         {"run.mcap.tmp: a symbolic link or not a regular file; proxsim never writes through one"});
+  EXPECT_EQ(ReadFile(victim), "mine\n");
+  EXPECT_FALSE(fs::exists(mcap));
+}
+
+TEST(TrustRound2Journal, AnOutcomeJournalLineOutOfRangeIsRefusedNamingTheValue) {
+  const auto parse = [](const std::string& line) {
+    return testing::ErrorOf([&] { ParseOutcomeJob(nlohmann::json::parse(line), 1, "job 0"); });
+  };
+  EXPECT_EQ(parse(R"({"way": true, "hazard_m": 2, "window_m": 0.5, "runs": [["reached_goal", 3.5, 4, 4, 0.2]]})"), "");
+  const std::string early = parse(R"({"way": true, "hazard_m": 2, "window_m": 0.5, "runs": [["reached_goal", -1e308, 4, 4, 0.2]]})");
+  EXPECT_NE(early.find("job 0: outcome_t_s: expected a number in [0, 1e9], got -1e+308"), std::string::npos) << early;
+  const std::string far = parse(R"({"way": true, "hazard_m": 1e308, "window_m": 0.5, "runs": [["stopped", 3, 4, 4, 0.2]]})");
+  EXPECT_NE(far.find("job 0: hazard_m: expected a number in [0, 1e9]"), std::string::npos) << far;
 }
 
 // ----- MPI: a failure on rank 0 before the jobs reaches every rank

@@ -29,7 +29,7 @@ double NumberOrNaN(const json& value, const std::string& where, const char* name
   if (!value.is_number()) Bad(where + ": " + name + ": expected a number, got " + value.dump());
   const double number = value.get<double>();
   if (!(number >= min && number <= kMaxJournalValue)) {
-    Bad(where + ": " + name + ": expected a number in [" + json(min).dump() + ", 1e9], got " + value.dump());
+    Bad(where + ": " + name + ": expected a number in [" + (min < 0 ? "-1e9" : "0") + ", 1e9], got " + value.dump());
   }
   return number;
 }

@@ -1,5 +1,8 @@
 """Issue 40's Python cases: the robot's state before any sample, one VecWalkEnv shared by threads,
 and arguments that are NaN or empty, each refused with an exception naming it."""
+import os
+import subprocess
+import sys
 import threading
 
 import numpy as np
@@ -74,3 +77,24 @@ def test_a_nan_action_is_refused_naming_it():
     vec.reset(seed=0)
     with pytest.raises(ValueError, match=r"actions\[0\]\[1\] \(stride_m\) is nan"):
         vec.step(np.array([[1.0, float("nan")]]))
+
+
+_FAR_STEP = """
+import numpy as np, proxsim
+sim = proxsim.Simulation.builtin("paper", locomotion="external")
+try:
+    sim.step(q=np.zeros(len(sim.joint_names)), X_WP=([{x!r}, 0, 0.9], [1, 0, 0, 0]))
+    print("accepted")
+except proxsim.InputError as error:
+    print(error)
+"""
+
+
+@pytest.mark.parametrize("x_m", [5e7, 1e17])
+def test_a_co_simulated_robot_beyond_the_coordinate_limit_is_refused_in_bounded_memory(x_m):
+    # at 5e7 m the first step allocated 8.5 GB; at 1e17 m terrain/*.npy was written empty; now a 1.5 GB
+    # address space suffices for the refusal
+    result = subprocess.run(["prlimit", f"--as={1536 << 20}", sys.executable, "-c", _FAR_STEP.format(x=x_m)],
+                            capture_output=True, text=True, timeout=120, env=os.environ)
+    assert result.returncode == 0, result.stderr
+    assert "X_WP: the position" in result.stdout and "beyond the coordinate limit of ±100000 m" in result.stdout
