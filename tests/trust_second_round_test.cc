@@ -200,6 +200,15 @@ TEST_F(TrustRound2Test, AScenarioInASymlinkLoopIsNamedAsALoop) {
   Expect(ProxsimBounded("validate " + loop), 2, {"cannot read the scenario file: a loop of symbolic links"});
 }
 
+TEST_F(TrustRound2Test, BothLegsMappedToOneLegAreRefused) {
+  ExpectInvalid("proxsim: 1\nduration_s: 1\nrobot:\n  model: builtin:biped\n  legs:\n"
+                "    left: {hip: left_hip_pitch, knee: left_knee_pitch, ankle: left_ankle_pitch, foot: left_foot}\n"
+                "    right: {hip: left_hip_pitch, knee: left_knee_pitch, ankle: left_ankle_pitch, foot: left_foot}\n"
+                "sensors:\n  - {name: s, type: ideal, link: pelvis, pose: {xyz_m: [0, 0, 0]}}\n",
+                {"robot.legs.right.hip: joint 'left_hip_pitch' is also the left leg's",
+                 "robot.legs.right.foot: link 'left_foot' is also the left leg's foot"});
+}
+
 // ----- writes where a run should not
 
 TEST_F(TrustRound2Test, ALinkedZonesFolderIsRefusedBeforeAnythingIsWritten) {

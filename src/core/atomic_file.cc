@@ -67,9 +67,10 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
     }
     Fail("open the folder of", path_);
   }
-  // the final name: a device, FIFO, socket or folder there is never replaced
+  // the final name: a device, FIFO or socket there is never replaced (a folder there makes the rename fail)
   if (struct stat final_info {}; ::fstatat(dir_fd_, name_.c_str(), &final_info, AT_SYMLINK_NOFOLLOW) == 0 &&
-                                 !S_ISREG(final_info.st_mode) && !S_ISLNK(final_info.st_mode)) {
+                                 !S_ISREG(final_info.st_mode) && !S_ISLNK(final_info.st_mode) &&
+                                 !S_ISDIR(final_info.st_mode)) {
     ::close(dir_fd_);
     dir_fd_ = -1;
     throw std::runtime_error("cannot create " + path_ + ": " + ReplaceableFileProblem(path_));
