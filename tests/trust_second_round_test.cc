@@ -209,6 +209,17 @@ TEST_F(TrustRound2Test, BothLegsMappedToOneLegAreRefused) {
                  "robot.legs.right.foot: link 'left_foot' is also the left leg's foot"});
 }
 
+TEST_F(TrustRound2Test, AUrdfElementUrdfdomDropsIsRefusedNotLeftOut) {
+  std::string urdf = ReadFile(fs::path(PROXSIM_SOURCE_DIR) / "data" / "robots" / "biped.urdf");
+  const std::string box = "<box size=\"0.20 0.32 0.16\"/>";
+  ASSERT_NE(urdf.find(box), std::string::npos);
+  urdf.replace(urdf.find(box), box.size(), "<box size=\"big\"/>");
+  Write("big.urdf", urdf);
+  ExpectInvalid("proxsim: 1\nrobot: {model: big.urdf}\nsensors:\n  - {name: s, type: ideal, link: pelvis, pose: {xyz_m: [0, 0, 0]}}\n",
+                {"big.urdf: urdfdom left out what it could not read: Unable to parse component [big]",
+                 "Could not parse visual element for Link [pelvis]"});
+}
+
 // ----- writes where a run should not
 
 TEST_F(TrustRound2Test, ALinkedZonesFolderIsRefusedBeforeAnythingIsWritten) {
