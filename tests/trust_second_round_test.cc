@@ -182,6 +182,13 @@ TEST_F(TrustRound2Test, ATrajectoryRowBeyondTheCoordinateLimitIsRefused) {
                 {"walk.csv:3: column 'x_m': 1e308 m is beyond the coordinate limit"});
 }
 
+TEST_F(TrustRound2Test, RoomCountsAreBoundedNamingWhy) {
+  ExpectInvalid("proxsim: 1\nscene:\n  generate: {kind: room, size_m: [100, 100], tables: [51, 51], "
+                "blockers: {count: [11, 11]}}\nsensors:\n  - {name: s, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n",
+                {"tables: at most 50 (each piece may search the whole floor for the way through; docs/trust.md)",
+                 "blockers.count: at most 10 per 5 m"});
+}
+
 // ----- the messages the last round left vague
 
 TEST_F(TrustRound2Test, DeepYamlIsRefusedNamingTheDepth) {
