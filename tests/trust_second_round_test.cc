@@ -189,6 +189,15 @@ TEST_F(TrustRound2Test, RoomCountsAreBoundedNamingWhy) {
                  "blockers.count: at most 10 per 5 m"});
 }
 
+TEST_F(TrustRound2Test, AMovingBoxCannotBeStoodOn) {
+  ExpectInvalid("proxsim: 1\nduration_s: 0.5\nscene:\n  objects:\n    - {name: floor, plane: {}}\n"
+                "    - {name: cart, box: {size_m: [0.6, 0.6, 0.1]}, pose: {xyz_m: [0, 0, 0.05]}, "
+                "motion: {velocity_m_s: [0.5, 0, 0]}}\n"
+                "robot:\n  model: builtin:biped\n  start: {xyz_m: [0, 0, 0.1], on: cart}\n"
+                "sensors:\n  - {name: s, type: ideal, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.2]}}\n",
+                {"robot.start.on: 'cart' moves (its motion key); the robot can start only on an object that stands still"});
+}
+
 // ----- the messages the last round left vague
 
 TEST_F(TrustRound2Test, DeepYamlIsRefusedNamingTheDepth) {
