@@ -24,6 +24,7 @@
 #include "core/input_error.h"
 #include "core/text_fields.h"
 #include "input_error_helpers.h"
+#include "output/octomap_recorder.h"
 #include "study/outcome_runner.h"
 
 namespace proxsim {
@@ -325,6 +326,28 @@ TEST(TrustRound2Journal, AnOutcomeJournalLineOutOfRangeIsRefusedNamingTheValue) 
   EXPECT_NE(early.find("job 0: outcome_t_s: expected a number in [0, 1e9], got -1e+308"), std::string::npos) << early;
   const std::string far = parse(R"({"way": true, "hazard_m": 1e308, "window_m": 0.5, "runs": [["stopped", 3, 4, 4, 0.2]]})");
   EXPECT_NE(far.find("job 0: hazard_m: expected a number in [0, 1e9]"), std::string::npos) << far;
+}
+
+TEST(TrustRound2Octomap, ReadingsBeyondTheKeysReachAreCountedSilently) {
+  // at 0.02 m OctoMap's 16-bit keys reach 655.36 m: the hour-long walk printed 129 782 errors beyond it
+  OctomapRecorder octomap(0.02);
+  EXPECT_DOUBLE_EQ(octomap.reach_m(), 655.36);
+  RayEvidence far;
+  far.p_WS = Vec3(700, 0, 0.5);
+  far.dir_W = -Vec3::UnitZ();
+  far.detected = true;
+  far.d_m = 0.5;
+  far.free_end_m = 0.48;
+  far.bounds_height = true;
+  ::testing::internal::CaptureStderr();
+  octomap.Add(far);
+  octomap.Add(far);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(octomap.left_out(), 2u);
+  RayEvidence near = far;
+  near.p_WS = Vec3(1, 0, 0.5);
+  octomap.Add(near);
+  EXPECT_EQ(octomap.left_out(), 2u);
 }
 
 // ----- MPI: a failure on rank 0 before the jobs reaches every rank
