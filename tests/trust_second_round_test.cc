@@ -250,6 +250,16 @@ TEST_F(TrustRound2Test, ALinkedZonesFolderIsRefusedBeforeAnythingIsWritten) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
+TEST_F(TrustRound2Test, PlotOnAGarbageManifestIsRefusedNamingIt) {
+  const fs::path scenario = Write("tiny.yaml", kTinyScenario);
+  const fs::path out = dir_ / "out";
+  Expect(RunProxsimWithin("run " + scenario.string() + " --no-report --out " + out.string()), 0, {});
+  std::ofstream(out / "manifest.json") << "garbage{";
+  Expect(RunProxsimWithin("plot " + out.string()), 2,
+         {"manifest.json: not a manifest proxsim wrote", "its files are not one run's"});
+  EXPECT_FALSE(fs::exists(out / "report"));
+}
+
 TEST_F(TrustRound2Test, ManifestDigestsAreStandardFnv1a) {
   const fs::path scenario = Write("tiny.yaml", kTinyScenario);
   const fs::path out = dir_ / "out";

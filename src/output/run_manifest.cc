@@ -229,6 +229,11 @@ void RemoveFromRunManifest(const std::string& dir, const std::string& subdir) {
 std::vector<std::string> RunFolderProblems(const std::string& dir) {
   std::vector<std::string> problems;
   const auto manifest = ReadRunManifest(dir);
+  std::error_code exists_error;
+  if (!manifest && fs::exists(fs::path(dir) / kManifest, exists_error)) {
+    // there but unreadable: the files cannot be checked against it
+    problems.push_back(std::string(kManifest) + ": not a manifest proxsim wrote (not JSON with a \"files\" list)");
+  }
   if (!manifest) return problems;
   const fs::path root(dir);
   std::error_code ec;
