@@ -316,6 +316,19 @@ TEST_F(TrustRound2Test, AnMjcfRobotOfTooManyBodiesIsRefusedBeforeMuJoCo) {
                 {"many.xml: 2001 <body> elements (with its includes), beyond the limit of 2000"});
 }
 
+TEST_F(TrustRound2Test, LinksPlantedInAStudysFolderAreReplacedNotWrittenThrough) {
+  const std::string study = "study " + std::string(PROXSIM_SOURCE_DIR) + "/data/studies/tibia_placement.yaml --out ";
+  const fs::path out = dir_ / "study", victim = Write("victim.txt", "mine\n");
+  Expect(RunProxsimWithin(study + out.string()), 0, {});
+  for (const char* name : {"index.html", "pareto.png"}) {
+    fs::remove(out / name);
+    fs::create_symlink(victim, out / name);
+  }
+  Expect(RunProxsimWithin(study + out.string() + " --resume"), 0, {});
+  EXPECT_EQ(ReadFile(victim), "mine\n") << "written through a planted link";
+  for (const char* name : {"index.html", "pareto.png"}) EXPECT_FALSE(fs::is_symlink(out / name)) << name;
+}
+
 TEST_F(TrustRound2Test, TheMcapExporterRefusesALinkPlantedUnderItsTemporaryName) {
   const fs::path scenario = Write("tiny.yaml", kTinyScenario);
   const fs::path out = dir_ / "out", mcap = dir_ / "run.mcap", victim = Write("victim.txt", "mine\n");
