@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scenario urdf mesh trajectory journal outcome_journal cosim_state)
+[ ${#targets[@]} -gt 0 ] || targets=(scenario urdf mesh trajectory journal outcome_journal cosim_state outcome_study)
 
 if [ -z "${PROXSIM_FUZZ_NO_BUILD:-}" ]; then  # set it to run the fuzzers already built
   scripts/install-deps.sh fuzz

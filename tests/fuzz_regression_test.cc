@@ -25,6 +25,7 @@
 #include "study/outcome_runner.h"
 #include "sim/simulation.h"
 #include "../fuzz/cosim_state_input.h"
+#include "../fuzz/outcome_study_input.h"
 
 namespace proxsim {
 namespace {
@@ -136,6 +137,12 @@ TEST(FuzzRegressionTest, OutcomeJournal) {
       for (const OutcomeRun& run : job.runs) EXPECT_FALSE(run.outcome_t_s < 0 || run.walked_m < 0) << line;
     }
   });
+}
+
+TEST(FuzzRegressionTest, OutcomeStudy) {
+  // as fuzz/fuzz_outcome_study.cc: each input a study file beside a base scenario and a ranking
+  ReplayTarget("outcome_study", [](const std::string& bytes) { LoadFuzzedOutcomeStudy(bytes); });
+  fs::remove_all(fs::temp_directory_path() / ("proxsim_fuzz_outcome_" + std::to_string(getpid())));
 }
 
 TEST(FuzzRegressionTest, CosimState) {
