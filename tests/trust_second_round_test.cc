@@ -236,18 +236,23 @@ TEST_F(TrustRound2Test, AUrdfElementUrdfdomDropsIsRefusedNotLeftOut) {
 
 // ----- writes where a run should not
 
-TEST_F(TrustRound2Test, ALinkedZonesFolderIsRefusedBeforeAnythingIsWritten) {
-  const fs::path scenario = Write("zones.yaml", "proxsim: 1\nduration_s: 0.1\nrate_hz: 10\nsensors:\n"
-                                                "  - {name: grid, type: multizone, zones: [2, 2], fov_deg: [20, 20], "
-                                                "pose: {xyz_m: [0, 0, 1]}}\n");
-  const fs::path elsewhere = dir_ / "elsewhere", out = dir_ / "out";
-  fs::create_directories(elsewhere);
-  fs::create_directories(out);
-  fs::create_directory_symlink(elsewhere, out / "zones");
-  const auto result = RunProxsimWithin("run " + scenario.string() + " --no-report --force --out " + out.string());
-  Expect(result, 1, {"zones: it is a symbolic link or not a folder; proxsim never writes through a link"});
-  EXPECT_TRUE(fs::is_empty(elsewhere)) << "written through the link";
-  EXPECT_FALSE(fs::exists(out / "summary.json"));
+TEST_F(TrustRound2Test, ALinkedZonesOrEchoesFolderIsRefusedBeforeAnythingIsWritten) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"zones", "{name: grid, type: multizone, zones: [2, 2], fov_deg: [20, 20], pose: {xyz_m: [0, 0, 1]}}"},
+      {"echoes", "{name: sonar, type: ultrasonic, echoes: all, beam: {aperture_deg: 30, rays: 7}, pose: {xyz_m: [0, 0, 1]}}"}};
+  for (const auto& [folder, sensor] : cases) {
+    SCOPED_TRACE(folder);
+    const fs::path scenario = Write(std::string(folder) + ".yaml", std::string("proxsim: 1\nduration_s: 0.1\nrate_hz: 10\n"
+                                                                               "sensors:\n  - ") + sensor + "\n");
+    const fs::path elsewhere = dir_ / (std::string(folder) + "_elsewhere"), out = dir_ / (std::string(folder) + "_out");
+    fs::create_directories(elsewhere);
+    fs::create_directories(out);
+    fs::create_directory_symlink(elsewhere, out / folder);
+    const auto result = RunProxsimWithin("run " + scenario.string() + " --no-report --force --out " + out.string());
+    Expect(result, 1, {std::string(folder) + ": it is a symbolic link or not a folder; proxsim never writes through a link"});
+    EXPECT_TRUE(fs::is_empty(elsewhere)) << "written through the link";
+    EXPECT_FALSE(fs::exists(out / "summary.json"));
+  }
 }
 
 TEST_F(TrustRound2Test, PlotOnAGarbageManifestIsRefusedNamingIt) {
