@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -219,7 +220,17 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
     if (!journal.done(job) && (!slice || slice->Holds(job))) todo.push_back(job);
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> finished{journal.done_count()};
+  // after a failure no job is handed out: every thread and rank stops at its next request
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  std::atomic<bool> failed{false};
+  const auto fail = [&](std::exception_ptr error) {
+    std::lock_guard lock(failure_mutex);
+    if (!failure) failure = std::move(error);
+    failed = true;
+  };
   const auto take = [&]() -> long {
+    if (failed) return -1;
     const std::size_t i = next.fetch_add(1);
     return i < todo.size() ? static_cast<long>(todo[i]) : -1;
   };
@@ -232,23 +243,26 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
   std::thread dispatcher;
   if (mpi.size() > 1) {
     dispatcher = std::thread([&] {
-      mpi.ServeWorkers(take, [&](const std::string& message) {
-        // a worker's message has a journal line's form: checked the same way
-        const json line = json::parse(message);
-        record(set.check(line), line.at("metrics"));
-      });
+      // a failure here (a worker's bad message, a full disk) ends the study with its message, never
+      // std::terminate: the worker ranks wait in MPI_Recv until the CLI's MPI_Abort ends them
+      try {
+        mpi.ServeWorkers(take, [&](const std::string& message) {
+          // a worker's message has a journal line's form: checked the same way
+          const json line = json::parse(message);
+          record(set.check(line), line.at("metrics"));
+        });
+      } catch (...) {
+        fail(std::current_exception());
+      }
     });
   }
   std::vector<std::thread> pool;
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
   for (const auto& worker : set.workers) {
     pool.emplace_back([&, w = &worker] {
       try {
         for (long job = take(); job >= 0; job = take()) record(job, (*w)(static_cast<std::size_t>(job)));
       } catch (...) {
-        std::lock_guard lock(failure_mutex);
-        failure = std::current_exception();
+        fail(std::current_exception());
       }
     });
   }
