@@ -40,6 +40,13 @@ using testing::RunProxsimWithin;
 // the MPI case's bound: far above the second it takes (137, the timeout's kill, is a deadlock)
 constexpr int kRound2Limit_s = 60;
 
+// The memory cases run in a 1 GiB address space: an input that still made
+// proxsim allocate what it declares would fail with bad_alloc (exit 1), not
+// pass, and the suite's machine is never pushed into swap by it.
+CommandResult ProxsimIn1GiB(const std::string& args) {
+  return RunCommand("prlimit --as=1073741824 timeout -s KILL 60 " + std::string(PROXSIM_BINARY) + " " + args);
+}
+
 // A scenario of one world sensor in an empty scene: runs in well under a second.
 constexpr const char* kTinyScenario =
     "proxsim: 1\nduration_s: 0.2\nrate_hz: 10\nsensors:\n  - {name: s, type: ideal, pose: {xyz_m: [0, 0, 1]}}\n";
@@ -67,9 +74,9 @@ class TrustRound2Test : public ::testing::Test {
     for (const std::string& fragment : fragments)
       EXPECT_NE(result.output.find(fragment), std::string::npos) << fragment << " not in:\n" << result.output;
   }
-  // `proxsim validate` on `yaml`: exit 2 and every fragment
+  // `proxsim validate` on `yaml` (in a 1 GiB address space): exit 2 and every fragment
   void ExpectInvalid(const std::string& yaml, const std::vector<std::string>& fragments) {
-    Expect(RunProxsimWithin("validate " + Write("case.yaml", yaml).string()), 2, fragments);
+    Expect(ProxsimIn1GiB("validate " + Write("case.yaml", yaml).string()), 2, fragments);
   }
 
   fs::path dir_;
@@ -144,7 +151,7 @@ TEST_F(TrustRound2Test, AStudyJournalThatIsAFifoOrDevZeroIsRefusedAtOnce) {
     } else {
       fs::create_symlink("/dev/zero", out / "journal.jsonl");
     }
-    Expect(RunProxsimWithin("study " + study + " --no-report --force --resume --out " + out.string()), 2,
+    Expect(ProxsimIn1GiB("study " + study + " --no-report --force --resume --out " + out.string()), 2,
            {"journal.jsonl: not a regular file (a device, FIFO or socket is never read)"});
   }
 }
