@@ -367,13 +367,8 @@ TEST(TrustRound2Octomap, ReadingsBeyondTheKeysReachAreCountedSilently) {
   // at 0.02 m OctoMap's 16-bit keys reach 655.36 m: the hour-long walk printed 129 782 errors beyond it
   OctomapRecorder octomap(0.02);
   EXPECT_DOUBLE_EQ(octomap.reach_m(), 655.36);
-  RayEvidence far;
-  far.p_WS = Vec3(700, 0, 0.5);
-  far.dir_W = -Vec3::UnitZ();
-  far.detected = true;
-  far.d_m = 0.5;
-  far.free_end_m = 0.48;
-  far.bounds_height = true;
+  const RayEvidence far{.p_WS = Vec3(700, 0, 0.5), .dir_W = -Vec3::UnitZ(), .detected = true, .d_m = 0.5,
+                        .free_end_m = 0.48, .bounds_height = true};
   ::testing::internal::CaptureStderr();
   octomap.Add(far);
   octomap.Add(far);
