@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <queue>
 #include <tuple>
@@ -290,6 +291,21 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
     g.p_L_sole = X_LP * turn_about_ankle(Vec3(p_PA.x(), g.sole_y_m, lowest), g.foot0_rad);
     g.p_L_toe = X_LP * turn_about_ankle(Vec3(toe, g.sole_y_m, lowest), g.foot0_rad);
     g.up_L = X_LP.linear() * Vec3(-std::sin(g.foot0_rad), 0.0, std::cos(g.foot0_rad));
+  }
+  // two legs, not one mapped twice: no joint or foot shared (one leg walked as both passed validation)
+  if (legs_ok) {
+    const LegGeometry &left = legs_[0], &right = legs_[1];
+    const int left_joints[3] = {left.hip_joint, left.knee_joint, left.ankle_joint};
+    const int right_joints[3] = {right.hip_joint, right.knee_joint, right.ankle_joint};
+    const char* const joint_key[3] = {"hip", "knee", "ankle"};
+    for (int k = 0; k < 3; ++k) {
+      if (std::find(std::begin(left_joints), std::end(left_joints), right_joints[k]) != std::end(left_joints))
+        problems.push_back(source + ": robot.legs.right." + joint_key[k] + ": joint '" +
+                           m.joint(right_joints[k]).name + "' is also the left leg's; each leg needs joints of its own");
+    }
+    if (left.foot_link == right.foot_link)
+      problems.push_back(source + ": robot.legs.right.foot: link '" + m.link_name(right.foot_link) +
+                         "' is also the left leg's foot; each leg needs a foot of its own");
   }
   if (!problems.empty() || !legs_ok) throw InputError(problems);
 
