@@ -230,6 +230,17 @@ TEST_F(TrustRound2Test, BothLegsMappedToOneLegAreRefused) {
                  "robot.legs.right.foot: link 'left_foot' is also the left leg's foot"});
 }
 
+// Left and right swapped in the leg map: the left leg's hip lies at −y (issue 39: it was accepted, and the
+// run "collided with its own right_thigh" at t = 0)
+TEST_F(TrustRound2Test, LeftAndRightLegsSwappedAreRefusedNamingBoth) {
+  ExpectInvalid("proxsim: 1\nduration_s: 1\nrobot:\n  model: builtin:biped\n  legs:\n"
+                "    left: {hip: right_hip_pitch, knee: right_knee_pitch, ankle: right_ankle_pitch, foot: right_foot}\n"
+                "    right: {hip: left_hip_pitch, knee: left_knee_pitch, ankle: left_ankle_pitch, foot: left_foot}\n"
+                "sensors:\n  - {name: s, type: ideal, link: pelvis, pose: {xyz_m: [0, 0, 0]}}\n",
+                {"robot.legs.left.hip: joint 'right_hip_pitch' lies right of the right leg's hip",
+                 "left and right are swapped (the right leg's hip is 'left_hip_pitch')"});
+}
+
 TEST_F(TrustRound2Test, AUrdfElementUrdfdomDropsIsRefusedNotLeftOut) {
   std::string urdf = ReadFile(fs::path(PROXSIM_SOURCE_DIR) / "data" / "robots" / "biped.urdf");
   const std::string box = "<box size=\"0.20 0.32 0.16\"/>";
