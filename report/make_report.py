@@ -68,6 +68,7 @@ def main(argv=None):
     from proxsim_report.paper_figure import paper_figure
     from proxsim_report.profile_figure import profile_figure
     from proxsim_report.run_data import RunError, load_run
+    from proxsim_report.safe_files import save_figure
     from proxsim_report.terrain_data import load_terrain
     from proxsim_report.terrain_figure import terrain_figure
     from proxsim_report.viewer_page import write_viewer
@@ -79,6 +80,11 @@ def main(argv=None):
     except RunError as e:
         sys.stderr.write(f"make_report: {e}\n")
         return 2
+    except (ValueError, KeyError, TypeError, IndexError, AttributeError, UnicodeDecodeError) as e:
+        # a file that is not what proxsim writes (a garbage scene.json, a t_s of 1e309): its name, no traceback
+        sys.stderr.write(f"make_report: {args.out_dir}: not a run's files proxsim can read "
+                         f"({type(e).__name__}: {e}); run the scenario again into this folder\n")
+        return 2
     report_dir = os.path.join(args.out_dir, "report")
     os.makedirs(report_dir, exist_ok=True)
     path, has_robot = path_of_run(run)
@@ -86,7 +92,7 @@ def main(argv=None):
 
     def save(fig, stem):
         for ext in formats:
-            fig.savefig(os.path.join(report_dir, f"{stem}.{ext}"))
+            save_figure(fig, os.path.join(report_dir, f"{stem}.{ext}"))
         plt.close(fig)
 
     # one job per figure, shared by up to two forked workers (the machine's cores)
@@ -111,7 +117,11 @@ def main(argv=None):
         for i in range(len(_JOBS)):
             _run_job(i)
     if args.viewer_bundle:
-        write_viewer(run, report_dir, args.viewer_bundle, terrain)
+        try:
+            write_viewer(run, report_dir, args.viewer_bundle, terrain)
+        except RunError as e:
+            sys.stderr.write(f"make_report: {e}\n")
+            return 2
     print(f"make_report: {len(run.sensors)} sensors drawn into {report_dir} "
           f"in {time.monotonic() - start:.1f} s"
           + ("" if args.viewer_bundle else " (no viewer: pass --viewer-bundle)"))

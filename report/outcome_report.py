@@ -28,6 +28,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from proxsim_report.safe_files import save_figure, write_text  # noqa: E402  (never through a link)
 
 
 def read_csv(path):
@@ -71,7 +72,7 @@ def success_by_set(ranking, results, out):
     ax.set_title(f"Success rate by sensor set and strategy\n({runs} worlds each; 95 % Wilson interval)", fontsize=9)
     fig.colorbar(image, ax=ax, label="success rate")
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, f"success_by_set.{ext}"), dpi=120)
+        save_figure(fig, os.path.join(out, f"success_by_set.{ext}"), dpi=120)
     plt.close(fig)
 
 
@@ -101,7 +102,7 @@ def failures_by_world(results, out):
     axes[0][-1].legend(fontsize=7, loc="upper right")
     fig.suptitle("How the failed runs ended, by world family (every set; test worlds)", fontsize=10)
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, f"failures_by_world.{ext}"), dpi=120)
+        save_figure(fig, os.path.join(out, f"failures_by_world.{ext}"), dpi=120)
     plt.close(fig)
 
 
@@ -123,7 +124,7 @@ def price_success(ranking, selection, out):
     ax.legend(fontsize=8)
     ax.set_title("Price against success", fontsize=10)
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, f"price_success.{ext}"), dpi=120)
+        save_figure(fig, os.path.join(out, f"price_success.{ext}"), dpi=120)
     plt.close(fig)
 
 
@@ -167,8 +168,7 @@ td,th{{border:1px solid #ccc;padding:3px 6px}} img{{max-width:100%}} .warn{{colo
 {table(failures[:30], ["set", "strategy", "tuned", "world", "seed", "outcome", "outcome_t_s", "command"])}
 </body></html>
 """
-    with open(os.path.join(out, "index.html"), "w") as f:
-        f.write(text)
+    write_text(os.path.join(out, "index.html"), text)
 
 
 def draw(out):

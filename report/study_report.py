@@ -32,6 +32,9 @@ except ImportError:
     print("study_report: needs python3-matplotlib and python3-numpy", file=sys.stderr)
     sys.exit(3)
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from proxsim_report.safe_files import save_figure, write_text  # noqa: E402  (never through a link)
+
 
 def read_csv(path):
     with open(path, newline="") as f:
@@ -88,7 +91,7 @@ def heatmap(results, out):
         fig.colorbar(image, ax=axes, shrink=0.8, label="mean lead distance (m)")
     fig.suptitle("Lead distance at first detection (blank: never detected)", fontsize=11)
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, f"lead_heatmap.{ext}"), dpi=120)
+        save_figure(fig, os.path.join(out, f"lead_heatmap.{ext}"), dpi=120)
     plt.close(fig)
 
 
@@ -111,7 +114,7 @@ def pareto(selection, out):
     twin.set_ylabel("mean lead distance (m)", color="#2ca02c")
     ax.set_title("Sensor count against detection and lead (red rings: Pareto points)", fontsize=10)
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, f"pareto.{ext}"), dpi=120)
+        save_figure(fig, os.path.join(out, f"pareto.{ext}"), dpi=120)
     plt.close(fig)
 
 
@@ -141,8 +144,7 @@ td,th{{border:1px solid #ccc;padding:3px 6px}} img{{max-width:100%}}</style></he
                       "false_alarms_mean", "self_share", "grazing_share", "floor_coverage"])}
 </body></html>
 """
-    with open(os.path.join(out, "index.html"), "w") as f:
-        f.write(text)
+    write_text(os.path.join(out, "index.html"), text)
 
 
 def main():
@@ -158,7 +160,6 @@ def main():
     with open(os.path.join(out, "selection.json")) as f:
         if json.load(f).get("mode") == "outcomes":
             # a closed-loop study: its own figures (outcome_report.py, beside this file)
-            sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
             import outcome_report
             outcome_report.draw(out)
             print(f"study_report: figures and index.html in {out}")

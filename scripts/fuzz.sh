@@ -9,14 +9,14 @@
 # FuzzRegression replays every file there, and every corpus file, in the
 # ordinary test suite).
 #
-#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]   # default: 60 s, all four
+#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]   # default: 60 s, all of them
 #   PROXSIM_FUZZ_NO_BUILD=1 scripts/fuzz.sh ...        # without rebuilding first
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scenario urdf mesh trajectory journal)
+[ ${#targets[@]} -gt 0 ] || targets=(scenario urdf mesh trajectory journal outcome_journal cosim_state outcome_study)
 
 if [ -z "${PROXSIM_FUZZ_NO_BUILD:-}" ]; then  # set it to run the fuzzers already built
   scripts/install-deps.sh fuzz

@@ -43,6 +43,13 @@ inline CommandResult RunProxsim(const std::string& args) {
   return RunCommand(std::string(PROXSIM_BINARY) + " " + args);
 }
 
+/// `proxsim ARGS` under `timeout -s KILL LIMIT_S`: an overrun (a hang) ends
+/// in exit 137 through the shell, a failure rather than a hung suite. The
+/// default is far above the seconds any bounded case takes.
+inline CommandResult RunProxsimWithin(const std::string& args, int limit_s = 60) {
+  return RunCommand("timeout -s KILL " + std::to_string(limit_s) + " " + PROXSIM_BINARY + " " + args);
+}
+
 /// A fresh, empty folder under the system's temporary directory, private to
 /// this process: CTest runs each test in a process of its own, in parallel.
 inline std::filesystem::path FreshDir(const std::string& name) {

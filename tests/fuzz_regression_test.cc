@@ -22,6 +22,10 @@
 #include "robot/robot_model.h"
 #include "scene/mesh_loader.h"
 #include "study/study_journal.h"
+#include "study/outcome_runner.h"
+#include "sim/simulation.h"
+#include "../fuzz/cosim_state_input.h"
+#include "../fuzz/outcome_study_input.h"
 
 namespace proxsim {
 namespace {
@@ -117,6 +121,38 @@ TEST(FuzzRegressionTest, Journal) {
       }
     }
     if (refused) throw InputError("a line was refused");
+  });
+}
+
+TEST(FuzzRegressionTest, OutcomeJournal) {
+  // as fuzz/fuzz_outcome_journal.cc: every line's metrics against 2 runs per job
+  ReplayTarget("outcome_journal", [](const std::string& text) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+      const nlohmann::json json = nlohmann::json::parse(line, nullptr, false);
+      if (json.is_discarded() || !json.is_object() || !json.contains("metrics")) continue;
+      const OutcomeJob job = ParseOutcomeJob(json["metrics"], 2, "job");
+      ASSERT_EQ(job.runs.size(), 2u);
+      EXPECT_TRUE(job.hazard_m >= 0 && job.hazard_m <= 1e9) << job.hazard_m;
+      for (const OutcomeRun& run : job.runs) EXPECT_FALSE(run.outcome_t_s < 0 || run.walked_m < 0) << line;
+    }
+  });
+}
+
+TEST(FuzzRegressionTest, OutcomeStudy) {
+  // as fuzz/fuzz_outcome_study.cc: each input a study file beside a base scenario and a ranking
+  ReplayTarget("outcome_study", [](const std::string& bytes) { LoadFuzzedOutcomeStudy(bytes); });
+  fs::remove_all(fs::temp_directory_path() / ("proxsim_fuzz_outcome_" + std::to_string(getpid())));
+}
+
+TEST(FuzzRegressionTest, CosimState) {
+  // as fuzz/fuzz_cosim_state.cc: each input a state of the paper's robot driven from outside
+  Scenario scenario = LoadBuiltinScenario("paper");
+  scenario.robot->locomotion = LocomotionSource::kExternal;
+  Simulation sim(std::move(scenario), 1);
+  ReplayTarget("cosim_state", [&](const std::string& bytes) {
+    sim.Reset(0);
+    sim.Step(FuzzedExternalState(bytes));
   });
 }
 

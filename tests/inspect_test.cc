@@ -79,7 +79,7 @@ std::pair<double, double> PelvisTravel(const fs::path& poses, const std::string&
 }
 
 // Writes the scenario, validates it, runs it, and checks the robot walked forward without
-// a warning about a sensor inside its own link.
+// a warning about a sensor inside, on or seeing only its own link.
 void ExpectWalks(const std::string& name, const std::string& yaml, const std::string& root) {
   const fs::path dir = FreshDir("inspect_" + name);
   fs::create_directories(dir);
@@ -90,6 +90,9 @@ void ExpectWalks(const std::string& name, const std::string& yaml, const std::st
   const CommandResult run = RunProxsim("run " + scenario.string() + " --out " + (dir / "out").string() + " --no-report");
   ASSERT_EQ(run.exit_code, 0) << yaml << "\n" << run.output;
   EXPECT_EQ(run.output.find("inside its own link"), std::string::npos) << run.output;
+  // nor any other mounting warning: the suggested points stand off the shin, facing out of it
+  EXPECT_EQ(run.output.find("of its own link"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("saw only the robot's own body"), std::string::npos) << run.output;
   const auto [x0, x1] = PelvisTravel(dir / "out" / "poses.csv", root);
   // 3 s of walking at about 0.5 m/s: well over 0.5 m whatever the legs' stride
   EXPECT_GT(x1 - x0, 0.5) << "the pelvis went from x = " << x0 << " to " << x1;
@@ -130,7 +133,10 @@ TEST(InspectTest, BuiltinBipedListsItsLinksJointsAndLegs) {
   EXPECT_EQ(inspect["shanks"]["left"]["link"], "left_tibia");
   ASSERT_EQ(inspect["shanks"]["left"]["front_surface"].size(), 3u);
   for (const auto& spot : inspect["shanks"]["left"]["front_surface"]) {
-    EXPECT_NEAR(spot["xyz_m"][0].get<double>(), 0.05, 1e-9);  // closed form in double, no ray caster
+    // closed form in double, no ray caster: the tibia's radius, 5 mm proud of it
+    EXPECT_NEAR(spot["xyz_m"][0].get<double>(), 0.05 + 0.005, 1e-9);
+    // the pitched-down frame: +x turned 15° down about y (a level link at the zero pose)
+    EXPECT_NEAR(spot["rpy_deg_pitched_down"][1].get<double>(), 15.0, 1e-9);
     EXPECT_NEAR(spot["xyz_m"][2].get<double>(), -0.45 * spot["fraction"].get<double>(), 1e-9);
   }
   ExpectWalks("biped", WalkScenario("builtin:biped", inspect), "pelvis");

@@ -311,7 +311,7 @@ TEST_F(LegMapTest, InspectSuggestsTheMapByGeometry) {
   EXPECT_EQ(inspect["shanks"]["left"]["link"], "l_shin");
   for (const auto& spot : inspect["shanks"]["left"]["front_surface"]) {
     // closed form in double (no ray caster): rounding only
-    EXPECT_NEAR(spot["xyz_m"][0].get<double>(), 0.04, 1e-9);
+    EXPECT_NEAR(spot["xyz_m"][0].get<double>(), 0.04 + 0.005, 1e-9);  // the shin's radius, 5 mm proud of it
     EXPECT_NEAR(spot["xyz_m"][2].get<double>(), -kShank_m * spot["fraction"].get<double>(), 1e-9);
   }
   // the shin's shapes on a fixed link below the knee's: that link is the shank

@@ -210,3 +210,28 @@ TEST(MeasurementTest, AGrazingSurfaceFallsBelowTheSignalAPartNeedsWhereAFacingOn
 
 }  // namespace
 }  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// The single-zone ST parts take the incidence into their range the same way:
+// a VL53L1X in long mode (UM2356: a 17 % target to about 1.7 m in the dark)
+// sees a grey (ρ = 0.5) surface 1.5 m away facing it, and not when met at 80°
+// (ρ·cos 80° = 0.087: about 1.2 m), where the paper's incidence window alone
+// would have let it echo.
+TEST(MeasurementTest, ASingleZonePartsRangeFallsWithIncidence) {
+  SensorSpec spec = *SensorSpec::PartPreset("vl53l1x");
+  spec.max_incidence_deg = 90;  // only the range decides
+  Echo echo = EchoAt(1.5);
+  echo.ir_albedo = 0.5;
+  EXPECT_EQ(EchoStatus(spec, echo, 1.0), ReadingStatus::kOk);
+  echo.incidence_deg = 80;
+  EXPECT_EQ(EchoStatus(spec, echo, 1.0), ReadingStatus::kNoEcho);
+  EXPECT_NEAR(IncidentReflectance(spec, echo), 0.5 * std::cos(80 * M_PI / 180), 1e-12);
+  // a surface met at a ray's own angle off the axis is as bright as the datasheet's facing target
+  echo.incidence_deg = 12.5;
+  EXPECT_NEAR(IncidentReflectance(spec, echo, 12.5), 0.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace proxsim

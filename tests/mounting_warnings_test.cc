@@ -1,5 +1,6 @@
-// Mounting mistakes said at the end of a run (src/run/mounting_warnings.h),
-// through the CLI: a sensor turned into its own shin, and radians typed into
+// Mounting mistakes said by a run (src/run/mounting_warnings.h at its end,
+// run_recorder.cc at its start), through the CLI: a sensor turned into its own
+// shin, one on its link's surface facing into it, and radians typed into
 // rpy_deg; and no such warning for a sensor mounted as the paper mounts it.
 #include <gtest/gtest.h>
 
@@ -43,6 +44,23 @@ TEST(MountingWarnings, ASensorTurnedIntoItsOwnShinIsSaidToSeeOnlyTheRobot) {
             std::string::npos)
       << warnings;
   EXPECT_NE(run.output.find("saw only the robot's own body"), std::string::npos) << run.output;
+}
+
+TEST(MountingWarnings, ASensorOnItsLinksSurfaceFacingIntoItIsSaidAtTheStart) {
+  nlohmann::json summary;
+  // the tibia is a cylinder of radius 0.05 m: 0.5 mm proud of it, turned back into it
+  const auto run = RunWithTibiaSensor("mount_facing_in", "left_tibia", "{xyz_m: [0.0505, 0, -0.2], rpy_deg: [0, 0, 180]}",
+                                      summary);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string warnings = summary["warnings"].dump();
+  EXPECT_NE(warnings.find("sensor 'tof' sits within 2 mm of the surface of its own link 'left_tibia', facing into it"),
+            std::string::npos)
+      << warnings;
+  // facing out of it, at the same point: nothing to say
+  const auto out = RunWithTibiaSensor("mount_facing_out", "left_tibia", "{xyz_m: [0.0505, 0, -0.2], rpy_deg: [0, 8, 0]}",
+                                      summary);
+  ASSERT_EQ(out.exit_code, 0) << out.output;
+  EXPECT_TRUE(summary["warnings"].empty()) << summary["warnings"].dump();
 }
 
 TEST(MountingWarnings, RadiansTypedIntoRpyDegAreSuspectedWhenNothingIsSeen) {

@@ -33,14 +33,7 @@ using testing::CommandResult;
 using testing::FreshDir;
 using testing::ReadFile;
 using testing::RunCommand;
-
-// Hang cases run under this bound: far above the seconds they now take.
-constexpr int kWallLimit_s = 60;
-
-CommandResult ProxsimWithin(const std::string& args, int limit_s = kWallLimit_s) {
-  // SIGKILL on overrun: exit 137 through the shell, never a hang
-  return RunCommand("timeout -s KILL " + std::to_string(limit_s) + " " + PROXSIM_BINARY + " " + args);
-}
+using testing::RunProxsimWithin;  // hang cases: exit 137 on overrun, never a hung suite
 
 class TrustTest : public ::testing::Test {
  protected:
@@ -68,7 +61,7 @@ class TrustTest : public ::testing::Test {
     for (const std::string& command : {"run " + scenario.string() + " --no-report --out " + out.string(),
                                        "validate " + scenario.string()}) {
       SCOPED_TRACE(command);
-      const auto result = ProxsimWithin(command);
+      const auto result = RunProxsimWithin(command);
       EXPECT_EQ(result.exit_code, 2) << result.output;
       for (const std::string& fragment : fragments)
         EXPECT_NE(result.output.find(fragment), std::string::npos) << fragment << " not in:\n" << result.output;
@@ -173,14 +166,14 @@ TEST_F(TrustTest, AMeshThatIsDevZeroOrAFifoIsRefusedNotRead) {
   ExpectRefused(MeshScenario("fifo", fifo), {"pipe.obj", "not a regular file"});
   // and a file Assimp would open on its own: an OBJ's material library
   Write(dir_ / "with_mtl.obj", "mtllib pipe.obj\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  const auto result = ProxsimWithin("validate " + MeshScenario("mtl", dir_ / "with_mtl.obj").string());
+  const auto result = RunProxsimWithin("validate " + MeshScenario("mtl", dir_ / "with_mtl.obj").string());
   EXPECT_NE(result.exit_code, 137) << "hung on the FIFO: " << result.output;
 }
 
 TEST_F(TrustTest, BenchFromAFifoIsRefusedNotRead) {
   const fs::path fifo = dir_ / "bench.json";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
-  const auto result = ProxsimWithin("bench --from " + fifo.string());
+  const auto result = RunProxsimWithin("bench --from " + fifo.string());
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("not a regular file"), std::string::npos) << result.output;
 }
@@ -242,10 +235,10 @@ const std::string kWorld = std::string(PROXSIM_TEST_DATA_DIR) + "/cli/world_clos
 
 TEST_F(TrustTest, APlantedSummaryTmpLinkIsNeverWrittenThrough) {
   const fs::path out = dir_ / "out";
-  ASSERT_EQ(ProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
+  ASSERT_EQ(RunProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
   Write(dir_ / "victim.txt", "precious\n");
   fs::create_symlink(dir_ / "victim.txt", out / "summary.json.tmp");
-  const auto result = ProxsimWithin("run " + kWorld + " --no-report --out " + out.string());
+  const auto result = RunProxsimWithin("run " + kWorld + " --no-report --out " + out.string());
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_NE(result.output.find("never writes through"), std::string::npos) << result.output;
   EXPECT_EQ(ReadFile(dir_ / "victim.txt"), "precious\n");
@@ -253,7 +246,7 @@ TEST_F(TrustTest, APlantedSummaryTmpLinkIsNeverWrittenThrough) {
 
 TEST_F(TrustTest, ACraftedManifestEntryUnderALinkedFolderRemovesNothingOutside) {
   const fs::path out = dir_ / "out";
-  ASSERT_EQ(ProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
+  ASSERT_EQ(RunProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
   fs::create_directories(dir_ / "elsewhere");
   Write(dir_ / "elsewhere" / "victim.txt", "precious\n");
   fs::create_directory_symlink(dir_ / "elsewhere", out / "report");
@@ -263,7 +256,7 @@ TEST_F(TrustTest, ACraftedManifestEntryUnderALinkedFolderRemovesNothingOutside) 
                    "\"files\": [{\"path\": \"report/victim.txt\", \"bytes\": 9, \"fnv1a64\": \"0\"}, "
                    "{\"path\": \"../elsewhere/victim.txt\", \"bytes\": 9},");
   Write(out / "manifest.json", manifest);
-  EXPECT_EQ(ProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
+  EXPECT_EQ(RunProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
   EXPECT_EQ(ReadFile(dir_ / "elsewhere" / "victim.txt"), "precious\n");
 }
 
@@ -274,11 +267,11 @@ TEST_F(TrustTest, TheUsersFilesInReadingsAndTerrainSurviveTheFirstAndEveryRun) {
   Write(out / "readings" / "my_notes.txt", "mine\n");
   Write(out / "terrain" / "my_map.npy", "mine too\n");
   // a folder of the user's own: refused, then written among them with --force
-  const auto refused = ProxsimWithin("run --format npy --no-report --out " + out.string());
+  const auto refused = RunProxsimWithin("run --format npy --no-report --out " + out.string());
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_NE(refused.output.find("--force"), std::string::npos) << refused.output;
   for (int run = 0; run < 2; ++run) {
-    const auto result = ProxsimWithin("run --format npy --no-report --force --out " + out.string());
+    const auto result = RunProxsimWithin("run --format npy --no-report --force --out " + out.string());
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_TRUE(fs::exists(out / "readings" / "t_s.npy"));
     EXPECT_TRUE(fs::exists(out / "terrain" / "elevation.npy"));
@@ -288,14 +281,14 @@ TEST_F(TrustTest, TheUsersFilesInReadingsAndTerrainSurviveTheFirstAndEveryRun) {
   }
   // a run's file the user changed is no longer the run's: it stays
   Write(out / "readings" / "t_s.npy", "edited by the user\n");
-  ASSERT_EQ(ProxsimWithin("run --no-report --out " + out.string()).exit_code, 0);  // csv: readings/ not rewritten
+  ASSERT_EQ(RunProxsimWithin("run --no-report --out " + out.string()).exit_code, 0);  // csv: readings/ not rewritten
   EXPECT_EQ(ReadFile(out / "readings" / "t_s.npy"), "edited by the user\n");
   EXPECT_FALSE(fs::exists(out / "readings" / "d_m.npy")) << "the previous run's unchanged columns go";
 }
 
 TEST_F(TrustTest, RootHomeAndEmptyOutAreRefused) {
   for (const std::string& out : {std::string("/"), std::string("''"), std::string("~")}) {
-    const auto result = ProxsimWithin("run " + kWorld + " --no-report --out " + out);
+    const auto result = RunProxsimWithin("run " + kWorld + " --no-report --out " + out);
     EXPECT_EQ(result.exit_code, 2) << out << ": " << result.output;
   }
   const auto home = RunCommand("HOME=" + dir_.string() + " " + PROXSIM_BINARY + " run " + kWorld +
@@ -324,11 +317,11 @@ TEST_F(TrustTest, ASecondRunOrStudyIntoAFolderInUseFailsAtOnceNamingTheHolder) {
   while (!fs::exists(out / "readings.csv.tmp") && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
 
-  const auto second = ProxsimWithin("run " + kWorld + " --no-report --out " + out.string(), 10);
+  const auto second = RunProxsimWithin("run " + kWorld + " --no-report --out " + out.string(), 10);
   EXPECT_EQ(second.exit_code, 2) << second.output;
   EXPECT_NE(second.output.find("in use by pid " + std::to_string(pid) + ": proxsim run"), std::string::npos)
       << second.output;
-  const auto study = ProxsimWithin("study " + std::string(PROXSIM_SOURCE_DIR) +
+  const auto study = RunProxsimWithin("study " + std::string(PROXSIM_SOURCE_DIR) +
                                        "/data/studies/tibia_placement.yaml --no-report --force --out " + out.string(),
                                    10);
   EXPECT_EQ(study.exit_code, 2) << study.output;
@@ -340,7 +333,7 @@ TEST_F(TrustTest, ASecondRunOrStudyIntoAFolderInUseFailsAtOnceNamingTheHolder) {
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_FALSE(fs::exists(out / ".proxsim.lock")) << "the lock file outlived its run";
   // the folder is free again
-  EXPECT_EQ(ProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
+  EXPECT_EQ(RunProxsimWithin("run " + kWorld + " --no-report --out " + out.string()).exit_code, 0);
 }
 
 // ----- (i) names with commas and quotes
@@ -352,7 +345,7 @@ TEST_F(TrustTest, NamesWithCommasAndQuotesAreQuotedInCsvAndTheReportReadsThem) {
                           << "sensors:\n  - {name: 'front, \"left\"', type: ideal, pose: {xyz_m: [0, 0, 1]}}\n"
                           << "  - {name: plain, type: ideal, pose: {xyz_m: [0, 0.5, 1]}}\n";
   const fs::path out = dir_ / "out";
-  const auto result = ProxsimWithin("run " + scenario.string() + " --out " + out.string());
+  const auto result = RunProxsimWithin("run " + scenario.string() + " --out " + out.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const auto csv = testing::ReadCsv(out / "readings.csv");
   ASSERT_FALSE(csv.rows.empty());
@@ -366,7 +359,7 @@ TEST_F(TrustTest, NamesWithCommasAndQuotesAreQuotedInCsvAndTheReportReadsThem) {
   // the JSON files parse, and plot (Python's csv module) draws them again
   EXPECT_TRUE(nlohmann::json::accept(ReadFile(out / "summary.json")));
   EXPECT_TRUE(nlohmann::json::accept(ReadFile(out / "scene.json")));
-  const auto plot = ProxsimWithin("plot " + out.string(), 300);
+  const auto plot = RunProxsimWithin("plot " + out.string(), 300);
   EXPECT_EQ(plot.exit_code, 0) << plot.output;
 }
 
@@ -391,12 +384,12 @@ TEST_F(TrustTest, LegMapProblemsComeWithTheScenarioLevelOnes) {
 
 TEST_F(TrustTest, SeedsOutsideSixtyFourBitsAreRefusedNotWrapped) {
   for (const char* seed : {"-1", "18446744073709551616", "1e3", "0x10"}) {
-    const auto result = ProxsimWithin("run " + kWorld + " --no-report --seed " + seed + " --out " + (dir_ / "o").string());
+    const auto result = RunProxsimWithin("run " + kWorld + " --no-report --seed " + seed + " --out " + (dir_ / "o").string());
     EXPECT_EQ(result.exit_code, 2) << seed << ": " << result.output;
     EXPECT_NE(result.output.find("--seed: expected a whole number in [0, 18446744073709551615]"), std::string::npos)
         << result.output;
   }
-  EXPECT_EQ(ProxsimWithin("run " + kWorld + " --no-report --seed 18446744073709551615 --out " + (dir_ / "o").string())
+  EXPECT_EQ(RunProxsimWithin("run " + kWorld + " --no-report --seed 18446744073709551615 --out " + (dir_ / "o").string())
                 .exit_code,
             0);
 }

@@ -114,6 +114,31 @@ TEST(CrosstalkTest, TwoSonarsFiringTogetherHearEachOthersPingAtItsMirrorDistance
   EXPECT_FALSE(by_status.contains("not_sampled"));
 }
 
+// The published counter-example (Robotics-UNIVPM/mapper's sonar report, as
+// ../shared/reference/SENSOR_FACTS.md cites it): three HC-SR04s side by side,
+// 0.1 m apart, fired together at one wide flat wall 1 m ahead showed no
+// interference. Each one's own echo comes straight back (2 m); another's ping
+// reaches it by the wall at √(2² + 0.1²) or √(2² + 0.2²) m, later: the first
+// echo is its own, and the model reports the wall, never `crosstalk`.
+TEST(CrosstalkTest, ThreeSonarsFiredTogetherAtAWideWallReadTheWallNotEachOther) {
+  std::string yaml =
+      "proxsim: 1\nduration_s: 0.6\nrate_hz: 100\nscene:\n  objects:\n"
+      "    - {name: wall, box: {size_m: [0.02, 6, 3]}, pose: {xyz_m: [1.01, 0, 1]}}\nsensors:\n";
+  for (int k = 0; k < 3; ++k) {
+    yaml += "  - {name: s" + std::to_string(k) + ", type: hc_sr04, fire: simultaneous, pose: {xyz_m: [0, " +
+            std::to_string(0.1 * (k - 1)) + ", 1]}}\n";
+  }
+  const fs::path out = RunScenarioYaml("crosstalk_three_at_a_wall", yaml);
+  for (int k = 0; k < 3; ++k) {
+    const auto rows = Rows(out, "s" + std::to_string(k));
+    ASSERT_GE(rows.size(), 9u);  // 16.7 Hz for 0.6 s
+    for (const auto& row : rows) {
+      EXPECT_EQ(row.at("status"), "ok") << "s" << k << " at " << row.at("t_s");
+      EXPECT_NEAR(std::stod(row.at("d_m")), 1.0, 0.015) << "s" << k << " at " << row.at("t_s");  // σ 3 mm, 3 mm steps
+    }
+  }
+}
+
 TEST(CrosstalkTest, RoundRobinFiringPutsTheOtherPingOutsideTheListeningWindow) {
   // slots 0 and 30 ms of the 60 ms cycle: the other ping's echo reaches `ear`
   // 26 ms before its own ping, or 33.9 ms after it (5.8 m: beyond its 4 m)

@@ -10,8 +10,14 @@
 // from the topics' own ordered streams. The file appears whole: it is
 // written as OUT.mcap.tmp and renamed when complete. Beside it, the Foxglove
 // layout for it (OUT.layout.json, foxglove_layout.mjs), likewise whole.
+// Never through a link (the C++ writers' rule, src/core/atomic_file.h): each
+// .tmp is created with O_EXCL | O_NOFOLLOW (a link planted there is refused,
+// a regular file left by a killed export replaced), and the rename replaces
+// a link under the final name rather than writing through it; a device,
+// FIFO or folder there is refused.
 // Exit 0 done; 2 bad input (the run's files, the arguments), named; 1 anything else.
 import fs from 'node:fs/promises';
+import { constants as fsConstants } from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { McapWriter } from '@mcap/core';
@@ -22,6 +28,30 @@ import { layoutPath, runLayout } from './foxglove_layout.mjs';
 
 const BAD_INPUT = 2;
 
+/** An output proxsim will not write: a link or a special file where it would go. */
+export class UnsafeOutputError extends Error {}
+
+/** Opens `finalPath`.tmp afresh for writing, never through a link; returns [handle, tmpPath]. */
+async function openTemporary(finalPath) {
+  const existing = await fs.lstat(finalPath).catch(() => null);
+  if (existing && !existing.isFile() && !existing.isSymbolicLink()) {
+    throw new UnsafeOutputError(`${finalPath}: not a regular file; proxsim never replaces a device, FIFO or folder`);
+  }
+  const tmpPath = `${finalPath}.tmp`;
+  const flags = fsConstants.O_WRONLY | fsConstants.O_CREAT | fsConstants.O_EXCL | fsConstants.O_NOFOLLOW;
+  try {
+    return [await fs.open(tmpPath, flags, 0o644), tmpPath];
+  } catch (error) {
+    if (error.code !== 'EEXIST') throw error;
+    if (!(await fs.lstat(tmpPath)).isFile()) {
+      throw new UnsafeOutputError(`${tmpPath}: a symbolic link or not a regular file; proxsim never writes `
+        + 'through one (remove it)');
+    }
+    await fs.rm(tmpPath);  // left by a killed export
+    return [await fs.open(tmpPath, flags, 0o644), tmpPath];
+  }
+}
+
 /**
  * Writes the run in `runDir` to `mcapPath`, and its layout beside it; returns {messages, topics: [{topic,
  * schema, count}], start_s, end_s, layout (the layout's path)}.
@@ -29,8 +59,7 @@ const BAD_INPUT = 2;
 export async function exportRun(runDir, mcapPath) {
   const run = readRunFolder(runDir);
   const topics = runTopics(run);
-  const tmpPath = `${mcapPath}.tmp`;
-  const handle = await fs.open(tmpPath, 'w');
+  const [handle, tmpPath] = await openTemporary(mcapPath);
   const encoder = new TextEncoder();
   const counts = topics.map(() => 0);
   let first = null;
@@ -94,8 +123,13 @@ export async function exportRun(runDir, mcapPath) {
   await fs.rename(tmpPath, mcapPath);
   // the layout that opens the file ready to look at
   const layout = layoutPath(mcapPath);
-  await fs.writeFile(`${layout}.tmp`, `${JSON.stringify(runLayout(topics, (last ?? 0) - (first ?? 0)), null, 2)}\n`);
-  await fs.rename(`${layout}.tmp`, layout);
+  const [layoutHandle, layoutTmp] = await openTemporary(layout);
+  try {
+    await layoutHandle.writeFile(`${JSON.stringify(runLayout(topics, (last ?? 0) - (first ?? 0)), null, 2)}\n`);
+  } finally {
+    await layoutHandle.close();
+  }
+  await fs.rename(layoutTmp, layout);
   return {
     layout,
     messages: counts.reduce((a, b) => a + b, 0),
@@ -120,6 +154,10 @@ async function main() {
     if (error instanceof RunFolderError) {
       console.error(`proxsim export: ${error.message}`);
       return BAD_INPUT;
+    }
+    if (error instanceof UnsafeOutputError) {
+      console.error(`proxsim export: ${error.message}`);
+      return 1;
     }
     console.error(`proxsim export: ${error.stack ?? error}`);
     return 1;

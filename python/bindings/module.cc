@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "object_lock.h"
 #include "robot_state.h"
 #include "vec_walk_env.h"
 #include "scenario/scenario.h"
@@ -83,6 +84,11 @@ std::optional<std::uint64_t> SeedArgument(const py::object& value, const std::st
   return seed;
 }
 
+// out=None writes nothing; out='' once did the same, silently, where the CLI refuses `--out ''`
+void CheckOutArgument(const std::optional<std::string>& out) {
+  if (out && out->empty()) throw py::value_error("out: an empty path; give the folder for the outputs, or None for none");
+}
+
 int ThreadsArgument(const py::object& value) {
   constexpr long kMaxThreads = 256;  // as the CLI's --threads
   if (!PyLong_Check(value.ptr()) || PyBool_Check(value.ptr())) {
@@ -95,22 +101,6 @@ int ThreadsArgument(const py::object& value) {
   }
   return static_cast<int>(threads);
 }
-
-// Takes a Simulation's mutex for the current call. Called with the GIL held:
-// when another thread holds the mutex (inside step(), GIL released), waits
-// for it with the GIL released, or the two threads would deadlock.
-class ObjectLock {
- public:
-  explicit ObjectLock(std::mutex& mutex) : lock_(mutex, std::try_to_lock) {
-    if (!lock_.owns_lock()) {
-      py::gil_scoped_release release;
-      lock_.lock();
-    }
-  }
-
- private:
-  std::unique_lock<std::mutex> lock_;
-};
 
 py::array_t<double> Vector(const Vec3& v) {
   py::array_t<double> a(3);
@@ -198,6 +188,7 @@ class PySimulation {
     // the integers first: a bad one is named before a long load
     const auto seed_value = SeedArgument(seed, "seed");
     const int thread_count = ThreadsArgument(threads);
+    CheckOutArgument(out);
     return std::make_unique<PySimulation>(LoadScenarioFile(path), seed_value, thread_count, std::move(out),
                                           scenario_strategy, locomotion);
   }
@@ -207,6 +198,7 @@ class PySimulation {
                                                bool scenario_strategy, std::optional<std::string> locomotion) {
     const auto seed_value = SeedArgument(seed, "seed");
     const int thread_count = ThreadsArgument(threads);
+    CheckOutArgument(out);
     return std::make_unique<PySimulation>(LoadBuiltinScenario(name), seed_value, thread_count, std::move(out),
                                           scenario_strategy, locomotion);
   }
@@ -239,6 +231,11 @@ class PySimulation {
   py::object RobotStateNow() const {
     ObjectLock lock(mutex_);
     if (sim_->robot_state() == nullptr) return py::none();
+    // no state before the episode's first sample (it once read an empty joint vector: SIGSEGV)
+    if (samples_ == 0) {
+      throw std::runtime_error("robot_state: no sample taken yet in this episode (after Simulation() or reset()); "
+                               "call step() first");
+    }
     py::dict state = RobotStateDict(sim_->robot()->model(), *sim_->robot_state());
     // a co-simulated robot cannot obey a stop: its caller reads it here
     if (sim_->external() != nullptr) state["stop_requested"] = sim_->external()->stop_requested();

@@ -84,6 +84,11 @@ ExternalState ExternalStateFromPython(const ExternalDrive& drive, const py::obje
 
 py::dict RobotStateDict(const RobotModel& model, const RobotState& state) {
   const std::vector<int> moving = model.MovingJoints();
+  // a state never filled (before any sample) has no joints: refused, never read out of bounds
+  for (const int j : moving) {
+    if (j < 0 || static_cast<std::size_t>(j) >= state.q.size())
+      throw std::runtime_error("robot_state: the robot has no state yet (no sample taken)");
+  }
   py::array_t<double> xyz(3), quat(4), R({3, 3}), q(static_cast<py::ssize_t>(moving.size()));
   Eigen::Quaterniond rotation(state.X_WP.linear());
   if (rotation.w() < 0) rotation.coeffs() = -rotation.coeffs();  // one of the two: w >= 0

@@ -9,12 +9,14 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/parallel.h"
+#include "object_lock.h"
 #include "scenario/scenario.h"
 #include "sim/simulation.h"
 
@@ -87,10 +89,14 @@ class VecWalkCore {
 
   int num_envs() const { return static_cast<int>(envs_.size()); }
   int observation_size() const { return 3 * sensor_count_ + kOwnValues; }
-  double last_cpp_s() const { return last_cpp_s_; }
+  double last_cpp_s() const {
+    ObjectLock lock(mutex_);
+    return last_cpp_s_;
+  }
 
   // reset(seeds): every environment's next episode, seeded seeds[i] (None: each one's next seed)
   py::tuple Reset(const std::optional<std::vector<std::uint64_t>>& seeds) {
+    ObjectLock lock(mutex_);
     if (seeds && seeds->size() != envs_.size()) {
       throw py::value_error("reset: expected " + std::to_string(envs_.size()) + " seeds (one per environment), got " +
                             std::to_string(seeds->size()));
@@ -108,6 +114,7 @@ class VecWalkCore {
 
   // step(actions): one step of every environment; (obs, rewards, terminations, truncations, infos)
   py::tuple Step(const py::object& actions_argument) {
+    ObjectLock lock(mutex_);
     if (!started_) throw std::runtime_error("step: call reset() first (Gymnasium's order)");
     const py::array_t<double, py::array::c_style | py::array::forcecast> actions(actions_argument);
     const auto n = static_cast<py::ssize_t>(envs_.size());
@@ -117,7 +124,11 @@ class VecWalkCore {
     }
     const double* a = actions.data();
     for (py::ssize_t i = 0; i < 2 * n; ++i) {
-      if (!std::isfinite(a[i])) throw py::value_error("step: actions[" + std::to_string(i / 2) + "] is not finite");
+      if (!std::isfinite(a[i])) {
+        throw py::value_error("step: actions[" + std::to_string(i / 2) + "][" + std::to_string(i % 2) + "] (" +
+                              (i % 2 == 0 ? "walk" : "stride_m") + ") is " + py::repr(py::float_(a[i])).cast<std::string>() +
+                              ": expected a finite number");
+      }
     }
     Arrays arrays(envs_.size(), observation_size());
     const Outputs out = arrays.Pointers();
@@ -277,6 +288,9 @@ class VecWalkCore {
     out.seed[i] = env.seed;
   }
 
+  // one reset or step at a time: both release the GIL while the simulations
+  // step, and a second thread's reset under a step freed what it read (SIGSEGV)
+  mutable std::mutex mutex_;
   WalkTask task_;
   ParallelRunner runner_;
   std::vector<EnvSlot> envs_;

@@ -23,7 +23,8 @@ import numpy as np
 
 from ._core import VecWalkCore
 from .spaces import Box
-from .walk_env import COLLISION_PENALTY, FALL_PENALTY, MAX_STRIDE_M, MIN_STRIDE_M, check_strides, walk_spaces
+from .walk_env import (COLLISION_PENALTY, FALL_PENALTY, MAX_STRIDE_M, MIN_STRIDE_M, check_penalties, check_strides,
+                       walk_spaces)
 
 try:
     from gymnasium.vector import AutoresetMode
@@ -47,6 +48,7 @@ class VecWalkEnv:
     def __init__(self, scenario, num_envs, threads=1, *, min_stride_m=MIN_STRIDE_M, max_stride_m=MAX_STRIDE_M,
                  collision_penalty=COLLISION_PENALTY, fall_penalty=FALL_PENALTY):
         check_strides(min_stride_m, max_stride_m)
+        check_penalties(collision_penalty, fall_penalty)
         for name, value in (("num_envs", num_envs), ("threads", threads)):
             if not isinstance(value, (int, np.integer)) or isinstance(value, bool):
                 raise TypeError(f"{name}: expected an int, got {value!r}")

@@ -50,8 +50,28 @@ FALL_PENALTY = 10.0
 
 
 def check_strides(min_stride_m, max_stride_m):
-    if not 0 < min_stride_m <= max_stride_m:
-        raise ValueError(f"expected 0 < min_stride_m <= max_stride_m, got {min_stride_m}, {max_stride_m}")
+    if not (np.isfinite(min_stride_m) and np.isfinite(max_stride_m) and 0 < min_stride_m <= max_stride_m):
+        raise ValueError(f"expected finite strides 0 < min_stride_m <= max_stride_m, got {min_stride_m}, {max_stride_m}")
+
+
+def check_penalties(collision_penalty, fall_penalty):
+    """A NaN or infinite penalty would make every reward NaN (or inf - inf): refused, named."""
+    for name, value in (("collision_penalty", collision_penalty), ("fall_penalty", fall_penalty)):
+        if not np.isfinite(float(value)):
+            raise ValueError(f"{name}: expected a finite number, got {value!r}")
+
+
+def check_action(action, shape):
+    """action as a float array of `shape`, every value finite; the first bad value named."""
+    action = np.asarray(action, dtype=float)
+    if action.shape != shape:
+        raise ValueError(f"expected an action [walk, stride_m] of shape {shape}, got shape {action.shape}: {action!r}")
+    bad = np.argwhere(~np.isfinite(action))
+    if len(bad):
+        index = tuple(int(i) for i in bad[0])
+        name = ("walk", "stride_m")[index[-1]]
+        raise ValueError(f"action{list(index)} ({name}) is {action[index]!r}: expected a finite number")
+    return action
 
 
 def walk_spaces(n_sensors, min_stride_m, max_stride_m):
@@ -79,6 +99,7 @@ class WalkEnv(_EnvBase):
         if self._sim.robot is None:
             raise ValueError("WalkEnv needs a scenario with a robot section (its sensors ride the robot)")
         check_strides(min_stride_m, max_stride_m)
+        check_penalties(collision_penalty, fall_penalty)
         self._min_stride_m = float(min_stride_m)
         self._max_stride_m = float(max_stride_m)
         self._collision_penalty = float(collision_penalty)
@@ -126,9 +147,7 @@ class WalkEnv(_EnvBase):
         return self._vector(obs), self._info({"t_s": obs["t_s"]}, obs)
 
     def step(self, action):
-        action = np.asarray(action, dtype=float)
-        if action.shape != (2,) or not np.all(np.isfinite(action)):
-            raise ValueError(f"expected an action [walk, stride_m] of shape (2,), got {action!r}")
+        action = check_action(action, (2,))
         walk = action[0] >= 0.5
         robot = self._sim.robot
         if walk != self._walking:

@@ -241,6 +241,9 @@ def _read_readings(out_dir, scene):
             d_max_m=float(spec.get("max_range_m", np.nanmax(d_m) if len(d_m) else 1.0)),
             max_incidence_deg=float(spec.get("max_incidence_deg", 90.0)))
         s.t_s = c["t_s"]
+        if len(s.t_s) and not np.all(np.isfinite(s.t_s)):
+            raise RunError(f"{out_dir}: sensor '{name}': a t_s that is not a finite number "
+                           f"({s.t_s[~np.isfinite(s.t_s)][0]!r}); not a run proxsim wrote")
         s.status = c["status"]
         s.detected = c["detected"]
         s.d_m = d_m
@@ -286,7 +289,10 @@ def _read_profile(out_dir):
     for i, line in enumerate(lines):
         parts = line.split()
         if parts[:2] == ["element", "vertex"]:
-            count = int(parts[2])
+            try:
+                count = int(parts[2])
+            except (IndexError, ValueError):
+                raise RunError(f"{path}:{i + 1}: expected 'element vertex COUNT', got {line!r}") from None
         elif parts and parts[0] == "property":
             props.append(parts[-1])
         elif line.strip() == "end_header":
@@ -294,6 +300,10 @@ def _read_profile(out_dir):
             break
     if start is None:
         raise RunError(f"{path}: no end_header")
+    # the count within the lines the file holds: a 170-byte header declaring 1e8 vertices once took 2.4 GB
+    if not 0 <= count <= len(lines) - start:
+        raise RunError(f"{path}: the header declares {count} vertices but the file holds {len(lines) - start} "
+                       "lines after it")
     if count == 0:
         return empty
     data = np.loadtxt(lines[start:start + count], ndmin=2)

@@ -6,11 +6,11 @@ terrain map's cells and hazards, multi-zone sensors' zone points) and index.html
 import html
 import json
 import os
-import shutil
 
 import numpy as np
 
-from .run_data import STATUSES
+from .run_data import STATUSES, RunError
+from .safe_files import write_bytes, write_text
 from .style import (HAZARD_COLORS, HAZARD_LABELS, STATUS_COLORS, STATUS_LABELS, VIRIDIS_STOPS, object_color,
                     sensor_color)
 from .terrain_data import height_limits, measured_cells
@@ -71,6 +71,11 @@ def terrain_viewer_data(terrain):
             "zRange": [round(z_lo, 4), round(z_hi, 4)], "colorStops": VIRIDIS_STOPS, "hazards": hazards}
 
 
+def _plain_folder_name(name):
+    """A single folder name (what proxsim writes: SensorFolderName), not a path."""
+    return isinstance(name, str) and name not in ("", ".", "..") and "/" not in name and "\0" not in name
+
+
 def zones_viewer_data(run):
     """Each multi-zone sensor's zones for the viewer (zones/ of the run, when
     written): its grid, the sample times, and per sample every zone's nearest
@@ -83,6 +88,10 @@ def zones_viewer_data(run):
     index = {s.name: s.index for s in run.sensors}
     zones = []
     for name, sensor in columns["sensors"].items():
+        # a folder inside zones/, never one the file names elsewhere (an absolute path, '..')
+        if not _plain_folder_name(sensor.get("folder")):
+            raise RunError(f"{columns_path}: sensor {name!r}: folder {sensor.get('folder')!r} is not a folder "
+                           "name inside zones/")
         folder = os.path.join(run.out_dir, "zones", sensor["folder"])
         p_path = os.path.join(folder, "p_W.npy")
         if not os.path.exists(p_path) or name not in index:
@@ -157,11 +166,9 @@ INDEX_HTML = """<!DOCTYPE html>
 
 def write_viewer(run, report_dir, bundle_path, terrain=None):
     """Copies the bundle and writes data.js and index.html into report_dir."""
-    shutil.copyfile(bundle_path, os.path.join(report_dir, "viewer.js"))
-    with open(os.path.join(report_dir, "data.js"), "w") as f:
-        f.write("window.PROXSIM_DATA = ")
-        json.dump(viewer_data(run, terrain), f, separators=(",", ":"), allow_nan=False)
-        f.write(";\n")
+    with open(bundle_path, "rb") as f:
+        write_bytes(os.path.join(report_dir, "viewer.js"), f.read())
+    data = json.dumps(viewer_data(run, terrain), separators=(",", ":"), allow_nan=False)
+    write_text(os.path.join(report_dir, "data.js"), "window.PROXSIM_DATA = " + data + ";\n")
     title = html.escape(os.path.basename(os.path.abspath(run.out_dir)))
-    with open(os.path.join(report_dir, "index.html"), "w") as f:
-        f.write(INDEX_HTML.format(title=title))
+    write_text(os.path.join(report_dir, "index.html"), INDEX_HTML.format(title=title))

@@ -112,7 +112,9 @@ nlohmann::json InspectJson(const RobotModel& model, const RobotSummary& summary,
     }
     nlohmann::json front = nlohmann::json::array();
     for (const ShankSpot& spot : leg.shank_front) {
-      front.push_back({{"fraction", spot.fraction}, {"xyz_m", VecJson(spot.p_L)}, {"rpy_deg", VecJson(spot.rpy_deg)}});
+      front.push_back({{"fraction", spot.fraction}, {"xyz_m", VecJson(spot.p_L)}, {"rpy_deg", VecJson(spot.rpy_deg)},
+                       {"rpy_deg_pitched_down", VecJson(spot.rpy_deg_pitched_down)},
+                       {"pitched_down_deg", kShankPitchDown_deg}, {"stand_off_m", kShankStandOff_m}});
     }
     shanks[side] = {{"link", model.link_name(leg.shank_link)}, {"front_surface", front}};
   }
@@ -202,15 +204,18 @@ void PrintText(const RobotModel& model, const RobotSummary& summary, const LegMa
     if (!legs.legs[s].names) std::printf("  %s: %s\n", s == 0 ? "left" : "right", legs.legs[s].problem.c_str());
   for (const std::string& problem : legs.problems) std::printf("  %s\n", problem.c_str());
 
-  std::printf("\nshank front surfaces (a sensor's origin on the shank, in its link frame; +x of rpy_deg is forward):\n");
+  std::printf("\nshank front surfaces (a sensor's origin %g mm proud of the shank's front, in its link frame; +x of rpy_deg "
+              "is forward, level or pitched down %g deg):\n",
+              1000 * kShankStandOff_m, kShankPitchDown_deg);
   for (int s = 0; s < 2; ++s) {
     const LegSuggestion& leg = legs.legs[s];
     if (leg.shank_link < 0) continue;
     std::printf("  %s\n", model.link_name(leg.shank_link).c_str());
     if (leg.shank_front.empty()) std::printf("    the line from the knee forward meets no geometry\n");
     for (const ShankSpot& spot : leg.shank_front) {
-      std::printf("    %3.0f %% of the way knee -> ankle: xyz_m %s, rpy_deg %s\n", 100 * spot.fraction,
-                  Vec(spot.p_L).c_str(), Vec(spot.rpy_deg).c_str());
+      std::printf("    %3.0f %% of the way knee -> ankle: xyz_m %s, rpy_deg %s (level) or %s (pitched down)\n",
+                  100 * spot.fraction, Vec(spot.p_L).c_str(), Vec(spot.rpy_deg).c_str(),
+                  Vec(spot.rpy_deg_pitched_down).c_str());
     }
   }
 }

@@ -11,13 +11,16 @@
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <charconv>
 #include <cstdlib>
 #include <memory>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -50,6 +53,7 @@
 #include "study/study_answers.h"
 #include "study/study_config.h"
 #include "study/study_merge.h"
+#include "study/study_mpi.h"
 #include "study/study_runner.h"
 #include "study/study_shard.h"
 
@@ -108,6 +112,22 @@ std::optional<std::uint64_t> ParseSeed(const std::string& text) {
     throw proxsim::InputError("--seed: expected a whole number in [0, 18446744073709551615], got " + text);
   }
   return value;
+}
+
+// CLI11's ExistingFile, saying why a path that is there cannot be read (a
+// symbolic link loop was "File does not exist")
+CLI::Validator ExistingInputFile() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        struct stat info {};
+        if (::stat(path.c_str(), &info) == 0) {
+          return S_ISDIR(info.st_mode) ? "File is actually a directory: " + path : std::string();
+        }
+        if (errno == ENOENT) return "File does not exist: " + path;
+        if (errno == ELOOP) return path + ": a loop of symbolic links (" + std::strerror(errno) + ")";
+        return path + ": cannot be read (" + std::strerror(errno) + ")";
+      },
+      "FILE");
 }
 
 // --out: refused at once when empty (it once printed "outputs in /" and wrote nothing)
@@ -236,6 +256,8 @@ int Validate(const std::string& scenario_path) {
 // the scenario's generated world written out as a plain scenario, checked
 // as a run would read it from where it is written
 int Generate(const std::string& scenario_path, const std::string& out_path) {
+  if (const std::string problem = proxsim::ReplaceableFileProblem(out_path); !problem.empty())
+    throw proxsim::InputError("--out " + problem);
   std::error_code error;
   if (!std::filesystem::is_regular_file(scenario_path, error))
     throw proxsim::InputError(scenario_path + ": cannot read the scenario file: no such file");
@@ -401,7 +423,7 @@ int main(int argc, char** argv) {
   int threads = 1;
   CLI::App* run = app.add_subcommand("run", "run a scenario (default: the paper's experiment)");
   run->add_option("scenario", scenario_path, "scenario YAML file; none runs the built-in paper experiment")
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInputFile());
   run->add_option("--out", out_dir, "output folder")->capture_default_str();
   run->add_option("--seed", seed, "seed of the sensor noise, 0 to 2^64-1 (overrides the scenario's)");
   bool run_force = false;
@@ -545,7 +567,9 @@ int main(int argc, char** argv) {
       CheckOneRun(plot_dir);
       // redrawing replaces report/: hold the folder against a run into it meanwhile
       const proxsim::OutputFolder folder(plot_dir, {.command = "plot", .create = false, .check_contents = false});
-      return proxsim::MakeReport(plot_dir) == 0 ? 0 : kExitFailure;
+      // the script's 2 is a run file it cannot read: bad input, as the C++ readers'
+      const int status = proxsim::MakeReport(plot_dir);
+      return status == 0 ? 0 : status == 2 ? 2 : kExitFailure;
     }
     if (*export_command) {
       if (!export_mcap && !export_ros2) throw proxsim::InputError("export: give --mcap FILE, --ros2 DIR or both");
@@ -578,9 +602,12 @@ int main(int argc, char** argv) {
                    study_allow_large, study_shard);
     }
   } catch (const proxsim::InputError& error) {
-    return PrintInputError(error);
+    const int code = PrintInputError(error);
+    proxsim::AbortMpiJobAfterFailure(code);  // every rank of a study's MPI job ends with it
+    return code;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "proxsim: error: %s\n", error.what());
+    proxsim::AbortMpiJobAfterFailure(kExitFailure);
     return kExitFailure;
   }
   return 0;

@@ -43,6 +43,16 @@ std::string WithoutTrailingSlash(std::string dir) {
 }
 }  // namespace
 
+std::string ReplaceableFileProblem(const std::string& path) {
+  struct stat info {};
+  if (::lstat(path.c_str(), &info) != 0 || S_ISREG(info.st_mode) || S_ISLNK(info.st_mode)) return "";
+  const char* kind = S_ISDIR(info.st_mode)  ? "a folder"
+                     : S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode) ? "a device"
+                     : S_ISFIFO(info.st_mode) ? "a FIFO"
+                                              : "a socket";
+  return path + ": " + kind + ", not a regular file; proxsim never replaces one (give the path of a new or regular file)";
+}
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   // the folder, never through a link: O_NOFOLLOW refuses a folder that is one
   const std::size_t slash = path_.rfind('/');
@@ -56,6 +66,14 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
                                " is a symbolic link or not a folder; proxsim never writes through a link");
     }
     Fail("open the folder of", path_);
+  }
+  // the final name: a device, FIFO or socket there is never replaced (a folder there makes the rename fail)
+  if (struct stat final_info {}; ::fstatat(dir_fd_, name_.c_str(), &final_info, AT_SYMLINK_NOFOLLOW) == 0 &&
+                                 !S_ISREG(final_info.st_mode) && !S_ISLNK(final_info.st_mode) &&
+                                 !S_ISDIR(final_info.st_mode)) {
+    ::close(dir_fd_);
+    dir_fd_ = -1;
+    throw std::runtime_error("cannot create " + path_ + ": " + ReplaceableFileProblem(path_));
   }
   // the temporary name, created afresh: never a planted link, never another file's content
   int fd = -1;

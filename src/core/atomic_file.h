@@ -42,6 +42,12 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
 };
 
+/// "" when `path` may take a file proxsim writes: missing, a regular file or a
+/// symbolic link (replaced, its target untouched); else why not, naming it: a
+/// device, FIFO, socket or folder is never replaced (a device node renamed
+/// over, as root, would break the machine).
+std::string ReplaceableFileProblem(const std::string& path);
+
 /// Writes a whole file atomically.
 void WriteFileAtomically(const std::string& path, std::string_view content);
 

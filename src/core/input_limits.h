@@ -25,6 +25,11 @@ inline constexpr std::uint64_t kMaxDeclaredElements = 100'000'000;
 inline constexpr std::uintmax_t kMaxUrdfBytes = std::uintmax_t{64} << 20;  // 64 MiB
 inline constexpr std::size_t kMaxUrdfLinks = 200'000;
 
+/// Bodies of an MJCF robot (its file and its includes, counted before MuJoCo
+/// compiles it): a humanoid has tens; MuJoCo's compile grows faster than the
+/// count (20 000 bodies took 105 s and 1.8 GB).
+inline constexpr std::size_t kMaxMjcfBodies = 2'000;
+
 /// Any coordinate of the scene (object positions, mesh vertices after scaling
 /// and placing, path waypoints, the robot's start): Embree casts rays in single
 /// precision, whose spacing at 1e5 m is 7.8 mm — more than a proximity sensor's

@@ -1,5 +1,8 @@
 #include "core/nesting_scan.h"
 
+#include <cctype>
+#include <vector>
+
 namespace proxsim {
 
 NestingScan ScanXmlNesting(std::string_view text, int limit) {
@@ -85,6 +88,67 @@ NestingScan ScanJsonNesting(std::string_view text, int limit) {
       }
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
+    }
+  }
+  return scan;
+}
+
+NestingScan ScanYamlNesting(std::string_view text, int limit) {
+  NestingScan scan;
+  std::vector<std::size_t> block;  // the indentation columns of the open block levels
+  int flow = 0;
+  char quote = 0;
+  bool line_start = true;
+  const auto deeper = [&](std::size_t at) {
+    const int depth = static_cast<int>(block.size()) + flow;
+    ++scan.elements;
+    if (depth > scan.max_depth) scan.max_depth = depth;
+    if (depth > limit) scan.too_deep_at = at == 0 ? 1 : at;
+    return depth > limit;
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const bool block_line = line_start && quote == 0 && flow == 0;
+    line_start = false;
+    if (block_line) {
+      // a block line: its indentation (and each "- " on it) opens levels deeper than the last
+      std::size_t column = 0;
+      while (i + column < text.size() && text[i + column] == ' ') ++column;
+      const char first = i + column < text.size() ? text[i + column] : '\n';
+      if (first == '\n' || first == '\r' || first == '#') {
+        i += column - 1;  // the loop's ++i lands on the line end or the comment
+        continue;
+      }
+      while (!block.empty() && block.back() >= column) block.pop_back();
+      block.push_back(column);
+      if (deeper(i + column)) return scan;
+      while (i + column + 1 < text.size() && text[i + column] == '-' && text[i + column + 1] == ' ') {
+        column += 2;
+        while (i + column < text.size() && text[i + column] == ' ') ++column;
+        block.push_back(column);
+        if (deeper(i + column)) return scan;
+      }
+      i += column;
+      if (i >= text.size()) break;
+    }
+    const char c = text[i];
+    if (c == '\n') {
+      line_start = true;  // (a quoted scalar may span lines: its next line is no block line)
+      continue;
+    }
+    if (quote != 0) {
+      if (quote == '"' && c == '\\') ++i;
+      else if (c == quote) quote = 0;
+      continue;
+    }
+    if (c == '#' && (i == 0 || text[i - 1] == ' ' || text[i - 1] == '\t' || text[i - 1] == '\n')) {
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;  // a comment, to the line's end
+    } else if (c == '"' || (c == '\'' && (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]))))) {
+      quote = c;
+    } else if (c == '[' || c == '{') {
+      ++flow;
+      if (deeper(i)) return scan;
+    } else if ((c == ']' || c == '}') && flow > 0) {
+      --flow;
     }
   }
   return scan;

@@ -25,6 +25,12 @@ NestingScan ScanXmlNesting(std::string_view text, int limit);
 /// JSON: '[' and '{' outside strings (escapes honoured).
 NestingScan ScanJsonNesting(std::string_view text, int limit);
 
+/// YAML: flow collections ('[' and '{' outside quotes and comments) inside
+/// block ones (a stack of indentation columns, each "- " a level of its
+/// own), counted together. yaml-cpp recurses per level and answers a file
+/// 600 maps deep with "bad file", naming nothing.
+NestingScan ScanYamlNesting(std::string_view text, int limit);
+
 /// "PATH: <what> nested deeper than LIMIT levels (at byte N); ..." when the
 /// scan passed the limit, nullopt otherwise.
 std::optional<std::string> NestingProblem(const NestingScan& scan, const std::string& path, const std::string& what,

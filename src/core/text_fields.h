@@ -25,6 +25,17 @@ std::string CsvField(std::string_view field);
 /// (printable UTF-8 of at least one byte); else e.g. "a control character (byte 0x0a at 4)".
 std::string NamingProblem(std::string_view name);
 
+/// A sensor's folder under zones/ and echoes/: its name when that is a plain
+/// file name (letters, digits, '_', '-', '.'; not "." or ".."), else
+/// "sensor_INDEX". Two sensors whose folders would be the same (`sensor_1`
+/// and a sensor 1 named `..`) are refused by the scenario parser.
+std::string SensorFolderName(const std::string& name, std::size_t index);
+
+/// `text` in double quotes, with backslash, quote and every control byte
+/// escaped (\n, \r, \t, \xNN): a user's string safe inside a comment line
+/// of a written YAML file (a newline in it could otherwise start a key).
+std::string QuotedForComment(std::string_view text);
+
 /// The fields of one CSV record as proxsim writes them (RFC 4180: a field in
 /// double quotes may hold commas and doubled quotes; a Windows line end dropped).
 std::vector<std::string> SplitQuotedCsvLine(const std::string& line);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "core/input_limits.h"
 #include "core/message_format.h"
 #include "gait/held_joints.h"
 #include "gait/leg_kinematics.h"
@@ -68,7 +69,15 @@ std::vector<double> ExternalDrive::JointVector(const std::vector<std::pair<std::
 std::vector<std::string> ExternalDrive::Problems(const ExternalState& state, const Rotation& R_WP, double t_s) const {
   std::vector<std::string> problems;
   const std::string where = Where(t_s);
-  if (!state.p_WP.allFinite()) problems.push_back(where + "X_WP: the position is not finite");
+  if (!state.p_WP.allFinite()) {
+    problems.push_back(where + "X_WP: the position is not finite");
+  } else if (state.p_WP.cwiseAbs().maxCoeff() > kMaxCoordinate_m) {
+    // as a scenario's coordinates: rays are cast in single precision, and the map's grid and
+    // files span the robot's track (at 5e7 m the first step allocated 8.5 GB)
+    problems.push_back(where + FormatNumbers("X_WP: the position (%.6g, %.6g, %.6g) m is beyond the coordinate limit of ",
+                                             state.p_WP.x(), state.p_WP.y(), state.p_WP.z()) +
+                       FormatNumbers("±%g m (rays are cast in single precision; docs/trust.md)", kMaxCoordinate_m));
+  }
   if (state.quat_wxyz.has_value() == state.R_WP.has_value()) {
     problems.push_back(where + "X_WP: give the orientation once, as a quaternion (w, x, y, z) or a rotation matrix");
     return problems;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <queue>
 #include <tuple>
@@ -290,6 +291,31 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
     g.p_L_sole = X_LP * turn_about_ankle(Vec3(p_PA.x(), g.sole_y_m, lowest), g.foot0_rad);
     g.p_L_toe = X_LP * turn_about_ankle(Vec3(toe, g.sole_y_m, lowest), g.foot0_rad);
     g.up_L = X_LP.linear() * Vec3(-std::sin(g.foot0_rad), 0.0, std::cos(g.foot0_rad));
+  }
+  // two legs, not one mapped twice (no joint or foot shared: one leg walked as both passed validation),
+  // and not swapped
+  if (legs_ok) {
+    const LegGeometry &left = legs_[0], &right = legs_[1];
+    const int left_joints[3] = {left.hip_joint, left.knee_joint, left.ankle_joint};
+    const int right_joints[3] = {right.hip_joint, right.knee_joint, right.ankle_joint};
+    const char* const joint_key[3] = {"hip", "knee", "ankle"};
+    for (int k = 0; k < 3; ++k) {
+      if (std::find(std::begin(left_joints), std::end(left_joints), right_joints[k]) != std::end(left_joints))
+        problems.push_back(source + ": robot.legs.right." + joint_key[k] + ": joint '" +
+                           m.joint(right_joints[k]).name + "' is also the left leg's; each leg needs joints of its own");
+    }
+    if (left.foot_link == right.foot_link)
+      problems.push_back(source + ": robot.legs.right.foot: link '" + m.link_name(right.foot_link) +
+                         "' is also the left leg's foot; each leg needs a foot of its own");
+    // left is +y of the root link (REP-103): a left leg whose hip lies right of the other's is a swapped map
+    if (left.hip_joint != right.hip_joint && left.p_PH.y() < right.p_PH.y()) {
+      char text[300];
+      std::snprintf(text, sizeof text, " lies right of the right leg's hip (y = %.3f m against %.3f m in the root "
+                    "link's frame, +y to the left): left and right are swapped",
+                    left.p_PH.y(), right.p_PH.y());
+      problems.push_back(source + ": robot.legs.left.hip: joint '" + m.joint(left.hip_joint).name + "'" + text +
+                         " (the right leg's hip is '" + m.joint(right.hip_joint).name + "')");
+    }
   }
   if (!problems.empty() || !legs_ok) throw InputError(problems);
 

@@ -123,7 +123,11 @@ LegSuggestion SuggestLeg(const RobotModel& model, const RobotSummary& summary, c
     const Vec3 p_L = p_L_knee + fraction * (p_L_ankle - p_L_knee);
     const auto t_m = FarthestAlongLink_m(shank, p_L, forward_L);
     if (!t_m) continue;
-    leg.shank_front.push_back({fraction, p_L + *t_m * forward_L, RpyFromRotation(X_LW.linear()) * (180.0 / kPi)});
+    // pitch about the sensor's own y: +x turns down (REP-103, as rpy_deg [0, d, 0] does on a level link)
+    const Rotation R_LS_down = X_LW.linear() * RotationFromRpy(Vec3(0, kShankPitchDown_deg * kPi / 180.0, 0));
+    leg.shank_front.push_back({fraction, p_L + (*t_m + kShankStandOff_m) * forward_L,
+                               RpyFromRotation(X_LW.linear()) * (180.0 / kPi),
+                               RpyFromRotation(R_LS_down) * (180.0 / kPi)});
   }
   return leg;
 }

@@ -33,12 +33,19 @@ struct FootCandidate {
   double y_m = 0;         ///< its geometry's centre across, in W (> 0: left)
 };
 
-/// A place on the front of a shank, in the shank's link frame.
+/// A place for a sensor on the front of a shank, in the shank's link frame.
 struct ShankSpot {
   double fraction = 0;     ///< from the knee (0) to the ankle (1)
-  Vec3 p_L = Vec3::Zero(); ///< the front surface there (the sensor's origin)
-  Vec3 rpy_deg = Vec3::Zero();  ///< a sensor frame whose +x is the robot's forward
+  Vec3 p_L = Vec3::Zero(); ///< kShankStandOff_m proud of the front surface there (the sensor's origin)
+  Vec3 rpy_deg = Vec3::Zero();  ///< a sensor frame whose +x is the robot's forward (level, at the zero pose)
+  Vec3 rpy_deg_pitched_down = Vec3::Zero();  ///< the same frame pitched down kShankPitchDown_deg
 };
+
+/// How far a suggested sensor origin stands off the shank's surface: on
+/// the surface itself, a ray may meet the link at 0 mm (every reading `self`).
+inline constexpr double kShankStandOff_m = 0.005;
+/// The pitch down of the second suggested orientation (the paper's shin sensors look down 8-20°).
+inline constexpr double kShankPitchDown_deg = 15.0;
 
 struct LegSuggestion {
   std::optional<LegNames> names;  ///< none when no leg map could be read off this side

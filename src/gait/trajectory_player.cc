@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/input_limits.h"
 #include "core/text_fields.h"
 
 namespace proxsim {
@@ -82,6 +83,15 @@ void TrajectoryPlayer::Parse(const std::string& text, const std::string& source)
     for (std::size_t c = 0; c < cells.size(); ++c) {
       if (!ParseFiniteNumber(cells[c], &v[c])) {
         problems.push_back(where + ": column '" + header[c] + "': '" + cells[c] + "' is not a finite number");
+        ok = false;
+      }
+    }
+    // the pelvis within the coordinate limit, as a scenario's positions (x = 1e308 once ran with NaN sensor positions)
+    for (int b = 1; b <= 3; ++b) {
+      if (ok && std::abs(v[base_col[b]]) > kMaxCoordinate_m) {
+        problems.push_back(where + ": column '" + header[base_col[b]] + "': " + cells[base_col[b]] +
+                           " m is beyond the coordinate limit of ±100000 m (rays are cast in single precision; "
+                           "docs/trust.md)");
         ok = false;
       }
     }

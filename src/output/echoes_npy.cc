@@ -20,9 +20,11 @@ EchoesNpyWriter::EchoesNpyWriter(const std::string& out_dir, const Scenario& sce
     : dir_((std::filesystem::path(out_dir) / "echoes").string()), scenario_(scenario) {
   for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
     if (!HasEchoes(scenario.sensors[i])) continue;
-    sensors_.push_back({.index = i, .folder = NpyFolderFor(scenario.sensors[i].name, i), .t_s = {}, .d_m = {},
+    sensors_.push_back({.index = i, .folder = SensorFolderName(scenario.sensors[i].name, i), .t_s = {}, .d_m = {},
                         .signal = {}, .count = {}});
   }
+  // before the run writes anything: a linked folder here once got the arrays written through it
+  RefuseLinkedSensorFolders(dir_, sensors_);
 }
 
 void EchoesNpyWriter::Add(const SampleFrame& frame) {
@@ -43,6 +45,7 @@ void EchoesNpyWriter::Add(const SampleFrame& frame) {
 }
 
 void EchoesNpyWriter::Commit() {
+  RefuseLinkedSensorFolders(dir_, sensors_);
   nlohmann::json sensors = nlohmann::json::object();
   for (const Sensor& sensor : sensors_) {
     const std::string folder = dir_ + "/" + sensor.folder;

@@ -1,16 +1,22 @@
 #include "output/npy_files.h"
 
-#include <algorithm>
+#include <sys/stat.h>
+
+#include <stdexcept>
 
 namespace proxsim {
 
-std::string NpyFolderFor(const std::string& name, std::size_t index) {
-  const bool plain = !name.empty() && name != "." && name != ".." &&
-                     std::all_of(name.begin(), name.end(), [](char c) {
-                       return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                              c == '-' || c == '.';
-                     });
-  return plain ? name : "sensor_" + std::to_string(index);
+void RefuseLinkedFolders(const std::string& dir, const std::vector<std::string>& folders) {
+  std::vector<std::string> paths{dir};
+  for (const std::string& folder : folders) paths.push_back(dir + "/" + folder);
+  for (const std::string& path : paths) {
+    struct stat info {};
+    if (::lstat(path.c_str(), &info) != 0) continue;  // made by the run itself
+    if (!S_ISDIR(info.st_mode)) {
+      throw std::runtime_error("cannot write " + path + ": it is a symbolic link or not a folder; proxsim never "
+                               "writes through a link (remove it, or give another --out)");
+    }
+  }
 }
 
 std::string NpyArrayHeader(const char* descr, const std::vector<std::int64_t>& shape) {

@@ -63,6 +63,12 @@ struct OctomapRecorder::Impl {
     for (const octomap::OcTreeKey& key : keys) tree.updateNode(key, false, /*lazy_eval=*/true);
     dirty = true;
   }
+  // whether p is within the keys' reach (checked silently: OctoMap prints an error per point beyond it)
+  bool Reaches(const Vec3& p) const {
+    octomap::OcTreeKey key;
+    return tree.coordToKeyChecked(Point(p), key);
+  }
+  std::uint64_t left_out = 0;  // readings beyond the keys' reach
   mutable octomap::OcTree tree;
   octomap::KeyRay keys;
   mutable bool dirty = false;
@@ -148,8 +154,18 @@ struct OctomapRecorder::Impl {
 OctomapRecorder::OctomapRecorder(double resolution_m) : impl_(std::make_unique<Impl>(resolution_m)) {}
 OctomapRecorder::~OctomapRecorder() = default;
 
+std::uint64_t OctomapRecorder::left_out() const { return impl_->left_out; }
+double OctomapRecorder::reach_m() const { return impl_->tree.getResolution() * static_cast<double>(kKeyCentre); }
+
 void OctomapRecorder::Add(const RayEvidence& evidence) {
-  if (evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m) {
+  const bool frees = evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m;
+  // beyond ±32768 voxels of the origin OctoMap has no key: left out and counted, once printed per point
+  if ((frees && (!impl_->Reaches(evidence.free_begin_W()) || !impl_->Reaches(evidence.free_end_W()))) ||
+      (evidence.detected && !impl_->Reaches(evidence.point_W()))) {
+    ++impl_->left_out;
+    return;
+  }
+  if (frees) {
     impl_->Free(evidence.free_begin_W(), evidence.free_end_W());
   }
   if (evidence.detected) {

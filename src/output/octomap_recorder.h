@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -41,6 +42,10 @@ class OctomapRecorder {
 
   /// Moves the subtrees whose x-y square lies outside [lo_W, hi_W] out of memory.
   void RetireOutside(const Vec2& lo_W, const Vec2& hi_W);
+  /// Readings left out because they reach beyond the tree's keys (±reach_m() of the origin).
+  std::uint64_t left_out() const;
+  /// How far from the origin OctoMap's 16-bit keys reach at this resolution, m.
+  double reach_m() const;
   /// Subtrees retired so far.
   std::size_t retired_subtrees() const;
   /// Nodes held in memory.

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -22,27 +23,44 @@ namespace {
 namespace fs = std::filesystem;
 constexpr const char* kManifest = "manifest.json";
 
-// FNV-1a 64 of what `fd` reads, hex; closes fd; empty when it cannot be read
-std::string DigestOfFd(int fd) {
-  if (fd < 0) return "";
-  std::uint64_t hash = 1469598103934665603ull;
-  char buffer[65536];
-  ssize_t n;
-  while ((n = ::read(fd, buffer, sizeof buffer)) > 0) {
-    for (ssize_t i = 0; i < n; ++i) {
-      hash ^= static_cast<unsigned char>(buffer[i]);
-      hash *= 1099511628211ull;
-    }
-  }
-  ::close(fd);
-  if (n < 0) return "";
+// The standard FNV-1a 64 offset basis, and the mistyped one manifests were
+// once written with (so that a standard FNV-1a check of them failed): a
+// manifest written before still proves its files (DigestMatches).
+constexpr std::uint64_t kFnvOffsetBasis = 0xcbf29ce484222325ull;
+constexpr std::uint64_t kLegacyFnvOffsetBasis = 1469598103934665603ull;
+constexpr std::uint64_t kFnvPrime = 1099511628211ull;
+
+std::string Hex(std::uint64_t hash) {
   char text[17];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
   return text;
 }
 
+// FNV-1a 64 of what `fd` reads from both bases, hex; closes fd; empty when it cannot be read
+std::pair<std::string, std::string> DigestsOfFd(int fd) {
+  if (fd < 0) return {};
+  std::uint64_t hash = kFnvOffsetBasis, legacy = kLegacyFnvOffsetBasis;
+  char buffer[65536];
+  ssize_t n;
+  while ((n = ::read(fd, buffer, sizeof buffer)) > 0) {
+    for (ssize_t i = 0; i < n; ++i) {
+      hash = (hash ^ static_cast<unsigned char>(buffer[i])) * kFnvPrime;
+      legacy = (legacy ^ static_cast<unsigned char>(buffer[i])) * kFnvPrime;
+    }
+  }
+  ::close(fd);
+  if (n < 0) return {};
+  return {Hex(hash), Hex(legacy)};
+}
+
 std::string Digest(const fs::path& file) {
-  return DigestOfFd(::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+  return DigestsOfFd(::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC)).first;
+}
+
+// whether what `fd` reads has `digest`, from either basis; closes fd
+bool DigestMatches(int fd, const std::string& digest) {
+  const auto [standard, legacy] = DigestsOfFd(fd);
+  return !digest.empty() && (digest == standard || digest == legacy);
 }
 
 // A manifest path split into its folders and its name; empty when it could
@@ -75,7 +93,7 @@ void RemoveListedFile(const fs::path& dir, const ManifestFile& file) {
     struct stat info {};
     if (::fstatat(parent, name, &info, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(info.st_mode) &&
         static_cast<std::uintmax_t>(info.st_size) == file.bytes &&
-        DigestOfFd(::openat(parent, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC)) == file.digest) {
+        DigestMatches(::openat(parent, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC), file.digest)) {
       ::unlinkat(parent, name, 0);
       // the folders it leaves empty (rmdir refuses a non-empty one)
       for (std::size_t i = fds.size() - 1; i >= 1; --i) {
@@ -211,6 +229,11 @@ void RemoveFromRunManifest(const std::string& dir, const std::string& subdir) {
 std::vector<std::string> RunFolderProblems(const std::string& dir) {
   std::vector<std::string> problems;
   const auto manifest = ReadRunManifest(dir);
+  std::error_code exists_error;
+  if (!manifest && fs::exists(fs::path(dir) / kManifest, exists_error)) {
+    // there but unreadable: the files cannot be checked against it
+    problems.push_back(std::string(kManifest) + ": not a manifest proxsim wrote (not JSON with a \"files\" list)");
+  }
   if (!manifest) return problems;
   const fs::path root(dir);
   std::error_code ec;
@@ -226,7 +249,8 @@ std::vector<std::string> RunFolderProblems(const std::string& dir) {
                          std::to_string(f.bytes) + " (rewritten by another run?)");
     }
   }
-  if (!manifest->summary_digest.empty() && Digest(root / "summary.json") != manifest->summary_digest) {
+  if (!manifest->summary_digest.empty() &&
+      !DigestMatches(::open((root / "summary.json").c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC), manifest->summary_digest)) {
     problems.push_back("summary.json: not the summary of the run manifest.json describes (rewritten by another run?)");
   }
   for (const std::string& name : RunOutputNames()) {

@@ -164,7 +164,16 @@ nlohmann::json RecordTerrain(TerrainArchive& archive, const RayCaster& caster, c
       {"arrays", kArrayNames}};
   WriteFileAtomically((final_dir / "meta.json").string(), meta.dump(2) + "\n");
   WriteFileAtomically((final_dir / "hazards.csv").string(), HazardsCsvText(archive.Hazards()));
-  if (archive.octomap() != nullptr) archive.octomap()->WriteBinary((final_dir / "map.bt").string());
+  if (const OctomapRecorder* octomap = archive.octomap(); octomap != nullptr) {
+    octomap->WriteBinary((final_dir / "map.bt").string());
+    // a walk beyond the keys' reach: map.bt stops there, and says so here (the arrays above cover it all)
+    if (octomap->left_out() > 0) {
+      score["map_bt"] = {{"left_out_readings", octomap->left_out()},
+                         {"reach_m", octomap->reach_m()},
+                         {"note", "OctoMap's keys reach this far from the origin at the map's resolution; "
+                                  "readings beyond are not in terrain/map.bt"}};
+    }
+  }
   return score;
 }
 

@@ -21,9 +21,11 @@ ZonesNpyWriter::ZonesNpyWriter(const std::string& out_dir, const Scenario& scena
   for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
     const auto& zones = scenario.sensors[i].spec.zones;
     if (!zones) continue;
-    sensors_.push_back({.index = i, .folder = NpyFolderFor(scenario.sensors[i].name, i), .zones = ZoneCount(*zones),
+    sensors_.push_back({.index = i, .folder = SensorFolderName(scenario.sensors[i].name, i), .zones = ZoneCount(*zones),
                         .targets = zones->targets, .t_s = {}, .d_m = {}, .p_W = {}, .status = {}, .target_count = {}});
   }
+  // before the run writes anything: a linked folder here once got the arrays written through it
+  RefuseLinkedSensorFolders(dir_, sensors_);
 }
 
 void ZonesNpyWriter::Add(const SampleFrame& frame) {
@@ -57,6 +59,7 @@ void ZonesNpyWriter::Add(const SampleFrame& frame) {
 }
 
 void ZonesNpyWriter::Commit() {
+  RefuseLinkedSensorFolders(dir_, sensors_);
   nlohmann::json codes = nlohmann::json::object();
   for (const std::uint8_t code : ZoneStatusCodes()) codes[std::to_string(code)] = ZoneStatusName(code);
   nlohmann::json sensors = nlohmann::json::object();

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "output/run_manifest.h"
 #include "report/child_process.h"
@@ -33,6 +34,8 @@ void CheckMcapPath(const std::string& mcap_path, const std::string& run_dir) {
   if (fs::is_directory(mcap_path, ec)) {
     throw InputError("--mcap " + mcap_path + ": a folder; give the MCAP file to write (e.g. run.mcap)");
   }
+  if (const std::string problem = ReplaceableFileProblem(mcap_path); !problem.empty())
+    throw InputError("--mcap " + problem);
   const fs::path parent = fs::path(mcap_path).parent_path();
   // compared as folders ("out" and "out/" alike)
   const bool comes = !parent.empty() &&

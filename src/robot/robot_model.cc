@@ -36,12 +36,14 @@ class CaptureHandler : public console_bridge::OutputHandler {
  public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
     if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN) lines.push_back(text);
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) errors.push_back(text);
   }
   std::vector<std::string> lines;
+  std::vector<std::string> errors;  ///< what urdfdom logs as an error and then drops (a <box size="big"/>)
 };
 
-urdf::ModelInterfaceSharedPtr ParseCapturingErrors(const std::string& text,
-                                                   std::vector<std::string>* messages) {
+urdf::ModelInterfaceSharedPtr ParseCapturingErrors(const std::string& text, std::vector<std::string>* messages,
+                                                   std::vector<std::string>* errors) {
   // console_bridge's handler is process-global: one parse at a time.
   static std::mutex mutex;
   std::lock_guard lock(mutex);
@@ -55,6 +57,7 @@ urdf::ModelInterfaceSharedPtr ParseCapturingErrors(const std::string& text,
   }
   console_bridge::restorePreviousOutputHandler();
   *messages = std::move(handler.lines);
+  *errors = std::move(handler.errors);
   return model;
 }
 
@@ -305,7 +308,14 @@ RobotModel RobotModel::FromUrdfText(const std::string& urdf_text, const std::str
                      "or give its file (proxsim runs xacro on a file)");
   }
   std::vector<std::string> messages;
-  const urdf::ModelInterfaceSharedPtr urdf = ParseCapturingErrors(urdf_text, &messages);
+  std::vector<std::string> errors;
+  const urdf::ModelInterfaceSharedPtr urdf = ParseCapturingErrors(urdf_text, &messages, &errors);
+  if (urdf && !errors.empty()) {
+    // parsed, but with an element urdfdom could not read and left out: the robot would lack it silently
+    std::string why = source + ": urdfdom left out what it could not read: ";
+    for (std::size_t i = 0; i < errors.size(); ++i) why += (i ? "; " : "") + errors[i];
+    throw InputError(why + " (fix the element, e.g. a box size of three numbers in metres)");
+  }
   if (!urdf) {
     std::string why = source + ": urdfdom could not parse the URDF (not XML, a missing link or joint field, "
                                "a joint naming an unknown link, a cycle or no single root)";

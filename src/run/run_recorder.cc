@@ -30,6 +30,9 @@ std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const Sampl
   // link's float mesh vertices (`proxsim inspect` reports them), may land a
   // few 1e-8 m inside it: only deeper than this is inside.
   constexpr double kOnLinkSurface_m = 1e-4;
+  // within this of its link's surface, a sensor whose axis goes into the link sees only it
+  constexpr double kNearLinkSurface_m = 2e-3;
+  constexpr double kFacingStep_m = 1e-3;
   const Scenario& scenario = sim.scenario();
   std::vector<std::string> warnings;
   for (std::size_t s = 0; s < scenario.sensors.size() && s < frame.sensors.size(); ++s) {
@@ -53,13 +56,27 @@ std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const Sampl
     const int link = sim.world().sensor_link(s);
     if (link < 0 || sim.robot() == nullptr || !scenario.sensors[s].see_robot) continue;
     const RobotLink& robot_link = sim.robot()->model().link(link);
-    const Vec3 p_LS = sim.robot()->X_WL(link).inverse() * p_WS;
+    const Pose X_LW = sim.robot()->X_WL(link).inverse();
+    const Vec3 p_LS = X_LW * p_WS;
+    // a step along its axis from its origin, to tell a sensor on the surface
+    // facing into the link from one facing out of it
+    const Vec3 p_L_ahead = p_LS + kFacingStep_m * (X_LW.linear() * frame.sensors[s].dir_W);
     for (const LinkShape& shape : robot_link.shapes) {
-      if (DepthInside_m(shape.shape, shape.X_LO.inverse() * p_LS) <= kOnLinkSurface_m) continue;
-      warnings.push_back(sensor + " is inside its own link '" + robot_link.name + "' (" + where +
-                         "); it sees that link from within (echoes `self`); move it out to the link's surface "
-                         "(`proxsim inspect` lists where it is)");
-      break;  // one line per sensor and link
+      const Pose X_OL = shape.X_LO.inverse();
+      const double depth_m = DepthInside_m(shape.shape, X_OL * p_LS);
+      if (depth_m > kOnLinkSurface_m) {
+        warnings.push_back(sensor + " is inside its own link '" + robot_link.name + "' (" + where +
+                           "); it sees that link from within (echoes `self`); move it out to the link's surface "
+                           "(`proxsim inspect` lists where it is)");
+        break;  // one line per sensor and link
+      }
+      if (depth_m > -kNearLinkSurface_m && DepthInside_m(shape.shape, X_OL * p_L_ahead) > 0) {
+        warnings.push_back(sensor + " sits within 2 mm of the surface of its own link '" + robot_link.name +
+                           "', facing into it (" + where +
+                           "): its axis meets the link at once (echoes `self`); turn it out, or move it a few "
+                           "millimetres proud of the surface");
+        break;
+      }
     }
   }
   return warnings;

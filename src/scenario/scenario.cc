@@ -14,8 +14,12 @@
 #include "scenario/scenario.h"
 #include "scenario/scenario_generate.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -26,6 +30,8 @@
 #include "core/input_error.h"
 #include "gait/gait_walker.h"
 #include "scenario/scenario_sections.h"
+#include "sensors/multizone.h"
+#include "sensors/sensor_spec.h"
 
 namespace proxsim {
 
@@ -40,6 +46,9 @@ constexpr double kMaxOutputBytes = 50e9;
 // and per sample of a robot (poses.csv: about 90 B for each of ~10 links).
 constexpr double kBytesPerSensorSample = 300;
 constexpr double kBytesPerRobotSample = 900;
+// The zones/ and echoes/ arrays a run holds in memory until its end: a
+// bound on the run's memory, far below the output guard.
+constexpr double kMaxHeldBytes = 2e9;
 
 struct BuiltinScenario {
   const char* name;
@@ -63,16 +72,48 @@ std::filesystem::path BaseDirOf(const std::string& source) {
   return std::filesystem::path(source).parent_path();
 }
 
+// Bytes per sample of what a run holds in memory to its end, the zones/ and
+// echoes/ arrays (written whole at the end): per zone and target d_m (8 B),
+// p_W (24 B) and status (1 B), per zone its target count (1 B); per echo
+// sensor four distances, four signals (8 B each) and a count (1 B); and each
+// sensor's t_s (8 B).
+double HeldBytesPerSample(const Scenario& scenario) {
+  double bytes = 0;
+  for (const SensorConfig& sensor : scenario.sensors) {
+    if (const auto& zones = sensor.spec.zones)
+      bytes += 8.0 + ZoneCount(*zones) * (33.0 * static_cast<double>(zones->targets) + 1.0);
+    if (sensor.spec.echoes != EchoSelection::kFirst) bytes += 8.0 + 4 * 8.0 + 4 * 8.0 + 1.0;
+  }
+  return bytes;
+}
+
 // The whole run's outputs must fit on a disk: refuse one whose estimated size
-// is beyond kMaxOutputBytes, giving the estimate.
+// is beyond kMaxOutputBytes, giving the estimate; and what it holds in memory
+// to its end (zones, echoes) within kMaxHeldBytes.
 void CheckRunSize(YamlReader& reader, const MapView& top, const Scenario& scenario) {
   const double samples = scenario.duration_s * scenario.rate_hz;
-  const double sensors = static_cast<double>(std::max<std::size_t>(1, scenario.sensors.size()));
-  const double bytes =
-      samples * (sensors * kBytesPerSensorSample + (scenario.robot ? kBytesPerRobotSample : 0.0));
-  if (bytes <= kMaxOutputBytes) return;
   // blame the key the file gives (both default values fit)
   const Field blame = top.Has("duration_s") ? top["duration_s"] : top["rate_hz"];
+  if (scenario.SampleCount() == 0) {
+    reader.Fail(top.Has("rate_hz") ? top["rate_hz"] : blame,
+                "the run takes no sample: " + FormatCount(scenario.duration_s) + " s × " + FormatCount(scenario.rate_hz) +
+                    " Hz = " + FormatCount(samples) + " samples; expected at least one (raise rate_hz or duration_s)");
+    return;
+  }
+  const double sensors = static_cast<double>(std::max<std::size_t>(1, scenario.sensors.size()));
+  const double held_bytes = samples * HeldBytesPerSample(scenario);
+  const double bytes =
+      samples * (sensors * kBytesPerSensorSample + (scenario.robot ? kBytesPerRobotSample : 0.0)) + held_bytes;
+  if (bytes <= kMaxOutputBytes) {
+    if (held_bytes > kMaxHeldBytes) {
+      reader.Fail(blame, "the run is too large: " + FormatCount(scenario.duration_s) + " s × " +
+                             FormatCount(scenario.rate_hz) + " Hz of the multi-zone and echo sensors' arrays "
+                             "(zones/, echoes/), held in memory to the run's end, would take about " +
+                             FormatCount(held_bytes / 1e9) + " GB; expected at most " + FormatCount(kMaxHeldBytes / 1e9) +
+                             " GB (shorten duration_s, lower rate_hz, or use fewer zones or echo sensors)");
+    }
+    return;
+  }
   reader.Fail(blame, "the run is too large: " + FormatCount(scenario.duration_s) + " s × " +
                             FormatCount(scenario.rate_hz) + " Hz = " + FormatCount(samples) + " samples of " +
                             FormatCount(sensors) + " sensor(s) would write about " + FormatCount(bytes / 1e9) +
@@ -236,8 +277,15 @@ Scenario LoadScenarioNode(YAML::Node document, const std::string& source) {
 Scenario LoadScenarioFile(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
+    // a loop of links is no missing file: stat()'s own reason
+    struct stat info {};
+    const bool there = ::stat(path.c_str(), &info) == 0;
+    const int why = errno;
     throw InputError(path + ": cannot read the scenario file: " +
-                     (std::filesystem::exists(path, error) ? "not a regular file" : "no such file"));
+                     (there          ? std::string("not a regular file")
+                      : why == ELOOP ? "a loop of symbolic links (" + std::string(std::strerror(why)) + ")"
+                      : why == ENOENT ? std::string("no such file")
+                                      : std::string(std::strerror(why))));
   }
   std::ifstream file(path, std::ios::binary);
   std::ostringstream text;

@@ -248,7 +248,12 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
       if (const auto object = reader.String(on)) {
         std::vector<std::string> names;
         for (const SceneObject& o : scene.objects) names.push_back(o.name);
-        if (std::ranges::find(names, *object) != names.end()) {
+        const auto named = std::ranges::find(names, *object);
+        if (named != names.end() && scene.objects[named - names.begin()].motion) {
+          // feet stand only on what stands still: the gait plants them in the world, not on a moving box
+          reader.Fail(on, "'" + *object + "' moves (its motion key); the robot can start only on an object that "
+                                          "stands still");
+        } else if (named != names.end()) {
           robot.start_on = *object;
         } else {
           const auto nearest = NearestKey(*object, names);

@@ -24,6 +24,9 @@ namespace proxsim {
 
 namespace {
 
+// A sensor's latency: milliseconds for real parts; 10 s is far beyond any of them.
+constexpr double kMaxLatency_s = 10;
+
 // the physics types and the named parts
 const std::vector<std::string>& AllTypeNames() {
   static const std::vector<std::string> names = [] {
@@ -279,7 +282,10 @@ void ResolveFiring(YamlReader& reader, const std::vector<Field>& items, std::vec
 // the sensor's own sampling and the echo's flight
 void ReadTiming(YamlReader& reader, const MapView& map, SensorConfig& sensor) {
   sensor.rate_hz = reader.Number(map["rate_hz"], PositiveNumber("Hz")).value_or(sensor.rate_hz);
-  sensor.latency_s = reader.Number(map["latency_s"], NonNegativeNumber("s")).value_or(sensor.latency_s);
+  // bounded: the readings in flight (latency × rate of them) are held in memory (1e5 s once took 2.75 GB)
+  const NumberRule latency{.min = 0, .max = kMaxLatency_s, .expected = "a latency in [0, 10] s (the readings in flight "
+                                                                        "are held in memory; docs/trust.md)"};
+  sensor.latency_s = reader.Number(map["latency_s"], latency).value_or(sensor.latency_s);
   sensor.wave_speed_m_s = reader.Number(map["wave_speed_m_s"], PositiveNumber("m/s")).value_or(sensor.wave_speed_m_s);
   const Field flight = map["flight_time"];
   sensor.flight_time = reader.Bool(flight).value_or(sensor.flight_time);
@@ -426,6 +432,7 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
   const auto items = reader.List(field, "a list of sensors");
   if (!items) return sensors;
   std::map<std::string, std::string> name_origin;  // name -> key path of its first use
+  std::map<std::string, std::string> folder_origin;  // zones/ and echoes/ folder -> the name that has it
   std::vector<Field> sensor_items;                 // each read sensor's item, for ResolveFiring's messages
   for (const Field& item : *items) {
     const auto map = reader.Map(item, SensorKeyNames());
@@ -440,6 +447,14 @@ std::vector<SensorConfig> ReadSensors(YamlReader& reader, const Field& field, bo
           reader.Fail(name, "expected a name of printable UTF-8 text, got " + problem);
         const auto [previous, inserted] = name_origin.emplace(*text, item.path);
         if (!inserted) reader.Fail(name, "duplicate sensor name '" + *text + "' (already used by " + previous->second + ")");
+        // one folder per sensor under zones/ and echoes/, or one sensor's arrays overwrite the other's
+        const std::string folder = SensorFolderName(*text, sensors.size());
+        const auto [other, fresh] = folder_origin.emplace(folder, *text);
+        if (inserted && !fresh) {
+          reader.Fail(name, "sensor '" + *text + "' and sensor '" + other->second + "' would write the same folder '" +
+                                folder + "' under zones/ and echoes/ (a name that is not a plain file name is written "
+                                "as sensor_INDEX); rename one of them");
+        }
       }
     }
     sensors.push_back(std::move(sensor));

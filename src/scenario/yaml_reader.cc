@@ -13,6 +13,7 @@
 #include <cstdio>
 
 #include "core/nearest_key.h"
+#include "core/nesting_scan.h"
 
 namespace proxsim {
 
@@ -126,6 +127,14 @@ void YamlReader::Fail(const Field& field, const std::string& message) {
 }
 
 YAML::Node YamlReader::Parse(const std::string& text) {
+  // yaml-cpp recurses per level and says only "bad file" past its own limit: the depth named first
+  if (const NestingScan scan = ScanYamlNesting(text, kMaxNestingDepth); scan.too_deep_at > 0) {
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(scan.too_deep_at), '\n'));
+    FailAtLine(line, "", "YAML nested deeper than " + std::to_string(kMaxNestingDepth) +
+                             " levels (flow [ and { inside block maps and lists); proxsim refuses such files before "
+                             "parsing them (limit: " + std::to_string(kMaxNestingDepth) + " levels, docs/trust.md)");
+    throw InputError(Problems());
+  }
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& error) {

@@ -18,6 +18,8 @@
 
 #include <string>
 
+#include "core/regular_file.h"
+
 namespace proxsim {
 
 /// Throws InputError naming the file and the limit it passes; see above.
@@ -35,10 +37,5 @@ class MeshIOSystem : public Assimp::DefaultIOSystem {
  private:
   std::string refusal_;
 };
-
-/// Why `path` is not a readable input file (missing, not regular, larger than
-/// `max_bytes`); empty when it is one. Uses stat(), never open(): opening a
-/// FIFO blocks.
-std::string RegularFileProblem(const std::string& path, unsigned long long max_bytes);
 
 }  // namespace proxsim

@@ -150,10 +150,7 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, std::spa
       // returns E(θ)/E(θ_facing) of the light its reflectance would
       const std::size_t ray = static_cast<std::size_t>(i);
       const double energy = PhysicalEchoEnergy(spec, echo);
-      Echo facing = echo;
-      facing.incidence_deg = rays[ray].off_axis_deg;
-      const double facing_energy = PhysicalEchoEnergy(spec, facing);
-      const double reflectance = facing_energy > 0 ? echo.ir_albedo * energy / facing_energy : 0.0;
+      const double reflectance = IncidentReflectance(spec, echo, rays[ray].off_axis_deg);
       if (by_target && echo.distance_m <= spec.max_range_m) {
         if (!(reflectance == ends_reflectance)) ends = ZoneRangeEndsFor(spec, ends_reflectance = reflectance);
         target_range_m = ends.At(corner_weight);

@@ -80,7 +80,7 @@ const std::vector<SensorKey>& SensorKeys() {
      "echoes of one ping closer in range than this merge into one (`echoes: strongest \\| all`)"},
     {"rate_hz", "> 0, Hz", "every sample; a part with a measurement cycle: its limit",
      "the sensor reads at the first run sample of each of its own periods; a part refuses a rate above its datasheet's limit (`hc_sr04`: 16.7 Hz, its 60 ms cycle; `vl53l1x`: 1000 / `timing_budget_ms` Hz, 10 Hz at its default 100 ms; ST multi-zone parts: 60 Hz at 4x4, 15 Hz at 8x8)"},
-    {"latency_s", "≥ 0, s", "0",
+    {"latency_s", "0–10, s", "0",
      "a reading is reported, and seen by a strategy, this much later"},
     {"flight_time", "bool", "false",
      "time of flight only: the echo is received where the moving sensor is when it returns"},

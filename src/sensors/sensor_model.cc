@@ -118,11 +118,20 @@ double ReturnedEnergy(const SensorSpec& spec, const Echo& echo) {
   return spec.type == SensorType::kUltrasonic ? echo.acoustic_reflectivity : echo.ir_albedo;
 }
 
+double IncidentReflectance(const SensorSpec& spec, const Echo& echo, double off_axis_deg) {
+  Echo facing = echo;
+  facing.incidence_deg = off_axis_deg;
+  const double facing_energy = PhysicalEchoEnergy(spec, facing);
+  return facing_energy > 0 ? echo.ir_albedo * PhysicalEchoEnergy(spec, echo) / facing_energy : 0.0;
+}
+
 ReadingStatus EchoStatus(const SensorSpec& spec, const Echo& echo, double gain) {
-  // an optical part's range shrinks with a darker target and brighter light (range_table.h)
+  // an optical part's range shrinks with a darker target (one met at a
+  // grazing angle is darker: IncidentReflectance) and brighter light (range_table.h)
   const bool by_target = !spec.range_table.empty() && echo.distance_m <= spec.max_range_m;
   return EchoStatusWithin(spec, echo, gain,
-                          by_target ? ReflectanceMaxRange_m(spec, echo.ir_albedo) : std::numeric_limits<double>::infinity());
+                          by_target ? ReflectanceMaxRange_m(spec, IncidentReflectance(spec, echo))
+                                    : std::numeric_limits<double>::infinity());
 }
 
 ReadingStatus EchoStatusWithin(const SensorSpec& spec, const Echo& echo, double gain, double target_range_m) {

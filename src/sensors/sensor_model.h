@@ -130,6 +130,15 @@ ReadingStatus EchoStatusWithin(const SensorSpec& spec, const Echo& echo, double 
 /// echo's incidence (see the top of this file); r per the sensor's modality.
 double PhysicalEchoEnergy(const SensorSpec& spec, const Echo& echo);
 
+/// The reflectance a part whose range depends on the target sees in an echo
+/// met at incidence θ by a ray φ = `off_axis_deg` off its axis: its range
+/// tables are a datasheet's, measured on a flat target facing the part,
+/// which that ray meets at φ; relative to it the surface returns E(θ)/E(φ)
+/// of the light (E the physical echo model's energy: ρ·cos θ for a matte
+/// surface), so ρ·E(θ)/E(φ) — a grazing floor is a dark target. 0 when the
+/// facing target would return nothing.
+double IncidentReflectance(const SensorSpec& spec, const Echo& echo, double off_axis_deg = 0.0);
+
 /// What one ray's echo returns, the measure of an echo's signal (several
 /// echoes, a zone's targets): E of the physical model, or else the
 /// surface's reflectivity per the sensor's modality.

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <set>
 
 #include <yaml-cpp/yaml.h>
 
@@ -382,14 +383,18 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   // answer's failures (test worlds, each set's chosen variants)
   std::string failures = "set,strategy,world,seed,outcome,outcome_t_s,world_file,command,viewer,tuned\n";
   std::size_t written = 0;
+  std::set<std::string> stems;  // one file per failure: `x y` and `x_y` once shared one
   for (std::size_t job : test_jobs) {
     const WorldFamily& family = study.families[study.jobs[job].family];
     for (std::size_t s = 0; s < n_sets; ++s) {
       for (std::size_t g = 0; g < n_strategies; ++g) {
         const OutcomeRun& run = run_of(job, s, g);
         if (!chosen(s, g) || IsSuccess(run, results[job])) continue;
-        const std::string stem = FileSafe(family.name) + "_seed" + std::to_string(study.jobs[job].seed) + "_set" +
-                                 std::to_string(s + 1) + "_" + FileSafe(study.strategies[g].label);
+        const std::string safe_stem = FileSafe(family.name) + "_seed" + std::to_string(study.jobs[job].seed) +
+                                      "_set" + std::to_string(s + 1) + "_" + FileSafe(study.strategies[g].label);
+        // names that FileSafe maps alike get _2, _3, ...: the mapping stays one to one
+        std::string stem = safe_stem;
+        for (int copy = 2; !stems.insert(stem).second; ++copy) stem = safe_stem + "_" + std::to_string(copy);
         std::string file, command, viewer;
         // the blind baseline is meant to fail: its failures are listed, not replayed
         if (written < study.replay_files && study.sets[s].baseline != "blind") {
@@ -400,11 +405,12 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
           RebaseScenarioPaths(replay, fs::path(family.source).parent_path(), out / "failures");
           YAML::Emitter emitted;
           emitted << replay;
+          // the user's names quoted and escaped (JSON strings): a newline in one cannot start a key of the file
           const std::string text =
-              "# " + run.outcome + " at t = " + Format(run.outcome_t_s) + " s: set '" + study.sets[s].name +
-              "', strategy " + study.strategies[g].label + ", world " + family.name + " seed " +
-              std::to_string(study.jobs[job].seed) + " (written by proxsim study " + study.source + ")\n" +
-              emitted.c_str() + "\n";
+              "# " + run.outcome + " at t = " + Format(run.outcome_t_s) + " s: set " + QuotedForComment(study.sets[s].name) +
+              ", strategy " + QuotedForComment(study.strategies[g].label) + ", world " + QuotedForComment(family.name) +
+              " seed " + std::to_string(study.jobs[job].seed) + " (written by proxsim study " +
+              QuotedForComment(study.source) + ")\n" + emitted.c_str() + "\n";
           WriteFileAtomically((out / "failures" / (stem + ".yaml")).string(), text);
           // relative to the study's folder: the files are the same wherever the study was written
           file = "failures/" + stem + ".yaml";

@@ -19,10 +19,19 @@ constexpr double kRunNaN = std::numeric_limits<double>::quiet_NaN();
 
 [[noreturn]] void Bad(const std::string& what) { throw InputError("journal line: " + what); }
 
-double NumberOrNaN(const json& value, const std::string& where) {
+// Journal numbers are bounded as a run can make them: times and distances in
+// [0, kMaxJournalValue], a clearance within ±kMaxJournalValue (a line saying
+// reached_goal at t = -1e308 was once taken as a run's result).
+constexpr double kMaxJournalValue = 1e9;
+
+double NumberOrNaN(const json& value, const std::string& where, const char* name, double min = 0) {
   if (value.is_null()) return kRunNaN;
-  if (!value.is_number()) Bad(where + ": expected a number, got " + value.dump());
-  return value.get<double>();
+  if (!value.is_number()) Bad(where + ": " + name + ": expected a number, got " + value.dump());
+  const double number = value.get<double>();
+  if (!(number >= min && number <= kMaxJournalValue)) {
+    Bad(where + ": " + name + ": expected a number in [" + (min < 0 ? "-1e9" : "0") + ", 1e9], got " + value.dump());
+  }
+  return number;
 }
 
 // What identifies an outcome study's journal: its sets, strategies and worlds.
@@ -119,6 +128,7 @@ OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const 
   const auto runs = metrics.find("runs");
   if (way == metrics.end() || !way->is_boolean()) Bad(where + ": expected \"way\": true or false");
   if (hazard == metrics.end() || !hazard->is_number()) Bad(where + ": expected \"hazard_m\": a number");
+  NumberOrNaN(*hazard, where, "hazard_m");
   const auto window = metrics.find("window_m");
   if (window == metrics.end() || !window->is_number() || !std::isfinite(window->get<double>()) ||
       window->get<double>() < 0)
@@ -135,8 +145,9 @@ OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const 
         std::ranges::find(Simulation::kOutcomeNames, r[0].get<std::string>()) == Simulation::kOutcomeNames.end()) {
       Bad(where + ": a run is not [outcome, outcome_t_s, walked_m, straight_m, min_clearance_m]: " + r.dump());
     }
-    job.runs.push_back({r[0].get<std::string>(), NumberOrNaN(r[1], where), NumberOrNaN(r[2], where),
-                        NumberOrNaN(r[3], where), NumberOrNaN(r[4], where)});
+    job.runs.push_back({r[0].get<std::string>(), NumberOrNaN(r[1], where, "outcome_t_s"),
+                        NumberOrNaN(r[2], where, "walked_m"), NumberOrNaN(r[3], where, "straight_m"),
+                        NumberOrNaN(r[4], where, "min_clearance_m", -kMaxJournalValue)});
   }
   return job;
 }

@@ -1,20 +1,24 @@
 #include "study/study_jobs.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "core/regular_file.h"
 
 namespace proxsim {
 
@@ -118,8 +122,15 @@ std::map<std::size_t, std::string> ReadJournal(const std::string& path, const js
                                                const std::function<std::size_t(const json&)>& check,
                                                const std::optional<StudySlice>& slice) {
   std::map<std::size_t, std::string> lines;
+  // a FIFO blocks its reader for ever, /dev/zero is read until memory runs out: stat() first, never open()
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return lines;  // nothing to resume: start afresh
+  if (const std::string problem = RegularFileProblem(path, std::numeric_limits<unsigned long long>::max());
+      !problem.empty()) {
+    throw InputError(problem + "; the study journal must be the regular file a study wrote");
+  }
   std::ifstream in(path);
-  if (!in) return lines;  // nothing to resume: start afresh
+  if (!in) return lines;
   std::string line;
   bool first = true;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
@@ -209,7 +220,17 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
     if (!journal.done(job) && (!slice || slice->Holds(job))) todo.push_back(job);
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> finished{journal.done_count()};
+  // after a failure no job is handed out: every thread and rank stops at its next request
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  std::atomic<bool> failed{false};
+  const auto fail = [&](std::exception_ptr error) {
+    std::lock_guard lock(failure_mutex);
+    if (!failure) failure = std::move(error);
+    failed = true;
+  };
   const auto take = [&]() -> long {
+    if (failed) return -1;
     const std::size_t i = next.fetch_add(1);
     return i < todo.size() ? static_cast<long>(todo[i]) : -1;
   };
@@ -222,23 +243,26 @@ std::map<std::size_t, json> RunJobs(const JobSet& set, const StudyOptions& optio
   std::thread dispatcher;
   if (mpi.size() > 1) {
     dispatcher = std::thread([&] {
-      mpi.ServeWorkers(take, [&](const std::string& message) {
-        // a worker's message has a journal line's form: checked the same way
-        const json line = json::parse(message);
-        record(set.check(line), line.at("metrics"));
-      });
+      // a failure here (a worker's bad message, a full disk) ends the study with its message, never
+      // std::terminate: the worker ranks wait in MPI_Recv until the CLI's MPI_Abort ends them
+      try {
+        mpi.ServeWorkers(take, [&](const std::string& message) {
+          // a worker's message has a journal line's form: checked the same way
+          const json line = json::parse(message);
+          record(set.check(line), line.at("metrics"));
+        });
+      } catch (...) {
+        fail(std::current_exception());
+      }
     });
   }
   std::vector<std::thread> pool;
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
   for (const auto& worker : set.workers) {
     pool.emplace_back([&, w = &worker] {
       try {
         for (long job = take(); job >= 0; job = take()) record(job, (*w)(static_cast<std::size_t>(job)));
       } catch (...) {
-        std::lock_guard lock(failure_mutex);
-        failure = std::current_exception();
+        fail(std::current_exception());
       }
     });
   }

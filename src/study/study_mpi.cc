@@ -1,6 +1,9 @@
 #include "study/study_mpi.h"
 
+#include <atomic>
 #include <chrono>
+#include <cstdio>
+#include <exception>
 #include <cstdlib>
 #include <stdexcept>
 #include <thread>
@@ -14,9 +17,12 @@ namespace proxsim {
 namespace {
 constexpr int kTagResult = 1;  // worker → rank 0: the last result (maybe empty), asking for the next job
 constexpr int kTagJob = 2;     // rank 0 → worker: a job index, -1 for none
+
+// set when a StudyMpi of several ranks was destroyed by an exception: MPI is left running for the abort
+std::atomic<bool> g_failed_with_mpi_running{false};
 }  // namespace
 
-StudyMpi::StudyMpi() {
+StudyMpi::StudyMpi() : exceptions_at_start_(std::uncaught_exceptions()) {
 #ifdef PROXSIM_HAVE_MPI
   // launched by mpirun with several ranks, or by a PMI launcher (srun)
   const char* world_size = std::getenv("OMPI_COMM_WORLD_SIZE");
@@ -35,7 +41,22 @@ StudyMpi::StudyMpi() {
 
 StudyMpi::~StudyMpi() {
 #ifdef PROXSIM_HAVE_MPI
-  if (started_) MPI_Finalize();
+  if (!started_) return;
+  // left by a failure: the other ranks may wait for this one; the CLI aborts the job once the message is out
+  if (size_ > 1 && std::uncaught_exceptions() > exceptions_at_start_) {
+    g_failed_with_mpi_running = true;
+    return;
+  }
+  MPI_Finalize();
+#endif
+}
+
+void AbortMpiJobAfterFailure([[maybe_unused]] int exit_code) {
+#ifdef PROXSIM_HAVE_MPI
+  if (!g_failed_with_mpi_running) return;
+  std::fflush(stdout);
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, exit_code);
 #endif
 }
 

@@ -4,6 +4,12 @@
 // mpirun with more than one rank (OMPI_COMM_WORLD_SIZE) or by a PMI launcher
 // such as srun (PMIX_RANK, PMI_RANK); otherwise, and in a build without MPI,
 // this is a single process of rank 0.
+//
+// A failure on any rank (an input error, a locked --out, a full disk) must
+// end every rank: MPI_Finalize after a failure would wait for ranks that wait
+// in MPI_Recv for it, for ever. So a StudyMpi left by an exception does not
+// finalize; the CLI prints the message, then AbortMpiJobAfterFailure ends the
+// whole job with MPI_Abort and the exit code.
 #pragma once
 
 #include <functional>
@@ -32,6 +38,12 @@ class StudyMpi {
   int rank_ = 0;
   int size_ = 1;
   bool started_ = false;
+  int exceptions_at_start_ = 0;  ///< std::uncaught_exceptions() when made: more at destruction means a failure
 };
+
+/// After a failure's message is printed: when a study's MPI job of several
+/// ranks was left by that failure, ends every rank with MPI_Abort(exit_code)
+/// (never returns); otherwise does nothing.
+void AbortMpiJobAfterFailure(int exit_code);
 
 }  // namespace proxsim

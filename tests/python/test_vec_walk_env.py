@@ -100,7 +100,7 @@ def test_bad_arguments_are_named(short_walk):
     vec.reset()
     with pytest.raises(ValueError, match=r"shape \(2, 2\)"):
         vec.step(np.zeros((3, 2)))
-    with pytest.raises(ValueError, match=r"actions\[1\] is not finite"):
+    with pytest.raises(ValueError, match=r"actions\[1\]\[0\] \(walk\) is nan: expected a finite number"):
         vec.step(np.array([[1.0, 0.6], [np.nan, 0.6]]))
     with pytest.raises(ValueError, match="expected 2 seeds"):
         vec.reset(seed=[1, 2, 3])
