@@ -132,6 +132,13 @@ TEST(StairsExamples, StairsWalkWithoutItsStrategyFallsIntoTheGap) {
   EXPECT_NE(run.Detail("fall").find("a gap of 0.60 m"), std::string::npos) << run.Detail("fall");
   EXPECT_EQ(run.summary["robot"]["outcome"], "fell");
   EXPECT_NE(run.cli_output.find("fell at t = "), std::string::npos) << run.cli_output;
+  // a step the legs could not take has no landing, and still a place: the
+  // pelvis's point on the ground it stood on (it once was null)
+  const auto& p_W = run.summary["robot"]["fall"]["p_W"];
+  ASSERT_TRUE(p_W.is_array()) << run.summary["robot"]["fall"].dump();
+  EXPECT_NEAR(p_W[0].get<double>(), run.Last("pelvis", "x"), 0.05);
+  EXPECT_NEAR(p_W[1].get<double>(), run.Last("pelvis", "y"), 0.05);
+  EXPECT_LT(p_W[2].get<double>(), run.Last("pelvis", "z") - 0.5);  // on the ground, not at the pelvis
 }
 
 TEST(StairsExamples, StairsWalkWithoutItsStrategyRefusingUnsafeStepsStandsBeforeTheGap) {

@@ -341,7 +341,10 @@ void Simulation::UpdateRobot(double clearance_m) {
 void Simulation::Fall(const std::string& reason, const std::optional<Vec3>& p_W) {
   if (outcome_.ended) return;
   outcome_.fell = outcome_.ended = true;
-  outcome_.fall_p_W = p_W;
+  // where: the gait's place for it (the foothold it missed), or else the
+  // pelvis's point on the ground it stood on (a step the legs could not take)
+  const Vec3 p_WP = state_.X_WP.translation();
+  outcome_.fall_p_W = p_W ? *p_W : Vec3(p_WP.x(), p_WP.y(), knowledge_.ground_z_m);
   outcome_.end_t_s = frame_.t_s;
   outcome_.end_detail = "fell: " + reason;
   event_log_->Log("fall", outcome_.end_detail);

@@ -142,7 +142,7 @@ class Simulation {
     std::vector<Collision> collisions;
     bool collided = false;  ///< a contact ended the episode (on_collision: stop)
     bool fell = false;      ///< an unsafe step was taken (unsafe_steps: fall), or a foot landed where it cannot stand (footholds: map)
-    std::optional<Vec3> fall_p_W;  ///< the foothold the foot missed (the middle of its sole as planned), when a landing was felt
+    std::optional<Vec3> fall_p_W;  ///< where it fell: the foothold the foot missed (the middle of its sole as planned), or the pelvis's point on the ground; empty unless it fell
     bool ended = false;     ///< the episode ended before its last sample (collided or fell)
     double end_t_s = 0;
     std::string end_detail;
