@@ -5,6 +5,8 @@
 // and each mistake reported at its line with its key path.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -13,6 +15,7 @@
 #include "cli_helpers.h"
 #include "core/input_error.h"
 #include "scenario/scenario.h"
+#include "sim/run_summary.h"
 
 namespace proxsim {
 namespace {
@@ -84,6 +87,63 @@ robot:
   EXPECT_FALSE(r.gait.derive_stride_from_legs);
   EXPECT_TRUE(r.gait.derive_period_from_legs);
   EXPECT_DOUBLE_EQ(r.gait.stride_m, 0.5);
+}
+
+// summary.json's `inputs.robot` echoes every robot key the scenario gave,
+// the ones that change an outcome included (issue 37: `unsafe_steps`,
+// `footholds`, `on_collision` and eight more were missing): a key given here
+// that the echo leaves out, or echoes with another value, fails.
+TEST_F(ScenarioRobotTest, TheSummaryEchoesEveryRobotKeyAScenarioGave) {
+  const Scenario s = LoadScenarioText(R"(proxsim: 1
+scene:
+  objects: [{name: crate, box: {size_m: [0.6, 0.6, 0.1]}, pose: {xyz_m: [0, 0, 0.05]}}]
+robot:
+  model: robot.urdf
+  geometry: collision
+  geom_group: 3
+  package_paths: [/tmp]
+  legs:
+    left:  {hip: lh, knee: lk, ankle: la, foot: lf, ankle_zero_deg: 10}
+    right: {hip: rh, knee: rk, ankle: ra, foot: rf}
+  joints_deg: {shoulder: 10}
+  on_collision: continue
+  start: {xyz_m: [0, 0, 0.1], yaw_deg: 5, on: crate}
+  gait: {stride_m: 0.5, period_s: 1.1, max_step_m: 0.15, unsafe_steps: refuse, footholds: map,
+         touchdown_tolerance_m: 0.03, crouch_knee_deg: 20}
+  path: {waypoints_m: [[2, 0]]}
+  stop_distance_m: 0.3
+)",
+                                      Source());
+  const nlohmann::json robot = InputsJson(s)["robot"];
+  EXPECT_EQ(robot["geometry"], "collision");
+  EXPECT_EQ(robot["geom_group"], 3);
+  EXPECT_EQ(robot["package_paths"], nlohmann::json::array({"/tmp"}));
+  EXPECT_EQ(robot["legs"]["left"]["hip"], "lh");
+  EXPECT_EQ(robot["legs"]["right"]["foot"], "rf");
+  EXPECT_NEAR(robot["legs"]["left"]["ankle_zero_deg"].get<double>(), 10.0, 1e-12);
+  EXPECT_NEAR(robot["joints_deg"]["shoulder"].get<double>(), 10.0, 1e-12);
+  EXPECT_EQ(robot["on_collision"], "continue");
+  EXPECT_EQ(robot["start"]["on"], "crate");
+  EXPECT_NEAR(robot["start"]["yaw_deg"].get<double>(), 5.0, 1e-12);
+  const nlohmann::json& gait = robot["gait"];
+  EXPECT_EQ(gait["stride_m"], 0.5);
+  EXPECT_EQ(gait["period_s"], 1.1);
+  EXPECT_EQ(gait["max_step_m"], 0.15);
+  EXPECT_EQ(gait["unsafe_steps"], "refuse");
+  EXPECT_EQ(gait["footholds"], "map");
+  EXPECT_EQ(gait["touchdown_tolerance_m"], 0.03);
+  EXPECT_NEAR(gait["crouch_knee_deg"].get<double>(), 20.0, 1e-12);
+  EXPECT_EQ(robot["path"]["waypoints_m"], nlohmann::json::parse("[[2.0, 0.0]]"));
+  EXPECT_EQ(robot["strategy"]["name"], "stop");
+  EXPECT_EQ(robot["strategy"]["stop_distance_m"], 0.3);
+  // the defaults are echoed as such, not left out
+  const nlohmann::json plain = InputsJson(LoadScenarioText("proxsim: 1\nrobot: {model: robot.urdf}\n", Source()))["robot"];
+  EXPECT_EQ(plain["on_collision"], "stop");
+  EXPECT_EQ(plain["gait"]["unsafe_steps"], "fall");
+  EXPECT_EQ(plain["gait"]["footholds"], "truth");
+  EXPECT_TRUE(plain["gait"]["max_step_m"].is_null());  // from the legs
+  EXPECT_TRUE(plain["legs"].is_null());                // found by the gait
+  EXPECT_TRUE(plain["start"]["on"].is_null());
 }
 
 TEST_F(ScenarioRobotTest, DefaultsVisualGeometryBuiltinLegsAndAGaitScaledToTheLegs) {

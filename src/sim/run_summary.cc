@@ -70,10 +70,33 @@ nlohmann::json InputsJson(const Scenario& scenario) {
     const RobotConfig& r = *scenario.robot;
     nlohmann::json waypoints = nlohmann::json::array();
     for (const Vec2& p : r.waypoints_m) waypoints.push_back({p.x(), p.y()});
+    // the leg map as given (null: found by the gait), and the joints held at a fixed angle
+    nlohmann::json legs = nullptr;
+    if (r.legs) {
+      legs = nlohmann::json::object();
+      for (int side = 0; side < 2; ++side) {
+        const LegNames& leg = (*r.legs)[static_cast<std::size_t>(side)];
+        legs[side == 0 ? "left" : "right"] = {{"hip", leg.hip}, {"knee", leg.knee}, {"ankle", leg.ankle},
+                                              {"foot", leg.foot}, {"ankle_zero_deg", RadToDeg(leg.ankle_zero_rad)}};
+      }
+    }
+    nlohmann::json joints_deg = nlohmann::json::object();
+    for (const auto& [joint, q_rad] : r.joints_rad) joints_deg[joint] = RadToDeg(q_rad);
     robot = {{"model", r.model},
+             {"geometry", r.geometry == LinkGeometryKind::kCollision ? "collision" : "visual"},
+             {"geom_group", NullUnless(r.geom_group >= 0, r.geom_group)},
+             {"package_paths", r.package_paths},
+             {"legs", legs},
+             {"joints_deg", joints_deg},
+             {"on_collision", r.on_collision == OnCollision::kContinue ? "continue" : "stop"},
              {"start", {{"xyz_m", {r.start_xyz_m.x(), r.start_xyz_m.y(), r.start_xyz_m.z()}},
-                        {"yaw_deg", RadToDeg(r.start_yaw_rad)}}},
+                        {"yaw_deg", RadToDeg(r.start_yaw_rad)},
+                        {"on", NullUnless(!r.start_on.empty(), r.start_on)}}},
              {"gait", {{"stride_m", NullUnless(!r.gait.derive_stride_from_legs, r.gait.stride_m)}, {"period_s", NullUnless(!r.gait.derive_period_from_legs, r.gait.period_s)},
+                       {"max_step_m", NullUnless(r.gait.max_step_m > 0, r.gait.max_step_m)},  // null: from the legs
+                       {"unsafe_steps", r.unsafe_steps == UnsafeSteps::kRefuse ? "refuse" : "fall"},
+                       {"footholds", r.footholds == Footholds::kMap ? "map" : "truth"},
+                       {"touchdown_tolerance_m", r.gait.touchdown_tolerance_m},
                        {"keyframe", NullUnless(!r.gait.keyframe.empty(), r.gait.keyframe)},
                        {"crouch_knee_deg", NullUnless(r.gait.crouch_knee_rad.has_value(), RadToDeg(r.gait.crouch_knee_rad.value_or(0.0)))}}},
              {"path", {{"waypoints_m", waypoints}}},
