@@ -126,7 +126,7 @@ TEST(MultizoneTest, EachZoneOfAnEightByEightReadsItsSignalWeightedPerpendicularD
 // ST's parts report the perpendicular distance: a wall facing a VL53L5CX
 // 1.2 m ahead reads 1.2 m in every zone (within its millimetre resolution),
 // where a radial distance would read 1.2 / cos of each zone's angle (up to
-// 1.08 times more in the corners).
+// 1.12 times more in the corner zones, whose axes lie 27.1° off).
 TEST(MultizoneTest, AWallFacingAnStPartReadsTheSameInEveryZone) {
   const fs::path out = RunScenarioYaml("multizone_facing_wall", R"(proxsim: 1
 duration_s: 0.1
