@@ -18,6 +18,7 @@
 #include "core/parallel.h"
 #include "object_lock.h"
 #include "scenario/scenario.h"
+#include "sim/make_locomotion.h"
 #include "sim/simulation.h"
 
 namespace py = pybind11;
@@ -76,12 +77,18 @@ class VecWalkCore {
     sensor_count_ = static_cast<int>(scenario.sensors.size());
     envs_.resize(static_cast<std::size_t>(num_envs));
     const std::uint64_t first_seed = scenario.seed;
-    // the first alone (a bad scenario fails once, with its message), the others at once
+    // the first alone (a bad scenario fails once, with its message), the
+    // others at once, each walking a copy of the first's robot: the model
+    // (its URDF or MJCF and its meshes) is loaded once, not once per environment
     envs_[0].sim = std::make_unique<Simulation>(scenario, 1);
+    const RobotModel& model = envs_[0].sim->robot()->model();
     {
       py::gil_scoped_release release;
       runner_.For(envs_.size() - 1, 1, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin + 1; i < end + 1; ++i) envs_[i].sim = std::make_unique<Simulation>(scenario, 1);
+        for (std::size_t i = begin + 1; i < end + 1; ++i) {
+          envs_[i].sim = std::make_unique<Simulation>(
+              scenario, 1, MakeLocomotion(*scenario.robot, scenario.rate_hz, RobotModel(model)), nullptr);
+        }
       });
     }
     for (std::size_t i = 0; i < envs_.size(); ++i) envs_[i].next_seed = first_seed + i;

@@ -40,7 +40,10 @@ RobotModel LoadRobotModel(const RobotConfig& config) {
 }
 
 std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config, double rate_hz) {
-  RobotModel model = LoadRobotModel(config);
+  return MakeLocomotion(config, rate_hz, LoadRobotModel(config));
+}
+
+std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config, double rate_hz, RobotModel model) {
   if (config.locomotion == LocomotionSource::kExternal) {
     return std::make_unique<ExternalDrive>(std::move(model), config, rate_hz);
   }

@@ -19,4 +19,8 @@ RobotModel LoadRobotModel(const RobotConfig& config);
 /// Throws InputError on a bad robot, gait or trajectory.
 std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config, double rate_hz);
 
+/// The same with the robot's model given (one loaded already: several
+/// simulations of one robot share its load, e.g. VecWalkEnv's environments).
+std::unique_ptr<Locomotion> MakeLocomotion(const RobotConfig& config, double rate_hz, RobotModel model);
+
 }  // namespace proxsim
