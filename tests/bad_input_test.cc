@@ -197,8 +197,9 @@ TEST(BadInputTest, SensorInsideItsOwnLinkIsAWarning) {
             std::string::npos)
       << result.output;
   EXPECT_EQ(result.output.find("sensor 'mounted' is inside"), std::string::npos) << result.output;
+  // (its distance is a ray cast's, not compared: Embree's code path differs by CPU)
   EXPECT_NE(result.output.find("sensor 'mounted' saw only the robot's own body: all 1 of its readings were `self`, the "
-                               "nearest 'right_tibia' at 0.00 mm"),
+                               "nearest 'right_tibia' at"),
             std::string::npos)
       << result.output;
   EXPECT_NE(testing::ReadFile(out / "summary.json").find("is inside its own link 'left_tibia'"), std::string::npos);

@@ -524,21 +524,16 @@ class PySimulation {
     // what each sensor reports beside its reading, by its name, one shape for
     // every part (sensors/measurement.h), and the same as a multi-zone part's
     // (zones, targets) grid and a beam's (4,) echoes
+    // (a beam with several echoes has its entry even before it heard one)
     py::dict measurements, zones, echoes;
     for (std::size_t i = 0; i < n; ++i) {
       const SensorOutput& s = obs.sensors[i];
-      if (s.measurements.empty()) continue;
       const SensorSpec& spec = sim_->scenario().sensors[i].spec;
       const py::str name(sim_->scenario().sensors[i].name);
+      if (spec.echoes != EchoSelection::kFirst) echoes[name] = EchoesDict(s.measurements);
+      if (s.measurements.empty()) continue;
       measurements[name] = MeasurementsDict(s.measurements);
       if (spec.zones) zones[name] = ZonesDict(s.measurements, ZoneCount(*spec.zones), spec.zones->targets);
-      if (spec.echoes != EchoSelection::kFirst) echoes[name] = EchoesDict(s.measurements);
-    }
-    // a beam with several echoes that has heard none yet still has its entry
-    for (std::size_t i = 0; i < n; ++i) {
-      const py::str name(sim_->scenario().sensors[i].name);
-      if (sim_->scenario().sensors[i].spec.echoes != EchoSelection::kFirst && !echoes.contains(name))
-        echoes[name] = EchoesDict(obs.sensors[i].measurements);
     }
     readings[k.measurements] = measurements;
     readings[k.zones] = zones;

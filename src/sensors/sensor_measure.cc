@@ -14,7 +14,7 @@ void MeasureZoneGrid(const SensorSpec& spec, const SensorPlacement& at, std::spa
   MeasureZones(spec, echoes, rays, draw, zones);
   const auto per_zone = static_cast<std::size_t>(spec.zones->targets);
   const ZoneTarget* nearest = nullptr;
-  std::size_t nearest_zone = 0;
+  Measurement nearest_measured;  // its measurement: the zone's axis and how its distance lies along it
   for (std::size_t zone = 0; zone < zones.target_count.size(); ++zone) {
     const ZoneTarget* targets = &zones.targets[zone * per_zone];
     Measurement m{.p_WS = at.p_WS, .dir_W = at.zone_dir_W[zone], .group = static_cast<std::int32_t>(zone)};
@@ -40,7 +40,7 @@ void MeasureZoneGrid(const SensorSpec& spec, const SensorPlacement& at, std::spa
       out.truth.push_back(m);
       if (nearest == nullptr || target.d_m < nearest->d_m) {
         nearest = &target;
-        nearest_zone = zone;
+        nearest_measured = out.measured.back();
       }
     }
   }
@@ -49,8 +49,8 @@ void MeasureZoneGrid(const SensorSpec& spec, const SensorPlacement& at, std::spa
     out.headline.reading.status = ReadingStatus::kOk;
     out.headline.reading.d_m = nearest->d_m;
     // the reading's axis is its zone's, so that its point is the zone's point
-    out.headline_dir_W = at.zone_dir_W[nearest_zone];
-    out.headline_cos_to_axis = spec.zones->perpendicular ? at.zone_dir_W[nearest_zone].dot(at.dir_W) : 1.0;
+    out.headline_dir_W = nearest_measured.dir_W;
+    out.headline_cos_to_axis = nearest_measured.cos_to_axis;
     return;
   }
   // no zone has a target: the reading says why, as a beam of all its rays would
