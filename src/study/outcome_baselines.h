@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <yaml-cpp/yaml.h>
+
 #include "study/outcome_config.h"
 
 namespace proxsim {
@@ -36,6 +38,17 @@ inline constexpr double kOracleRange_m = 4;
 /// The baseline sets by name ("blind", "oracle"), as SensorSets (their
 /// `baseline` set, no price): what LoadOutcomeStudyFile appends to the sets.
 SensorSet BaselineSet(const std::string& name);
+
+/// How far around the robot the oracle's map holds the scene's truth.
+inline constexpr double kOracleReach_m = 3;
+
+/// Makes a run's scenario the oracle's (its sensors are already the fan):
+/// its map filled from the scene's truth within kOracleReach_m of the robot
+/// (map.truth_within_m; the fan feeds the readings-mode strategies, not the
+/// map), and, where the legs plan on the robot's map (gait.footholds: map),
+/// legs on the true ground that stand before a step they cannot take — what
+/// legs planning on a perfect map do.
+void GiveOraclePerception(YAML::Node& run);
 
 /// Whether `name` is a baseline's.
 bool IsBaselineName(const std::string& name);

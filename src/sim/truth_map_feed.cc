@@ -1,0 +1,93 @@
+#include "sim/truth_map_feed.h"
+
+#include <cmath>
+
+#include "sim/truth_field.h"
+
+namespace proxsim {
+
+namespace {
+
+// the height variance of a true column: exact, but not zero (the map's fusion divides by it)
+constexpr double kTrueColumnVariance_m2 = 1e-8;
+
+}  // namespace
+
+TruthMapFeed::TruthMapFeed(double reach_m, double resolution_m) : reach_m_(reach_m), resolution_m_(resolution_m) {}
+
+void TruthMapFeed::Reset() {
+  next_feed_t_s_ = 0;
+  cast_.clear();
+  moving_before_.clear();
+  reach_before_W_.reset();
+}
+
+void TruthMapFeed::AddDisc(const Vec2& p_W, double radius_m) {
+  const double r = resolution_m_;
+  const auto lo = [r](double v) { return static_cast<std::int32_t>(std::floor(v / r)); };
+  for (std::int32_t iy = lo(p_W.y() - radius_m); iy <= lo(p_W.y() + radius_m); ++iy) {
+    for (std::int32_t ix = lo(p_W.x() - radius_m); ix <= lo(p_W.x() + radius_m); ++ix) {
+      const Vec2 centre((ix + 0.5) * r, (iy + 0.5) * r);
+      if ((centre - p_W).squaredNorm() > radius_m * radius_m) continue;
+      if (queued_.insert(Key(ix, iy)).second) due_xy_W_.push_back(centre);
+    }
+  }
+}
+
+void TruthMapFeed::AddReach(const Vec2& p_W, const Vec2& heading_W) {
+  const double r = resolution_m_;
+  const auto lo = [r](double v) { return static_cast<std::int32_t>(std::floor(v / r)); };
+  for (std::int32_t iy = lo(p_W.y() - reach_m_); iy <= lo(p_W.y() + reach_m_); ++iy) {
+    for (std::int32_t ix = lo(p_W.x() - reach_m_); ix <= lo(p_W.x() + reach_m_); ++ix) {
+      const Vec2 centre((ix + 0.5) * r, (iy + 0.5) * r);
+      if (!InReach(centre, p_W, heading_W)) continue;
+      // (the reach at the last feed was cast whole: only what is new is looked up)
+      if (reach_before_W_ && InReach(centre, reach_before_W_->first, reach_before_W_->second)) continue;
+      const std::int64_t key = Key(ix, iy);
+      if (!cast_.insert(key).second) continue;
+      if (queued_.insert(key).second) due_xy_W_.push_back(centre);
+    }
+  }
+  reach_before_W_ = {p_W, heading_W};
+}
+
+const std::vector<RayEvidence>& TruthMapFeed::Columns(const World& world, const Vec2& p_W_pelvis,
+                                                      const Vec2& heading_W, double ceiling_z_m, double t_s) {
+  columns_.clear();
+  if (t_s + 1e-9 < next_feed_t_s_) return columns_;
+  next_feed_t_s_ = t_s + 1.0 / kTruthFeedRate_hz;
+  queued_.clear();
+  due_xy_W_.clear();
+  // moving things, where they were and where they are: cast again (a cell
+  // also within reach for the first time is then marked cast below)
+  const std::vector<std::pair<Vec2, double>> moving = world.MovingFootprints_W();
+  for (const auto& [p_W, radius_m] : moving_before_) AddDisc(p_W, radius_m + resolution_m_);
+  for (const auto& [p_W, radius_m] : moving) AddDisc(p_W, radius_m + resolution_m_);
+  moving_before_ = moving;
+  AddReach(p_W_pelvis, heading_W);
+  if (due_xy_W_.empty()) return columns_;
+
+  const std::vector<float> heights = TrueHeightsAt(world.caster(), due_xy_W_, ceiling_z_m, true);
+  columns_.reserve(due_xy_W_.size());
+  for (std::size_t i = 0; i < due_xy_W_.size(); ++i) {
+    RayEvidence column;
+    column.p_WS = Vec3(due_xy_W_[i].x(), due_xy_W_[i].y(), ceiling_z_m);
+    column.dir_W = -Vec3::UnitZ();
+    column.bounds_height = true;
+    column.proves_empty = true;
+    if (std::isnan(heights[i])) {
+      // nothing below: the column is empty as deep as the truth looks
+      column.d_m = kTruthDepth_m;
+      column.free_end_m = kTruthDepth_m;
+    } else {
+      column.detected = true;
+      column.d_m = std::max(0.0, ceiling_z_m - heights[i]);
+      column.variance_z_m2 = kTrueColumnVariance_m2;
+      column.free_end_m = column.d_m;
+    }
+    columns_.push_back(column);
+  }
+  return columns_;
+}
+
+}  // namespace proxsim
