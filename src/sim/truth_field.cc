@@ -20,9 +20,11 @@ std::vector<float> TrueHeightsAt(const RayCaster& caster, std::span<const Vec2> 
   caster.Cast(up_rays, up_hits);
   for (std::size_t i = 0; i < n; ++i) {
     // the ceiling inside a solid: looking up, the first surface faces up
-    // (its outside); the column is full to the ceiling
+    // (its outside), or looking down, the first faces down (its underside,
+    // seen from within); the column is full to the ceiling
     const Hit& up = up_hits[i];
-    if (up.is_hit() && up.normal_W.z() > 0) {
+    const Hit& down = hits[i];
+    if ((up.is_hit() && up.normal_W.z() > 0) || (down.is_hit() && down.normal_W.z() < 0)) {
       heights[i] = ceiling;
       continue;
     }

@@ -1,6 +1,8 @@
 #include "sim/truth_map_feed.h"
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "sim/truth_field.h"
 
@@ -34,19 +36,46 @@ void TruthMapFeed::AddDisc(const Vec2& p_W, double radius_m) {
   }
 }
 
+std::pair<std::int32_t, std::int32_t> TruthMapFeed::ReachInRow(std::int32_t iy, const Vec2& p_W,
+                                                               const Vec2& heading_W) const {
+  const double r = resolution_m_;
+  const double dy = (iy + 0.5) * r - p_W.y();
+  if (std::abs(dy) > reach_m_) return {1, 0};
+  // the disc's chord, then the half-plane (x − px)·hx + dy·hy >= −behind
+  const double half_chord = std::sqrt(reach_m_ * reach_m_ - dy * dy);
+  double lo = p_W.x() - half_chord, hi = p_W.x() + half_chord;
+  const double hx = heading_W.x(), rest = -kTruthBehind_m - dy * heading_W.y();
+  if (std::abs(hx) < 1e-12) {
+    if (rest > 0) return {1, 0};
+  } else if (hx > 0) {
+    lo = std::max(lo, p_W.x() + rest / hx);
+  } else {
+    hi = std::min(hi, p_W.x() + rest / hx);
+  }
+  if (lo > hi) return {1, 0};
+  // the cells whose centres (ix + 0.5)·r lie in [lo, hi]
+  return {static_cast<std::int32_t>(std::ceil(lo / r - 0.5)), static_cast<std::int32_t>(std::floor(hi / r - 0.5))};
+}
+
 void TruthMapFeed::AddReach(const Vec2& p_W, const Vec2& heading_W) {
   const double r = resolution_m_;
+  const auto add = [&](std::int32_t ix, std::int32_t iy) {
+    const std::int64_t key = Key(ix, iy);
+    if (cast_.insert(key).second && queued_.insert(key).second) due_xy_W_.emplace_back((ix + 0.5) * r, (iy + 0.5) * r);
+  };
   const auto lo = [r](double v) { return static_cast<std::int32_t>(std::floor(v / r)); };
-  for (std::int32_t iy = lo(p_W.y() - reach_m_); iy <= lo(p_W.y() + reach_m_); ++iy) {
-    for (std::int32_t ix = lo(p_W.x() - reach_m_); ix <= lo(p_W.x() + reach_m_); ++ix) {
-      const Vec2 centre((ix + 0.5) * r, (iy + 0.5) * r);
-      if (!InReach(centre, p_W, heading_W)) continue;
-      // (the reach at the last feed was cast whole: only what is new is looked up)
-      if (reach_before_W_ && InReach(centre, reach_before_W_->first, reach_before_W_->second)) continue;
-      const std::int64_t key = Key(ix, iy);
-      if (!cast_.insert(key).second) continue;
-      if (queued_.insert(key).second) due_xy_W_.push_back(centre);
+  for (std::int32_t iy = lo(p_W.y() - reach_m_) - 1; iy <= lo(p_W.y() + reach_m_) + 1; ++iy) {
+    const auto [first, last] = ReachInRow(iy, p_W, heading_W);
+    if (first > last) continue;
+    // (the reach at the last feed was cast whole: only the columns it did not hold are looked up)
+    std::int32_t before_first = 1, before_last = 0;
+    if (reach_before_W_) std::tie(before_first, before_last) = ReachInRow(iy, reach_before_W_->first, reach_before_W_->second);
+    if (before_first > before_last) {
+      for (std::int32_t ix = first; ix <= last; ++ix) add(ix, iy);
+      continue;
     }
+    for (std::int32_t ix = first; ix <= std::min(last, before_first - 1); ++ix) add(ix, iy);
+    for (std::int32_t ix = std::max(first, before_last + 1); ix <= last; ++ix) add(ix, iy);
   }
   reach_before_W_ = {p_W, heading_W};
 }

@@ -52,10 +52,9 @@ class TruthMapFeed {
   void AddDisc(const Vec2& p_W, double radius_m);
   // the never-cast cells of the reach about p_W along heading_W, but those in the reach at the last feed
   void AddReach(const Vec2& p_W, const Vec2& heading_W);
-  bool InReach(const Vec2& centre_W, const Vec2& p_W, const Vec2& heading_W) const {
-    const Vec2 d = centre_W - p_W;
-    return d.squaredNorm() <= reach_m_ * reach_m_ && d.dot(heading_W) >= -kTruthBehind_m;
-  }
+  // the columns ix (first, last) of row iy whose centres lie in the reach
+  // about p_W along heading_W; first > last when none
+  std::pair<std::int32_t, std::int32_t> ReachInRow(std::int32_t iy, const Vec2& p_W, const Vec2& heading_W) const;
 
   double reach_m_;
   double resolution_m_;

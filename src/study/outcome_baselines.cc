@@ -1,5 +1,6 @@
 #include "study/outcome_baselines.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -52,6 +53,10 @@ void GiveOraclePerception(YAML::Node& run) {
   YAML::Node map = run["map"];
   if (!map || !map.IsMap()) map = YAML::Node(YAML::NodeType::Map);
   map["truth_within_m"] = kOracleReach_m;
+  const YAML::Node ceiling = map["max_height_m"];
+  double given_m = 0.6;  // TerrainMapConfig's default
+  if (ceiling && ceiling.IsScalar()) given_m = ceiling.as<double>(0.6);
+  map["max_height_m"] = std::max(given_m, kOracleMapCeiling_m);
   map["sensors"] = YAML::Load("[]");
   run["map"] = map;
   if (legs_on_map) {

@@ -41,11 +41,15 @@ SensorSet BaselineSet(const std::string& name);
 
 /// How far around the robot the oracle's map holds the scene's truth.
 inline constexpr double kOracleReach_m = 3;
+/// The oracle's map holds surfaces up to this height above the ground the
+/// robot stands on (map.max_height_m, if the scenario's is lower): above a
+/// pelvis, so a table top that overhangs the path at thigh height is seen.
+inline constexpr double kOracleMapCeiling_m = 1.2;
 
 /// Makes a run's scenario the oracle's (its sensors are already the fan):
 /// its map filled from the scene's truth within kOracleReach_m of the robot
 /// (map.truth_within_m; the fan feeds the readings-mode strategies, not the
-/// map), and, where the legs plan on the robot's map (gait.footholds: map),
+/// map) up to kOracleMapCeiling_m, and, where the legs plan on the robot's map (gait.footholds: map),
 /// legs on the true ground that stand before a step they cannot take — what
 /// legs planning on a perfect map do.
 void GiveOraclePerception(YAML::Node& run);
