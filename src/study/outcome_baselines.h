@@ -4,12 +4,15 @@
 //  - blind: no sensors at all; the strategy never sees anything. Where the
 //    worlds test sensing, it must fail: its success is what a set gets for
 //    free.
-//  - oracle: perfect perception for the same strategy — a dense fan of
-//    `ideal` rays (noise-free, exact, any incidence, blind to the robot's own
-//    body) from the robot's root link, covering the ground from 0.3 m to 3 m
-//    ahead and 60 degrees to either side, read ten times a second. Its
-//    failures are the strategy's and the legs', not the sensors': its success
-//    is what perfect sensing would buy.
+//  - oracle: perfect perception for the same strategy — its map holds the
+//    scene's true heights within kOracleReach_m ahead (map.truth_within_m,
+//    sim/truth_map_feed.h), its legs plan on the true ground where a set's
+//    would plan on their map (GiveOraclePerception), and a strategy reading
+//    each reading reads a dense fan of `ideal` rays (noise-free, exact, any
+//    incidence, blind to the robot's own body) from the robot's root link,
+//    covering the ground from 0.3 m to 3 m ahead and 60 degrees to either
+//    side, ten times a second. Its failures are the strategy's and the
+//    legs', not the sensors': its success is what perfect sensing would buy.
 //
 // A set's perception score is where it lies between the two
 // (outcome_stats.h, PerceptionScore).
