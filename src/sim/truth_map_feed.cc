@@ -99,21 +99,20 @@ const std::vector<RayEvidence>& TruthMapFeed::Columns(const World& world, const 
   const std::vector<float> heights = TrueHeightsAt(world.caster(), due_xy_W_, ceiling_z_m, true);
   columns_.reserve(due_xy_W_.size());
   for (std::size_t i = 0; i < due_xy_W_.size(); ++i) {
+    // nothing below (beyond a course's edge, in a gap): left unknown — a void
+    // column would make every cell beside a course one vast hole to classify
+    // again at every feed, and no built-in strategy walks around a hole (the
+    // legs plan over gaps on the true ground)
+    if (std::isnan(heights[i])) continue;
     RayEvidence column;
     column.p_WS = Vec3(due_xy_W_[i].x(), due_xy_W_[i].y(), ceiling_z_m);
     column.dir_W = -Vec3::UnitZ();
     column.bounds_height = true;
     column.proves_empty = true;
-    if (std::isnan(heights[i])) {
-      // nothing below: the column is empty as deep as the truth looks
-      column.d_m = kTruthDepth_m;
-      column.free_end_m = kTruthDepth_m;
-    } else {
-      column.detected = true;
-      column.d_m = std::max(0.0, ceiling_z_m - heights[i]);
-      column.variance_z_m2 = kTrueColumnVariance_m2;
-      column.free_end_m = column.d_m;
-    }
+    column.detected = true;
+    column.d_m = std::max(0.0, ceiling_z_m - heights[i]);
+    column.variance_z_m2 = kTrueColumnVariance_m2;
+    column.free_end_m = column.d_m;
     columns_.push_back(column);
   }
   return columns_;

@@ -39,7 +39,7 @@ class TruthMapFeed {
 
   /// The columns due at t_s (none between feeds): vertical rays from
   /// `ceiling_z_m` (the map's) through each cell's centre, detected at the
-  /// true height, or silent all the way down where there is no surface.
+  /// true height; none where there is no surface at all (the cell stays unknown).
   /// `heading_W`: the robot's (unit, horizontal).
   const std::vector<RayEvidence>& Columns(const World& world, const Vec2& p_W_pelvis, const Vec2& heading_W,
                                           double ceiling_z_m, double t_s);
