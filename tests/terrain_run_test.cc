@@ -26,7 +26,7 @@
 #include "output/octomap_recorder.h"
 #include "output/terrain_files.h"
 #include "knowledge/terrain_map.h"
-#include "output/truth_field.h"
+#include "sim/truth_field.h"
 
 namespace proxsim {
 namespace {

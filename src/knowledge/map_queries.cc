@@ -19,7 +19,46 @@ std::pair<double, double> Project(const std::array<Vec2, N>& points, const Vec2&
   return {lo, hi};
 }
 
+// whether two hazards' extents touch (overlap, or lie within `gap_m` of each other)
+bool Touch(const Hazard& a, const Hazard& b, double gap_m) {
+  return a.min_W.x() <= b.max_W.x() + gap_m && b.min_W.x() <= a.max_W.x() + gap_m &&
+         a.min_W.y() <= b.max_W.y() + gap_m && b.min_W.y() <= a.max_W.y() + gap_m;
+}
+
+double TopOf(const Hazard& hazard) { return hazard.ground_z_m + hazard.height_m; }
+
 }  // namespace
+
+std::vector<bool> ObstaclesToWalkAround(const TerrainMap& map) {
+  const std::vector<Hazard>& hazards = map.hazards();
+  const TerrainMapConfig& config = map.config();
+  std::vector<bool> avoid(hazards.size()), step(hazards.size());
+  for (std::size_t i = 0; i < hazards.size(); ++i) {
+    avoid[i] = hazards[i].hazard_class == HazardClass::kObstacle;
+    step[i] = hazards[i].hazard_class == HazardClass::kStepUp;
+  }
+  // a staircase: an obstacle only by its height above the ground the robot
+  // stands on, a foot's size, and within a step's rise of a step it touches,
+  // is the next tread (a few hazards: a fixed point in a few rounds)
+  const double gap_m = 1.5 * config.resolution_m;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t i = 0; i < hazards.size(); ++i) {
+      if (!avoid[i]) continue;
+      const Vec2 size = hazards[i].max_W - hazards[i].min_W;
+      if (std::min(size.x(), size.y()) < config.step_min_size_m - 1e-9) continue;
+      for (std::size_t j = 0; j < hazards.size(); ++j) {
+        if (!step[j] || std::abs(TopOf(hazards[i]) - TopOf(hazards[j])) > config.step_max_m) continue;
+        if (!Touch(hazards[i], hazards[j], gap_m)) continue;
+        avoid[i] = false;
+        step[i] = true;
+        grew = true;
+        break;
+      }
+    }
+  }
+  return avoid;
+}
 
 const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, const Vec2& heading_W, double ahead_m,
                                  double half_width_m) {
@@ -27,8 +66,10 @@ const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, co
   const std::array<Vec2, 4> corridor = {p_W_from - half_width_m * lateral, p_W_from + half_width_m * lateral,
                                         p_W_from + ahead_m * heading_W + half_width_m * lateral,
                                         p_W_from + ahead_m * heading_W - half_width_m * lateral};
-  for (const Hazard& hazard : map.hazards()) {
-    if (hazard.hazard_class != HazardClass::kObstacle) continue;
+  const std::vector<bool> avoid = ObstaclesToWalkAround(map);
+  for (std::size_t i = 0; i < map.hazards().size(); ++i) {
+    if (!avoid[i]) continue;
+    const Hazard& hazard = map.hazards()[i];
     const std::array<Vec2, 4> box = {hazard.min_W, Vec2(hazard.max_W.x(), hazard.min_W.y()), hazard.max_W,
                                      Vec2(hazard.min_W.x(), hazard.max_W.y())};
     // two rectangles are apart when one of their four edge directions separates them
@@ -47,8 +88,10 @@ const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, co
 }
 
 void ForEachObstacleOutlinePoint(const TerrainMap& map, double spacing_m, const std::function<void(const Vec3&)>& point) {
-  for (const Hazard& hazard : map.hazards()) {
-    if (hazard.hazard_class != HazardClass::kObstacle) continue;
+  const std::vector<bool> avoid = ObstaclesToWalkAround(map);
+  for (std::size_t i = 0; i < map.hazards().size(); ++i) {
+    if (!avoid[i]) continue;
+    const Hazard& hazard = map.hazards()[i];
     const double z = hazard.ground_z_m + hazard.height_m;
     const Vec2 size = hazard.max_W - hazard.min_W;
     const int nx = std::max(1, static_cast<int>(std::ceil(size.x() / spacing_m)));

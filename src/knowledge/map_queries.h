@@ -3,7 +3,10 @@
 //  - the obstacles: hazards of class `obstacle` (raised, too high or too
 //    small to step on), as the map has found them — a step up or down the
 //    legs can take, and a hole the gait plans over on its own map
-//    (gait.footholds: map), are not obstacles to walk around;
+//    (gait.footholds: map), are not obstacles to walk around; nor is a
+//    staircase's later tread, an obstacle only by its height above the
+//    ground the robot stands on: one a foot fits on, touching a step (or
+//    such a tread) within a step's rise of it;
 //  - the first obstacle in a corridor ahead: a rectangle from a point along
 //    a heading, by the separating-axis test against each obstacle's extent;
 //  - an obstacle's outline, as points every `spacing_m` around its extent at
@@ -13,12 +16,16 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "core/geometry.h"
 #include "knowledge/hazards.h"
 #include "knowledge/terrain_map.h"
 
 namespace proxsim {
+
+/// Per hazard of map.hazards(): whether it is an obstacle to walk around (above).
+std::vector<bool> ObstaclesToWalkAround(const TerrainMap& map);
 
 /// The first obstacle (in the map's order) whose extent meets the corridor
 /// [0, ahead_m] along `heading_W` (unit, horizontal) from `p_W_from`, within

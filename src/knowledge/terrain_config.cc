@@ -36,6 +36,9 @@ std::vector<std::string> TerrainMapConfig::Validate() const {
                        Text(drop_min_m) + "), got " + Text(step_max_m));
   }
   positive(step_min_size_m, "step_min_size_m");
+  if (!(truth_within_m >= 0.0 && truth_within_m <= 20.0)) {
+    problems.push_back("truth_within_m: expected a distance in [0, 20] m (0: off), got " + Text(truth_within_m));
+  }
   if (!(window_m >= 1.0) || !std::isfinite(window_m)) {
     problems.push_back("window_m: expected a finite half-side >= 1 m, got " + Text(window_m));
   }

@@ -30,6 +30,11 @@ struct TerrainMapConfig {
   /// normal incidence and a white surface: an oblique floor reads farther).
   std::vector<std::string> sensors;
   bool sensors_given = false;     ///< `map.sensors` was in the file (an empty list: no sensor)
+  /// > 0: perfect perception — every cell within this distance of the
+  /// robot's pelvis takes the scene's true height (sim/truth_map_feed.h), as
+  /// the outcome study's oracle baseline does; a robot's own sensors never
+  /// see this way. 0 (default): off. In [0, 20] m.
+  double truth_within_m = 0.0;
 
   /// Every violated condition, one message each, worded after the scenario key; empty if valid.
   std::vector<std::string> Validate() const;

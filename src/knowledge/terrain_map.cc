@@ -104,7 +104,7 @@ void TerrainMap::Reset() {
   relabelled_.clear();
 }
 
-void TerrainMap::Update(const Observation& observation) {
+void TerrainMap::Update(const Observation& observation, std::span<const RayEvidence> columns) {
   evidence_.clear();
   retired_tiles_.clear();
   retired_hazards_.clear();
@@ -123,6 +123,9 @@ void TerrainMap::Update(const Observation& observation) {
     }
   }
   if (observation.robot == nullptr) return;
+  for (const RayEvidence& column : columns) {
+    Insert(column, observation.t_s, observation.robot->ground_z_m + config_.max_height_m);
+  }
   UpdatePosition(observation.t_s, *observation.robot);
   RollWindow();
   if (observation.t_s + 1e-9 >= next_pass_t_s_) {

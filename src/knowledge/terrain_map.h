@@ -58,8 +58,10 @@ class TerrainMap {
   void Reset();
 
   /// One sample: the observation's fresh readings into the grid, then the
-  /// hazards if due. Requires observation.robot.
-  void Update(const Observation& observation);
+  /// hazards if due. Requires observation.robot. `columns`: vertical rays
+  /// of perfect perception (map.truth_within_m, the oracle baseline; the
+  /// simulation computes them from the scene), inserted as they are.
+  void Update(const Observation& observation, std::span<const RayEvidence> columns = {});
 
   const TerrainMapConfig& config() const { return config_; }
   const ElevationGrid& grid() const { return grid_; }

@@ -12,7 +12,7 @@
 #include "core/number_format.h"
 #include "output/corridor.h"
 #include "output/terrain_score.h"
-#include "output/truth_field.h"
+#include "sim/truth_field.h"
 
 namespace proxsim {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include "output/truth_field.h"
+#include "sim/truth_field.h"
 
 namespace proxsim {
 

@@ -15,7 +15,7 @@ TerrainMapConfig ReadTerrainMap(YamlReader& reader, const Field& field, const st
   TerrainMapConfig config;
   if (!field) return config;
   const auto map = reader.Map(field, {"enabled", "resolution_m", "max_height_m", "obstacle_min_m", "drop_min_m",
-                                      "step_max_m", "step_min_size_m", "window_m", "sensors"});
+                                      "step_max_m", "step_min_size_m", "window_m", "truth_within_m", "sensors"});
   if (!map) return config;
   if (!has_robot) {
     reader.Fail(field, "the terrain map is built by a walking robot; expected a robot section with it");
@@ -25,7 +25,7 @@ TerrainMapConfig ReadTerrainMap(YamlReader& reader, const Field& field, const st
   for (auto [key, value] : {std::pair{"resolution_m", &config.resolution_m}, std::pair{"max_height_m", &config.max_height_m},
                             std::pair{"obstacle_min_m", &config.obstacle_min_m}, std::pair{"drop_min_m", &config.drop_min_m},
                             std::pair{"step_max_m", &config.step_max_m}, std::pair{"step_min_size_m", &config.step_min_size_m},
-                            std::pair{"window_m", &config.window_m}}) {
+                            std::pair{"window_m", &config.window_m}, std::pair{"truth_within_m", &config.truth_within_m}}) {
     *value = reader.Number((*map)[key], AnyNumber()).value_or(*value);
   }
   for (const std::string& problem : config.Validate()) {

@@ -110,6 +110,7 @@ nlohmann::json InputsJson(const Scenario& scenario) {
     map = {{"enabled", m.enabled},           {"resolution_m", m.resolution_m},   {"max_height_m", m.max_height_m},
            {"obstacle_min_m", m.obstacle_min_m}, {"drop_min_m", m.drop_min_m},     {"step_max_m", m.step_max_m},
            {"step_min_size_m", m.step_min_size_m}, {"window_m", m.window_m},
+           {"truth_within_m", m.truth_within_m},
            {"sensors", m.sensors_given ? nlohmann::json(m.sensors) : nlohmann::json("types: " + DefaultMapSensorTypes())}};
   }
   return {{"source", scenario.source},

@@ -107,6 +107,8 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
   }
   if (locomotion_) {
     if (scenario_.map.enabled) terrain_map_ = MakeTerrainMap();
+    if (terrain_map_ && scenario_.map.truth_within_m > 0)
+      truth_feed_ = std::make_unique<TruthMapFeed>(scenario_.map.truth_within_m, scenario_.map.resolution_m);
     // the gait plans its footsteps on the scene's true surface, or on the
     // robot's own map (gait.footholds: map), the true surface then deciding each landing
     if (terrain_map_ && scenario_.robot && scenario_.robot->footholds == Footholds::kMap)
@@ -183,6 +185,7 @@ void Simulation::Reset(std::uint64_t seed) {
   state_ = RobotState{};
   // (the map first: a gait planning on it plans its first step as it starts afresh)
   if (terrain_map_) terrain_map_->Reset();
+  if (truth_feed_) truth_feed_->Reset();
   world_->ResetPeople();
   if (locomotion_) {
     locomotion_->Reset();
@@ -276,7 +279,16 @@ const SampleFrame& Simulation::TakeSample() {
   if (locomotion_) KnowRobot(state_, *robot, feet_, half_width_m_, knowledge_);
   FillObservation();
   // the map learns from what was delivered, before the strategy reads it
-  if (terrain_map_) terrain_map_->Update(observation_);
+  // (with perfect perception, the oracle's, the scene's true heights beside them)
+  if (terrain_map_) {
+    std::span<const RayEvidence> columns;
+    if (truth_feed_ && observation_.robot != nullptr) {
+      const RobotKnowledge& self = *observation_.robot;
+      columns = truth_feed_->Columns(*world_, self.X_WP.translation().head<2>(), self.heading_W.head<2>().normalized(),
+                                     self.ground_z_m + scenario_.map.max_height_m, observation_.t_s);
+    }
+    terrain_map_->Update(observation_, columns);
+  }
   if (locomotion_) {
     UpdateRobot(clearance_m);
     UpdateContacts(contacts_now_);

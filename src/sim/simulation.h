@@ -31,6 +31,7 @@
 #include "sim/map_terrain.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"
+#include "sim/truth_map_feed.h"
 #include "sim/world.h"
 #include "strategy/strategy.h"
 #include "knowledge/terrain_map.h"
@@ -200,6 +201,7 @@ class Simulation {
   std::unique_ptr<Commands> commands_;
   std::unique_ptr<Events> event_log_;
   std::unique_ptr<TerrainMap> terrain_map_;
+  std::unique_ptr<TruthMapFeed> truth_feed_;  // perfect perception for the map (map.truth_within_m), or null
   std::unique_ptr<TerrainQuery> map_footholds_;  // the map as the gait's footholds terrain (gait.footholds: map), or null
   std::vector<SensorInfo> sensor_info_;
   std::vector<FootFrame> feet_;

@@ -152,6 +152,13 @@ void World::ResetPeople() {
   for (Person& person : people_) person.waited_s = 0;
 }
 
+std::vector<std::pair<Vec2, double>> World::MovingFootprints_W() const {
+  std::vector<std::pair<Vec2, double>> footprints;
+  footprints.reserve(moving_.size());
+  for (const MovingBody& body : moving_) footprints.emplace_back(body.X_WO.translation().head<2>(), body.radius_m);
+  return footprints;
+}
+
 double World::MoveObjects(double t_s) {
   double moved_m = 0;
   for (std::size_t i = 0; i < moving_.size(); ++i) {

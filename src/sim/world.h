@@ -67,6 +67,9 @@ class World {
   /// nearer than it is now waits where it is for `dt_s` (its walk resumes
   /// from there later). Call before MoveObjects(t_s); returns how many wait.
   int HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double t_s, double dt_s);
+  /// Where each moving object is (its origin's x, y) and the radius of a
+  /// sphere about its origin that holds it.
+  std::vector<std::pair<Vec2, double>> MovingFootprints_W() const;
   /// A new episode: every person walks from its start again.
   void ResetPeople();
   /// The moving objects alone, in a caster of their own (object ids as in

@@ -58,6 +58,11 @@ constexpr double kCornerSlowAfter_m = 0.3;
 // still lands up to a step (half the stride) beyond the leading toe, so the
 // stop looks at least that far ahead, and this much more.
 constexpr double kSwingMargin_m = 0.05;
+// A point farther than this behind the leading toe lies behind the robot, not
+// in its way: about a foot behind it the trailing foot stands (a map's
+// obstacle passed long ago, a stair's upper tread after the way down, once
+// stopped the robot from 5 m behind)
+constexpr double kBehindTheToe_m = 0.3;
 
 
 Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
@@ -144,7 +149,7 @@ std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observa
     // ahead of the leading toe, aside of the pelvis (the toe leads on one side)
     const double ahead_m = (p_W - self.p_W_front).dot(walking_W);
     const double aside_m = (p_W - self.X_WP.translation()).dot(lateral_W);
-    if (ahead_m <= look_ahead_m && std::abs(aside_m) <= lateral_m) return p_W;
+    if (ahead_m <= look_ahead_m && ahead_m >= -kBehindTheToe_m && std::abs(aside_m) <= lateral_m) return p_W;
   }
   return std::nullopt;
 }

@@ -1,5 +1,6 @@
 #include "study/outcome_baselines.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -35,7 +36,34 @@ std::string OracleSensorsYaml(std::vector<std::string>& names) {
   return yaml + "]";
 }
 
+// whether a run's legs plan their footholds on the robot's own map (gait.footholds: map)
+bool LegsPlanOnTheirMap(const YAML::Node& run) {
+  const YAML::Node robot = run["robot"];
+  if (!robot || !robot.IsMap()) return false;
+  const YAML::Node gait = robot["gait"];
+  if (!gait || !gait.IsMap()) return false;
+  const YAML::Node footholds = gait["footholds"];
+  return footholds && footholds.IsScalar() && footholds.Scalar() == "map";
+}
+
 }  // namespace
+
+void GiveOraclePerception(YAML::Node& run) {
+  const bool legs_on_map = LegsPlanOnTheirMap(run);
+  YAML::Node map = run["map"];
+  if (!map || !map.IsMap()) map = YAML::Node(YAML::NodeType::Map);
+  map["truth_within_m"] = kOracleReach_m;
+  const YAML::Node ceiling = map["max_height_m"];
+  double given_m = 0.6;  // TerrainMapConfig's default
+  if (ceiling && ceiling.IsScalar()) given_m = ceiling.as<double>(0.6);
+  map["max_height_m"] = std::max(given_m, kOracleMapCeiling_m);
+  map["sensors"] = YAML::Load("[]");
+  run["map"] = map;
+  if (legs_on_map) {
+    run["robot"]["gait"]["footholds"] = "truth";
+    run["robot"]["gait"]["unsafe_steps"] = "refuse";
+  }
+}
 
 bool IsBaselineName(const std::string& name) { return name == kBlindBaseline || name == kOracleBaseline; }
 

@@ -4,12 +4,15 @@
 //  - blind: no sensors at all; the strategy never sees anything. Where the
 //    worlds test sensing, it must fail: its success is what a set gets for
 //    free.
-//  - oracle: perfect perception for the same strategy — a dense fan of
-//    `ideal` rays (noise-free, exact, any incidence, blind to the robot's own
-//    body) from the robot's root link, covering the ground from 0.3 m to 3 m
-//    ahead and 60 degrees to either side, read ten times a second. Its
-//    failures are the strategy's and the legs', not the sensors': its success
-//    is what perfect sensing would buy.
+//  - oracle: perfect perception for the same strategy — its map holds the
+//    scene's true heights within kOracleReach_m ahead (map.truth_within_m,
+//    sim/truth_map_feed.h), its legs plan on the true ground where a set's
+//    would plan on their map (GiveOraclePerception), and a strategy reading
+//    each reading reads a dense fan of `ideal` rays (noise-free, exact, any
+//    incidence, blind to the robot's own body) from the robot's root link,
+//    covering the ground from 0.3 m to 3 m ahead and 60 degrees to either
+//    side, ten times a second. Its failures are the strategy's and the
+//    legs', not the sensors': its success is what perfect sensing would buy.
 //
 // A set's perception score is where it lies between the two
 // (outcome_stats.h, PerceptionScore).
@@ -17,6 +20,8 @@
 
 #include <string>
 #include <vector>
+
+#include <yaml-cpp/yaml.h>
 
 #include "study/outcome_config.h"
 
@@ -36,6 +41,21 @@ inline constexpr double kOracleRange_m = 4;
 /// The baseline sets by name ("blind", "oracle"), as SensorSets (their
 /// `baseline` set, no price): what LoadOutcomeStudyFile appends to the sets.
 SensorSet BaselineSet(const std::string& name);
+
+/// How far around the robot the oracle's map holds the scene's truth.
+inline constexpr double kOracleReach_m = 3;
+/// The oracle's map holds surfaces up to this height above the ground the
+/// robot stands on (map.max_height_m, if the scenario's is lower): above a
+/// pelvis, so a table top that overhangs the path at thigh height is seen.
+inline constexpr double kOracleMapCeiling_m = 1.2;
+
+/// Makes a run's scenario the oracle's (its sensors are already the fan):
+/// its map filled from the scene's truth within kOracleReach_m of the robot
+/// (map.truth_within_m; the fan feeds the readings-mode strategies, not the
+/// map) up to kOracleMapCeiling_m, and, where the legs plan on the robot's map (gait.footholds: map),
+/// legs on the true ground that stand before a step they cannot take — what
+/// legs planning on a perfect map do.
+void GiveOraclePerception(YAML::Node& run);
 
 /// Whether `name` is a baseline's.
 bool IsBaselineName(const std::string& name);

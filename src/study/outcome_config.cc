@@ -595,6 +595,7 @@ YAML::Node RunNodeFromWorld(YAML::Node&& world, const SensorSet* set, const Stra
   YAML::Node doc = std::move(world);
   if (set != nullptr) doc["sensors"] = YAML::Load(set->sensors_yaml);
   if (strategy != nullptr && !strategy->yaml.empty()) doc["robot"]["strategy"] = YAML::Load(strategy->yaml);
+  if (set != nullptr && set->baseline == kOracleBaseline) GiveOraclePerception(doc);
   if (reference) {
     doc["sensors"] = YAML::Load("[]");  // blind
     doc["robot"]["gait"]["unsafe_steps"] = "refuse";

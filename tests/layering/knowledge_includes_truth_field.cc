@@ -3,4 +3,4 @@
 // outputs that score it against the truth, so the truth field must not be
 // reachable from the knowledge module.
 #include "knowledge/terrain_map.h"
-#include "output/truth_field.h"
+#include "sim/truth_field.h"

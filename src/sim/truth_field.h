@@ -9,11 +9,14 @@
 // The scene's moving objects are left out (the truth is the still scene);
 // with them where they stand at the end, the same rays tell which raised
 // cells of the map something still stands on (the score's ghost cells).
-// Only the scoring and the output files use it, never the map.
+// The scoring and the output files use it, and the oracle's map feed
+// (truth_map_feed.h: the outcome study's perfect-perception baseline); a
+// robot's own map never does.
 //
 // Frames: W world.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "raycast/ray_caster.h"
@@ -23,6 +26,11 @@ namespace proxsim {
 
 /// Deepest the vertical rays look below the ceiling.
 constexpr double kTruthDepth_m = 100.0;
+
+/// The true heights of the columns at `xy_W` (float32, NaN where there is no
+/// surface), as TrueHeights finds each cell's.
+std::vector<float> TrueHeightsAt(const RayCaster& caster, std::span<const Vec2> xy_W, double ceiling_z_m,
+                                 bool see_moving);
 
 /// The true heights of the cells of `box`, row after row (index
 /// (iy − iy_min)·nx + (ix − ix_min)), float32 with NaN where there is no surface.
