@@ -101,6 +101,8 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   if (config.gait.derive_stride_from_legs) initial_.gait.stride_m = kReferenceStride_m * length_ratio;
   if (config.gait.derive_period_from_legs) initial_.gait.period_s = kReferencePeriod_s * std::sqrt(length_ratio);
   gait_ = initial_.gait;
+  // (the look-ahead of a terrain step holds the steps after it to the legs' limits)
+  planner_->set_leg_limits(limits_.get(), gait_.period_s);
   // the exact amplitude search runs once; Reset() and SetStride() reuse its
   // answer, and so does the next walker built from the same legs and gait in
   // this process (a study's episodes: gait/gait_memo.h)
@@ -199,8 +201,8 @@ constexpr std::array<std::pair<double, double>, 7> kGentlerSteps = {
     {{1.0, 1.0}, {0.5, 1.0}, {1.0, 0.7}, {0.5, 0.7}, {1.0, 0.5}, {0.5, 0.5}, {0.25, 0.35}}};
 
 // Whether a step found its foothold (a refusal after that is the legs' or
-// the swing's clearance, not a missing floor).
-bool FootholdFound(const StepPlan& plan) { return plan.cannot_step.empty() || plan.terrain; }
+// the swing's clearance, or a dead end the look-ahead saw, not a missing floor).
+bool FootholdFound(const StepPlan& plan) { return plan.cannot_step.empty() || plan.terrain || plan.dead_end; }
 
 // Whether a step passes over level ground only (its stance's floor, its
 // landing and the highest ground under its swing within a centimetre): a
