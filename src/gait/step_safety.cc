@@ -30,6 +30,9 @@ double WindowEnd(double window, int i) { return window + (0.5 - window) * i / kS
 
 // Bisections that find where a leg straightens or bends off its reach.
 constexpr int kSnapBisections = 40;
+// A step slowed for its joints' speeds holds the windows at those instants
+// (found exactly, not sampled) to this fraction of each top speed.
+constexpr double kSnapSpeedMargin = 0.97;
 
 // A leg at its full reach: the two-link IK clamped, its knee exactly straight
 // (BipedLegs::SolveAnkle). Its knee leaves or reaches that as the square root
@@ -154,10 +157,14 @@ double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limit
       ratio = std::max(ratio, limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
       grid.emplace_back(p, pose);
     }
-    // and the windows at the instants a leg reaches or leaves its full reach
+    // and the windows at the instants a leg reaches or leaves its full reach:
+    // those are the worst windows there, found exactly, so they are held to
+    // kSnapSpeedMargin rather than to the margin that covers the windows
+    // between samples
+    constexpr double kSnapScale = kSpeedMargin / kSnapSpeedMargin;
     for (const auto& [pose, before] : SnapWindows(planner, plan, window, grid)) {
-      ratio = std::max(ratio, limits.SpeedRatio(plan.stance, before.stance, pose.stance, 2 * window * d));
-      ratio = std::max(ratio, limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
+      ratio = std::max(ratio, kSnapScale * limits.SpeedRatio(plan.stance, before.stance, pose.stance, 2 * window * d));
+      ratio = std::max(ratio, kSnapScale * limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
     }
     return ratio;
   };
