@@ -152,10 +152,14 @@ class StepPlanner {
   }
   /// The legs' URDF limits the look-ahead of a terrain step holds the steps
   /// after it to, at the gait's period (null: none; OnwardSwingsClear);
-  /// `limits` must outlive the planner.
-  void set_leg_limits(const LegLimits* limits, double period_s) {
+  /// `limits` must outlive the planner. `memo_key`: the walker's key of its
+  /// step checks (gait/gait_memo.h), under which the look-ahead's checks are
+  /// remembered too (the walker's check of the step, when it comes, is then
+  /// the look-ahead's answer).
+  void set_leg_limits(const LegLimits* limits, double period_s, std::string memo_key) {
     leg_limits_ = limits;
     period_s_ = period_s;
+    memo_key_ = std::move(memo_key);
   }
   const TerrainQuery* terrain() const { return terrain_; }
   const FootholdLimits& limits() const { return limits_; }
@@ -234,6 +238,7 @@ class StepPlanner {
   FootholdLimits limits_;
   const LegLimits* leg_limits_ = nullptr;
   double period_s_ = 0;
+  std::string memo_key_;
 };
 
 /// How long a step lasts: half the period, longer for a terrain step whose

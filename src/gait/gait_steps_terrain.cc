@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "gait/gait_memo.h"
 #include "gait/gait_steps.h"
 #include "gait/joint_limits.h"
 #include "gait/shank_clearance.h"
@@ -261,11 +262,26 @@ void StepPlanner::LandOn(StepPlan* plan, const Foothold& foothold, const Terrain
 
 std::string StepPlanner::LimitsReason(const StepPlan& plan) const {
   if (leg_limits_ == nullptr) return "";
+  // the walker's checks (GaitWalker::CheckedDuration_s, CheckedRefusal),
+  // remembered under its key: a step looked ahead at is checked once
+  const std::string key = memo_key_ + StepPlanBytes(plan);
   StepWindows windows;
-  const double duration_s =
-      SpeedLimitedDuration_s(*this, *leg_limits_, plan, StepDuration_s(plan, period_s_), &windows);
-  if (std::string reason = UnsafeStepReason(*this, *leg_limits_, plan, duration_s, &windows); !reason.empty())
-    return reason;
+  double duration_s = 0;
+  if (const std::optional<double> known = RememberedStepDuration(key)) {
+    duration_s = *known;
+    windows.duration_s = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    duration_s = SpeedLimitedDuration_s(*this, *leg_limits_, plan, StepDuration_s(plan, period_s_), &windows);
+    RememberStepDuration(key, duration_s);
+  }
+  std::string reason;
+  if (std::optional<std::string> known = RememberedStepRefusal(key, duration_s)) {
+    reason = std::move(*known);
+  } else {
+    reason = UnsafeStepReason(*this, *leg_limits_, plan, duration_s, &windows);
+    RememberStepRefusal(key, duration_s, reason);
+  }
+  if (!reason.empty()) return reason;
   // the landing as the next step's stance takes it: the heel where it struck,
   // the foot at the curves' heel-strike pitch (a foot landing tilted within
   // its ankle's range may not be able to take that)

@@ -101,13 +101,14 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   if (config.gait.derive_stride_from_legs) initial_.gait.stride_m = kReferenceStride_m * length_ratio;
   if (config.gait.derive_period_from_legs) initial_.gait.period_s = kReferencePeriod_s * std::sqrt(length_ratio);
   gait_ = initial_.gait;
-  // (the look-ahead of a terrain step holds the steps after it to the legs' limits)
-  planner_->set_leg_limits(limits_.get(), gait_.period_s);
   // the exact amplitude search runs once; Reset() and SetStride() reuse its
   // answer, and so does the next walker built from the same legs and gait in
   // this process (a study's episodes: gait/gait_memo.h)
   const std::string memo_key = GaitSearchKey(legs_->Fingerprint(), initial_.gait.stride_m, initial_.gait.period_s);
   step_memo_key_ = memo_key;
+  // (the look-ahead of a terrain step holds the steps after it to the legs'
+  // limits, its checks remembered under the walker's key)
+  planner_->set_leg_limits(limits_.get(), gait_.period_s, step_memo_key_);
   const std::optional<AmplitudeStride> remembered = RememberedGait(memo_key);
   const AmplitudeStride loaded = remembered ? *remembered : BisectAmplitude(*planner_, initial_.gait.stride_m);
   stride_table_.AddExact(initial_.gait.stride_m, loaded);
