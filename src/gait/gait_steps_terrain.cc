@@ -207,7 +207,7 @@ void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing
   const StepPlan unplanned = *plan;
   LandOn(plan, choices.front(), profile, s_natural, s_trailing_toe, stance_from_natural_landing, p_WP_strike);
   // no dead ends: on level ground every foothold is one; elsewhere the first
-  // whose own swing and the next two steps' clear the ground
+  // from which its own step and the next two can be taken (OnwardSwingsClear)
   const auto& segments = profile.segments();
   const bool level_ahead = std::all_of(segments.begin(), segments.end(), [&](const GroundSegment& g) {
     return std::abs(g.z_m - plan->floor_z_m) <= kSameLevel_m;
@@ -296,7 +296,7 @@ std::string StepPlanner::LimitsReason(const StepPlan& plan) const {
 }
 
 bool StepPlanner::OnwardSwingsClear(const StepPlan& plan, std::string* why) const {
-  // the step itself within the joints' ranges
+  // the step itself within the legs' limits
   if (std::string excess = LimitsReason(plan); !excess.empty()) {
     *why = std::move(excess);
     return false;
