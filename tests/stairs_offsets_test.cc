@@ -1,15 +1,18 @@
-// No dead ends on stairs the legs can climb (docs/terrain.md, "Footholds"):
-// a course of risers (three up, a landing, three down) whose treads are at
-// least 1.5 foot lengths, placed at 20 offsets along the path (3 cm apart:
-// one stride), is walked by the gait on the scene's true surface at every
-// offset. Each walk ends at the path's end, or standing before the first
+// No dead ends on stairs the legs can climb (docs/terrain.md, "No dead
+// ends"): a course of three risers whose treads are 1.5 foot lengths (rounded
+// up to the centimetre), its first riser at 20 offsets along the path 3 cm
+// apart (one stride of the biped), is walked by the gait on the course's true
+// surface. Each walk ends at the path's end, or standing before the first
 // riser with a `cannot_step` that says why; never standing (under the
 // default `unsafe_steps: fall`, falling) on the stairs. At every 10 ms sample
-// each revolute joint's speed (its change since the last sample) is within
+// every revolute joint's speed (its change since the last sample) is within
 // its URDF velocity limit and its angle within its range, and no sole point
-// goes below the surface. The built-in biped walks risers of 0.06 to 0.30 m
-// (its gait.max_step_m is 0.32 m); the Unitree H1 (skipped, saying so, when
-// ../shared/robots/h1_description is absent) 0.06 to 0.18 m.
+// goes below the surface. Courses up onto a landing: the built-in biped's
+// rises 0.06 to 0.31 m (gait.max_step_m, from its legs: 0.32 m), the Unitree
+// H1's 0.06 to 0.27 m (0.28 m; skipped, saying so, when
+// ../shared/robots/h1_description is absent); courses up and down again: the
+// biped's 0.12 and 0.18 m, the H1's 0.12 m (steeper descents on these treads
+// stand on the landing: docs/terrain.md).
 // Each course's outcomes are printed as a [ measured ] line.
 #include <gtest/gtest.h>
 
