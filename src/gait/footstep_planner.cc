@@ -140,11 +140,12 @@ std::string Reason(const TerrainProfile& profile, double s_stance_m, double z_st
 
 }  // namespace
 
-Foothold PlanFoothold(const TerrainProfile& profile, double s_stance_m, double z_stance_m, double s_nominal_m,
-                      const FootholdLimits& limits) {
+std::vector<Foothold> PlanFootholds(const TerrainProfile& profile, double s_stance_m, double z_stance_m,
+                                   double s_nominal_m, const FootholdLimits& limits, double spacing_m,
+                                   std::size_t count) {
   const double s_min = s_stance_m + limits.min_step_m, s_max = s_stance_m + limits.max_step_m;
   const std::vector<Interval> now = Footholds(profile, z_stance_m, s_min, s_max, limits);
-  if (now.empty()) return Foothold{.reason = Reason(profile, s_stance_m, z_stance_m, limits)};
+  if (now.empty()) return {Foothold{.reason = Reason(profile, s_stance_m, z_stance_m, limits)}};
   // onward[k]: the heels from which k more steps find footholds, built
   // backwards from every foothold of the profile one step of reach at a time
   constexpr double kAny = std::numeric_limits<double>::infinity();
@@ -153,20 +154,63 @@ Foothold PlanFoothold(const TerrainProfile& profile, double s_stance_m, double z
   const std::vector<Interval> all = Footholds(profile, z_stance_m, -kAny, kAny, any_height);
   std::vector<std::vector<Interval>> onward{all};
   for (int k = 1; k <= kLookAheadSteps; ++k) onward.push_back(Onward(all, onward.back(), limits));
-  // the heel nearest the curves' with the most steps ahead
-  Interval best{};
-  double at = 0;
+  // the reachable heels with k steps ahead, k from the most to none
+  std::vector<std::vector<Interval>> levels;
   for (int k = kLookAheadSteps; k >= 1; --k) {
     std::vector<Interval> reachable;
     for (const Interval& i : onward[k]) {
       const double lo = std::max(i.lo_m, s_min), hi = std::min(i.hi_m, s_max);
       if (lo <= hi && std::abs(i.z_m - z_stance_m) <= limits.max_rise_m) reachable.push_back({lo, hi, i.z_m, i.segment});
     }
-    if (Nearest(reachable, s_nominal_m, &best, &at))
-      return Foothold{.found = true, .s_heel_m = at, .z_m = best.z_m, .segment = best.segment, .reason = {}};
+    levels.push_back(std::move(reachable));
   }
-  Nearest(now, s_nominal_m, &best, &at);
-  return Foothold{.found = true, .s_heel_m = at, .z_m = best.z_m, .segment = best.segment, .reason = {}};
+  levels.push_back(now);
+  // the first: the heel nearest the curves' with the most steps ahead
+  std::vector<Foothold> choices;
+  const auto taken = [&](double s_m) {
+    for (const Foothold& f : choices)
+      if (std::abs(f.s_heel_m - s_m) < 0.5 * spacing_m) return true;
+    return false;
+  };
+  for (const std::vector<Interval>& level : levels) {
+    Interval best{};
+    double at = 0;
+    if (!Nearest(level, s_nominal_m, &best, &at)) continue;
+    choices.push_back(Foothold{.found = true, .s_heel_m = at, .z_m = best.z_m, .segment = best.segment, .reason = {}});
+    break;
+  }
+  if (!(spacing_m > 0)) return choices;
+  // then the others, the most steps ahead first, each level's nearest the
+  // curves' first: every interval's nearest heel, and heels spacing_m apart
+  // from it to either end
+  for (const std::vector<Interval>& level : levels) {
+    if (choices.size() >= count) break;
+    std::vector<Foothold> more;
+    for (const Interval& i : level) {
+      const double near = std::clamp(s_nominal_m, i.lo_m, i.hi_m);
+      const auto add = [&](double s_m) {
+        more.push_back(Foothold{.found = true, .s_heel_m = s_m, .z_m = i.z_m, .segment = i.segment, .reason = {}});
+      };
+      add(near);
+      for (double s = near - spacing_m; s > i.lo_m; s -= spacing_m) add(s);
+      for (double s = near + spacing_m; s < i.hi_m; s += spacing_m) add(s);
+      if (i.lo_m < near) add(i.lo_m);
+      if (i.hi_m > near) add(i.hi_m);
+    }
+    std::stable_sort(more.begin(), more.end(), [&](const Foothold& a, const Foothold& b) {
+      return std::abs(a.s_heel_m - s_nominal_m) < std::abs(b.s_heel_m - s_nominal_m);
+    });
+    for (const Foothold& f : more) {
+      if (choices.size() >= count) break;
+      if (!taken(f.s_heel_m)) choices.push_back(f);
+    }
+  }
+  return choices;
+}
+
+Foothold PlanFoothold(const TerrainProfile& profile, double s_stance_m, double z_stance_m, double s_nominal_m,
+                      const FootholdLimits& limits) {
+  return PlanFootholds(profile, s_stance_m, z_stance_m, s_nominal_m, limits, 0.0, 1).front();
 }
 
 }  // namespace proxsim

@@ -12,12 +12,17 @@
 // one step ahead, else the nearest), so that the robot shortens its steps
 // before a hole it can step over instead of landing too far from it.
 //
+// The step planner then checks the swing that will leave the chosen
+// foothold (gait_steps.h, "Uneven ground"); when it would not clear the
+// ground, it takes the next of PlanFootholds' other choices.
+//
 // When no foothold is within reach, the reason names what is ahead: a step
 // up or down higher than max_step_m, a gap wider than a step can cross, or
 // no level ground.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "gait/terrain_profile.h"
 
@@ -45,5 +50,13 @@ struct Foothold {
 /// at z_stance_m, nearest s_nominal_m (where the curves would put it).
 Foothold PlanFoothold(const TerrainProfile& profile, double s_stance_m, double z_stance_m, double s_nominal_m,
                       const FootholdLimits& limits);
+
+/// Up to `count` footholds for the same step, in the order to try them:
+/// PlanFoothold's first, then the others within reach — those with the most
+/// steps of look-ahead first, each set nearest s_nominal_m first — at least
+/// spacing_m (> 0) apart. When none is within reach: one, not found, with the reason.
+std::vector<Foothold> PlanFootholds(const TerrainProfile& profile, double s_stance_m, double z_stance_m,
+                                   double s_nominal_m, const FootholdLimits& limits, double spacing_m,
+                                   std::size_t count);
 
 }  // namespace proxsim

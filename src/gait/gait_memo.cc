@@ -76,7 +76,7 @@ std::string StepPlanBytes(const StepPlan& plan) {
   PutMatrix(bytes, plan.swing_toe_off_rate);
   PutMatrix(bytes, plan.swing_end_delta);
   PutMatrix(bytes, plan.p_W_H);
-  for (const bool b : {plan.flat_latched, plan.natural_landing, plan.terrain, plan.swing_arc.hold_pitch}) Put(bytes, b);
+  for (const bool b : {plan.flat_latched, plan.natural_landing, plan.terrain, plan.dead_end, plan.swing_arc.hold_pitch}) Put(bytes, b);
   const SwingArc& arc = plan.swing_arc;
   PutMatrix(bytes, arc.start);
   PutMatrix(bytes, arc.start_rate);

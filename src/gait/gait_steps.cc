@@ -223,11 +223,15 @@ StepPlan StepPlanner::FirstStep(const Vec3& p_W_start, double yaw_rad, double k)
   if (below > 0) trailing = legs_.SolveAnkle(Side::kRight, legs_.Ankle(Side::kRight, trailing) + Vec2xz(0, below), trailing.pitch);
   plan.p_W_trailing_toe = PelvisPose(p_WP, R) * legs_.Point3(Side::kRight, trailing, FootPoint::kToe);
   Finish(&plan);
-  if (terrain_ != nullptr) PlanOnTerrain(&plan, /*stance_from_natural_landing=*/true, p_WP);
+  if (terrain_ != nullptr) PlanOnTerrain(&plan, /*stance_from_natural_landing=*/true, p_WP, /*check_onward=*/true);
   return plan;
 }
 
 StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to) const {
+  return PlanNextStep(prev, k_to, yaw_to, /*check_onward=*/true);
+}
+
+StepPlan StepPlanner::PlanNextStep(const StepPlan& prev, double k_to, double yaw_to, bool check_onward) const {
   const StepPose strike = Evaluate(prev, 0.5);
   StepPlan plan;
   plan.stance = prev.swing;
@@ -251,7 +255,7 @@ StepPlan StepPlanner::NextStep(const StepPlan& prev, double k_to, double yaw_to)
   // swing: its pitch starts from where the old stance foot is
   plan.swing_start_pitch = strike.stance.pitch - legs_.Curve(0.5, plan.k_from).pitch;
   Finish(&plan);
-  if (terrain_ != nullptr) PlanOnTerrain(&plan, prev.natural_landing, strike.X_WP.translation());
+  if (terrain_ != nullptr) PlanOnTerrain(&plan, prev.natural_landing, strike.X_WP.translation(), check_onward);
   return plan;
 }
 

@@ -62,6 +62,14 @@
 //    that the sole clears every edge it passes over by kSwingClearance_m.
 //  - A step whose pelvis must rise or fall faster than kMaxPelvisRampSpeed_m_s
 //    lasts longer (StepDuration_s).
+//  - No dead ends: unless the ground ahead is level, the foothold is one from
+//    which the next two steps can be taken — the other foot's, and the one
+//    whose toe-off and swing leave this foothold, both planned here (their
+//    arcs sized against the ground) at this step's amplitude and heading. A
+//    foothold whose own swing, or either of those, cannot clear the ground
+//    (a trailing toe left against a riser it cannot lift over) gives way to
+//    the next of PlanFootholds' choices (kFootholdChoices, kFootholdSpacing_m
+//    apart); when none passes, the first is kept.
 // A step with no foothold within reach (a rise or fall beyond max_rise_m, a
 // gap wider than a stride lets a step cross) carries the reason in
 // `cannot_step`; the walker does not take it.
@@ -75,6 +83,8 @@
 #include "gait/terrain_query.h"
 
 namespace proxsim {
+
+class LegLimits;
 
 /// Minimum sole clearance aimed at in mid-swing, metres.
 constexpr double kSwingClearance_m = 0.02;
@@ -107,6 +117,9 @@ struct StepPlan {
   double landing_z_m = 0;        ///< height of the tread the swing heel lands on (floor_z_m on flat ground)
   bool natural_landing = true;   ///< the swing lands where the curves put it, on the stance's level
   bool terrain = false;          ///< a terrain step (see above); false: the flat-floor step
+  /// refused by the look-ahead on level ground: from every foothold within
+  /// reach a step after it cannot be taken (cannot_step says which and why)
+  bool dead_end = false;
   std::string cannot_step;       ///< not empty: no foothold within reach, and why; the step is not to be taken
   double pelvis_x0_offset_m = 0;  ///< terrain: pelvis ahead of the curves' pelvis at heel strike (faded out)
   double pelvis_z0_m = 0;         ///< terrain: pelvis height at heel strike
@@ -136,6 +149,17 @@ class StepPlanner {
   void set_terrain(const TerrainQuery* terrain, const FootholdLimits& limits) {
     terrain_ = terrain;
     limits_ = limits;
+  }
+  /// The legs' URDF limits the look-ahead of a terrain step holds the steps
+  /// after it to, at the gait's period (null: none; OnwardSwingsClear);
+  /// `limits` must outlive the planner. `memo_key`: the walker's key of its
+  /// step checks (gait/gait_memo.h), under which the look-ahead's checks are
+  /// remembered too (the walker's check of the step, when it comes, is then
+  /// the look-ahead's answer).
+  void set_leg_limits(const LegLimits* limits, double period_s, std::string memo_key) {
+    leg_limits_ = limits;
+    period_s_ = period_s;
+    memo_key_ = std::move(memo_key);
   }
   const TerrainQuery* terrain() const { return terrain_; }
   const FootholdLimits& limits() const { return limits_; }
@@ -169,10 +193,34 @@ class StepPlanner {
   // Latches X_WF, the landing correction and the clearance bump.
   void Finish(StepPlan* plan) const;
 
+  // NextStep; check_onward: whether its foothold is checked for the swings that follow (PlanOnTerrain).
+  StepPlan PlanNextStep(const StepPlan& prev, double k_to, double yaw_to, bool check_onward) const;
+
   // uneven ground (gait_steps_terrain.cc)
   // Plans the foothold of a finished flat-floor plan on the terrain and makes
   // it a terrain step when it has to be; p_WP_strike: the pelvis at heel strike.
-  void PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing, const Vec3& p_WP_strike) const;
+  // check_onward: unless the ground ahead is level, the foothold is one from
+  // which the next two steps (OnwardSwingsClear) can be taken, if any is.
+  void PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing, const Vec3& p_WP_strike,
+                     bool check_onward) const;
+  // Lands the finished flat-floor plan `plan` on `foothold` (PlanOnTerrain's
+  // step once its foothold is chosen); s_natural_m and s_trailing_toe_m: the
+  // curves' landing heel and the trailing toe along the profile's line.
+  void LandOn(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile, double s_natural_m,
+              double s_trailing_toe_m, bool stance_from_natural_landing, const Vec3& p_WP_strike) const;
+  // Whether the two steps after `plan` can be taken, at its amplitude and
+  // heading: the other foot's, and the one whose swing leaves `plan`'s
+  // foothold (its toe-off and its arc clear the ground). A step finding no
+  // foothold within reach does not count against it (the look-ahead of
+  // PlanFootholds sees those); a step its swing cannot clear, whose landing
+  // the legs cannot reach, or (with leg limits) that the walker would refuse
+  // for them (`plan` itself included: LimitsReason), does. `why`: the first
+  // such step's reason.
+  bool OnwardSwingsClear(const StepPlan& plan, std::string* why) const;
+  // Why `plan` is beyond the legs' limits at the duration the walker would
+  // give it for its joints' speeds (UnsafeStepReason at SpeedLimitedDuration_s,
+  // gait/step_safety.h; "" when it is not, or without leg limits).
+  std::string LimitsReason(const StepPlan& plan) const;
   // Makes `plan` a terrain step landing on `foothold`. Returns whether the
   // swing's shank, not its sole, kept it from clearing the ground (a foothold
   // further along the same tread may then clear it).
@@ -188,6 +236,9 @@ class StepPlanner {
   const BipedLegs& legs_;
   const TerrainQuery* terrain_ = nullptr;
   FootholdLimits limits_;
+  const LegLimits* leg_limits_ = nullptr;
+  double period_s_ = 0;
+  std::string memo_key_;
 };
 
 /// How long a step lasts: half the period, longer for a terrain step whose

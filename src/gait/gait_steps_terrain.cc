@@ -11,7 +11,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "gait/gait_memo.h"
 #include "gait/gait_steps.h"
+#include "gait/joint_limits.h"
 #include "gait/shank_clearance.h"
 #include "gait/step_safety.h"
 
@@ -35,6 +37,10 @@ constexpr double kClearanceSlack_m = 2e-4;
 // Heights within this of the stance tread are the stance tread's level, m (the
 // ray caster answers in float).
 constexpr double kSameLevel_m = 1e-6;
+// Footholds PlanOnTerrain tries for a step, at least this far apart, before
+// it keeps the first (gait_steps.h, "No dead ends").
+constexpr std::size_t kFootholdChoices = 8;
+constexpr double kFootholdSpacing_m = 0.02;
 // Phase step of the finite difference that gives the planted ankle's velocity at toe-off.
 constexpr double kRateStep = 1e-5;
 // The profile starts this far behind the trailing sole and reaches this far beyond the next step's toe, m.
@@ -163,7 +169,8 @@ Vec2xz StepPlanner::ArcAnkle(const StepPlan& plan, double p, const Pose& X_WP) c
   return Vec2xz(ankle_H.x() - pelvis_H.x(), ankle_H.y() - pelvis_H.y());
 }
 
-void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing, const Vec3& p_WP_strike) const {
+void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing, const Vec3& p_WP_strike,
+                                bool check_onward) const {
   const LegGeometry& swing = legs_.leg(plan->swing);
   const LegGeometry& stance = legs_.leg(plan->stance);
   const double sole_m = swing.toe_x_m - swing.heel_x_m;
@@ -189,16 +196,53 @@ void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing
   line.unknown_z_m = plan->floor_z_m;  // what a map has not seen: level with the stance foot
   const TerrainProfile profile(*terrain_, line);
 
-  const Foothold foothold = PlanFoothold(profile, 0.0, plan->floor_z_m, s_natural, limits_);
-  if (!foothold.found) {
-    plan->cannot_step = foothold.reason;
+  // the footholds in the order to try them (one, with the reason, when none is within reach)
+  const std::vector<Foothold> choices =
+      PlanFootholds(profile, 0.0, plan->floor_z_m, s_natural, limits_, kFootholdSpacing_m,
+                    check_onward ? kFootholdChoices : 1);
+  if (!choices.front().found) {
+    plan->cannot_step = choices.front().reason;
     return;
   }
+  const StepPlan unplanned = *plan;
+  LandOn(plan, choices.front(), profile, s_natural, s_trailing_toe, stance_from_natural_landing, p_WP_strike);
+  // no dead ends: on level ground every foothold is one; elsewhere the first
+  // from which its own step and the next two can be taken (OnwardSwingsClear)
+  const auto& segments = profile.segments();
+  const bool level_ahead = std::all_of(segments.begin(), segments.end(), [&](const GroundSegment& g) {
+    return std::abs(g.z_m - plan->floor_z_m) <= kSameLevel_m;
+  });
+  if (!check_onward || level_ahead) return;
+  std::string why;
+  if (plan->cannot_step.empty() && OnwardSwingsClear(*plan, &why)) return;
+  for (std::size_t i = 1; i < choices.size(); ++i) {
+    StepPlan other = unplanned;
+    LandOn(&other, choices[i], profile, s_natural, s_trailing_toe, stance_from_natural_landing, p_WP_strike);
+    if (other.cannot_step.empty() && OnwardSwingsClear(other, &why)) {
+      *plan = std::move(other);
+      return;
+    }
+  }
+  // none: on level ground the legs stand before the step (the step refused,
+  // saying why); elsewhere the first is kept (its own refusal, or the dead
+  // end met when it comes)
+  const bool level_step = plan->cannot_step.empty() && std::abs(plan->landing_z_m - plan->floor_z_m) <= kSameLevel_m &&
+                          std::abs(plan->highest_ground_z_m - plan->floor_z_m) <= kSameLevel_m;
+  if (level_step) {
+    plan->dead_end = true;
+    plan->cannot_step = "no foothold within reach from which the steps after it can be taken: " + why;
+  }
+}
+
+void StepPlanner::LandOn(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile, double s_natural_m,
+                         double s_trailing_toe_m, bool stance_from_natural_landing, const Vec3& p_WP_strike) const {
+  const LegGeometry& swing = legs_.leg(plan->swing);
+  const double sole_m = swing.toe_x_m - swing.heel_x_m;
   // the flat-floor step stands when it lands where the curves do, on the
   // stance's level, with nothing else under the swing, from a natural stance
   const double z_landing = std::abs(foothold.z_m - plan->floor_z_m) <= kSameLevel_m ? plan->floor_z_m : foothold.z_m;
-  plan->natural_landing = foothold.s_heel_m == s_natural && z_landing == plan->floor_z_m;
-  const std::size_t from = profile.SegmentAt(s_trailing_toe - sole_m);
+  plan->natural_landing = foothold.s_heel_m == s_natural_m && z_landing == plan->floor_z_m;
+  const std::size_t from = profile.SegmentAt(s_trailing_toe_m - sole_m);
   const std::size_t to = profile.SegmentAt(foothold.s_heel_m + sole_m);
   const bool sweep_level = from == to && profile.segments()[from].z_m <= plan->floor_z_m + kSameLevel_m;
   if (plan->natural_landing && stance_from_natural_landing && sweep_level) return;
@@ -214,6 +258,62 @@ void StepPlanner::PlanOnTerrain(StepPlan* plan, bool stance_from_natural_landing
   landing.s_heel_m = s_heel_last_m;
   FinishTerrain(&further, landing, profile, p_WP_strike);
   if (further.cannot_step.empty()) *plan = std::move(further);
+}
+
+std::string StepPlanner::LimitsReason(const StepPlan& plan) const {
+  if (leg_limits_ == nullptr) return "";
+  // the walker's checks (GaitWalker::CheckedDuration_s, CheckedRefusal),
+  // remembered under its key: a step looked ahead at is checked once
+  const std::string key = memo_key_ + StepPlanBytes(plan);
+  StepWindows windows;
+  double duration_s = 0;
+  if (const std::optional<double> known = RememberedStepDuration(key)) {
+    duration_s = *known;
+    windows.duration_s = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    duration_s = SpeedLimitedDuration_s(*this, *leg_limits_, plan, StepDuration_s(plan, period_s_), &windows);
+    RememberStepDuration(key, duration_s);
+  }
+  std::string reason;
+  if (std::optional<std::string> known = RememberedStepRefusal(key, duration_s)) {
+    reason = std::move(*known);
+  } else {
+    reason = UnsafeStepReason(*this, *leg_limits_, plan, duration_s, &windows);
+    RememberStepRefusal(key, duration_s, reason);
+  }
+  if (!reason.empty()) return reason;
+  // the landing as the next step's stance takes it: the heel where it struck,
+  // the foot at the curves' heel-strike pitch (a foot landing tilted within
+  // its ankle's range may not be able to take that)
+  const StepPose land = Evaluate(plan, 0.5);
+  const double pitch = legs_.Curve(0.0, plan.k_to).pitch;
+  const Vec2xz heel_P = legs_.Point(plan.swing, land.swing, FootPoint::kHeel);
+  const LegAnglesRad stance =
+      legs_.SolveAnkle(plan.swing, heel_P - RotateSagittal(pitch, legs_.FootOffset(plan.swing, FootPoint::kHeel)), pitch);
+  if (const auto excess = leg_limits_->AngleExcess(plan.swing, stance))
+    return "the landing foot as the next step's stance: " + excess->Describe();
+  return "";
+}
+
+bool StepPlanner::OnwardSwingsClear(const StepPlan& plan, std::string* why) const {
+  // the step itself within the legs' limits
+  if (std::string excess = LimitsReason(plan); !excess.empty()) {
+    *why = std::move(excess);
+    return false;
+  }
+  // a step that found a foothold and is refused: its swing or its reach (a
+  // step with none is the look-ahead's, and stands before what it cannot cross)
+  const auto refused = [&](const StepPlan& step) {
+    if (step.cannot_step.empty()) *why = LimitsReason(step);
+    else if (step.terrain) *why = step.cannot_step;
+    else why->clear();
+    return !why->empty();
+  };
+  const StepPlan next = PlanNextStep(plan, plan.k_to, plan.yaw_to, /*check_onward=*/false);
+  if (refused(next)) return false;
+  if (!next.cannot_step.empty()) return true;
+  const StepPlan after = PlanNextStep(next, next.k_to, next.yaw_to, /*check_onward=*/false);
+  return !refused(after);
 }
 
 bool StepPlanner::FinishTerrain(StepPlan* plan, const Foothold& foothold, const TerrainProfile& profile,

@@ -106,6 +106,9 @@ GaitWalker::GaitWalker(RobotModel model, const WalkConfig& config)
   // this process (a study's episodes: gait/gait_memo.h)
   const std::string memo_key = GaitSearchKey(legs_->Fingerprint(), initial_.gait.stride_m, initial_.gait.period_s);
   step_memo_key_ = memo_key;
+  // (the look-ahead of a terrain step holds the steps after it to the legs'
+  // limits, its checks remembered under the walker's key)
+  planner_->set_leg_limits(limits_.get(), gait_.period_s, step_memo_key_);
   const std::optional<AmplitudeStride> remembered = RememberedGait(memo_key);
   const AmplitudeStride loaded = remembered ? *remembered : BisectAmplitude(*planner_, initial_.gait.stride_m);
   stride_table_.AddExact(initial_.gait.stride_m, loaded);
@@ -199,8 +202,8 @@ constexpr std::array<std::pair<double, double>, 7> kGentlerSteps = {
     {{1.0, 1.0}, {0.5, 1.0}, {1.0, 0.7}, {0.5, 0.7}, {1.0, 0.5}, {0.5, 0.5}, {0.25, 0.35}}};
 
 // Whether a step found its foothold (a refusal after that is the legs' or
-// the swing's clearance, not a missing floor).
-bool FootholdFound(const StepPlan& plan) { return plan.cannot_step.empty() || plan.terrain; }
+// the swing's clearance, or a dead end the look-ahead saw, not a missing floor).
+bool FootholdFound(const StepPlan& plan) { return plan.cannot_step.empty() || plan.terrain || plan.dead_end; }
 
 // Whether a step passes over level ground only (its stance's floor, its
 // landing and the highest ground under its swing within a centimetre): a

@@ -28,6 +28,46 @@ double SpeedWindow(double duration_s) { return std::min(0.5, 0.5 * kSpeedWindow_
 // The end of speed window i: from p = window to 0.5.
 double WindowEnd(double window, int i) { return window + (0.5 - window) * i / kStepSafetySamples; }
 
+// Bisections that find where a leg straightens or bends off its reach.
+constexpr int kSnapBisections = 40;
+// A step slowed for its joints' speeds holds the windows at those instants
+// (found exactly, not sampled) to this fraction of each top speed.
+constexpr double kSnapSpeedMargin = 0.97;
+
+// A leg at its full reach: the two-link IK clamped, its knee exactly straight
+// (BipedLegs::SolveAnkle). Its knee leaves or reaches that as the square root
+// of the time from the instant the target crosses the reach, so its mean
+// speed over a window is largest for the window that ends or starts at that
+// instant; a window sampled a few milliseconds off it sees much less.
+bool Straight(const LegAnglesRad& a) { return a.knee == 0.0; }
+
+bool SameReach(const StepPose& a, const StepPose& b) {
+  return Straight(a.stance) == Straight(b.stance) && Straight(a.swing) == Straight(b.swing);
+}
+
+// The windows (end pose, start pose) of width `window` in phase that end and
+// start where a leg straightens or bends between two consecutive poses of
+// `grid` (phase, pose; ascending over [0, 0.5]), each kept within the step.
+std::vector<std::pair<StepPose, StepPose>> SnapWindows(const StepPlanner& planner, const StepPlan& plan,
+                                                       double window,
+                                                       const std::vector<std::pair<double, StepPose>>& grid) {
+  std::vector<std::pair<StepPose, StepPose>> windows;
+  for (std::size_t i = 1; i < grid.size(); ++i) {
+    if (SameReach(grid[i - 1].second, grid[i].second)) continue;
+    // the instant of the change, by bisection
+    double lo = grid[i - 1].first, hi = grid[i].first;
+    const StepPose& at_lo = grid[i - 1].second;
+    for (int k = 0; k < kSnapBisections; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (SameReach(planner.Evaluate(plan, mid), at_lo) ? lo : hi) = mid;
+    }
+    // the windows ending and starting there
+    for (const double end : {std::max(hi, window), std::min(hi + window, 0.5)})
+      windows.emplace_back(planner.Evaluate(plan, end), planner.Evaluate(plan, end - window));
+  }
+  return windows;
+}
+
 }  // namespace
 
 std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits, const StepPlan& plan,
@@ -36,10 +76,12 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
   const double window = SpeedWindow(duration_s);
   const bool known = sampled != nullptr && sampled->duration_s == duration_s;
   char text[320];
+  std::vector<std::pair<double, StepPose>> grid;  // (p, pose) at every p below
   for (int i = -1; i <= kStepSafetySamples; ++i) {
     // p = 0, then the ends of the speed windows [p − window, p]
     const double p = i < 0 ? 0.0 : WindowEnd(window, i);
     const StepPose pose = i >= 0 && known ? sampled->end_start[i].first : planner.Evaluate(plan, p);
+    grid.emplace_back(p, pose);
     const StepPose before = i < 0 ? pose : known ? sampled->end_start[i].second : planner.Evaluate(plan, p - window);
     // the swing sole's heel and toe, for its fold and its lift (LowestSoleZ's)
     std::array<Vec2xz, 2> swing_heel_toe;
@@ -78,6 +120,18 @@ std::string UnsafeStepReason(const StepPlanner& planner, const LegLimits& limits
       }
     }
   }
+  // the windows at the instants a leg reaches or leaves its full reach
+  for (const auto& [pose, before] : SnapWindows(planner, plan, window, grid)) {
+    for (const Side side : {plan.stance, plan.swing}) {
+      const LegAnglesRad& a = side == plan.stance ? pose.stance : pose.swing;
+      const LegAnglesRad& b = side == plan.stance ? before.stance : before.swing;
+      if (const auto excess = limits.SpeedExcess(side, b, a, 2 * window * duration_s)) {
+        std::snprintf(text, sizeof text, "the %s %s leg straightening or bending off its full reach in a %.2f s "
+                      "step: ", side == plan.stance ? "stance" : "swing", SideName(side), duration_s);
+        return text + excess->Describe();
+      }
+    }
+  }
   return "";
 }
 
@@ -92,6 +146,8 @@ double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limit
     windows.duration_s = d;
     windows.end_start.resize(kStepSafetySamples + 1);
     double ratio = 0;
+    std::vector<std::pair<double, StepPose>> grid;
+    grid.emplace_back(0.0, planner.Evaluate(plan, 0.0));
     for (int i = 0; i <= kStepSafetySamples; ++i) {
       const double p = WindowEnd(window, i);
       auto& [pose, before] = windows.end_start[i];
@@ -99,6 +155,16 @@ double SpeedLimitedDuration_s(const StepPlanner& planner, const LegLimits& limit
       before = planner.Evaluate(plan, p - window);
       ratio = std::max(ratio, limits.SpeedRatio(plan.stance, before.stance, pose.stance, 2 * window * d));
       ratio = std::max(ratio, limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
+      grid.emplace_back(p, pose);
+    }
+    // and the windows at the instants a leg reaches or leaves its full reach:
+    // those are the worst windows there, found exactly, so they are held to
+    // kSnapSpeedMargin rather than to the margin that covers the windows
+    // between samples
+    constexpr double kSnapScale = kSpeedMargin / kSnapSpeedMargin;
+    for (const auto& [pose, before] : SnapWindows(planner, plan, window, grid)) {
+      ratio = std::max(ratio, kSnapScale * limits.SpeedRatio(plan.stance, before.stance, pose.stance, 2 * window * d));
+      ratio = std::max(ratio, kSnapScale * limits.SpeedRatio(plan.swing, before.swing, pose.swing, 2 * window * d));
     }
     return ratio;
   };

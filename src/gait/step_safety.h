@@ -5,7 +5,11 @@
 // the poses StepPlanner::Evaluate gives) and is unsafe when, at any sample:
 //  - a joint the gait drives leaves its URDF angle range, or moves faster than
 //    its URDF velocity limit (its mean speed over any kSpeedWindow_s of the
-//    step, at the step's duration; gait/joint_limits.h);
+//    step, at the step's duration; gait/joint_limits.h) — over the sampled
+//    windows, and over the windows that end and start at each instant a leg
+//    reaches or leaves its full reach (its knee then moves as the square
+//    root of time, fastest in the window that meets that instant, which
+//    sampled windows miss: found by bisection);
 //  - a leg folds: a sole point (heel or toe) of either leg comes level with or
 //    above that leg's own knee;
 //  - the swing sole (its lowest point, after toe-off) rises more than
@@ -41,7 +45,9 @@ constexpr int kStepSafetySamples = 200;
 /// has a kink too short for it (the new swing knee: 9.0 rad/s for about 3 ms,
 /// 7.3 rad/s over 10 ms, for the built-in biped at stride 0.6 m, period 1.2 s).
 constexpr double kSpeedWindow_s = 0.01;
-/// A terrain step slowed for its joints' speeds aims at this fraction of each top speed.
+/// A terrain step slowed for its joints' speeds aims at this fraction of each
+/// top speed over its sampled windows (the windows at a leg's full reach,
+/// found exactly, at 0.97: step_safety.cc).
 constexpr double kSpeedMargin = 0.9;
 
 /// The poses of a step that both checks below read at one duration: for

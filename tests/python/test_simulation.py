@@ -135,7 +135,10 @@ def test_commands_change_the_walk():
         for _ in range(200):
             obs = sim.step()
         assert not obs["robot"]["stopped"] or obs["robot"]["pelvis_W"][1] > 0.5
-        assert obs["robot"]["pelvis_W"][1] > 0.3  # it turned toward the new path (y > 0)
+        # it turned toward the new path (y > 0; 0.28 m by now: the first step of
+        # the turn is slowed for its trailing knee to leave full reach within
+        # its top speed, docs/robots.md)
+        assert obs["robot"]["pelvis_W"][1] > 0.2
 
 
 def test_world_sensors_have_no_robot():
