@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include "core/input_error.h"
@@ -245,6 +246,50 @@ TEST(MovingObjects, APersonCrossingWhereTheRobotStandsWaitsAndNeverCollides) {
       EXPECT_LT(sim.robot_outcome().min_clearance_m, 1.0) << what;
     }
   }
+}
+
+// A strategy that stops the robot at a given time, whatever it sees.
+class StopsAtTime : public Strategy {
+ public:
+  explicit StopsAtTime(double t_s) : t_s_(t_s) {}
+  std::string name() const override { return "stops_at_time"; }
+  void Reset(const StrategySetup&) override { stopped_ = false; }
+  void Decide(const Observation& observation, RobotCommands& robot, EventLog&) override {
+    if (!stopped_ && observation.t_s >= t_s_) {
+      robot.Stop();
+      stopped_ = true;
+    }
+  }
+
+ private:
+  double t_s_;
+  bool stopped_ = false;
+};
+
+TEST(MovingObjects, APersonComingAtARobotThatIsStoppingWaitsAndNeverCollides) {
+  // a person walks down the path at the robot; the robot is stopped while
+  // the person is still 1.0-1.6 m ahead of its pelvis, its last step then
+  // under way: the person waits as for a robot standing still (the person
+  // is 4 m out at t = 0 and closes at its speed plus the robot's 0.5 m/s)
+  int reached_before_standing = 0;
+  for (const double speed_m_s : {1.0, 1.4}) {
+    for (const double gap_m : {1.0, 1.3, 1.6}) {
+      const double stop_t_s = (4.0 - gap_m) / (speed_m_s + 0.5);
+      Simulation sim(LoadScenarioText(PersonScenario(0, 0, "[6, 0]", speed_m_s, "[[4, 0], [-4, 0]]"), "person.yaml"), 1,
+                     nullptr, std::make_unique<StopsAtTime>(stop_t_s));
+      double standing_t_s = -1;
+      while (!sim.done()) {
+        sim.Step();
+        if (standing_t_s < 0 && sim.robot_outcome().stopped) standing_t_s = sim.observation().t_s;
+      }
+      const std::string what = "at " + std::to_string(speed_m_s) + " m/s, stopped " + std::to_string(gap_m) + " m apart";
+      EXPECT_TRUE(sim.robot_outcome().collisions.empty()) << what << ": " << sim.robot_outcome().collisions.front().object;
+      EXPECT_EQ(sim.outcome().name, "stopped") << what;
+      // the person was within the pedestrians' 0.9 m before the robot stood: only the stopping robot held it
+      reached_before_standing += standing_t_s > stop_t_s + 0.2;
+    }
+  }
+  EXPECT_GT(reached_before_standing, 0);
 }
 
 TEST(MovingObjects, ARobotWalkingIntoAPersonCollides) {

@@ -218,8 +218,10 @@ const SampleFrame& Simulation::TakeSample() {
   RobotInScene* robot = world_->robot();
   // the scene's moving objects where they are at this sample's time
   if (world_->has_moving_objects()) {
-    // people wait for a robot standing in their way (state_: the last sample's)
-    if (locomotion_ && state_.stopped && frame_.sample > 0)
+    // people wait for a robot standing in their way, or coming to a stop
+    // there (its strategy stopped it: its last step under way), as
+    // pedestrians do (state_: the last sample's)
+    if (locomotion_ && (state_.stopped || outcome_.stop_requested) && frame_.sample > 0)
       world_->HoldPeopleNear(state_.X_WP.translation().head<2>(), kPedestrianKeep_m, frame_.t_s, 1.0 / scenario_.rate_hz);
     const double moved_m = world_->MoveObjects(frame_.t_s);
     // the clearance's remembered bounds against them shrink by as much as they moved
