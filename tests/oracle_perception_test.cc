@@ -130,7 +130,8 @@ TEST(OraclePerception, AStaircaseTooSteepForTheLegsStaysAnObstacle) {
 
 TEST(OraclePerception, TheOraclesRunPerceivesPerfectlyAndItsLegsPlanOnTheTruth) {
   // legs on the robot's own map: the oracle's plan on the true ground and stand before what they cannot take
-  YAML::Node run = YAML::Load("{robot: {gait: {footholds: map, stride_m: 0.5}}, map: {resolution_m: 0.012}}");
+  YAML::Node run = YAML::Load(
+      "{robot: {gait: {footholds: map, stride_m: 0.5}, strategy: {name: stop, perception: map}}, map: {resolution_m: 0.012}}");
   GiveOraclePerception(run);
   EXPECT_EQ(run["robot"]["gait"]["footholds"].as<std::string>(), "truth");
   EXPECT_EQ(run["robot"]["gait"]["unsafe_steps"].as<std::string>(), "refuse");
@@ -140,11 +141,16 @@ TEST(OraclePerception, TheOraclesRunPerceivesPerfectlyAndItsLegsPlanOnTheTruth) 
   EXPECT_EQ(run["map"]["resolution_m"].as<double>(), 0.012);
   EXPECT_EQ(run["map"]["sensors"].size(), 0u);
   // legs on the truth already: the gait is left as it was
-  YAML::Node truth = YAML::Load("{robot: {gait: {stride_m: 0.5}}, map: {max_height_m: 2.0}}");
+  YAML::Node truth =
+      YAML::Load("{robot: {gait: {stride_m: 0.5}, strategy: {name: stop, perception: map}}, map: {max_height_m: 2.0}}");
   GiveOraclePerception(truth);
   EXPECT_FALSE(truth["robot"]["gait"]["footholds"]);
   EXPECT_FALSE(truth["robot"]["gait"]["unsafe_steps"]);
   EXPECT_EQ(truth["map"]["max_height_m"].as<double>(), 2.0);
+  // a strategy reading each reading reads the fan: no true map (nothing would read it)
+  YAML::Node readings = YAML::Load("{robot: {strategy: {name: stop}}}");
+  GiveOraclePerception(readings);
+  EXPECT_FALSE(readings["map"]);
 }
 
 }  // namespace

@@ -46,10 +46,26 @@ bool LegsPlanOnTheirMap(const YAML::Node& run) {
   return footholds && footholds.IsScalar() && footholds.Scalar() == "map";
 }
 
+// whether a run's strategy reads the robot's map (perception: map)
+bool StrategyReadsTheMap(const YAML::Node& run) {
+  const YAML::Node robot = run["robot"];
+  if (!robot || !robot.IsMap()) return false;
+  const YAML::Node strategy = robot["strategy"];
+  if (!strategy || !strategy.IsMap()) return false;
+  const YAML::Node perception = strategy["perception"];
+  return perception && perception.IsScalar() && perception.Scalar() == "map";
+}
+
 }  // namespace
 
 void GiveOraclePerception(YAML::Node& run) {
   const bool legs_on_map = LegsPlanOnTheirMap(run);
+  if (legs_on_map) {
+    run["robot"]["gait"]["footholds"] = "truth";
+    run["robot"]["gait"]["unsafe_steps"] = "refuse";
+  }
+  // the true map only for a strategy that reads the map (nothing else reads it in a study)
+  if (!StrategyReadsTheMap(run)) return;
   YAML::Node map = run["map"];
   if (!map || !map.IsMap()) map = YAML::Node(YAML::NodeType::Map);
   map["truth_within_m"] = kOracleReach_m;
@@ -59,10 +75,6 @@ void GiveOraclePerception(YAML::Node& run) {
   map["max_height_m"] = std::max(given_m, kOracleMapCeiling_m);
   map["sensors"] = YAML::Load("[]");
   run["map"] = map;
-  if (legs_on_map) {
-    run["robot"]["gait"]["footholds"] = "truth";
-    run["robot"]["gait"]["unsafe_steps"] = "refuse";
-  }
 }
 
 bool IsBaselineName(const std::string& name) { return name == kBlindBaseline || name == kOracleBaseline; }
