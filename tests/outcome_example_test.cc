@@ -73,3 +73,46 @@ TEST(OutcomeExample, RanksSetsTheSameOnTwoDisjointSeedRangesAndDrawsThem) {
 
 }  // namespace
 }  // namespace proxsim
+
+namespace proxsim {
+namespace {
+
+// The courses' baselines study (data/studies/outcomes_courses_baselines.yaml)
+// on ten courses at difficulty 0.6 with the stop rule: the worlds test the
+// sensors (blind succeeds in at most 2 of 10, 8 % over its 100 seeds) and
+// the oracle gets through (at least 9 of 10, 100 % over its 100 seeds).
+TEST(OutcomeExample, CoursesTestTheSensorsBlindFailsTheOracleGetsThrough) {
+  const fs::path dir = FreshDir("outcome_courses_bar");
+  fs::create_directories(dir);
+  std::string text = ReadFile(std::string(PROXSIM_SOURCE_DIR) + "/data/studies/outcomes_courses_baselines.yaml");
+  const auto replace = [&text](const std::string& from, const std::string& to) {
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("base: ../scenarios/", "base: " + std::string(PROXSIM_SOURCE_DIR) + "/data/scenarios/");
+  replace("difficulty: [0.3, 0.6, 0.9]", "difficulty: 0.6");
+  replace("seeds: {from: 101, to: 200}", "seeds: {from: 101, to: 110}");
+  replace(", {name: circumvent, perception: map}]", "]");
+  std::ofstream(dir / "courses.yaml") << text;
+  const auto result = RunProxsim("study " + (dir / "courses.yaml").string() + " --no-report --out " + (dir / "out").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  int blind = 0, oracle = 0, blind_runs = 0, oracle_runs = 0;
+  const auto results = ReadCsv(dir / "out" / "results.csv");
+  for (const auto& row : results.rows) {
+    if (row.at("strategy").rfind("stop", 0) != 0) continue;
+    if (row.at("set") == "blind") {
+      ++blind_runs;
+      blind += row.at("success") == "1";
+    } else if (row.at("set") == "oracle") {
+      ++oracle_runs;
+      oracle += row.at("success") == "1";
+    }
+  }
+  EXPECT_EQ(blind_runs, 10);
+  EXPECT_EQ(oracle_runs, 10);
+  EXPECT_LE(blind, 2);
+  EXPECT_GE(oracle, 9);
+}
+
+}  // namespace
+}  // namespace proxsim
