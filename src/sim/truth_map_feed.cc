@@ -24,14 +24,19 @@ void TruthMapFeed::Reset() {
   reach_before_W_.reset();
 }
 
-void TruthMapFeed::AddDisc(const Vec2& p_W, double radius_m) {
+void TruthMapFeed::AddDisc(const Vec2& p_W, double radius_m, const Vec2& p_W_pelvis, const Vec2& heading_W) {
   const double r = resolution_m_;
   const auto lo = [r](double v) { return static_cast<std::int32_t>(std::floor(v / r)); };
   for (std::int32_t iy = lo(p_W.y() - radius_m); iy <= lo(p_W.y() + radius_m); ++iy) {
     for (std::int32_t ix = lo(p_W.x() - radius_m); ix <= lo(p_W.x() + radius_m); ++ix) {
       const Vec2 centre((ix + 0.5) * r, (iy + 0.5) * r);
       if ((centre - p_W).squaredNorm() > radius_m * radius_m) continue;
-      if (queued_.insert(Key(ix, iy)).second) due_xy_W_.push_back(centre);
+      // within reach, or cast before (what a person leaves behind is cleared even beyond it)
+      const std::int64_t key = Key(ix, iy);
+      const Vec2 d = centre - p_W_pelvis;
+      const bool in_reach = d.squaredNorm() <= reach_m_ * reach_m_ && d.dot(heading_W) >= -kTruthBehind_m;
+      if (!in_reach && !cast_.contains(key)) continue;
+      if (queued_.insert(key).second) due_xy_W_.push_back(centre);
     }
   }
 }
@@ -90,8 +95,8 @@ const std::vector<RayEvidence>& TruthMapFeed::Columns(const World& world, const 
   // moving things, where they were and where they are: cast again (a cell
   // also within reach for the first time is then marked cast below)
   const std::vector<std::pair<Vec2, double>> moving = world.MovingFootprints_W();
-  for (const auto& [p_W, radius_m] : moving_before_) AddDisc(p_W, radius_m + resolution_m_);
-  for (const auto& [p_W, radius_m] : moving) AddDisc(p_W, radius_m + resolution_m_);
+  for (const auto& [p_W, radius_m] : moving_before_) AddDisc(p_W, radius_m + resolution_m_, p_W_pelvis, heading_W);
+  for (const auto& [p_W, radius_m] : moving) AddDisc(p_W, radius_m + resolution_m_, p_W_pelvis, heading_W);
   moving_before_ = moving;
   AddReach(p_W_pelvis, heading_W);
   if (due_xy_W_.empty()) return columns_;

@@ -48,8 +48,9 @@ class TruthMapFeed {
   static std::int64_t Key(std::int32_t ix, std::int32_t iy) {
     return (static_cast<std::int64_t>(ix) << 32) ^ static_cast<std::uint32_t>(iy);
   }
-  // the cells within radius_m of p_W, each once into `due` (and `queued`)
-  void AddDisc(const Vec2& p_W, double radius_m);
+  // the cells within radius_m of p_W that are within the reach about
+  // p_W_pelvis (or were cast before), each once into `due` (and `queued`)
+  void AddDisc(const Vec2& p_W, double radius_m, const Vec2& p_W_pelvis, const Vec2& heading_W);
   // the never-cast cells of the reach about p_W along heading_W, but those in the reach at the last feed
   void AddReach(const Vec2& p_W, const Vec2& heading_W);
   // the columns ix (first, last) of row iy whose centres lie in the reach
