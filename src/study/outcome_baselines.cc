@@ -36,36 +36,27 @@ std::string OracleSensorsYaml(std::vector<std::string>& names) {
   return yaml + "]";
 }
 
-// whether a run's legs plan their footholds on the robot's own map (gait.footholds: map)
-bool LegsPlanOnTheirMap(const YAML::Node& run) {
+// whether the run's robot.SECTION.KEY is `map` (gait.footholds: the legs
+// plan on the robot's map; strategy.perception: the strategy reads it)
+bool RobotKeyIsMap(const YAML::Node& run, const char* section, const char* key) {
   const YAML::Node robot = run["robot"];
   if (!robot || !robot.IsMap()) return false;
-  const YAML::Node gait = robot["gait"];
-  if (!gait || !gait.IsMap()) return false;
-  const YAML::Node footholds = gait["footholds"];
-  return footholds && footholds.IsScalar() && footholds.Scalar() == "map";
-}
-
-// whether a run's strategy reads the robot's map (perception: map)
-bool StrategyReadsTheMap(const YAML::Node& run) {
-  const YAML::Node robot = run["robot"];
-  if (!robot || !robot.IsMap()) return false;
-  const YAML::Node strategy = robot["strategy"];
-  if (!strategy || !strategy.IsMap()) return false;
-  const YAML::Node perception = strategy["perception"];
-  return perception && perception.IsScalar() && perception.Scalar() == "map";
+  const YAML::Node part = robot[section];
+  if (!part || !part.IsMap()) return false;
+  const YAML::Node value = part[key];
+  return value && value.IsScalar() && value.Scalar() == "map";
 }
 
 }  // namespace
 
 void GiveOraclePerception(YAML::Node& run) {
-  const bool legs_on_map = LegsPlanOnTheirMap(run);
+  const bool legs_on_map = RobotKeyIsMap(run, "gait", "footholds");
   if (legs_on_map) {
     run["robot"]["gait"]["footholds"] = "truth";
     run["robot"]["gait"]["unsafe_steps"] = "refuse";
   }
   // the true map only for a strategy that reads the map (nothing else reads it in a study)
-  if (!StrategyReadsTheMap(run)) return;
+  if (!RobotKeyIsMap(run, "strategy", "perception")) return;
   YAML::Node map = run["map"];
   if (!map || !map.IsMap()) map = YAML::Node(YAML::NodeType::Map);
   map["truth_within_m"] = kOracleReach_m;
