@@ -77,11 +77,10 @@ TEST(OraclePerception, WithoutTruthWithinTheMapOfABlindRobotStaysEmpty) {
 }
 
 TEST(OraclePerception, TruthWithinOutOfRangeIsAnInputError) {
-  EXPECT_THROW(LoadScenarioText(OracleWalkText("").replace(OracleWalkText("").find("truth_within_m: 3"),
-                                                            std::string("truth_within_m: 3").size(),
-                                                            "truth_within_m: -1"),
-                                "bad.yaml"),
-               std::exception);
+  std::string text = OracleWalkText("");
+  const std::string key = "truth_within_m: 3";
+  text.replace(text.find(key), key.size(), "truth_within_m: -1");
+  EXPECT_THROW(LoadScenarioText(text, "bad.yaml"), std::exception);
 }
 
 // A staircase of 0.075 m risers and 0.37 m treads up to a landing 0.3 m up:
