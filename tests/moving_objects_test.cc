@@ -217,7 +217,7 @@ TEST(MovingObjects, ARobotStruckByAMovingBoxCollidesWithIt) {
 }
 
 // People as pedestrians: one whose way crosses the place where the robot
-// stands waits for it (kPedestrianKeep_m) and never walks into it — at
+// stands waits for it (kPedestrianPassStanding_m) and never walks into it — at
 // several crossings, starting before and after the robot stops — while a
 // robot that walks into a person has collided (the baseline that must fail).
 std::string PersonScenario(double cross_x_m, double start_s, const std::string& goal, double speed_m_s,

@@ -27,6 +27,35 @@ bool Touch(const Hazard& a, const Hazard& b, double gap_m) {
 
 double TopOf(const Hazard& hazard) { return hazard.ground_z_m + hazard.height_m; }
 
+// whether one of the hazard's raised cells lies in the corridor (its square
+// meets the rectangle): the cells, not their cluster's bounding box, which
+// for a drum or a table seen at an angle reaches into a corridor its cells
+// stay out of
+bool RaisedCellInCorridor(const TerrainMap& map, const Hazard& hazard, const std::array<Vec2, 4>& corridor,
+                          const Vec2& lateral, const Vec2& heading_W) {
+  const ElevationGrid& grid = map.grid();
+  const double half_cell_m = 0.5 * grid.resolution_m();
+  // a square's half extent along a unit axis: the corridor grown by it
+  const auto grown = [&](const Vec2& axis) { return half_cell_m * (std::abs(axis.x()) + std::abs(axis.y())); };
+  const auto [along_lo, along_hi] = Project(corridor, heading_W);
+  const auto [across_lo, across_hi] = Project(corridor, lateral);
+  const double grow_along_m = grown(heading_W), grow_across_m = grown(lateral);
+  const double raised_above_m = hazard.ground_z_m + map.config().obstacle_min_m;
+  for (std::int32_t iy = hazard.cells.iy_min; iy <= hazard.cells.iy_max; ++iy) {
+    for (std::int32_t ix = hazard.cells.ix_min; ix <= hazard.cells.ix_max; ++ix) {
+      const CellIndex index{ix, iy};
+      const TerrainCell* cell = grid.Find(index);
+      if (cell == nullptr || !cell->has_elevation() || cell->elevation_m <= raised_above_m) continue;
+      const Vec2 centre = grid.CellCentre(index);
+      const double along = centre.dot(heading_W), across = centre.dot(lateral);
+      if (along >= along_lo - grow_along_m && along <= along_hi + grow_along_m && across >= across_lo - grow_across_m &&
+          across <= across_hi + grow_across_m)
+        return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<bool> ObstaclesToWalkAround(const TerrainMap& map) {
@@ -82,7 +111,7 @@ const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, co
         break;
       }
     }
-    if (!apart) return &hazard;
+    if (!apart && RaisedCellInCorridor(map, hazard, corridor, lateral, heading_W)) return &hazard;
   }
   return nullptr;
 }

@@ -27,9 +27,9 @@ namespace proxsim {
 /// Per hazard of map.hazards(): whether it is an obstacle to walk around (above).
 std::vector<bool> ObstaclesToWalkAround(const TerrainMap& map);
 
-/// The first obstacle (in the map's order) whose extent meets the corridor
-/// [0, ahead_m] along `heading_W` (unit, horizontal) from `p_W_from`, within
-/// ±half_width_m across it; null when none does.
+/// The first obstacle (in the map's order) one of whose raised cells meets
+/// the corridor [0, ahead_m] along `heading_W` (unit, horizontal) from
+/// `p_W_from`, within ±half_width_m across it; null when none does.
 const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, const Vec2& heading_W, double ahead_m,
                                  double half_width_m);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <stdexcept>
 
@@ -218,11 +219,13 @@ const SampleFrame& Simulation::TakeSample() {
   RobotInScene* robot = world_->robot();
   // the scene's moving objects where they are at this sample's time
   if (world_->has_moving_objects()) {
-    // people wait for a robot standing in their way, or coming to a stop
-    // there (its strategy stopped it: its last step under way), as
-    // pedestrians do (state_: the last sample's)
-    if (locomotion_ && (state_.stopped || outcome_.stop_requested) && frame_.sample > 0)
-      world_->HoldPeopleNear(state_.X_WP.translation().head<2>(), kPedestrianKeep_m, frame_.t_s, 1.0 / scenario_.rate_hz);
+    // people yield to a robot on the move (walking, or its last step under
+    // way after a stop) and pass a robot standing still without walking into
+    // it, as pedestrians do (state_: the last sample's)
+    if (locomotion_ && frame_.sample > 0)
+      world_->HoldPeopleNear(state_.X_WP.translation().head<2>(), kPedestrianKeep_m,
+                             state_.stopped ? kPedestrianPassStanding_m : std::numeric_limits<double>::infinity(),
+                             frame_.t_s, 1.0 / scenario_.rate_hz);
     const double moved_m = world_->MoveObjects(frame_.t_s);
     // the clearance's remembered bounds against them shrink by as much as they moved
     if (robot) robot->LowerClearanceBounds(world_->moving_caster(), moved_m);

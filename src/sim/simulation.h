@@ -39,9 +39,18 @@
 namespace proxsim {
 
 /// A person does not step nearer than this (torso to pelvis, horizontally)
-/// to a robot standing still: it waits (World::HoldPeopleNear). Two people's
-/// comfortable passing distance, about 0.45 m each of body and margin.
+/// to a robot on the move (walking, or its last step under way after a stop):
+/// it waits (World::HoldPeopleNear), yielding as pedestrians yield to a
+/// vehicle. Two people's comfortable passing distance, about 0.45 m each of
+/// body and margin.
 inline constexpr double kPedestrianKeep_m = 0.9;
+/// A robot standing still is passed by a person whose walk stays at least
+/// this far from it (torso to pelvis): it passes in front of a robot that
+/// stopped for it (which then walks on), and waits (kPedestrianKeep_m) rather
+/// than walk into it — the person's shoulders (about 0.25 m) and the robot's
+/// torso (0.23 m to a corner for the built-in biped) touch at about 0.48 m,
+/// and a stride reaches about 0.3 m ahead of the torso.
+inline constexpr double kPedestrianPassStanding_m = 0.6;
 
 class Simulation {
  public:

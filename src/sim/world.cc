@@ -134,16 +134,23 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
 
 World::~World() = default;
 
-int World::HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double t_s, double dt_s) {
+int World::HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double pass_m, double t_s, double dt_s) {
   int waiting = 0;
   for (Person& person : people_) {
     const MovingBody& torso = moving_[person.torso];
-    const Vec2 next = MotionPoseAt(*torso.motion, t_s - person.waited_s).translation().head<2>();
-    const double next_m = (next - p_W_robot).norm();
-    if (next_m < keep_m && next_m < (torso.X_WO.translation().head<2>() - p_W_robot).norm()) {
-      person.waited_s += dt_s;
-      ++waiting;
-    }
+    const auto torso_at = [&](double ahead_s) -> Vec2 {
+      const Pose X_WT = MotionPoseAt(*torso.motion, t_s - person.waited_s + ahead_s);
+      return X_WT.translation().head<2>();
+    };
+    const double next_m = (torso_at(0) - p_W_robot).norm();
+    if (!(next_m < keep_m && next_m < (torso.X_WO.translation().head<2>() - p_W_robot).norm())) continue;
+    // its walk ahead, every 0.1 s: passing by at pass_m or more, it walks on
+    bool passes = std::isfinite(pass_m);
+    for (double ahead_s = 0.1; passes && ahead_s <= kPassLook_s + 1e-9; ahead_s += 0.1)
+      passes = (torso_at(ahead_s) - p_W_robot).norm() >= pass_m;
+    if (passes) continue;
+    person.waited_s += dt_s;
+    ++waiting;
   }
   return waiting;
 }

@@ -61,12 +61,16 @@ class World {
   double MoveObjects(double t_s);
   /// Whether the scene has moving objects (they are bodies of their own in caster()).
   bool has_moving_objects() const { return !moving_.empty(); }
-  /// Pedestrians do not walk into a robot standing still: each person (the
-  /// moving parts `NAME/...` of a person, scene/person.h) whose next step,
-  /// at t_s, would bring its torso nearer than `keep_m` to `p_W_robot` and
-  /// nearer than it is now waits where it is for `dt_s` (its walk resumes
-  /// from there later). Call before MoveObjects(t_s); returns how many wait.
-  int HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double t_s, double dt_s);
+  /// Pedestrians do not walk into a robot: each person (the moving parts
+  /// `NAME/...` of a person, scene/person.h) whose next step, at t_s, would
+  /// bring its torso nearer than `keep_m` to `p_W_robot` and nearer than it
+  /// is now waits where it is for `dt_s` (its walk resumes from there later)
+  /// — unless its walk over the next kPassLook_s stays at least `pass_m`
+  /// from the robot: it passes by (infinity: it always waits). Call before
+  /// MoveObjects(t_s); returns how many wait.
+  int HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double pass_m, double t_s, double dt_s);
+  /// How far ahead a person looks at its own walk to pass a robot, s.
+  static constexpr double kPassLook_s = 2.0;
   /// Where each moving object is (its origin's x, y) and the radius of a
   /// sphere about its origin that holds it.
   std::vector<std::pair<Vec2, double>> MovingFootprints_W() const;

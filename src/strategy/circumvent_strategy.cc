@@ -473,11 +473,30 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   const bool turning_on_short_steps =
       reach_stride_m > 0 && reach_stride_m <= kTurningStride_m && stride_m_ > kTurningStride_m;
   const double look_ahead_m = turning_on_short_steps ? reach_m : std::max(config_.stop_distance_m, reach_m);
-  if (const auto p_W = PointInTheWay(observation, walking_W, look_ahead_m, own_width_m)) {
+  const auto p_W_in_the_way = PointInTheWay(observation, walking_W, look_ahead_m, own_width_m);
+  if (mode_ == Mode::kWaiting) {
+    if (p_W_in_the_way) {
+      way_clear_since_t_s_ = -1;
+    } else if (way_clear_since_t_s_ < 0) {
+      way_clear_since_t_s_ = observation.t_s;
+    } else if (observation.t_s - way_clear_since_t_s_ >= kClearBeforeWalkingOn_s) {
+      robot.Resume();
+      mode_ = mode_before_waiting_;
+      events.Log("walking_on", FormatNumbers("the way ahead has been clear for %.1f s: walking on",
+                                             kClearBeforeWalkingOn_s));
+    }
+    return;
+  }
+  if (p_W_in_the_way) {
     robot.Stop();
-    mode_ = Mode::kStopped;
-    events.Log("blocked", FormatNumbers("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
-                                 (*p_W - self.p_W_front).dot(walking_W)));
+    const bool may_clear = config_.perception == Perception::kMap;
+    mode_before_waiting_ = mode_;
+    mode_ = may_clear ? Mode::kWaiting : Mode::kStopped;
+    way_clear_since_t_s_ = -1;
+    events.Log("blocked", FormatNumbers(may_clear ? "a point %.3f m ahead of the leading toe, in the robot's way: "
+                                                    "stopping until the way is clear"
+                                                  : "a point %.3f m ahead of the leading toe, in the robot's way: stopping",
+                                        (*p_W_in_the_way - self.p_W_front).dot(walking_W)));
     return;
   }
   if (mode_ == Mode::kBlocked) return;

@@ -37,8 +37,11 @@
 //     heads for the next waypoint, so after overshooting a corner it would
 //     cut across, out of the corridor the path keeps clear; off the line by
 //     more than 0.1 m it is given a point on the line 0.6 m ahead.
+//  7. Reading the map (`perception: map`), a safety stop waits: once the
+//     way ahead has stayed clear for a second — a person who crossed has
+//     walked on — it walks on with its plan; a static obstacle never clears.
 // Events: obstacle_seen, detour_planned, detour_replanned, obstacle_passed,
-// rejoined, no_way_around, blocked, slowing_down, speeding_up.
+// rejoined, no_way_around, blocked, walking_on, slowing_down, speeding_up.
 //
 // Frames: W world; the path frame: origin at the segment's start, s along it,
 // l to its left, both in metres on the floor plane.
@@ -80,7 +83,8 @@ class CircumventStrategy : public Strategy {
   static constexpr double kCell_m = 0.02;
 
  private:
-  enum class Mode { kFollowing, kDetouring, kBlocked, kStopped };
+  // kWaiting: stopped by the safety stop for the map's obstacle, which may walk away (a person)
+  enum class Mode { kFollowing, kDetouring, kBlocked, kStopped, kWaiting };
   using Cell = std::pair<std::int64_t, std::int64_t>;
   struct Segment {
     Vec2 origin = Vec2::Zero();
@@ -134,6 +138,8 @@ class CircumventStrategy : public Strategy {
   SupportLeg last_support_ = SupportLeg::kDouble;
   bool started_ = false;
   Mode mode_ = Mode::kFollowing;
+  Mode mode_before_waiting_ = Mode::kFollowing;
+  double way_clear_since_t_s_ = -1;  // waiting: when the way ahead last became clear; < 0: not clear
   double half_width_m_ = 0;
   std::map<Cell, Vec3> points_;  // the kept points, one per cell
   std::vector<Cell> cells_added_;   // the cells of points_ in the order they were added

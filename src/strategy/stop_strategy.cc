@@ -54,14 +54,16 @@ constexpr int kFloorMissingReadings = 2;
 }  // namespace
 
 void StopStrategy::Reset(const StrategySetup& setup) {
-  stopping_ = false;
+  stopping_ = stopped_for_map_obstacle_ = false;
+  corridor_clear_since_t_s_ = -1;
   sensors_.assign(setup.sensors.begin(), setup.sensors.end());
   max_drop_m_ = config_.max_drop_m > 0 ? config_.max_drop_m : setup.max_step_m;
   floor_missing_streak_.assign(sensors_.size(), 0);
 }
 
 void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, EventLog& events) {
-  if (stopping_ || observation.robot == nullptr) return;
+  if (observation.robot == nullptr) return;
+  if (stopping_ && !stopped_for_map_obstacle_) return;
   const RobotKnowledge& self = *observation.robot;
   char detail[240];
   if (config_.perception == Perception::kMap) {
@@ -74,13 +76,30 @@ void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, 
     const Vec2 from = p_WP + (self.p_W_front.head<2>() - p_WP).dot(heading) * heading;
     const Hazard* obstacle =
         ObstacleInCorridor(*observation.map, from, heading, config_.stop_distance_m, config_.corridor_half_width_m);
+    if (stopping_) {
+      // stopped for something the map showed: a person who walked on leaves
+      // the corridor clear, and the robot walks again once it has stayed clear
+      if (obstacle != nullptr) {
+        corridor_clear_since_t_s_ = -1;
+      } else if (corridor_clear_since_t_s_ < 0) {
+        corridor_clear_since_t_s_ = observation.t_s;
+      } else if (observation.t_s - corridor_clear_since_t_s_ >= kClearBeforeWalkingOn_s) {
+        robot.Resume();
+        stopping_ = stopped_for_map_obstacle_ = false;
+        corridor_clear_since_t_s_ = -1;
+        std::snprintf(detail, sizeof detail, "the corridor ahead has been clear for %.1f s: walking on",
+                      kClearBeforeWalkingOn_s);
+        events.Log("walking_on", detail);
+      }
+      return;
+    }
     if (obstacle == nullptr) return;
     std::snprintf(detail, sizeof detail,
                   "the map shows an obstacle %.2f m high over (%.2f, %.2f)-(%.2f, %.2f), %.3f m from the leading toe",
                   obstacle->height_m, obstacle->min_W.x(), obstacle->min_W.y(), obstacle->max_W.x(),
                   obstacle->max_W.y(), obstacle->DistanceTo(self.p_W_front.head<2>()));
     robot.Stop();
-    stopping_ = true;
+    stopping_ = stopped_for_map_obstacle_ = true;
     events.Log("obstacle_ahead", detail);
     return;
   }

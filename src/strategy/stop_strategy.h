@@ -7,7 +7,10 @@
 // ground, or the floor missing where a sensor should see it, on two fresh
 // readings in a row of the same sensor, so that one lost echo, a dropout, does
 // not stop the robot), makes the robot stop at its next double support.
-// Events: `obstacle_ahead`, `drop_ahead`. It stops once and stays stopped.
+// Events: `obstacle_ahead`, `drop_ahead`, `walking_on`. It stays stopped,
+// but for an obstacle of the map (`perception: map`) that leaves its corridor:
+// once the corridor has stayed clear for a second — a person who crossed has
+// walked on — it walks on.
 #pragma once
 
 #include <optional>
@@ -47,6 +50,8 @@ class StopStrategy : public Strategy {
   double max_drop_m_ = 0;  // NaN: the legs' step is not known, no drop rule
   std::vector<int> floor_missing_streak_;  // per sensor: fresh readings in a row with the floor missing
   bool stopping_ = false;
+  bool stopped_for_map_obstacle_ = false;  // the stop is the map's obstacle's: it may clear
+  double corridor_clear_since_t_s_ = -1;   // < 0: the corridor is not clear
 };
 
 }  // namespace proxsim

@@ -23,6 +23,12 @@
 
 namespace proxsim {
 
+/// How long the way must stay clear on the map before a built-in strategy
+/// stopped for an obstacle walks on: a person crossing has stepped well out
+/// of the way (a second at walking pace is more than a body's width); a
+/// static obstacle never clears.
+inline constexpr double kClearBeforeWalkingOn_s = 1.0;
+
 /// What a strategy knows before the first sample of an episode.
 struct StrategySetup {
   std::span<const SensorInfo> sensors;  ///< in scenario order
