@@ -29,17 +29,21 @@ int RaisedCells(const TerrainMap& map, double x0, double x1, double y0, double y
 
 TEST(GhostCells, APersonWhoCrossedInFrontLeavesNoGhostCellsTwoSecondsAfterLeavingTheView) {
   // the person crosses the robot's way at x = 1.8 (from y = −2 at t = 0.5 to
-  // y = +2 at t = 4.5, where it stops, out of the forward-looking sensors' view)
+  // y = +2 at t = 4.5, where it stops, out of the forward-looking sensors' view),
+  // passing the robot's line at t = 2.5 with the robot's pelvis (from x = −0.5)
+  // about 1.05 m away: farther than a pedestrian yields at (kPedestrianKeep_m)
   const double left_view_t_s = 4.5;
   const Scenario scenario = LoadScenarioText(
       "proxsim: 1\nduration_s: 6.5\nrate_hz: 100\n"
       "scene:\n  objects:\n"
       "    - {name: floor, plane: {}}\n"
       "    - {name: walker, person: {height_m: 1.75}, motion: {waypoints_m: [[1.8, -2], [1.8, 2]], speed_m_s: 1, mode: once, start_s: 0.5}}\n"
-      "robot:\n  path: {waypoints_m: [[0, 0], [4, 0]]}\n  on_collision: continue\n"
+      "robot:\n  start: {xyz_m: [-0.5, 0, 0]}\n  path: {waypoints_m: [[-0.5, 0], [4, 0]]}\n  on_collision: continue\n"
       "sensors:\n"
       "  - {name: ideal, type: ideal, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 15, 0]}}\n"
       "  - {name: laser, type: laser, link: right_tibia, pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 15, 0]}}\n"
+      "  - {name: ideal_8, type: ideal, link: left_tibia, pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 8, 0]}}\n"
+      "  - {name: laser_8, type: laser, link: right_tibia, pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 8, 0]}}\n"
       "",  // (a level ultrasonic beam never passes below what it saw: its echoes stay)
       "ghost.yaml");
   Simulation sim(scenario, 1);
