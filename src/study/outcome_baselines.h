@@ -51,9 +51,9 @@ inline constexpr double kOracleMapCeiling_m = 1.2;
 
 /// Makes a run's scenario the oracle's (its sensors are already the fan):
 /// for a strategy that reads the map (perception: map), its map filled from
-/// the scene's truth within kOracleReach_m of the robot (map.truth_within_m;
-/// the fan feeds the readings-mode strategies, not the map) up to
-/// kOracleMapCeiling_m, and, where the legs plan on the robot's map (gait.footholds: map),
+/// the scene's truth within kOracleReach_m of the robot (map.truth_within_m)
+/// up to kOracleMapCeiling_m, and no sensor (the fan feeds only the
+/// readings-mode strategies, not the map), and, where the legs plan on the robot's map (gait.footholds: map),
 /// legs on the true ground that stand before a step they cannot take — what
 /// legs planning on a perfect map do.
 void GiveOraclePerception(YAML::Node& run);
