@@ -232,8 +232,7 @@ Recording ParseRecording(const std::string& text, const std::string& source, int
     recording.d_m[slot] = valid ? value[kD] : std::numeric_limits<double>::quiet_NaN();
   }
   if (!column) problems.At(0, "no header; expected " + std::string(kRecordingHeader) + " and one row per zone per sample");
-  problems.ThrowIfAny();
-  if (recording.t_s.empty()) problems.At(line, "no data rows after the header");
+  if (column && recording.t_s.empty()) problems.At(line, "no data rows after the header");
   if (!recording.t_s.empty()) CheckSampleComplete(open, recording, problems);
   problems.ThrowIfAny();
   return recording;
