@@ -19,17 +19,10 @@ import json
 import os
 import sys
 
-try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-except ImportError:
-    print("fidelity_report: needs python3-matplotlib and python3-numpy", file=sys.stderr)
-    sys.exit(3)
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from proxsim_report.plotting import require_plotting  # noqa: E402
+
+plt, np = require_plotting("fidelity_report")
 from proxsim_report.safe_files import save_figure  # noqa: E402  (never through a link)
 from proxsim_report.style import SENSOR_PALETTE  # noqa: E402  (the report's colours)
 

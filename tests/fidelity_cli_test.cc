@@ -68,6 +68,14 @@ std::string FidelityRowName(const nlohmann::json& row) {
   return "ring " + row["ring"].dump() + ", band " + row["band_name"].dump();
 }
 
+// `text` written as DIR/NAME in a fresh folder DIR named `test`; returns the file's path.
+std::filesystem::path WriteFidelityTestFile(const std::string& test, const std::string& name, const std::string& text) {
+  const std::filesystem::path dir = FreshDir(test);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
 TEST(FidelityCli, TheShippedRecordingIsWithinTheDatasheetAccuracy) {
   const std::filesystem::path dir = FreshDir("fidelity_shipped");
   const nlohmann::json summary = RunFidelityJson(kShippedYaml, dir);
@@ -162,14 +170,13 @@ TEST(FidelityCli, TheModelsNoiseIsKeyedAndWidensTheErrors) {
 TEST(FidelityCli, ASingleZonePartComparesItsReadings) {
   // a VL53L1X 1 m from the wall, head-on, read 1.000 and 1.010 m; then
   // turned 60° away, where the recording says it saw nothing
-  const std::filesystem::path dir = FreshDir("fidelity_single");
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "l1x.csv") << "t_s,x_m,y_m,z_m,qw,qx,qy,qz,d_m,valid\n"
-                                    "0.0,2,0,0.5,1,0,0,0,1.000,1\n"
-                                    "0.1,2,0,0.5,1,0,0,0,1.010,1\n"
-                                    "0.2,2,0,0.5,0.5,0,0,0.8660254037844386,,0\n";
-  const auto yaml = WriteFidelityVariant(dir, "  - {name: l1x, type: vl53l1x}\n", dir / "l1x.csv");
-  const nlohmann::json summary = RunFidelityJson(yaml, dir);
+  const std::filesystem::path csv = WriteFidelityTestFile("fidelity_single", "l1x.csv",
+                                                          "t_s,x_m,y_m,z_m,qw,qx,qy,qz,d_m,valid\n"
+                                                          "0.0,2,0,0.5,1,0,0,0,1.000,1\n"
+                                                          "0.1,2,0,0.5,1,0,0,0,1.010,1\n"
+                                                          "0.2,2,0,0.5,0.5,0,0,0.8660254037844386,,0\n");
+  const auto yaml = WriteFidelityVariant(csv.parent_path(), "  - {name: l1x, type: vl53l1x}\n", csv);
+  const nlohmann::json summary = RunFidelityJson(yaml, csv.parent_path());
   const auto& all = summary["tables"][0];
   EXPECT_EQ(all["count"], 3);
   EXPECT_EQ(all["both_valid"], 2);
@@ -192,10 +199,8 @@ TEST(FidelityCli, DrawsItsFigure) {
 // part and scene), expecting exit 2, every one of `expected` in the message
 // and nothing written.
 void ExpectRecordingRefused(const std::string& name, const std::string& csv, const std::vector<std::string>& expected) {
-  const std::filesystem::path dir = FreshDir(name);
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "bad.csv") << csv;
-  const auto yaml = WriteFidelityVariant(dir, "  - {name: tof, type: vl53l5cx, zones: [4, 4]}\n", dir / "bad.csv");
+  const std::filesystem::path bad = WriteFidelityTestFile(name, "bad.csv", csv), dir = bad.parent_path();
+  const auto yaml = WriteFidelityVariant(dir, "  - {name: tof, type: vl53l5cx, zones: [4, 4]}\n", bad);
   const auto run = RunProxsim("fidelity " + yaml.string() + " --no-report --out " + (dir / "out").string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   for (const std::string& text : expected) EXPECT_NE(run.output.find(text), std::string::npos) << text << "\n" << run.output;
@@ -235,16 +240,16 @@ TEST(FidelityCli, BadRecordingsExit2NamingTheFileLineAndColumn) {
 }
 
 TEST(FidelityCli, BadFidelityFilesExit2NamingTheLineAndKey) {
-  const std::filesystem::path dir = FreshDir("fidelity_bad_yaml");
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "f.yaml") << "proxsim: 1\n"
-                                   "scene: {objects: []}\n"
-                                   "sensors:\n"
-                                   "  - {name: a, type: vl53l5cx, distance: sideways}\n"
-                                   "  - {name: b, type: laser}\n"
-                                   "recording: missing.csv\n"
-                                   "simulate_nosie: true\n";
-  const auto run = RunProxsim("fidelity " + (dir / "f.yaml").string() + " --no-report --out " + (dir / "out").string());
+  const std::filesystem::path yaml = WriteFidelityTestFile("fidelity_bad_yaml", "f.yaml",
+                                                           "proxsim: 1\n"
+                                                           "scene: {objects: []}\n"
+                                                           "sensors:\n"
+                                                           "  - {name: a, type: vl53l5cx, distance: sideways}\n"
+                                                           "  - {name: b, type: laser}\n"
+                                                           "recording: missing.csv\n"
+                                                           "simulate_nosie: true\n");
+  const std::filesystem::path dir = yaml.parent_path();
+  const auto run = RunProxsim("fidelity " + yaml.string() + " --no-report --out " + (dir / "out").string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   // the fidelity file's own keys, and the scenario parser's problems at the file's lines
   for (const std::string text :
