@@ -62,7 +62,6 @@ FidelityConfig LoadFidelityFile(const std::string& path) {
 
   FidelityConfig config;
   config.source = path;
-  config.band_edges_m = DefaultBandEdges_m();
   const auto top = reader.Map(reader.Root(document),
                               {"proxsim", "seed", "scene", "sensors", "recording", "simulate_noise", "bands_m"},
                               "a map of fidelity keys (proxsim, seed, scene, sensors, recording, simulate_noise, "
@@ -71,7 +70,7 @@ FidelityConfig LoadFidelityFile(const std::string& path) {
 
   // one sensor: the recording is of one part
   if (const auto sensors = reader.List((*top)["sensors"], "a list of one sensor, as in a scenario");
-      sensors && sensors->size() != 1) {
+      sensors && sensors->size() > 1) {  // none: the scenario parser says so
     reader.Fail((*top)["sensors"], "expected exactly one sensor (the recorded part), got " +
                                        std::to_string(sensors->size()));
   }

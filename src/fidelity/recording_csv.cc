@@ -19,7 +19,7 @@ namespace {
 
 // The columns, in the order of the documented header; `zone` may be left out
 // by a single-zone part.
-enum RecordingColumn { kT, kX, kY, kZ, kQw, kQx, kQy, kQz, kZone, kD, kValid, kRecordingColumns };
+enum RecordingColumn { kColT, kColX, kColY, kColZ, kColQw, kColQx, kColQy, kColQz, kColZone, kColD, kColValid, kRecordingColumns };
 const std::vector<std::string>& RecordingColumnNames() {
   static const std::vector<std::string> names = {"t_s", "x_m", "y_m", "z_m", "qw",  "qx",
                                                  "qy",  "qz",  "zone", "d_m", "valid"};
@@ -87,9 +87,9 @@ std::array<int, kRecordingColumns> ReadRecordingHeader(const std::vector<std::st
     slot = static_cast<int>(c);
   }
   for (int column = 0; column < kRecordingColumns; ++column) {
-    if (index[column] >= 0 || (column == kZone && zone_count == 1)) continue;
+    if (index[column] >= 0 || (column == kColZone && zone_count == 1)) continue;
     problems.At(line, "missing column '" + names[column] + "'" +
-                          (column == kZone ? " (the part has " + std::to_string(zone_count) + " zones)" : "") +
+                          (column == kColZone ? " (the part has " + std::to_string(zone_count) + " zones)" : "") +
                           "; expected the header " + kRecordingHeader);
   }
   return index;
@@ -149,45 +149,45 @@ Recording ParseRecording(const std::string& text, const std::string& source, int
     std::array<double, kRecordingColumns> value{};
     bool row_ok = true;
     for (int c = 0; c < kRecordingColumns; ++c) {
-      if ((*column)[c] < 0 || c == kValid) continue;
+      if ((*column)[c] < 0 || c == kColValid) continue;
       const std::string& cell = cells[(*column)[c]];
-      if (c == kD && cell.empty()) {
+      if (c == kColD && cell.empty()) {
         value[c] = std::numeric_limits<double>::quiet_NaN();
       } else if (!ParseFiniteNumber(cell, &value[c])) {
         problems.InColumn(line, (*column)[c], c, "expected a finite number, got '" + cell + "'");
         row_ok = false;
       }
     }
-    const std::string& valid_cell = cells[(*column)[kValid]];
+    const std::string& valid_cell = cells[(*column)[kColValid]];
     const bool valid = valid_cell == "1" || valid_cell == "true";
     if (!valid && valid_cell != "0" && valid_cell != "false") {
-      problems.InColumn(line, (*column)[kValid], kValid, "expected 1 (a valid target) or 0, got '" + valid_cell + "'");
+      problems.InColumn(line, (*column)[kColValid], kColValid, "expected 1 (a valid target) or 0, got '" + valid_cell + "'");
       row_ok = false;
     }
     if (!row_ok) continue;
     // each field within its bounds
-    for (const int c : {kX, kY, kZ}) {
+    for (const int c : {kColX, kColY, kColZ}) {
       if (std::abs(value[c]) > kMaxCoordinate_m) {
         problems.InColumn(line, (*column)[c], c, "expected a coordinate within ±100000 m (rays are cast in single "
                                                  "precision), got " + cells[(*column)[c]]);
         row_ok = false;
       }
     }
-    const double zone_value = (*column)[kZone] >= 0 ? value[kZone] : 0.0;
+    const double zone_value = (*column)[kColZone] >= 0 ? value[kColZone] : 0.0;
     if (!(zone_value >= 0 && zone_value < zone_count && zone_value == std::floor(zone_value))) {
-      problems.InColumn(line, (*column)[kZone], kZone, "expected a zone index, a whole number in [0, " +
+      problems.InColumn(line, (*column)[kColZone], kColZone, "expected a zone index, a whole number in [0, " +
                                                            std::to_string(zone_count - 1) + "], got " +
-                                                           cells[(*column)[kZone]]);
+                                                           cells[(*column)[kColZone]]);
       row_ok = false;
     }
-    if (valid && !(value[kD] >= 0)) {
-      problems.InColumn(line, (*column)[kD], kD, "expected the reported distance, >= 0 m, where valid is 1, got '" +
-                                                     cells[(*column)[kD]] + "'");
+    if (valid && !(value[kColD] >= 0)) {
+      problems.InColumn(line, (*column)[kColD], kColD, "expected the reported distance, >= 0 m, where valid is 1, got '" +
+                                                     cells[(*column)[kColD]] + "'");
       row_ok = false;
     }
-    const Eigen::Quaterniond q(value[kQw], value[kQx], value[kQy], value[kQz]);
+    const Eigen::Quaterniond q(value[kColQw], value[kColQx], value[kColQy], value[kColQz]);
     if (std::abs(q.norm() - 1.0) > kUnitQuaternionTolerance) {
-      problems.InColumn(line, (*column)[kQw], kQw, "qw, qx, qy, qz: expected a unit quaternion (w first), got one of "
+      problems.InColumn(line, (*column)[kColQw], kColQw, "qw, qx, qy, qz: expected a unit quaternion (w first), got one of "
                                                    "norm " + std::to_string(q.norm()));
       row_ok = false;
     }
@@ -195,17 +195,17 @@ Recording ParseRecording(const std::string& text, const std::string& source, int
 
     // a new sample where the time moves on; its rows share its pose
     Pose X_WM = Pose::Identity();
-    X_WM.translation() = Vec3(value[kX], value[kY], value[kZ]);
+    X_WM.translation() = Vec3(value[kColX], value[kColY], value[kColZ]);
     X_WM.linear() = q.normalized().toRotationMatrix();
-    const double t_s = value[kT];
+    const double t_s = value[kColT];
     const bool same_sample = !recording.t_s.empty() && t_s == recording.t_s.back();
     if (!same_sample) {
       if (!recording.t_s.empty()) {
         CheckSampleComplete(open, recording, problems);
         if (!(t_s > recording.t_s.back())) {
-          problems.InColumn(line, (*column)[kT], kT, "expected a time after the previous sample's (" +
+          problems.InColumn(line, (*column)[kColT], kColT, "expected a time after the previous sample's (" +
                                                          FormatRecordedTime(recording.t_s.back()) + " s), got " +
-                                                         cells[(*column)[kT]]);
+                                                         cells[(*column)[kColT]]);
           continue;
         }
       }
@@ -217,19 +217,19 @@ Recording ParseRecording(const std::string& text, const std::string& source, int
       open = OpenSample{line, std::vector<char>(zone_count, 0)};
     } else if ((X_WM.matrix() - recording.X_WM.back().matrix()).cwiseAbs().maxCoeff() > kSamePoseTolerance) {
       problems.At(line, "the pose differs from the one on line " + std::to_string(open.first_line) +
-                            " of the same sample (t_s = " + cells[(*column)[kT]] + "); a sample's rows share its pose");
+                            " of the same sample (t_s = " + cells[(*column)[kColT]] + "); a sample's rows share its pose");
       continue;
     }
     const auto zone = static_cast<int>(zone_value);
     if (open.listed[zone]) {
-      problems.InColumn(line, (*column)[kZone], kZone, "zone " + std::to_string(zone) + " appears twice in the "
-                                                           "sample at t_s = " + cells[(*column)[kT]]);
+      problems.InColumn(line, (*column)[kColZone], kColZone, "zone " + std::to_string(zone) + " appears twice in the "
+                                                           "sample at t_s = " + cells[(*column)[kColT]]);
       continue;
     }
     open.listed[zone] = 1;
     const std::size_t slot = (recording.t_s.size() - 1) * static_cast<std::size_t>(zone_count) + zone;
     recording.valid[slot] = valid ? 1 : 0;
-    recording.d_m[slot] = valid ? value[kD] : std::numeric_limits<double>::quiet_NaN();
+    recording.d_m[slot] = valid ? value[kColD] : std::numeric_limits<double>::quiet_NaN();
   }
   if (!column) problems.At(0, "no header; expected " + std::string(kRecordingHeader) + " and one row per zone per sample");
   if (column && recording.t_s.empty()) problems.At(line, "no data rows after the header");
