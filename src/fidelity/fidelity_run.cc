@@ -66,8 +66,9 @@ std::string FidelitySummary(const FidelityInputs& inputs, const FidelityComparis
                 inputs.recording.zone_count, inputs.recording.zone_count == 1 ? "" : "s",
                 config.simulate_noise ? "on" : "off");
   text += line;
-  std::snprintf(line, sizeof line, "  %-16s %8s %10s %9s %11s %10s %9s %11s %10s\n", "group", "readings", "both valid",
-                "agreement", "median err", "p90 |err|", "bias", "median rel", "p90 |rel|");
+  std::snprintf(line, sizeof line, "  %-14s %8s %10s %8s %10s %8s %9s %11s %10s %9s %11s %10s\n", "group", "readings",
+                "both valid", "rec only", "model only", "neither", "agreement", "median err", "p90 |err|", "bias",
+                "median rel", "p90 |rel|");
   text += line;
   for (const FidelityRow& row : comparison.rows) {
     if (row.table != "all" && row.table != "ring" && row.table != "band") continue;
@@ -75,8 +76,9 @@ std::string FidelitySummary(const FidelityInputs& inputs, const FidelityComparis
                               : row.table == "ring" ? "ring " + std::to_string(row.ring)
                                                     : "band " + RangeBandName(config.band_edges_m, row.band);
     const FidelityStats& s = row.stats;
-    std::snprintf(line, sizeof line, "  %-16s %8zu %10zu %9s %9s m %8s m %7s m %9s %% %8s %%\n", group.c_str(), s.count,
-                  s.both_valid, SummaryNumber("%.3f", s.validity_agreement).c_str(),
+    std::snprintf(line, sizeof line, "  %-14s %8zu %10zu %8zu %10zu %8zu %9s %9s m %8s m %7s m %9s %% %8s %%\n",
+                  group.c_str(), s.count, s.both_valid, s.recorded_only, s.simulated_only, s.both_invalid,
+                  SummaryNumber("%.3f", s.validity_agreement).c_str(),
                   SummaryNumber("%+.4f", s.median_error_m).c_str(), SummaryNumber("%.4f", s.p90_abs_error_m).c_str(),
                   SummaryNumber("%+.4f", s.bias_m).c_str(), SummaryNumber("%+.2f", 100 * s.median_rel_error).c_str(),
                   SummaryNumber("%.2f", 100 * s.p90_abs_rel_error).c_str());

@@ -39,7 +39,8 @@ std::vector<ComparedReading> CompareReadings(const Recording& recording, const R
 FidelityComparison CompareFidelity(const FidelityInputs& inputs, int threads);
 
 /// The summary printed at the end: the counts, then the rows of the tables
-/// "all", "ring" and "band", one line each.
+/// "all", "ring" and "band", one line each (with the confusion counts); the
+/// zones' and the ring × band rows are in the files.
 std::string FidelitySummary(const FidelityInputs& inputs, const FidelityComparison& comparison);
 
 }  // namespace proxsim

@@ -116,6 +116,76 @@ void CheckSampleComplete(const OpenSample& open, const Recording& recording, Rec
                                    (missing_count > 8 ? ", …" : "") + "); expected one row per zone per sample");
 }
 
+// One data row, read and checked.
+struct RecordingRow {
+  double t_s;
+  Pose X_WM;
+  int zone;
+  double d_m;  // NaN where not valid
+  bool valid;
+};
+
+// The row's cells (`column`: each column's cell) as a RecordingRow; nullopt
+// after reporting every problem it has.
+std::optional<RecordingRow> ReadRecordingRow(const std::vector<std::string>& cells,
+                                             const std::array<int, kRecordingColumns>& column, int line, int zone_count,
+                                             RecordingProblems& problems) {
+  // the numbers of the row (d_m may be empty where the reading is not valid)
+  std::array<double, kRecordingColumns> value{};
+  bool row_ok = true;
+  for (int c = 0; c < kRecordingColumns; ++c) {
+    if (column[c] < 0 || c == kColValid) continue;
+    const std::string& cell = cells[column[c]];
+    if (c == kColD && cell.empty()) {
+      value[c] = std::numeric_limits<double>::quiet_NaN();
+    } else if (!ParseFiniteNumber(cell, &value[c])) {
+      problems.InColumn(line, column[c], c, "expected a finite number, got '" + cell + "'");
+      row_ok = false;
+    }
+  }
+  const std::string& valid_cell = cells[column[kColValid]];
+  const bool valid = valid_cell == "1" || valid_cell == "true";
+  if (!valid && valid_cell != "0" && valid_cell != "false") {
+    problems.InColumn(line, column[kColValid], kColValid, "expected 1 (a valid target) or 0, got '" + valid_cell + "'");
+    row_ok = false;
+  }
+  if (!row_ok) return std::nullopt;
+  // each field within its bounds
+  for (const int c : {kColX, kColY, kColZ}) {
+    if (std::abs(value[c]) > kMaxCoordinate_m) {
+      problems.InColumn(line, column[c], c,
+                        "expected a coordinate within ±100000 m (rays are cast in single precision), got " +
+                            cells[column[c]]);
+      row_ok = false;
+    }
+  }
+  const double zone_value = column[kColZone] >= 0 ? value[kColZone] : 0.0;
+  if (!(zone_value >= 0 && zone_value < zone_count && zone_value == std::floor(zone_value))) {
+    problems.InColumn(line, column[kColZone], kColZone,
+                      "expected a zone index, a whole number in [0, " + std::to_string(zone_count - 1) + "], got " +
+                          cells[column[kColZone]]);
+    row_ok = false;
+  }
+  if (valid && !(value[kColD] >= 0)) {
+    problems.InColumn(line, column[kColD], kColD,
+                      "expected the reported distance, >= 0 m, where valid is 1, got '" + cells[column[kColD]] + "'");
+    row_ok = false;
+  }
+  const Eigen::Quaterniond q(value[kColQw], value[kColQx], value[kColQy], value[kColQz]);
+  if (std::abs(q.norm() - 1.0) > kUnitQuaternionTolerance) {
+    problems.InColumn(line, column[kColQw], kColQw,
+                      "qw, qx, qy, qz: expected a unit quaternion (w first), got one of norm " + std::to_string(q.norm()));
+    row_ok = false;
+  }
+  if (!row_ok) return std::nullopt;
+  RecordingRow row{
+      .t_s = value[kColT], .X_WM = Pose::Identity(), .zone = static_cast<int>(zone_value), .d_m = value[kColD], .valid = valid};
+  row.X_WM.translation() = Vec3(value[kColX], value[kColY], value[kColZ]);
+  row.X_WM.linear() = q.normalized().toRotationMatrix();
+  if (!valid) row.d_m = std::numeric_limits<double>::quiet_NaN();
+  return row;
+}
+
 }  // namespace
 
 Recording ParseRecording(const std::string& text, const std::string& source, int zone_count) {
@@ -145,59 +215,11 @@ Recording ParseRecording(const std::string& text, const std::string& source, int
                             " as the header has");
       continue;
     }
-    // the numbers of the row (d_m may be empty where the reading is not valid)
-    std::array<double, kRecordingColumns> value{};
-    bool row_ok = true;
-    for (int c = 0; c < kRecordingColumns; ++c) {
-      if ((*column)[c] < 0 || c == kColValid) continue;
-      const std::string& cell = cells[(*column)[c]];
-      if (c == kColD && cell.empty()) {
-        value[c] = std::numeric_limits<double>::quiet_NaN();
-      } else if (!ParseFiniteNumber(cell, &value[c])) {
-        problems.InColumn(line, (*column)[c], c, "expected a finite number, got '" + cell + "'");
-        row_ok = false;
-      }
-    }
-    const std::string& valid_cell = cells[(*column)[kColValid]];
-    const bool valid = valid_cell == "1" || valid_cell == "true";
-    if (!valid && valid_cell != "0" && valid_cell != "false") {
-      problems.InColumn(line, (*column)[kColValid], kColValid, "expected 1 (a valid target) or 0, got '" + valid_cell + "'");
-      row_ok = false;
-    }
-    if (!row_ok) continue;
-    // each field within its bounds
-    for (const int c : {kColX, kColY, kColZ}) {
-      if (std::abs(value[c]) > kMaxCoordinate_m) {
-        problems.InColumn(line, (*column)[c], c, "expected a coordinate within ±100000 m (rays are cast in single "
-                                                 "precision), got " + cells[(*column)[c]]);
-        row_ok = false;
-      }
-    }
-    const double zone_value = (*column)[kColZone] >= 0 ? value[kColZone] : 0.0;
-    if (!(zone_value >= 0 && zone_value < zone_count && zone_value == std::floor(zone_value))) {
-      problems.InColumn(line, (*column)[kColZone], kColZone, "expected a zone index, a whole number in [0, " +
-                                                           std::to_string(zone_count - 1) + "], got " +
-                                                           cells[(*column)[kColZone]]);
-      row_ok = false;
-    }
-    if (valid && !(value[kColD] >= 0)) {
-      problems.InColumn(line, (*column)[kColD], kColD, "expected the reported distance, >= 0 m, where valid is 1, got '" +
-                                                     cells[(*column)[kColD]] + "'");
-      row_ok = false;
-    }
-    const Eigen::Quaterniond q(value[kColQw], value[kColQx], value[kColQy], value[kColQz]);
-    if (std::abs(q.norm() - 1.0) > kUnitQuaternionTolerance) {
-      problems.InColumn(line, (*column)[kColQw], kColQw, "qw, qx, qy, qz: expected a unit quaternion (w first), got one of "
-                                                   "norm " + std::to_string(q.norm()));
-      row_ok = false;
-    }
-    if (!row_ok) continue;
+    const std::optional<RecordingRow> row = ReadRecordingRow(cells, *column, line, zone_count, problems);
+    if (!row) continue;
 
     // a new sample where the time moves on; its rows share its pose
-    Pose X_WM = Pose::Identity();
-    X_WM.translation() = Vec3(value[kColX], value[kColY], value[kColZ]);
-    X_WM.linear() = q.normalized().toRotationMatrix();
-    const double t_s = value[kColT];
+    const double t_s = row->t_s;
     const bool same_sample = !recording.t_s.empty() && t_s == recording.t_s.back();
     if (!same_sample) {
       if (!recording.t_s.empty()) {
@@ -210,17 +232,17 @@ Recording ParseRecording(const std::string& text, const std::string& source, int
         }
       }
       recording.t_s.push_back(t_s);
-      recording.X_WM.push_back(X_WM);
+      recording.X_WM.push_back(row->X_WM);
       recording.first_line.push_back(line);
       recording.d_m.resize(recording.d_m.size() + zone_count, std::numeric_limits<double>::quiet_NaN());
       recording.valid.resize(recording.valid.size() + zone_count, 0);
       open = OpenSample{line, std::vector<char>(zone_count, 0)};
-    } else if ((X_WM.matrix() - recording.X_WM.back().matrix()).cwiseAbs().maxCoeff() > kSamePoseTolerance) {
+    } else if ((row->X_WM.matrix() - recording.X_WM.back().matrix()).cwiseAbs().maxCoeff() > kSamePoseTolerance) {
       problems.At(line, "the pose differs from the one on line " + std::to_string(open.first_line) +
                             " of the same sample (t_s = " + cells[(*column)[kColT]] + "); a sample's rows share its pose");
       continue;
     }
-    const auto zone = static_cast<int>(zone_value);
+    const int zone = row->zone;
     if (open.listed[zone]) {
       problems.InColumn(line, (*column)[kColZone], kColZone, "zone " + std::to_string(zone) + " appears twice in the "
                                                            "sample at t_s = " + cells[(*column)[kColT]]);
@@ -228,8 +250,8 @@ Recording ParseRecording(const std::string& text, const std::string& source, int
     }
     open.listed[zone] = 1;
     const std::size_t slot = (recording.t_s.size() - 1) * static_cast<std::size_t>(zone_count) + zone;
-    recording.valid[slot] = valid ? 1 : 0;
-    recording.d_m[slot] = valid ? value[kColD] : std::numeric_limits<double>::quiet_NaN();
+    recording.valid[slot] = row->valid ? 1 : 0;
+    recording.d_m[slot] = row->d_m;
   }
   if (!column) problems.At(0, "no header; expected " + std::string(kRecordingHeader) + " and one row per zone per sample");
   if (column && recording.t_s.empty()) problems.At(line, "no data rows after the header");
