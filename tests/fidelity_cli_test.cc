@@ -98,6 +98,17 @@ TEST(FidelityCli, TheShippedRecordingIsWithinTheDatasheetAccuracy) {
   EXPECT_EQ(summary["tables"][0]["simulated_only"], 0);
 }
 
+TEST(FidelityCli, TheShippedRecordingIsWhatItsScriptWrites) {
+  // the documented generator (Python's standard library only, seeded) writes the shipped file byte for byte
+  const std::filesystem::path dir = FreshDir("fidelity_regenerated");
+  std::filesystem::create_directories(dir);
+  const auto run = testing::RunCommand("/usr/bin/python3 " + std::string(PROXSIM_SOURCE_DIR) +
+                                       "/data/fidelity/make_wall_recording.py " + (dir / "wall.csv").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(ReadFile(dir / "wall.csv") == ReadFile(kShippedCsv))
+      << "data/fidelity/wall_vl53l5cx.csv differs from what make_wall_recording.py writes: run it again";
+}
+
 TEST(FidelityCli, RadialDistancesFailTheBoundOnTheOuterZones) {
   // the same part reporting each zone's distance along its own axis: a border
   // zone's axis lies 20-27° off the sensor's, so it reads 6-13 % farther than
