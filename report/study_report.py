@@ -22,17 +22,10 @@ import json
 import os
 import sys
 
-try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-except ImportError:
-    print("study_report: needs python3-matplotlib and python3-numpy", file=sys.stderr)
-    sys.exit(3)
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from proxsim_report.plotting import require_plotting  # noqa: E402
+
+plt, np = require_plotting("study_report")
 from proxsim_report.safe_files import save_figure, write_text  # noqa: E402  (never through a link)
 
 
@@ -155,7 +148,7 @@ def main():
     # the same files draw the same figures, byte for byte (a merged study's as
     # a single run's, docs/studies.md): SVG ids from a fixed salt rather than
     # a random one, and the SVG date fixed (matplotlib reads SOURCE_DATE_EPOCH)
-    matplotlib.rcParams["svg.hashsalt"] = "proxsim-study"
+    plt.rcParams["svg.hashsalt"] = "proxsim-study"
     os.environ.setdefault("SOURCE_DATE_EPOCH", "0")
     with open(os.path.join(out, "selection.json")) as f:
         if json.load(f).get("mode") == "outcomes":

@@ -8,6 +8,7 @@
 //   proxsim export OUT_DIR --ros2 DIR  (the run as a ROS 2 bag, docs/ros2.md)
 //   proxsim bench [--json] [--quick] (the performance suite, docs/performance.md)
 //   proxsim study FILE [--shard i/N|slurm] [--out DIR], proxsim study merge DIR... --out DIR (docs/studies.md)
+//   proxsim fidelity FILE [--out DIR] [--noise on|off] (a part's model against a recording, docs/fidelity.md)
 // Exit codes: 0 success, 2 bad input (every problem listed, nothing written),
 // 1 any other failure (an I/O error, say), with the reason on stderr.
 #include <signal.h>
@@ -47,6 +48,8 @@
 #include "run/run.h"
 #include "sim/simulation.h"
 #include "core/message_format.h"
+#include "fidelity/fidelity_outputs.h"
+#include "fidelity/fidelity_run.h"
 #include "study/outcome_answers.h"
 #include "study/outcome_config.h"
 #include "study/outcome_runner.h"
@@ -411,6 +414,29 @@ int MergeStudy(const std::vector<std::string>& slice_dirs, const std::string& ou
   return AnswerStudy(study, proxsim::StudyResultsFromJournal(study, lines), given, out_dir, folder->path(), report);
 }
 
+// `fidelity`: the inputs checked before the folder is claimed (bad input writes nothing),
+// then the replay, the files, the summary and the figure
+int Fidelity(const std::string& path, const std::string& out_dir, const std::string& noise, int threads, bool report,
+             bool force) {
+  CheckOutArgument(out_dir);
+  const std::optional<bool> simulate_noise = noise.empty() ? std::nullopt : std::optional<bool>(noise == "on");
+  const proxsim::FidelityInputs inputs = proxsim::LoadFidelityInputs(path, simulate_noise);
+  const proxsim::OutputFolder folder(out_dir, {.command = "fidelity", .force = force, .ours = "fidelity.json"});
+  const proxsim::FidelityComparison comparison = proxsim::CompareFidelity(inputs, threads);
+  proxsim::WriteFidelityOutputs(folder.path(), inputs.config, inputs.recording, comparison.replayed,
+                                comparison.compared, comparison.rows);
+  std::fputs(proxsim::FidelitySummary(inputs, comparison).c_str(), stdout);
+  std::printf("outputs in %s/ (fidelity.json, fidelity_stats.csv, fidelity_pairs.csv)\n", out_dir.c_str());
+  std::fflush(stdout);
+  if (!report) return 0;
+  if (proxsim::MakeFidelityReport(folder.path()) != 0) {
+    std::fprintf(stderr, "proxsim: the comparison's files are complete, but its figure could not be drawn\n");
+    return kExitFailure;
+  }
+  std::printf("figure: %s/fidelity.png\n", out_dir.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -501,6 +527,22 @@ int main(int argc, char** argv) {
   merge->add_flag("--force", merge_force,
                   "write into a non-empty folder that holds no previous study (its files are never removed)");
 
+  std::string fidelity_path, fidelity_out = "fidelity-out", fidelity_noise;
+  int fidelity_threads = 1;
+  bool fidelity_no_report = false, fidelity_force = false;
+  CLI::App* fidelity = app.add_subcommand(
+      "fidelity", "compare a part's model with your own recording of it: errors by zone and range band, and a figure");
+  fidelity->add_option("file", fidelity_path, "fidelity YAML file: scene, sensor, recording (docs/fidelity.md)")
+      ->required()
+      ->check(ExistingInputFile());
+  fidelity->add_option("--out", fidelity_out, "output folder")->capture_default_str();
+  fidelity->add_option("--noise", fidelity_noise, "the model's noise: on or off (default: the file's simulate_noise)")
+      ->check(CLI::IsMember({"on", "off"}));
+  fidelity->add_option("--threads", fidelity_threads, "ray-casting threads")->check(CLI::Range(1, 256))->capture_default_str();
+  fidelity->add_flag("--no-report", fidelity_no_report, "skip the figure (the data files are still written)");
+  fidelity->add_flag("--force", fidelity_force,
+                     "write into a non-empty folder that holds no previous comparison (its files are never removed)");
+
   std::string validate_path;
   CLI::App* validate = app.add_subcommand("validate", "check a scenario and list every problem");
   validate->add_option("scenario", validate_path, "scenario YAML file")->required();
@@ -584,6 +626,8 @@ int main(int argc, char** argv) {
       static_assert(proxsim::kMcapExportBadInput == proxsim::kRos2ExportBadInput);
       return code == 0 ? 0 : code == proxsim::kMcapExportBadInput ? kExitBadInput : kExitFailure;
     }
+    if (*fidelity)
+      return Fidelity(fidelity_path, fidelity_out, fidelity_noise, fidelity_threads, !fidelity_no_report, fidelity_force);
     if (*validate) return Validate(validate_path);
     if (*generate) return Generate(generate_path, generate_out);
     if (*inspect) return proxsim::InspectCommand(inspect_target, inspect_json);

@@ -115,14 +115,27 @@ int MakeReport(const std::string& out_dir) {
   return status;
 }
 
-int MakeStudyReport(const std::string& out_dir) {
-  const std::string script = std::string(PROXSIM_SOURCE_DIR) + "/report/study_report.py";
+namespace {
+
+// Runs one of the report scripts that draw from a folder's files (report/NAME), saying what it draws when it cannot.
+int RunFolderScript(const char* name, const char* what, const std::string& out_dir) {
+  const std::string script = std::string(PROXSIM_SOURCE_DIR) + "/report/" + name;
   std::error_code ec;
   if (access(kPython, X_OK) != 0 || !std::filesystem::is_regular_file(script, ec)) {
-    std::cerr << "proxsim: cannot draw the study's figures: " << kPython << " or " << script << " is missing\n";
+    std::cerr << "proxsim: cannot draw " << what << ": " << kPython << " or " << script << " is missing\n";
     return 1;
   }
   return RunPythonScript({kPython, script, out_dir});
+}
+
+}  // namespace
+
+int MakeStudyReport(const std::string& out_dir) {
+  return RunFolderScript("study_report.py", "the study's figures", out_dir);
+}
+
+int MakeFidelityReport(const std::string& out_dir) {
+  return RunFolderScript("fidelity_report.py", "the fidelity figure", out_dir);
 }
 
 }  // namespace proxsim

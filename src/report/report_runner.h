@@ -13,4 +13,7 @@ int MakeReport(const std::string& out_dir);
 /// Draws a finished study's figures and its HTML page (report/study_report.py); 0 on success.
 int MakeStudyReport(const std::string& out_dir);
 
+/// Draws a fidelity comparison's figure, OUT/fidelity.png (report/fidelity_report.py); 0 on success.
+int MakeFidelityReport(const std::string& out_dir);
+
 }  // namespace proxsim

@@ -35,6 +35,7 @@ SensorReader::SensorReader(const Scenario& scenario, World& world) : scenario_(s
   zone_axes_S_.resize(scenario.sensors.size());
   zone_axes_W_.resize(scenario.sensors.size());
   measured_.resize(scenario.sensors.size());
+  mount_X_WM_.resize(scenario.sensors.size());
   for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
     if (const auto& zones = scenario.sensors[i].spec.zones) {
       for (int zone = 0; zone < ZoneCount(*zones); ++zone) zone_axes_S_[i].push_back(ZoneAxis_S(*zones, zone));
@@ -207,6 +208,8 @@ void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame) 
   out.ray = -1;
 }
 
+void SensorReader::SetMountPose_W(std::size_t sensor, const Pose& X_WM) { mount_X_WM_.at(sensor) = X_WM; }
+
 bool SensorReader::IsSensorSample(std::size_t sensor, std::int64_t sample) const {
   const double rate_hz = scenario_.sensors[sensor].rate_hz;
   if (!(rate_hz > 0)) return true;
@@ -228,7 +231,7 @@ bool SensorReader::CastsAt(std::size_t sensor, std::int64_t sample) const {
 void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame, bool rays) {
   const Pose& X_LS = scenario_.sensors[i].X_LS;
   const int link = world_.sensor_link(i);
-  const Pose X_WS = link < 0 ? X_LS : world_.robot()->X_WL(link) * X_LS;
+  const Pose X_WS = mount_X_WM_[i] ? *mount_X_WM_[i] * X_LS : link < 0 ? X_LS : world_.robot()->X_WL(link) * X_LS;
   SensorSample& out = frame.sensors[i];
   out.p_WS = X_WS.translation();
   out.dir_W = X_WS.linear().col(0);  // the beam's axis is the sensor's +x

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "core/parallel.h"
@@ -40,6 +41,12 @@ class SensorReader {
 
   /// A new episode: the sensors have no previous position.
   void Reset();
+
+  /// From the next Read on, sensor `sensor` stands at X_WM·X_LS, its
+  /// mounting X_LS on a frame M whose pose X_WM the caller gives (a recorded
+  /// pose: `proxsim fidelity` replays a user's recording through this reader),
+  /// instead of on its link. Its rays, echoes, noise keys and model are the run's.
+  void SetMountPose_W(std::size_t sensor, const Pose& X_WM);
 
  private:
   // place a sensor where its link is and, with `rays`, fill its rays and zone axes
@@ -117,6 +124,7 @@ class SensorReader {
   double longest_window_s_ = 0.0;            // the longest listening window of any sonar
   std::vector<bool> heard_by_others_;        // by sensor: a sonar that another sonar may hear
   std::vector<double> last_ping_t_s_;  // each sensor's last ping, s (NaN before the first)
+  std::vector<std::optional<Pose>> mount_X_WM_;  // SetMountPose_W's poses, by sensor; none: on its link
 };
 
 }  // namespace proxsim
