@@ -33,30 +33,36 @@ double TopOf(const Hazard& hazard) { return hazard.ground_z_m + hazard.height_m;
 // stay out of
 bool RaisedCellInCorridor(const TerrainMap& map, const Hazard& hazard, const std::array<Vec2, 4>& corridor,
                           const Vec2& lateral, const Vec2& heading_W) {
-  const ElevationGrid& grid = map.grid();
-  const double half_cell_m = 0.5 * grid.resolution_m();
+  const double half_cell_m = 0.5 * map.grid().resolution_m();
   // a square's half extent along a unit axis: the corridor grown by it
   const auto grown = [&](const Vec2& axis) { return half_cell_m * (std::abs(axis.x()) + std::abs(axis.y())); };
   const auto [along_lo, along_hi] = Project(corridor, heading_W);
   const auto [across_lo, across_hi] = Project(corridor, lateral);
   const double grow_along_m = grown(heading_W), grow_across_m = grown(lateral);
+  bool inside = false;
+  ForEachRaisedCellOf(map, hazard, [&](const Vec2& centre_W, CellIndex) {
+    const double along = centre_W.dot(heading_W), across = centre_W.dot(lateral);
+    inside = inside || (along >= along_lo - grow_along_m && along <= along_hi + grow_along_m &&
+                        across >= across_lo - grow_across_m && across <= across_hi + grow_across_m);
+  });
+  return inside;
+}
+
+}  // namespace
+
+void ForEachRaisedCellOf(const TerrainMap& map, const Hazard& hazard,
+                         const std::function<void(const Vec2& centre_W, CellIndex index)>& cell) {
+  const ElevationGrid& grid = map.grid();
   const double raised_above_m = hazard.ground_z_m + map.config().obstacle_min_m;
   for (std::int32_t iy = hazard.cells.iy_min; iy <= hazard.cells.iy_max; ++iy) {
     for (std::int32_t ix = hazard.cells.ix_min; ix <= hazard.cells.ix_max; ++ix) {
       const CellIndex index{ix, iy};
-      const TerrainCell* cell = grid.Find(index);
-      if (cell == nullptr || !cell->has_elevation() || cell->elevation_m <= raised_above_m) continue;
-      const Vec2 centre = grid.CellCentre(index);
-      const double along = centre.dot(heading_W), across = centre.dot(lateral);
-      if (along >= along_lo - grow_along_m && along <= along_hi + grow_along_m && across >= across_lo - grow_across_m &&
-          across <= across_hi + grow_across_m)
-        return true;
+      const TerrainCell* surface = grid.Find(index);
+      if (surface != nullptr && surface->has_elevation() && surface->elevation_m > raised_above_m)
+        cell(grid.CellCentre(index), index);
     }
   }
-  return false;
 }
-
-}  // namespace
 
 std::vector<bool> ObstaclesToWalkAround(const TerrainMap& map) {
   const std::vector<Hazard>& hazards = map.hazards();
@@ -116,25 +122,24 @@ const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, co
   return nullptr;
 }
 
-void ForEachObstacleOutlinePoint(const TerrainMap& map, double spacing_m, const std::function<void(const Vec3&)>& point) {
+void ForEachObstacleOutlinePoint(const TerrainMap& map, const std::function<void(const Vec3&)>& point) {
   const std::vector<bool> avoid = ObstaclesToWalkAround(map);
+  const ElevationGrid& grid = map.grid();
   for (std::size_t i = 0; i < map.hazards().size(); ++i) {
     if (!avoid[i]) continue;
     const Hazard& hazard = map.hazards()[i];
     const double z = hazard.ground_z_m + hazard.height_m;
-    const Vec2 size = hazard.max_W - hazard.min_W;
-    const int nx = std::max(1, static_cast<int>(std::ceil(size.x() / spacing_m)));
-    const int ny = std::max(1, static_cast<int>(std::ceil(size.y() / spacing_m)));
-    for (int i = 0; i <= nx; ++i) {
-      const double x = hazard.min_W.x() + size.x() * i / nx;
-      point(Vec3(x, hazard.min_W.y(), z));
-      point(Vec3(x, hazard.max_W.y(), z));
-    }
-    for (int j = 1; j < ny; ++j) {
-      const double y = hazard.min_W.y() + size.y() * j / ny;
-      point(Vec3(hazard.min_W.x(), y, z));
-      point(Vec3(hazard.max_W.x(), y, z));
-    }
+    const double raised_above_m = hazard.ground_z_m + map.config().obstacle_min_m;
+    const auto raised = [&](std::int32_t ix, std::int32_t iy) {
+      const TerrainCell* surface = grid.Find(CellIndex{ix, iy});
+      return surface != nullptr && surface->has_elevation() && surface->elevation_m > raised_above_m;
+    };
+    // a raised cell with a side that is not: on the outline (an L-shaped
+    // wall's outline follows the wall, not its bounding box across the room)
+    ForEachRaisedCellOf(map, hazard, [&](const Vec2& centre_W, CellIndex c) {
+      if (!raised(c.ix - 1, c.iy) || !raised(c.ix + 1, c.iy) || !raised(c.ix, c.iy - 1) || !raised(c.ix, c.iy + 1))
+        point(Vec3(centre_W.x(), centre_W.y(), z));
+    });
   }
 }
 

@@ -9,8 +9,9 @@
 //    such a tread) within a step's rise of it;
 //  - the first obstacle in a corridor ahead: a rectangle from a point along
 //    a heading, by the separating-axis test against each obstacle's extent;
-//  - an obstacle's outline, as points every `spacing_m` around its extent at
-//    its top's height, for a strategy that plans around points.
+//  - an obstacle's outline, as the centres of its raised cells with a side
+//    that is not raised, at its top's height, for a strategy that plans
+//    around points; and each raised cell of a hazard.
 //
 // Frames: W world.
 #pragma once
@@ -33,8 +34,14 @@ std::vector<bool> ObstaclesToWalkAround(const TerrainMap& map);
 const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, const Vec2& heading_W, double ahead_m,
                                  double half_width_m);
 
-/// Calls `point` with points every `spacing_m` (at most) around the outline
-/// of each obstacle's extent, at its top's height (world z).
-void ForEachObstacleOutlinePoint(const TerrainMap& map, double spacing_m, const std::function<void(const Vec3&)>& point);
+/// Calls `point` with the centre of each obstacle's outline cells — its
+/// raised cells with a side that is not raised (a cell of the map's
+/// resolution) — at the obstacle's top's height (world z).
+void ForEachObstacleOutlinePoint(const TerrainMap& map, const std::function<void(const Vec3&)>& point);
+
+/// Calls `cell` with each of the hazard's raised cells (above its ground by
+/// more than obstacle_min_m) within its bounding box: its centre and index.
+void ForEachRaisedCellOf(const TerrainMap& map, const Hazard& hazard,
+                         const std::function<void(const Vec2& centre_W, CellIndex index)>& cell);
 
 }  // namespace proxsim

@@ -187,7 +187,10 @@ void TerrainMap::Insert(const RayEvidence& evidence, double t_s, double ceiling_
         const Vec2 ac = centre - a.head<2>();
         const double cross = ac.x() * ab.y() - ac.y() * ab.x();
         if (!(cross * cross > near2_hi * ab_xy2)) {
-          double t = ab_xy2 > 0 ? ac.dot(ab.head<2>()) / ab_xy2 : t0;
+          // (a vertical ray passes the centre all along: its lowest point there,
+          // or a person's column, as high as the map's ceiling, would never be
+          // crossed by the oracle's column from the ceiling down)
+          double t = ab_xy2 > 0 ? ac.dot(ab.head<2>()) / ab_xy2 : (ab.z() < 0 ? t1 : t0);
           t = std::clamp(t, t0, t1);
           const Vec3 p = a + t * ab;
           // |p − centre| <= near_m, by its square away from the boundary

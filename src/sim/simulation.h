@@ -48,9 +48,9 @@ inline constexpr double kPedestrianKeep_m = 0.9;
 /// this far from it (torso to pelvis): it passes in front of a robot that
 /// stopped for it (which then walks on), and waits (kPedestrianKeep_m) rather
 /// than walk into it — the person's shoulders (about 0.25 m) and the robot's
-/// torso (0.23 m to a corner for the built-in biped) touch at about 0.48 m,
-/// and a stride reaches about 0.3 m ahead of the torso.
-inline constexpr double kPedestrianPassStanding_m = 0.6;
+/// torso (0.23 m to a corner for the built-in biped) or toes touch at about
+/// 0.45 m, and a person's foot swings up to about 0.35 m ahead of its torso.
+inline constexpr double kPedestrianPassStanding_m = 0.8;
 
 class Simulation {
  public:

@@ -2,6 +2,7 @@
 
 #include "knowledge/echo_cone.h"
 #include "knowledge/map_queries.h"
+#include "knowledge/map_route.h"
 #include "core/message_format.h"
 #include "gait/gait_walker.h"
 
@@ -63,6 +64,10 @@ constexpr double kSwingMargin_m = 0.05;
 // obstacle passed long ago, a stair's upper tread after the way down, once
 // stopped the robot from 5 m behind)
 constexpr double kBehindTheToe_m = 0.3;
+// reading the map: the route is planned again this often (the map fills, people move) ...
+constexpr double kReplanRoute_s = 0.5;
+// ... and the gait given it when one of its waypoints moved by more than this
+constexpr double kRouteMoved_m = 0.15;
 
 
 Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
@@ -72,6 +77,10 @@ Vec2 Left(const Vec2& u) { return {-u.y(), u.x()}; }
 void CircumventStrategy::Reset(const StrategySetup& setup) {
   sensors_.assign(setup.sensors.begin(), setup.sensors.end());
   path_m_ = setup.path_m;
+  given_path_m_ = setup.path_m;
+  given_target_ = 1;
+  next_route_t_s_ = 0;
+  no_route_ = false;
   stride_m_ = setup.stride_m;
   stride_now_m_ = setup.stride_m;
   stride_in_force_m_ = setup.stride_m;
@@ -110,7 +119,7 @@ void CircumventStrategy::FindRaisedPoints(const Observation& observation) {
     // each at the centre of its cell: an outline that grows as more is
     // mapped adds cells rather than moving the points of those it had
     if (observation.map != nullptr) {
-      ForEachObstacleOutlinePoint(*observation.map, kCell_m, [&](const Vec3& p_W) {
+      ForEachObstacleOutlinePoint(*observation.map, [&](const Vec3& p_W) {
         const Cell cell = CellOf(p_W);
         raised_.emplace_back((static_cast<double>(cell.first) + 0.5) * kCell_m,
                              (static_cast<double>(cell.second) + 0.5) * kCell_m, p_W.z());
@@ -448,6 +457,7 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
     half_width_m_ = self.half_width_m;
     const Vec2 p_start = self.X_WP.translation().head<2>();
     if (path_m_.empty() || (path_m_.front() - p_start).norm() > 0.05) path_m_.insert(path_m_.begin(), p_start);
+    given_path_m_ = path_m_;
   }
   if (mode_ == Mode::kStopped) return;
   KeepPoints(observation);
@@ -475,7 +485,19 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
   const double look_ahead_m = turning_on_short_steps ? reach_m : std::max(config_.stop_distance_m, reach_m);
   const auto p_W_in_the_way = PointInTheWay(observation, walking_W, look_ahead_m, own_width_m);
   if (mode_ == Mode::kWaiting) {
-    if (p_W_in_the_way) {
+    // reading the map, it plans a way round from where it stands, and the way
+    // is the one toward the route's next waypoint (standing, it turns there on
+    // short steps), not along its heading
+    bool in_the_way = p_W_in_the_way.has_value();
+    if (config_.perception == Perception::kMap && mode_before_waiting_ != Mode::kBlocked) {
+      const Vec2 p_WP = self.X_WP.translation().head<2>();
+      FollowRouteOnMap(observation, p_WP, robot, events);
+      const Vec2 to = GaitTarget(p_WP) - p_WP;
+      if (to.norm() > 1e-6)
+        in_the_way = PointInTheWay(observation, Vec3(to.x(), to.y(), 0).normalized(), look_ahead_m, own_width_m)
+                         .has_value();
+    }
+    if (in_the_way) {
       way_clear_since_t_s_ = -1;
     } else if (way_clear_since_t_s_ < 0) {
       way_clear_since_t_s_ = observation.t_s;
@@ -493,17 +515,58 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
     mode_before_waiting_ = mode_;
     mode_ = may_clear ? Mode::kWaiting : Mode::kStopped;
     way_clear_since_t_s_ = -1;
-    events.Log("blocked", FormatNumbers(may_clear ? "a point %.3f m ahead of the leading toe, in the robot's way: "
-                                                    "stopping until the way is clear"
-                                                  : "a point %.3f m ahead of the leading toe, in the robot's way: stopping",
-                                        (*p_W_in_the_way - self.p_W_front).dot(walking_W)));
+    const double ahead_m = (*p_W_in_the_way - self.p_W_front).dot(walking_W);
+    events.Log("blocked", may_clear ? FormatNumbers("a point at (%.2f, %.2f, %.2f) m, %.3f m ahead of the leading toe, "
+                                                    "in the robot's way: stopping until the way is clear",
+                                                    p_W_in_the_way->x(), p_W_in_the_way->y(), p_W_in_the_way->z(), ahead_m)
+                                    : FormatNumbers("a point %.3f m ahead of the leading toe, in the robot's way: stopping",
+                                                    ahead_m));
     return;
   }
   if (mode_ == Mode::kBlocked) return;
 
   const Vec2 p_WP = self.X_WP.translation().head<2>();
-  FollowOrDetour(observation, p_WP, robot, events);
+  if (config_.perception == Perception::kMap) FollowRouteOnMap(observation, p_WP, robot, events);
+  else FollowOrDetour(observation, p_WP, robot, events);
   if (mode_ != Mode::kBlocked) Pace(p_WP, self.yaw_rad, robot, events);
+}
+
+void CircumventStrategy::FollowRouteOnMap(const Observation& observation, const Vec2& p_WP, RobotCommands& robot,
+                                          EventLog& events) {
+  if (observation.map != nullptr && given_path_m_.size() >= 2 && observation.t_s >= next_route_t_s_) {
+    next_route_t_s_ = observation.t_s + kReplanRoute_s;
+    given_target_ = GaitTargetIndex(given_path_m_, given_target_, p_WP);
+    const Vec2 target = given_path_m_[given_target_];
+    // the obstacles within detect_distance_m (pelvis to cell, with the toe's lead) are avoided
+    const double reach_m = config_.detect_distance_m + (observation.robot->p_W_front.head<2>() - p_WP).norm();
+    auto route = RouteAroundObstacles(*observation.map, p_WP, target, half_width_m_ + config_.margin_m, reach_m);
+    if (!route)
+      route = RouteAroundObstacles(*observation.map, p_WP, target, half_width_m_ + kSafetyWidthMargin_m, reach_m);
+    if (!route) {
+      if (!no_route_)
+        events.Log("no_way_around", FormatNumbers("the map shows no way to (%.2f, %.2f) m: walking on to the safety stop",
+                                                  target.x(), target.y()));
+      no_route_ = true;
+    } else {
+      no_route_ = false;
+      route->insert(route->end(), given_path_m_.begin() + static_cast<std::ptrdiff_t>(given_target_) + 1,
+                    given_path_m_.end());
+      // a new route when one of its waypoints moved (the path after p_WP is the route last given)
+      bool moved = route->size() + 1 != path_m_.size();
+      for (std::size_t i = 0; !moved && i < route->size(); ++i) moved = ((*route)[i] - path_m_[i + 1]).norm() > kRouteMoved_m;
+      if (moved) {
+        path_m_.assign(1, p_WP);
+        path_m_.insert(path_m_.end(), route->begin(), route->end());
+        path_target_ = 1;
+        tracking_ = false;
+        robot.SetPath(*route);
+        std::string via;
+        for (const Vec2& p : *route) via += FormatNumbers(via.empty() ? "(%.2f, %.2f)" : ", (%.2f, %.2f)", p.x(), p.y());
+        events.Log("route_planned", "around every obstacle mapped, via " + via);
+      }
+    }
+  }
+  TrackPath(p_WP, robot);
 }
 
 void CircumventStrategy::FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot,

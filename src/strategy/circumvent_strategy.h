@@ -37,7 +37,12 @@
 //     heads for the next waypoint, so after overshooting a corner it would
 //     cut across, out of the corridor the path keeps clear; off the line by
 //     more than 0.1 m it is given a point on the line 0.6 m ahead.
-//  7. Reading the map (`perception: map`), a safety stop waits: once the
+//  7. Reading the map (`perception: map`), it plans instead of 2-4 a route
+//     around every obstacle the map shows (knowledge/map_route.h) to the
+//     path's next waypoint, keeping half-width + margin_m clear (or, where
+//     only a tighter way exists, half-width + 5 cm), replanned every 0.5 s
+//     as the map fills, and follows it as it follows the path (6); with no
+//     route it walks on to the safety stop. A safety stop waits: once the
 //     way ahead has stayed clear for a second — a person who crossed has
 //     walked on — it walks on with its plan; a static obstacle never clears.
 // Events: obstacle_seen, detour_planned, detour_replanned, obstacle_passed,
@@ -92,6 +97,9 @@ class CircumventStrategy : public Strategy {
     std::vector<Vec2> rest;          // the path's waypoints after this segment's start
   };
 
+  // reading the map: a route to the path's next waypoint around every obstacle mapped,
+  // replanned every kReplanRoute_s as the map fills, followed as the path is
+  void FollowRouteOnMap(const Observation& observation, const Vec2& p_WP, RobotCommands& robot, EventLog& events);
   // following the path or detouring around what was seen (after the safety stop)
   void FollowOrDetour(const Observation& observation, const Vec2& p_WP, RobotCommands& robot, EventLog& events);
   // the stride for what is ahead: slower while the detour's shift is being made, near a sharp
@@ -138,6 +146,10 @@ class CircumventStrategy : public Strategy {
   SupportLeg last_support_ = SupportLeg::kDouble;
   bool started_ = false;
   Mode mode_ = Mode::kFollowing;
+  std::vector<Vec2> given_path_m_;     // the path the robot was given (path_m_ becomes the route on the map)
+  std::size_t given_target_ = 1;       // its next waypoint not yet passed
+  double next_route_t_s_ = 0;          // when the route is planned again
+  bool no_route_ = false;              // the last planning found no route
   Mode mode_before_waiting_ = Mode::kFollowing;
   double way_clear_since_t_s_ = -1;  // waiting: when the way ahead last became clear; < 0: not clear
   double half_width_m_ = 0;
