@@ -6,9 +6,10 @@
 // the same readings and the same outcome. (The contact referee once measured
 // the sole band along the foot link's own z: standing was "collided with
 // floor (left_foot) at t = 0.00 s".) And a foot whose sole is pitched 10° toe
-// up at joint zero (its geometry turned about the ankle): refused without
-// legs.*.ankle_zero_deg, naming the key and the 10.0° the geometry lies flat at; with `ankle_zero_deg: 10` it walks
-// with its sole flat, exactly as the original.
+// up at joint zero (its geometry turned about the ankle) walks with its sole
+// flat, exactly as the original, given `ankle_zero_deg: 10` or not (the pitch
+// its geometry lies flattest at, found by a 0.1° scan); told `ankle_zero_deg:
+// 0`, it is refused, naming the key and the 10.0° the geometry lies flat at.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -139,7 +140,7 @@ TEST(RotatedFootFrame, WalksExactlyAsTheOriginal) {
   fs::remove_all(rotated_dir);
 }
 
-TEST(PitchedSole, WalkedFlatWithAnkleZeroDeg) {
+TEST(PitchedSole, WalkedFlatAtThePitchItsGeometryLiesFlattestOrAtAnkleZeroDeg) {
   const fs::path original_dir = FreshDir("pitched_sole_original"), pitched_dir = FreshDir("pitched_sole_pitched");
   fs::create_directories(original_dir);
   fs::create_directories(pitched_dir);
@@ -148,20 +149,28 @@ TEST(PitchedSole, WalkedFlatWithAnkleZeroDeg) {
       "  legs:\n"
       "    left:  {hip: left_hip_pitch,  knee: left_knee_pitch,  ankle: left_ankle_pitch,  foot: left_foot}\n"
       "    right: {hip: right_hip_pitch, knee: right_knee_pitch, ankle: right_ankle_pitch, foot: right_foot}\n";
-  const WalkRun refused = Walk(pitched_dir, "biped_pitched.urdf", legs_without);
+  const auto with_zero = [&](const std::string& deg) {
+    std::string legs = legs_without;
+    for (const std::string foot : {"left_foot}", "right_foot}"})
+      ReplaceAfter(legs, foot, foot.substr(0, foot.size() - 1) + ", ankle_zero_deg: " + deg + "}", 0);
+    return legs;
+  };
+  // told the sole is flat at joint zero, it is refused, naming the key and
+  // the pitch the geometry lies flattest at (a 0.1 deg scan: the 10 deg it was turned by)
+  const WalkRun refused = Walk(pitched_dir, "biped_pitched.urdf", with_zero("0"));
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_NE(refused.output.find("the sole must reach behind and in front of the ankle"), std::string::npos) << refused.output;
   EXPECT_NE(refused.output.find("robot.legs.left.ankle_zero_deg gives its pitch there"), std::string::npos) << refused.output;
-  // and the pitch the geometry lies flattest at, found by a 0.1 deg scan: the 10 deg it was turned by
   EXPECT_NE(refused.output.find("its geometry lies flattest at 10.0 deg"), std::string::npos) << refused.output;
-  std::string legs = legs_without;
-  for (const std::string foot : {"left_foot}", "right_foot}"}) {
-    ReplaceAfter(legs, foot, foot.substr(0, foot.size() - 1) + ", ankle_zero_deg: 10}", 0);
-  }
   fs::remove_all(pitched_dir / "out");
   const WalkRun original = Walk(original_dir, kBipedUrdf.string());
-  const WalkRun pitched = Walk(pitched_dir, "biped_pitched.urdf", legs);
-  ExpectTheSameWalk(original, pitched, Eigen::Quaterniond(Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitY())));
+  const Eigen::Quaterniond pitched_by(Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()));
+  // given its pitch, and not given (found from the geometry), it walks with its sole flat, as the original
+  for (const std::string& legs : {with_zero("10"), legs_without}) {
+    const WalkRun pitched = Walk(pitched_dir, "biped_pitched.urdf", legs);
+    ExpectTheSameWalk(original, pitched, pitched_by);
+    fs::remove_all(pitched_dir / "out");
+  }
   fs::remove_all(original_dir);
   fs::remove_all(pitched_dir);
 }

@@ -50,6 +50,9 @@ struct LegNames {
   /// pose (toe up +), for a foot whose sole is not flat at joint zero; the
   /// gait walks the sole flat (gait/leg_kinematics.h)
   double ankle_zero_rad = 0.0;
+  /// ankle_zero_rad was given: without it, a foot whose sole is not flat at
+  /// joint zero is read at the pitch its geometry lies flattest at
+  bool ankle_zero_given = false;
 };
 
 /// A walk: the gait, the legs that take it, the start pose and the path.

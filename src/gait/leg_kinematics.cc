@@ -225,41 +225,50 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
     }
     // a foot pitched at joint zero (legs.*.ankle_zero_deg) is read turned flat about the ankle joint
     const Vec3& p_PA = p_P[2];
-    g.foot0_rad = name.ankle_zero_rad;
     const auto turn_about_ankle = [&](const Vec3& p, double angle_rad) {
       const Vec2xz v = RotateSagittal(angle_rad, Vec2xz(p.x() - p_PA.x(), p.z() - p_PA.z()));
       return Vec3(p_PA.x() + v.x(), p.y(), p_PA.z() + v.y());
     };
-    if (g.foot0_rad != 0.0)
-      for (Vec3& p : points_P) p = turn_about_ankle(p, -g.foot0_rad);
-    double lowest = std::numeric_limits<double>::infinity();
-    for (const Vec3& p : points_P) lowest = std::min(lowest, p.z());
-    double heel = std::numeric_limits<double>::infinity(), toe = -heel, y_min = heel, y_max = -heel;
-    for (const Vec3& p : points_P) {
-      if (p.z() > lowest + kSoleBand_m) continue;
-      heel = std::min(heel, p.x());
-      toe = std::max(toe, p.x());
-      y_min = std::min(y_min, p.y());
-      y_max = std::max(y_max, p.y());
-    }
-    // the faces at either end of the sole (a pitched foot's front face leads it into a riser)
-    for (const Vec3& p : points_P) {
-      if (p.x() >= toe - kSoleBand_m) g.toe_top_m = std::max(g.toe_top_m, p.z() - lowest);
-      if (p.x() <= heel + kSoleBand_m) g.heel_top_m = std::max(g.heel_top_m, p.z() - lowest);
-    }
-    g.sole_z_m = lowest - p_PA.z();
-    g.heel_x_m = heel - p_PA.x();
-    g.toe_x_m = toe - p_PA.x();
-    g.sole_y_m = 0.5 * (y_min + y_max);
-    g.half_width_m = 0.5 * (y_max - y_min);
-    if (!(g.heel_x_m < 0 && g.toe_x_m > 0 && g.sole_z_m < 0)) {
-      // the pitch at which the foot's lowest points spread longest along x: where its sole lies flat
+    const std::vector<Vec3> raw_points_P = points_P;
+    double lowest = 0, heel = 0, toe = 0;
+    // the sole read with the foot turned flat by foot0: its lowest points, their ends and the faces there
+    const auto measure_sole = [&](double foot0_rad) {
+      g.foot0_rad = foot0_rad;
+      points_P = raw_points_P;
+      if (foot0_rad != 0.0)
+        for (Vec3& p : points_P) p = turn_about_ankle(p, -foot0_rad);
+      lowest = std::numeric_limits<double>::infinity();
+      for (const Vec3& p : points_P) lowest = std::min(lowest, p.z());
+      heel = std::numeric_limits<double>::infinity(), toe = -heel;
+      double y_min = heel, y_max = -heel;
+      for (const Vec3& p : points_P) {
+        if (p.z() > lowest + kSoleBand_m) continue;
+        heel = std::min(heel, p.x());
+        toe = std::max(toe, p.x());
+        y_min = std::min(y_min, p.y());
+        y_max = std::max(y_max, p.y());
+      }
+      // the faces at either end of the sole (a pitched foot's front face leads it into a riser)
+      g.toe_top_m = g.heel_top_m = 0;
+      for (const Vec3& p : points_P) {
+        if (p.x() >= toe - kSoleBand_m) g.toe_top_m = std::max(g.toe_top_m, p.z() - lowest);
+        if (p.x() <= heel + kSoleBand_m) g.heel_top_m = std::max(g.heel_top_m, p.z() - lowest);
+      }
+      g.sole_z_m = lowest - p_PA.z();
+      g.heel_x_m = heel - p_PA.x();
+      g.toe_x_m = toe - p_PA.x();
+      g.sole_y_m = 0.5 * (y_min + y_max);
+      g.half_width_m = 0.5 * (y_max - y_min);
+      return g.heel_x_m < 0 && g.toe_x_m > 0 && g.sole_z_m < 0;
+    };
+    // the pitch at which the foot's lowest points spread longest along x: where its sole lies flat
+    const auto flattest_rad = [&]() {
       double best_extent_m = -1, flat_from = 0, flat_to = 0;
       for (int tenth = -450; tenth <= 450; ++tenth) {
         const double psi = DegToRad(0.1 * tenth);
         double low = std::numeric_limits<double>::infinity(), back = low, front = -low;
-        for (const Vec3& p : points_P) low = std::min(low, turn_about_ankle(p, -psi).z());
-        for (const Vec3& p : points_P) {
+        for (const Vec3& p : raw_points_P) low = std::min(low, turn_about_ankle(p, -psi).z());
+        for (const Vec3& p : raw_points_P) {
           const Vec3 q = turn_about_ankle(p, -psi);
           if (q.z() > low + kSoleBand_m) continue;
           back = std::min(back, q.x());
@@ -273,14 +282,21 @@ BipedLegs::BipedLegs(const RobotModel& m, const std::optional<std::array<LegName
           flat_to = 0.1 * tenth;  // the plateau of the longest sole: its middle is the flat pitch
         }
       }
+      return DegToRad(0.5 * (flat_from + flat_to));
+    };
+    bool sole_ok = measure_sole(name.ankle_zero_rad);
+    // not given, and not flat at joint zero: the foot is read at the pitch its geometry lies flattest at
+    if (!sole_ok && !name.ankle_zero_given) sole_ok = measure_sole(flattest_rad());
+    if (!sole_ok) {
+      const double given_rad = name.ankle_zero_rad, flat_rad = flattest_rad();
+      measure_sole(given_rad);
       char text[600];
       std::snprintf(text, sizeof text,
                     "' has its sole (its lowest points, within %.0f mm) from %.3f to %.3f m along x and %.3f m "
                     "below the ankle joint; the sole must reach behind and in front of the ankle, below it "
                     "(a foot pitched at joint zero is read flat when %s.ankle_zero_deg gives its pitch there, toe up "
                     "positive: its geometry lies flattest at %.1f deg)",
-                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m, key.c_str(),
-                    RadToDeg(g.foot0_rad) + 0.5 * (flat_from + flat_to));
+                    1e3 * kSoleBand_m, g.heel_x_m, g.toe_x_m, -g.sole_z_m, key.c_str(), RadToDeg(flat_rad));
       problems.push_back(source + ": " + key + ".foot: link '" + name.foot + text);
     }
     lowest_sole_P = std::min(lowest_sole_P, lowest);

@@ -76,6 +76,7 @@ std::optional<std::array<LegNames, 2>> ReadLegs(YamlReader& reader, const Field&
     // a foot pitched at joint zero: its pitch there, toe up positive
     if (const auto zero = reader.Number((*map)["ankle_zero_deg"], NumberIn(-45.0, 45.0, "deg"))) {
       leg->ankle_zero_rad = DegToRad(*zero);
+      leg->ankle_zero_given = true;
     }
   }
   if (!complete) return std::nullopt;
