@@ -27,6 +27,13 @@ bool Touch(const Hazard& a, const Hazard& b, double gap_m) {
 
 double TopOf(const Hazard& hazard) { return hazard.ground_z_m + hazard.height_m; }
 
+// whether the map's cell stands more than obstacle_min_m above the ground the hazard was classified against
+bool RaisedAbove(const TerrainMap& map, const Hazard& hazard, CellIndex index) {
+  const TerrainCell* surface = map.grid().Find(index);
+  return surface != nullptr && surface->has_elevation() &&
+         surface->elevation_m > hazard.ground_z_m + map.config().obstacle_min_m;
+}
+
 // whether one of the hazard's raised cells lies in the corridor (its square
 // meets the rectangle): the cells, not their cluster's bounding box, which
 // for a drum or a table seen at an angle reaches into a corridor its cells
@@ -52,14 +59,10 @@ bool RaisedCellInCorridor(const TerrainMap& map, const Hazard& hazard, const std
 
 void ForEachRaisedCellOf(const TerrainMap& map, const Hazard& hazard,
                          const std::function<void(const Vec2& centre_W, CellIndex index)>& cell) {
-  const ElevationGrid& grid = map.grid();
-  const double raised_above_m = hazard.ground_z_m + map.config().obstacle_min_m;
   for (std::int32_t iy = hazard.cells.iy_min; iy <= hazard.cells.iy_max; ++iy) {
     for (std::int32_t ix = hazard.cells.ix_min; ix <= hazard.cells.ix_max; ++ix) {
       const CellIndex index{ix, iy};
-      const TerrainCell* surface = grid.Find(index);
-      if (surface != nullptr && surface->has_elevation() && surface->elevation_m > raised_above_m)
-        cell(grid.CellCentre(index), index);
+      if (RaisedAbove(map, hazard, index)) cell(map.grid().CellCentre(index), index);
     }
   }
 }
@@ -124,16 +127,11 @@ const Hazard* ObstacleInCorridor(const TerrainMap& map, const Vec2& p_W_from, co
 
 void ForEachObstacleOutlinePoint(const TerrainMap& map, const std::function<void(const Vec3&)>& point) {
   const std::vector<bool> avoid = ObstaclesToWalkAround(map);
-  const ElevationGrid& grid = map.grid();
   for (std::size_t i = 0; i < map.hazards().size(); ++i) {
     if (!avoid[i]) continue;
     const Hazard& hazard = map.hazards()[i];
-    const double z = hazard.ground_z_m + hazard.height_m;
-    const double raised_above_m = hazard.ground_z_m + map.config().obstacle_min_m;
-    const auto raised = [&](std::int32_t ix, std::int32_t iy) {
-      const TerrainCell* surface = grid.Find(CellIndex{ix, iy});
-      return surface != nullptr && surface->has_elevation() && surface->elevation_m > raised_above_m;
-    };
+    const double z = TopOf(hazard);
+    const auto raised = [&](std::int32_t ix, std::int32_t iy) { return RaisedAbove(map, hazard, CellIndex{ix, iy}); };
     // a raised cell with a side that is not: on the outline (an L-shaped
     // wall's outline follows the wall, not its bounding box across the room)
     ForEachRaisedCellOf(map, hazard, [&](const Vec2& centre_W, CellIndex c) {

@@ -497,11 +497,7 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
         in_the_way = PointInTheWay(observation, Vec3(to.x(), to.y(), 0).normalized(), look_ahead_m, own_width_m)
                          .has_value();
     }
-    if (in_the_way) {
-      way_clear_since_t_s_ = -1;
-    } else if (way_clear_since_t_s_ < 0) {
-      way_clear_since_t_s_ = observation.t_s;
-    } else if (observation.t_s - way_clear_since_t_s_ >= kClearBeforeWalkingOn_s) {
+    if (way_clear_.StayedClear(!in_the_way, observation.t_s)) {
       robot.Resume();
       mode_ = mode_before_waiting_;
       events.Log("walking_on", FormatNumbers("the way ahead has been clear for %.1f s: walking on",
@@ -514,7 +510,7 @@ void CircumventStrategy::Decide(const Observation& observation, RobotCommands& r
     const bool may_clear = config_.perception == Perception::kMap;
     mode_before_waiting_ = mode_;
     mode_ = may_clear ? Mode::kWaiting : Mode::kStopped;
-    way_clear_since_t_s_ = -1;
+    way_clear_.Restart();
     const double ahead_m = (*p_W_in_the_way - self.p_W_front).dot(walking_W);
     events.Log("blocked", may_clear ? FormatNumbers("a point at (%.2f, %.2f, %.2f) m, %.3f m ahead of the leading toe, "
                                                     "in the robot's way: stopping until the way is clear",

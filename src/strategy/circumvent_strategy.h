@@ -151,7 +151,7 @@ class CircumventStrategy : public Strategy {
   double next_route_t_s_ = 0;          // when the route is planned again
   bool no_route_ = false;              // the last planning found no route
   Mode mode_before_waiting_ = Mode::kFollowing;
-  double way_clear_since_t_s_ = -1;  // waiting: when the way ahead last became clear; < 0: not clear
+  WayClearWait way_clear_;           // waiting: the wait for the way ahead to clear
   double half_width_m_ = 0;
   std::map<Cell, Vec3> points_;  // the kept points, one per cell
   std::vector<Cell> cells_added_;   // the cells of points_ in the order they were added

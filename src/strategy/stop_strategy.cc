@@ -55,7 +55,7 @@ constexpr int kFloorMissingReadings = 2;
 
 void StopStrategy::Reset(const StrategySetup& setup) {
   stopping_ = stopped_for_map_obstacle_ = false;
-  corridor_clear_since_t_s_ = -1;
+  corridor_clear_.Restart();
   sensors_.assign(setup.sensors.begin(), setup.sensors.end());
   max_drop_m_ = config_.max_drop_m > 0 ? config_.max_drop_m : setup.max_step_m;
   floor_missing_streak_.assign(sensors_.size(), 0);
@@ -79,14 +79,10 @@ void StopStrategy::Decide(const Observation& observation, RobotCommands& robot, 
     if (stopping_) {
       // stopped for something the map showed: a person who walked on leaves
       // the corridor clear, and the robot walks again once it has stayed clear
-      if (obstacle != nullptr) {
-        corridor_clear_since_t_s_ = -1;
-      } else if (corridor_clear_since_t_s_ < 0) {
-        corridor_clear_since_t_s_ = observation.t_s;
-      } else if (observation.t_s - corridor_clear_since_t_s_ >= kClearBeforeWalkingOn_s) {
+      if (corridor_clear_.StayedClear(obstacle == nullptr, observation.t_s)) {
         robot.Resume();
         stopping_ = stopped_for_map_obstacle_ = false;
-        corridor_clear_since_t_s_ = -1;
+        corridor_clear_.Restart();
         std::snprintf(detail, sizeof detail, "the corridor ahead has been clear for %.1f s: walking on",
                       kClearBeforeWalkingOn_s);
         events.Log("walking_on", detail);

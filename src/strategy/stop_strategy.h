@@ -51,7 +51,7 @@ class StopStrategy : public Strategy {
   std::vector<int> floor_missing_streak_;  // per sensor: fresh readings in a row with the floor missing
   bool stopping_ = false;
   bool stopped_for_map_obstacle_ = false;  // the stop is the map's obstacle's: it may clear
-  double corridor_clear_since_t_s_ = -1;   // < 0: the corridor is not clear
+  WayClearWait corridor_clear_;            // the wait for the corridor to clear
 };
 
 }  // namespace proxsim

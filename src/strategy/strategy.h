@@ -29,6 +29,26 @@ namespace proxsim {
 /// static obstacle never clears.
 inline constexpr double kClearBeforeWalkingOn_s = 1.0;
 
+/// A stopped robot's wait for its way to clear: fed each sample whether the
+/// way is clear, it says when it has stayed clear for kClearBeforeWalkingOn_s.
+class WayClearWait {
+ public:
+  /// Whether the way, clear or not at t_s, has now been clear for kClearBeforeWalkingOn_s.
+  bool StayedClear(bool clear, double t_s) {
+    if (!clear) {
+      clear_since_t_s_ = -1;
+      return false;
+    }
+    if (clear_since_t_s_ < 0) clear_since_t_s_ = t_s;
+    return t_s - clear_since_t_s_ >= kClearBeforeWalkingOn_s;
+  }
+  /// A new wait (the way not yet seen clear).
+  void Restart() { clear_since_t_s_ = -1; }
+
+ private:
+  double clear_since_t_s_ = -1;  // when the way last became clear; < 0: not clear
+};
+
 /// What a strategy knows before the first sample of an episode.
 struct StrategySetup {
   std::span<const SensorInfo> sensors;  ///< in scenario order
