@@ -9,6 +9,7 @@
 
 #include "bench/bench_measures.h"
 #include "bench/bench_process.h"
+#include "sim/world.h"
 #include "study/outcome_config.h"
 #include "study/outcome_runner.h"
 
@@ -71,10 +72,13 @@ nlohmann::json OutcomesSection(bool quick, const std::string& tmp) {
     const OutcomeStudyConfig study = LoadOutcomeStudyFile(study_path);
     bool writer = false;
     const double cpu_start_s = ProcessCpu_s();
+    const std::int64_t worlds_before = World::BuiltCount();
     const auto start = Clock::now();
     const OutcomeResults results =
         RunOutcomeStudy(study, {.out_dir = (dir / "one-core").string(), .threads = 1, .progress = false}, &writer);
     const double wall_s = Since(start);
+    // one world per room (its bodies and acceleration structures), every run on it
+    const std::int64_t worlds = World::BuiltCount() - worlds_before;
     // the CPU the study took (one worker: one core's worth at most): on a
     // machine shared with other jobs the wall time also counts the time the
     // worker waited for a core, which runs per CPU second leave out
@@ -88,6 +92,7 @@ nlohmann::json OutcomesSection(bool quick, const std::string& tmp) {
     }
     section["outcome_runs_per_s_per_core"] = runs / wall_s;
     section["outcome_runs"] = runs;
+    section["outcome_worlds_built"] = worlds;
     section["outcome_wall_s"] = wall_s;
     section["outcome_mean_episode_s"] = simulated_s / runs;
     section["outcome_cpu_s"] = cpu_s;
@@ -96,8 +101,8 @@ nlohmann::json OutcomesSection(bool quick, const std::string& tmp) {
     Progress("outcomes: %.0f closed-loop runs (8 lasers and the blind and oracle baselines, stop rule, 10 x 10 m rooms "
              "at difficulty 0.5, episodes of "
              "%.1f s on average) on one core in %.2f s: %.1f runs/s/core "
-             "(target 200); %.1f runs per CPU second",
-             runs, simulated_s / runs, wall_s, runs / wall_s, runs / cpu_s);
+             "(target 200); %.1f runs per CPU second; %lld worlds built for them (one per room, one for the study's check)",
+             runs, simulated_s / runs, wall_s, runs / wall_s, runs / cpu_s, static_cast<long long>(worlds));
   }
 
   // what the baselines cost: the same rooms with the set alone, per episode
@@ -140,10 +145,12 @@ std::string OutcomesReport(const nlohmann::json& s) {
   std::snprintf(text, sizeof text,
                 "\noutcomes: %.1f closed-loop runs/s per core on generated 10 x 10 m rooms (8 lasers with the blind and "
                 "oracle baselines, the stop rule, %.0f runs in %.2f s, episodes of %.1f s on average; target 200); "
-                "%.1f runs per CPU second (the set alone: %.1f)\n",
+                "%.1f runs per CPU second (the set alone: %.1f); %lld worlds built for them (one per room, one for the "
+                "study's check of its sets)\n",
                 s.at("outcome_runs_per_s_per_core").get<double>(), s.at("outcome_runs").get<double>(),
                 s.at("outcome_wall_s").get<double>(), s.at("outcome_mean_episode_s").get<double>(),
-                s.value("outcome_runs_per_cpu_s", 0.0), s.value("outcome_without_baselines_runs_per_cpu_s", 0.0));
+                s.value("outcome_runs_per_cpu_s", 0.0), s.value("outcome_without_baselines_runs_per_cpu_s", 0.0),
+                static_cast<long long>(s.value("outcome_worlds_built", std::int64_t{-1})));
   std::string report = text;
   if (s.contains("outcome_mpi_unavailable")) {
     report += "outcomes: MPI figures unavailable (" + s.at("outcome_mpi_unavailable").get<std::string>() + ")\n";

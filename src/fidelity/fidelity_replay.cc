@@ -4,6 +4,7 @@
 #include "sensors/multizone.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"
+#include "sim/sensor_rig.h"
 #include "sim/world.h"
 
 namespace proxsim {
@@ -12,7 +13,8 @@ int ReportedZoneCount(const SensorConfig& sensor) { return sensor.spec.zones ? Z
 
 ReplayedReadings ReplayRecording(const Scenario& scenario, const Recording& recording, int threads) {
   World world(scenario, nullptr, threads);
-  SensorReader reader(scenario, world);
+  const SensorRig rig(scenario, nullptr);
+  SensorReader reader(scenario, world, rig);
   ParallelRunner runner(threads);
   const auto zones = static_cast<std::size_t>(recording.zone_count);
   ReplayedReadings out;

@@ -53,7 +53,7 @@ std::vector<std::string> SensorsInsideObjects(const Simulation& sim, const Sampl
       }
     }
     // its own link, at its pose of this sample (a sensor that sees through the robot does not mind)
-    const int link = sim.world().sensor_link(s);
+    const int link = sim.rig().sensor_link(s);
     if (link < 0 || sim.robot() == nullptr || !scenario.sensors[s].see_robot) continue;
     const RobotLink& robot_link = sim.robot()->model().link(link);
     const Pose X_LW = sim.robot()->X_WL(link).inverse();

@@ -13,14 +13,15 @@
 
 namespace proxsim {
 
-SensorReader::SensorReader(const Scenario& scenario, World& world) : scenario_(scenario), world_(world) {
-  const std::size_t ray_count = world.ray_count();
+SensorReader::SensorReader(const Scenario& scenario, World& world, const SensorRig& rig)
+    : scenario_(scenario), world_(world), rig_(rig) {
+  const std::size_t ray_count = rig.ray_count();
   rays_.resize(ray_count);
   ray_dir_W_.resize(ray_count);
   hits_.resize(ray_count);
   echoes_.resize(ray_count);
   for (std::size_t i = 0; i < scenario.sensors.size(); ++i) {
-    for (std::size_t r = world.ray_begin(i); r < world.ray_begin(i + 1); ++r) {
+    for (std::size_t r = rig.ray_begin(i); r < rig.ray_begin(i + 1); ++r) {
       rays_[r].max_range_m = static_cast<float>(scenario.sensors[i].spec.max_range_m);
       rays_[r].see_robot = scenario.sensors[i].see_robot;
     }
@@ -61,7 +62,7 @@ void SensorReader::Read(SampleFrame& frame, ParallelRunner& runner) {
   if (crosstalk) PrepareCrosstalk(frame.sample);
   const auto read = [this, &frame, crosstalk](std::size_t begin_sensor, std::size_t end_sensor) {
     for (std::size_t sensor = begin_sensor; sensor < end_sensor; ++sensor) {
-      const std::size_t begin = world_.ray_begin(sensor), count = world_.ray_begin(sensor + 1) - begin;
+      const std::size_t begin = rig_.ray_begin(sensor), count = rig_.ray_begin(sensor + 1) - begin;
       // between its own samples a sensor reads nothing: its rays are not cast
       const bool cast = CastsAt(sensor, frame.sample);
       PlaceSensor(sensor, frame, cast);
@@ -117,9 +118,9 @@ void SensorReader::FindEchoSources(std::size_t sensor, const SampleFrame& frame)
   const bool may_be_heard = (std::isfinite(last_s) && t_s - last_s < longest_window_s_) ||
                             next_ping_offset_s_[sensor] <= longest_window_s_;
   if (!may_be_heard) return;
-  const std::size_t begin = world_.ray_begin(sensor), count = world_.ray_begin(sensor + 1) - begin;
+  const std::size_t begin = rig_.ray_begin(sensor), count = rig_.ray_begin(sensor + 1) - begin;
   const PingRays ping{frame.sensors[sensor].p_WS, std::span(ray_dir_W_).subspan(begin, count),
-                      std::span(hits_).subspan(begin, count), std::span(world_.beam_rays()).subspan(begin, count)};
+                      std::span(hits_).subspan(begin, count), std::span(rig_.beam_rays()).subspan(begin, count)};
   EchoSourcesInto(scenario_.sensors[sensor].spec, ping, echo_sources_[sensor]);
   nearest_source_m_[sensor] = NearestEchoSource_m(echo_sources_[sensor]);
 }
@@ -200,7 +201,7 @@ void SensorReader::ListenForCrosstalk(std::size_t listener, SampleFrame& frame) 
   Echo echo;
   echo.distance_m = 0.5 * c_m_s * first_s;
   const NoiseKey key{scenario_.seed, static_cast<std::uint32_t>(listener), static_cast<std::uint64_t>(frame.sample),
-                     static_cast<std::uint32_t>(world_.ray_begin(listener + 1) - world_.ray_begin(listener))};
+                     static_cast<std::uint32_t>(rig_.ray_begin(listener + 1) - rig_.ray_begin(listener))};
   Reading reading = Measure(config.spec, echo, [&](int) { return KeyedNoiseDraw(config.spec.noise, key); });
   if (reading.status != ReadingStatus::kOk) return;
   reading.status = ReadingStatus::kCrosstalk;
@@ -230,7 +231,7 @@ bool SensorReader::CastsAt(std::size_t sensor, std::int64_t sample) const {
 
 void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame, bool rays) {
   const Pose& X_LS = scenario_.sensors[i].X_LS;
-  const int link = world_.sensor_link(i);
+  const int link = rig_.sensor_link(i);
   const Pose X_WS = mount_X_WM_[i] ? *mount_X_WM_[i] * X_LS : link < 0 ? X_LS : world_.robot()->X_WL(link) * X_LS;
   SensorSample& out = frame.sensors[i];
   out.p_WS = X_WS.translation();
@@ -239,9 +240,9 @@ void SensorReader::PlaceSensor(std::size_t i, SampleFrame& frame, bool rays) {
   const std::vector<Vec3>& zone_axes_S = zone_axes_S_[i];
   zone_axes_W_[i].resize(zone_axes_S.size());
   for (std::size_t zone = 0; zone < zone_axes_S.size(); ++zone) zone_axes_W_[i][zone] = X_WS.linear() * zone_axes_S[zone];
-  for (std::size_t r = world_.ray_begin(i); r < world_.ray_begin(i + 1); ++r) {
+  for (std::size_t r = rig_.ray_begin(i); r < rig_.ray_begin(i + 1); ++r) {
     rays_[r].origin_W = out.p_WS.cast<float>();
-    ray_dir_W_[r] = BeamRayDir_W(X_WS, world_.beam_rays()[r]);
+    ray_dir_W_[r] = BeamRayDir_W(X_WS, rig_.beam_rays()[r]);
     rays_[r].direction_W = ray_dir_W_[r].cast<float>();
   }
 }
@@ -279,8 +280,8 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
   const double c_m_s = WaveSpeed_m_s(spec.type, sensor.wave_speed_m_s);
 
   // every ray's echo, with its material
-  const std::size_t begin = world_.ray_begin(i);
-  const std::size_t end = world_.ray_begin(i + 1);
+  const std::size_t begin = rig_.ray_begin(i);
+  const std::size_t end = rig_.ray_begin(i + 1);
   for (std::size_t r = begin; r < end; ++r) {
     const Hit& hit = hits_[r];
     Echo& echo = echoes_[r];
@@ -323,7 +324,7 @@ void SensorReader::MeasureSensor(std::size_t i, SampleFrame& frame) {
   SensorMeasurement& measured = measured_[i];
   MeasureSensorSample(spec, SensorPlacement{out.p_WS, out.dir_W, zone_axes_W_[i]},
                       std::span(echoes_).subspan(begin, end - begin),
-                      std::span(world_.beam_rays()).subspan(begin, end - begin), draw, measured);
+                      std::span(rig_.beam_rays()).subspan(begin, end - begin), draw, measured);
   out.reading = measured.headline.reading;
   out.ray = measured.headline.ray;
   out.truth_ray = measured.headline.truth_ray;

@@ -25,14 +25,16 @@
 #include "sensors/sensor_measure.h"
 #include "sim/crosstalk.h"
 #include "sim/sample_frame.h"
+#include "sim/sensor_rig.h"
 #include "sim/world.h"
 
 namespace proxsim {
 
 class SensorReader {
  public:
-  /// `scenario` and `world` must outlive the reader; the scenario's seed is read at every sample.
-  SensorReader(const Scenario& scenario, World& world);
+  /// `scenario`, `world` and `rig` (the scenario's sensors) must outlive the
+  /// reader; the scenario's seed is read at every sample.
+  SensorReader(const Scenario& scenario, World& world, const SensorRig& rig);
 
   /// Reads every sensor into frame.sensors (sized to the sensor count) at
   /// frame.sample / frame.t_s, with the world's bodies as last committed;
@@ -102,6 +104,7 @@ class SensorReader {
 
   const Scenario& scenario_;
   World& world_;
+  const SensorRig& rig_;
   // per-ray buffers, sized once and overwritten every sample
   std::vector<Ray> rays_;
   std::vector<Vec3> ray_dir_W_;  // each ray's direction in double precision

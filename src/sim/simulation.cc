@@ -68,24 +68,59 @@ Simulation::Simulation(Scenario scenario, int threads)
   Build(threads, nullptr, std::move(strategy));
 }
 
+Simulation::Simulation(Scenario scenario, int threads, std::shared_ptr<World> world)
+    : scenario_(std::move(scenario)), sample_count_(scenario_.SampleCount()), runner_(threads) {
+  if (!world) throw std::invalid_argument("Simulation: no world given");
+  if (const std::string mismatch = world->MismatchWith(scenario_); !mismatch.empty())
+    throw std::invalid_argument("Simulation: the world was built from another scene or robot: " + mismatch);
+  std::unique_ptr<Strategy> strategy;
+  if (scenario_.robot && scenario_.robot->strategy) strategy = MakeStrategy(*scenario_.robot->strategy);
+  Build(threads, nullptr, std::move(strategy), std::move(world));
+}
+
+std::shared_ptr<World> BuildWorld(const Scenario& scenario, int threads) {
+  std::optional<RobotModel> model;
+  if (scenario.robot) model = LoadRobotModel(*scenario.robot);
+  return std::make_shared<World>(scenario, model ? &*model : nullptr, threads);
+}
+
 Simulation::Simulation(Scenario scenario, int threads, std::unique_ptr<Locomotion> locomotion,
                        std::unique_ptr<Strategy> strategy)
     : scenario_(std::move(scenario)), sample_count_(scenario_.SampleCount()), runner_(threads) {
   Build(threads, std::move(locomotion), std::move(strategy));
 }
 
-Simulation::~Simulation() = default;
+Simulation::~Simulation() {
+  if (world_) world_->Release(this);
+}
 
 const SampleFrame& Simulation::delivered() const { return delivery_->active() ? delivered_ : frame_; }
 
 RobotCommands* Simulation::commands() { return commands_.get(); }
 
-void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy) {
+void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy,
+                       std::shared_ptr<World> world) {
   locomotion_ = std::move(locomotion);
   const bool own_locomotion = !locomotion_ && scenario_.robot;
-  if (own_locomotion) locomotion_ = MakeLocomotion(*scenario_.robot, scenario_.rate_hz);
+  // (on a world built already, the legs move a copy of the model its bodies were built from)
+  if (own_locomotion)
+    locomotion_ = world ? MakeLocomotion(*scenario_.robot, scenario_.rate_hz, *world->robot_model())
+                        : MakeLocomotion(*scenario_.robot, scenario_.rate_hz);
   external_ = dynamic_cast<ExternalDrive*>(locomotion_.get());
-  world_ = std::make_unique<World>(scenario_, locomotion_ ? &locomotion_->model() : nullptr, threads);
+  const RobotModel* model = locomotion_ ? &locomotion_->model() : nullptr;
+  world_ = world ? std::move(world) : std::make_shared<World>(scenario_, model, threads);
+  world_->Claim(this);
+  // (a simulation that fails to build hands a shared world back)
+  struct ReleaseUnlessBuilt {
+    World& world;
+    const void* user;
+    bool built = false;
+    ~ReleaseUnlessBuilt() {
+      if (!built) world.Release(user);
+    }
+  } claim{*world_, this};
+  world_->ResetEpisode();
+  rig_ = std::make_unique<SensorRig>(scenario_, model);
   // (after the robot and the world, whose problems come first) a run without
   // sensors would write an empty report and claim success; a walking robot
   // without sensors is the blind baseline of an outcome study (its outcome
@@ -94,7 +129,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     throw InputError(scenario_.source + ": sensors: no sensors: nothing to measure (add at least one under 'sensors:', "
                      "or a robot whose walk without sensors is the measurement)");
   }
-  reader_ = std::make_unique<SensorReader>(scenario_, *world_);
+  reader_ = std::make_unique<SensorReader>(scenario_, *world_, *rig_);
   delivery_ = std::make_unique<DeliveryQueue>(scenario_.sensors, scenario_.rate_hz);
   event_log_ = std::make_unique<Events>(*this);
   for (const SensorConfig& sensor : scenario_.sensors) {
@@ -139,6 +174,7 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
   delivered_.sensors.resize(scenario_.sensors.size());
   outputs_.resize(scenario_.sensors.size());
   if (strategy_) strategy_->Reset(MakeSetup());
+  claim.built = true;
 }
 
 std::unique_ptr<TerrainMap> Simulation::MakeTerrainMap() const {
@@ -187,11 +223,8 @@ void Simulation::Reset(std::uint64_t seed) {
   // (the map first: a gait planning on it plans its first step as it starts afresh)
   if (terrain_map_) terrain_map_->Reset();
   if (truth_feed_) truth_feed_->Reset();
-  world_->ResetPeople();
-  if (locomotion_) {
-    locomotion_->Reset();
-    world_->robot()->ForgetClearanceBounds();
-  }
+  world_->ResetEpisode();
+  if (locomotion_) locomotion_->Reset();
   if (strategy_) strategy_->Reset(MakeSetup());
 }
 

@@ -1,8 +1,10 @@
-// The closed loop, one sample at a time. A Simulation owns its scenario, the
-// World built from it once (bodies, acceleration structures, object table),
-// the robot's Locomotion and an optional Strategy, and one episode's state
-// (time, pending readings, outcome, events). Reset(seed) starts a new episode
-// on the same world.
+// The closed loop, one sample at a time. A Simulation owns its scenario, its
+// sensor rig (sim/sensor_rig.h), the robot's Locomotion and an optional
+// Strategy, and one episode's state (time, pending readings, outcome, events);
+// it runs on a World (bodies, acceleration structures, object table) built
+// from the scenario once — its own, or one shared with other simulations of
+// the same scene and robot in turn (BuildWorld). Reset(seed) starts a new
+// episode on the same world.
 //
 // Every sample t_k = k / rate_hz:
 //   locomotion(t) ─► robot FK ─► sensors read (SensorReader) ─► SampleFrame (with truth)
@@ -31,6 +33,7 @@
 #include "sim/map_terrain.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"
+#include "sim/sensor_rig.h"
 #include "sim/truth_map_feed.h"
 #include "sim/world.h"
 #include "strategy/strategy.h"
@@ -52,11 +55,22 @@ inline constexpr double kPedestrianKeep_m = 0.9;
 /// 0.45 m, and a person's foot swings up to about 0.35 m ahead of its torso.
 inline constexpr double kPedestrianPassStanding_m = 0.8;
 
+/// A world for simulations of scenarios with this one's scene and robot
+/// (their sensors, strategies, gaits and maps free), built once and shared:
+/// each simulation takes it in turn. Throws InputError on a bad robot model.
+std::shared_ptr<World> BuildWorld(const Scenario& scenario, int threads);
+
 class Simulation {
  public:
   /// The scenario's own robot motion (gait or trajectory) and strategy;
   /// `threads` >= 1 for ray casting. Throws InputError on bad input.
   explicit Simulation(Scenario scenario, int threads = 1);
+
+  /// The same on a world built already (BuildWorld) from a scenario with the
+  /// same scene and robot (std::invalid_argument naming what differs): the
+  /// world is this simulation's until it is destroyed (std::logic_error if
+  /// another simulation holds it), and its episode starts afresh.
+  Simulation(Scenario scenario, int threads, std::shared_ptr<World> world);
 
   /// With an injected locomotion (null: the scenario's own, or none without
   /// a robot section) and strategy (null: none, whatever the scenario says).
@@ -112,6 +126,8 @@ class Simulation {
   std::int64_t samples_taken() const { return next_sample_; }
   const Scenario& scenario() const { return scenario_; }
   const World& world() const { return *world_; }
+  /// Where each sensor is fixed and its rays (scenario order).
+  const SensorRig& rig() const { return *rig_; }
 
   /// Name of an object id as found in SensorSample::object_id.
   const std::string& object_name(std::int32_t object_id) const { return world_->object_name(object_id); }
@@ -177,7 +193,8 @@ class Simulation {
  private:
   class Commands;
   class Events;
-  void Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy);
+  void Build(int threads, std::unique_ptr<Locomotion> locomotion, std::unique_ptr<Strategy> strategy,
+             std::shared_ptr<World> world = nullptr);
   // the sample itself, the robot's motion ready
   const SampleFrame& TakeSample();
   // the robot's part of a sample after the readings: knowledge, strategy, outcome
@@ -203,7 +220,8 @@ class Simulation {
   ParallelRunner runner_;  // shares the sensors of a sample out over the threads
   std::unique_ptr<Locomotion> locomotion_;
   ExternalDrive* external_ = nullptr;  // locomotion_ when it is driven from outside
-  std::unique_ptr<World> world_;
+  std::shared_ptr<World> world_;      // claimed by this simulation while it lives
+  std::unique_ptr<SensorRig> rig_;
   std::unique_ptr<SensorReader> reader_;
   std::unique_ptr<DeliveryQueue> delivery_;
   std::unique_ptr<Strategy> strategy_;

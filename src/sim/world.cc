@@ -1,12 +1,10 @@
 #include "sim/world.h"
 
-#include "core/input_error.h"
-#include "core/nearest_key.h"
-#include "sensors/multizone.h"
-
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace proxsim {
 
@@ -25,30 +23,25 @@ double BoundingRadius_m(const Shape& shape) {
   return std::numeric_limits<double>::infinity();
 }
 
-// "scenario.yaml:12: sensors.NAME.link: unknown link ..." with the nearest name suggested
-std::string UnknownLinkProblem(const Scenario& scenario, const SensorConfig& sensor, const RobotModel* model) {
-  std::string known;
-  std::vector<std::string> names;
-  for (int i = 0; model != nullptr && i < model->link_count(); ++i) {
-    names.push_back(model->link_name(i));
-    known += (i ? ", " : "") + names.back();
+// What builds the robot's bodies and says where it may stand, as text (MismatchWith).
+std::string RobotKey(const Scenario& scenario, const RobotModel* model) {
+  if (model == nullptr) return "";
+  std::string key = model->name() + "\n" + model->source();
+  if (const auto& robot = scenario.robot) {
+    key += "\n" + robot->model + "\n" + std::to_string(static_cast<int>(robot->geometry)) + "\n" +
+           std::to_string(robot->geom_group) + "\n" + robot->start_on;
+    for (const std::string& path : robot->package_paths) key += "\n" + path;
   }
-  const auto nearest = NearestKey(sensor.link, names);
-  // appended piece by piece: GCC 12 takes `":" + std::to_string(...)` for an
-  // overlapping memcpy (a false -Wrestrict at -O3)
-  std::string where = scenario.source;
-  if (sensor.link_line > 0) {
-    where += ':';
-    where += std::to_string(sensor.link_line);
-  }
-  return where + ": sensors." + sensor.name + ".link: unknown link '" + sensor.link + "'" +
-         (nearest ? " (did you mean '" + *nearest + "'?)" : "") + "; expected world" +
-         (known.empty() ? "" : " or one of " + known);
+  return key;
 }
+
+std::atomic<std::int64_t> worlds_built{0};
 
 }  // namespace
 
-World::World(const Scenario& scenario, const RobotModel* robot_model, int threads) {
+World::World(const Scenario& scenario, const RobotModel* robot_model, int threads)
+    : robot_key_(RobotKey(scenario, robot_model)) {
+  ++worlds_built;
   // the static world: one body, one shape per scene object, ids = scene order;
   // each moving object a body of its own, its instance moved every sample
   std::vector<BodyShape> world_shapes;
@@ -57,12 +50,13 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
   for (const SceneObject& object : scenario.scene.objects) {
     const auto id = static_cast<std::int32_t>(object_names_.size());
     object_names_.push_back(object.name);
+    scene_kinds_.push_back(std::string(ShapeKindName(object.shape)) + (object.motion ? " moving" : ""));
     if (!object.motion) {
       world_shapes.push_back({object.shape, object.X_WO, id});
       continue;
     }
     const int body = caster_.AddBody({BodyShape{object.shape, Pose::Identity(), id}}, BodyKind::kMoving, object.X_WO);
-    moving_.push_back({&*object.motion, body, BoundingRadius_m(object.shape), object.X_WO});
+    moving_.push_back({*object.motion, body, BoundingRadius_m(object.shape), object.X_WO, object.X_WO});
     // a person's parts (NAME/torso, NAME/left_leg, ...) wait together
     if (const auto slash = object.name.find('/'); slash != std::string::npos) {
       const std::string person = object.name.substr(0, slash);
@@ -102,44 +96,54 @@ World::World(const Scenario& scenario, const RobotModel* robot_model, int thread
 
   // the robot: its links are bodies too, with object ids after the scene's
   if (robot_model != nullptr) {
-    robot_ = std::make_unique<RobotInScene>(*robot_model, caster_, first_robot_object_id_);
+    robot_model_ = std::make_unique<const RobotModel>(*robot_model);
+    robot_ = std::make_unique<RobotInScene>(*robot_model_, caster_, first_robot_object_id_);
     for (int link = 0; link < robot_model->link_count(); ++link) object_names_.push_back(robot_model->link_name(link));
   }
-
-  // every sensor's link must exist
-  std::vector<std::string> problems;
-  for (const SensorConfig& sensor : scenario.sensors) {
-    int link = sensor.link == "world" || robot_model == nullptr ? -1 : robot_model->LinkIndex(sensor.link);
-    // `root`: the robot's root link, whatever its name (unless a link is called so)
-    if (link < 0 && robot_model != nullptr && sensor.link == "root") link = robot_model->root_link();
-    if (sensor.link != "world" && link < 0) problems.push_back(UnknownLinkProblem(scenario, sensor, robot_model));
-    sensor_link_.push_back(link);
-  }
-  if (!problems.empty()) throw InputError(problems);
 
   caster_.set_threads(threads);
   caster_.Commit();
   // the clearance truth's point-query structure over the scene without the
   // ground is built here with the other structures, not at the first sample
   if (robot_) caster_.DistanceToWorld(Vec3::Zero(), ground_ids_);
-
-  // the beams or zones, sensor after sensor: one ray for the paper's sensors
-  ray_begin_.push_back(0);
-  for (const SensorConfig& sensor : scenario.sensors) {
-    const std::vector<BeamRay> beam = MakeSensorRays(sensor.spec);
-    beam_rays_.insert(beam_rays_.end(), beam.begin(), beam.end());
-    ray_begin_.push_back(beam_rays_.size());
-  }
 }
 
 World::~World() = default;
+
+std::int64_t World::BuiltCount() { return worlds_built.load(); }
+
+std::string World::MismatchWith(const Scenario& scenario) const {
+  const auto& objects = scenario.scene.objects;
+  if (objects.size() != scene_kinds_.size())
+    return "the scene has " + std::to_string(objects.size()) + " objects, the world " + std::to_string(scene_kinds_.size());
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const std::string kind = std::string(ShapeKindName(objects[i].shape)) + (objects[i].motion ? " moving" : "");
+    if (objects[i].name != object_names_[i] || kind != scene_kinds_[i])
+      return "scene object " + std::to_string(i) + " is '" + objects[i].name + "' (" + kind + "), the world's '" +
+             object_names_[i] + "' (" + scene_kinds_[i] + ")";
+  }
+  const std::string robot_key = scenario.robot ? RobotKey(scenario, robot_model_.get()) : "";
+  if (scenario.robot.has_value() != (robot_ != nullptr) || robot_key != robot_key_)
+    return "the robot differs (its model, geometry or start surface)";
+  return "";
+}
+
+void World::Claim(const void* user) {
+  if (user_ != nullptr && user_ != user)
+    throw std::logic_error("World::Claim: the world is held by another simulation (one at a time)");
+  user_ = user;
+}
+
+void World::Release(const void* user) {
+  if (user_ == user) user_ = nullptr;
+}
 
 int World::HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double pass_m, double t_s, double dt_s) {
   int waiting = 0;
   for (Person& person : people_) {
     const MovingBody& torso = moving_[person.torso];
     const auto torso_at = [&](double ahead_s) -> Vec2 {
-      const Pose X_WT = MotionPoseAt(*torso.motion, t_s - person.waited_s + ahead_s);
+      const Pose X_WT = MotionPoseAt(torso.motion, t_s - person.waited_s + ahead_s);
       return X_WT.translation().head<2>();
     };
     const double next_m = (torso_at(0) - p_W_robot).norm();
@@ -155,8 +159,15 @@ int World::HoldPeopleNear(const Vec2& p_W_robot, double keep_m, double pass_m, d
   return waiting;
 }
 
-void World::ResetPeople() {
+void World::ResetEpisode() {
   for (Person& person : people_) person.waited_s = 0;
+  for (std::size_t i = 0; i < moving_.size(); ++i) {
+    MovingBody& moving = moving_[i];
+    moving.X_WO = moving.X_WO_start;
+    caster_.SetBodyPose(moving.body, moving.X_WO);
+    moving_caster_.SetBodyPose(moving_caster_body_[i], moving.X_WO);
+  }
+  if (robot_) robot_->ForgetClearanceBounds();
 }
 
 std::vector<std::pair<Vec2, double>> World::MovingFootprints_W() const {
@@ -172,7 +183,7 @@ double World::MoveObjects(double t_s) {
     MovingBody& moving = moving_[i];
     // a person who waited walks on from where it stopped
     const double waited_s = moving.person >= 0 ? people_[moving.person].waited_s : 0.0;
-    const Pose X_WO = MotionPoseAt(*moving.motion, t_s - waited_s);
+    const Pose X_WO = MotionPoseAt(moving.motion, t_s - waited_s);
     // a point at r from the origin moves by the origin's step plus r times the
     // turn's chord 2·sin(θ/2) = ‖R − R_last‖_F / √2 (no acos for 50 objects a sample)
     const double chord_per_m = (X_WO.linear() - moving.X_WO.linear()).norm() / std::sqrt(2.0);

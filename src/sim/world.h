@@ -1,10 +1,12 @@
 // The world a simulation builds once and keeps across episodes: the scene's
 // objects and the robot's links as bodies in the ray caster (with their
-// acceleration structures), the object table that names what a ray hits, the
-// link each sensor is fixed on, and the beams' rays in their sensor frames.
+// acceleration structures) and the object table that names what a ray hits.
 // An episode (sim/simulation.h) moves the robot's bodies and the scene's
 // moving objects (instances whose transforms change: no BVH is rebuilt);
-// nothing here is rebuilt between episodes.
+// nothing here is rebuilt between episodes. The sensors are not part of it
+// (sim/sensor_rig.h): one world serves simulations with different sensors,
+// strategies and gaits in turn — one at a time, each claiming it while it
+// lives (an outcome study builds one world per job, not one per run).
 //
 // Frames: W world, L a link, S a sensor.
 #pragma once
@@ -18,7 +20,6 @@
 #include "scenario/scenario.h"
 #include "raycast/ray_caster.h"
 #include "robot/robot_model.h"
-#include "sensors/beam.h"
 #include "sim/caster_terrain.h"
 #include "sim/robot_in_scene.h"
 
@@ -27,8 +28,8 @@ namespace proxsim {
 class World {
  public:
   /// Builds the scene's and the robot's bodies (robot_model null: no robot)
-  /// and commits them. Throws InputError when a sensor names a link the robot
-  /// does not have. `scenario` and `robot_model` must outlive the world.
+  /// and commits them. The world keeps its own copies of the scene's motions
+  /// and of the robot model: neither argument need outlive it.
   World(const Scenario& scenario, const RobotModel* robot_model, int threads);
   ~World();
   World(const World&) = delete;
@@ -74,21 +75,29 @@ class World {
   /// Where each moving object is (its origin's x, y) and the radius of a
   /// sphere about its origin that holds it.
   std::vector<std::pair<Vec2, double>> MovingFootprints_W() const;
-  /// A new episode: every person walks from its start again.
-  void ResetPeople();
   /// The moving objects alone, in a caster of their own (object ids as in
   /// caster()), for the robot's clearance and contacts (caster()'s distances
   /// measure the still scene only); null without any.
   const RayCaster* moving_caster() const { return moving_.empty() ? nullptr : &moving_caster_; }
 
 
-  /// The link sensor i is fixed on; -1 for world.
-  int sensor_link(std::size_t sensor) const { return sensor_link_[sensor]; }
-  /// Sensor i owns rays [ray_begin(i), ray_begin(i + 1)) of every per-ray buffer.
-  std::size_t ray_begin(std::size_t sensor) const { return ray_begin_[sensor]; }
-  std::size_t ray_count() const { return beam_rays_.size(); }
-  /// Every sensor's rays in its own frame, sensor after sensor.
-  const std::vector<BeamRay>& beam_rays() const { return beam_rays_; }
+  /// The robot model its bodies were built from; null without a robot.
+  const RobotModel* robot_model() const { return robot_model_.get(); }
+  /// Empty when `scenario` describes this world (its scene's objects by name
+  /// and kind, and its robot's model and start surface), else what differs:
+  /// a simulation runs on a shared world only if built from the same scene and robot.
+  std::string MismatchWith(const Scenario& scenario) const;
+
+  /// A simulation takes the world for its lifetime (std::logic_error if
+  /// another holds it: an episode's bodies are the world's) and hands it back.
+  void Claim(const void* user);
+  void Release(const void* user);
+  /// A new episode: every moving object back at its start and every person
+  /// walking from its start again; the robot's clearance measure starts afresh.
+  void ResetEpisode();
+
+  /// Worlds built in this process so far (the bench counts an outcome study's).
+  static std::int64_t BuiltCount();
 
  private:
   RayCaster caster_;
@@ -97,15 +106,17 @@ class World {
   std::vector<std::string> object_names_;
   std::int32_t first_robot_object_id_ = 0;
   std::vector<std::int32_t> ground_ids_;
+  std::unique_ptr<const RobotModel> robot_model_;  // the bodies' (robot_ reads it)
   std::unique_ptr<RobotInScene> robot_;
-  std::vector<int> sensor_link_;
-  std::vector<std::size_t> ray_begin_;
-  std::vector<BeamRay> beam_rays_;
+  std::string robot_key_;                           // what built the robot's bodies (MismatchWith)
+  std::vector<std::string> scene_kinds_;            // each scene object's shape kind, moving or not
+  const void* user_ = nullptr;                      // the simulation holding the world
   struct MovingBody {
-    const Motion* motion;  // the scenario's (it outlives the world)
+    Motion motion;         // the scenario's, copied
     int body;              // in caster_
     double radius_m;       // of a sphere about the object's origin holding it
     Pose X_WO;             // where it was last put
+    Pose X_WO_start;       // where the scenario puts it
     int person = -1;       // the person whose part it is (people_), -1 for none
   };
   // a person: its parts in moving_, the torso among them, and how long it has waited

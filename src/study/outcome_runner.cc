@@ -46,48 +46,10 @@ std::string Fingerprint(const OutcomeStudyConfig& study) {
                           text);
 }
 
-// one job: the world generated once, the reference walk, then every run
-OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
-  const std::string& source = study.families[study.jobs[job].family].source;
-  // the world and each run as documents: the values their replay texts hold
-  // (WorldText, RunScenarioText), never written out and parsed back
-  YAML::Node world = WorldNode(study, job);
-  OutcomeJob result;
-  // the reference walk: blind, no strategy, legs that refuse an unsafe step,
-  // the episode ended by the first collision. Refused: the path cannot be
-  // walked; collided: something stands in the straight way (a generated
-  // room's blockers, a person) — either way a stop before it is a success
-  const OutcomeRun reference = RunEpisodeNode(RunNodeFromWorld(world, nullptr, nullptr, true), source);
-  result.way_through = reference.outcome != "refused" && reference.outcome != "collided";
-  if (!result.way_through) {
-    result.hazard_m = reference.walked_m;
-    result.stop_window_m = reference.outcome == "refused" ? kStopBeforeHazard_m : kStopBeforeObstacle_m;
-  }
-  for (const SensorSet& set : study.sets) {
-    for (const StrategyChoice& strategy : study.strategies) {
-      // (the last run takes the world itself, uncopied)
-      const bool last = &set == &study.sets.back() && &strategy == &study.strategies.back();
-      result.runs.push_back(RunEpisodeNode(
-          last ? RunNodeFromWorld(std::move(world), &set, &strategy, false) : RunNodeFromWorld(world, &set, &strategy, false),
-          source));
-    }
-  }
-  return result;
-}
-
-}  // namespace
-
-bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
-  if (run.outcome == "reached_goal") return true;
-  return !job.way_through && (run.outcome == "stopped" || run.outcome == "refused") &&
-         run.walked_m >= job.hazard_m - job.stop_window_m;
-}
-
-namespace {
-
 // The episode of a loaded scenario, walked to its end.
-OutcomeRun RunLoaded(Scenario scenario) {
-  Simulation sim(std::move(scenario), 1);
+// (on `world` when given: one built from the same scene and robot)
+OutcomeRun RunLoaded(Scenario scenario, const std::shared_ptr<World>& world = nullptr) {
+  Simulation sim = world ? Simulation(std::move(scenario), 1, world) : Simulation(std::move(scenario), 1);
   // the goal ends the episode: nothing after it changes the outcome
   while (!sim.done() && !sim.robot_outcome().reached_goal) sim.Step();
   OutcomeRun run;
@@ -105,7 +67,48 @@ OutcomeRun RunLoaded(Scenario scenario) {
   return run;
 }
 
+// one job: the world generated and built once, the reference walk, then every run on it
+OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
+  const std::string& source = study.families[study.jobs[job].family].source;
+  // the world and each run as documents: the values their replay texts hold
+  // (WorldText, RunScenarioText), never written out and parsed back
+  YAML::Node world = WorldNode(study, job);
+  OutcomeJob result;
+  // the reference walk: blind, no strategy, legs that refuse an unsafe step,
+  // the episode ended by the first collision. Refused: the path cannot be
+  // walked; collided: something stands in the straight way (a generated
+  // room's blockers, a person) — either way a stop before it is a success.
+  // Its scenario builds the world (bodies, acceleration structures) that
+  // every set and strategy then runs on, in turn
+  Scenario reference_scenario = LoadScenarioNode(RunNodeFromWorld(world, nullptr, nullptr, true), source);
+  const std::shared_ptr<World> built = BuildWorld(reference_scenario, 1);
+  const OutcomeRun reference = RunLoaded(std::move(reference_scenario), built);
+  result.way_through = reference.outcome != "refused" && reference.outcome != "collided";
+  if (!result.way_through) {
+    result.hazard_m = reference.walked_m;
+    result.stop_window_m = reference.outcome == "refused" ? kStopBeforeHazard_m : kStopBeforeObstacle_m;
+  }
+  for (const SensorSet& set : study.sets) {
+    for (const StrategyChoice& strategy : study.strategies) {
+      // (the last run takes the world itself, uncopied)
+      const bool last = &set == &study.sets.back() && &strategy == &study.strategies.back();
+      result.runs.push_back(RunLoaded(
+          LoadScenarioNode(last ? RunNodeFromWorld(std::move(world), &set, &strategy, false)
+                                : RunNodeFromWorld(world, &set, &strategy, false),
+                           source),
+          built));
+    }
+  }
+  return result;
+}
+
 }  // namespace
+
+bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
+  if (run.outcome == "reached_goal") return true;
+  return !job.way_through && (run.outcome == "stopped" || run.outcome == "refused") &&
+         run.walked_m >= job.hazard_m - job.stop_window_m;
+}
 
 OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source) {
   return RunLoaded(LoadScenarioText(scenario_text, source));
@@ -202,11 +205,13 @@ OutcomeResults RunOutcomeStudy(const OutcomeStudyConfig& study, const StudyOptio
       const std::string& name = study.families[family].name;
       try {
         const std::string world = WorldText(study, job);
+        const std::string& source = study.families[family].source;
+        const std::shared_ptr<World> built =
+            BuildWorld(LoadScenarioText(RunTextFromWorld(world, nullptr, nullptr, true), source), 1);
         for (const SensorSet& set : study.sets) {
           try {
-            const Simulation sim(LoadScenarioText(RunTextFromWorld(world, &set, &study.strategies.front(), false),
-                                                  study.families[family].source),
-                                 1);
+            const Simulation sim(
+                LoadScenarioText(RunTextFromWorld(world, &set, &study.strategies.front(), false), source), 1, built);
           } catch (const InputError& error) {
             for (const std::string& p : error.problems())
               problems.push_back(study.source + ": set '" + set.name + "' in world '" + name + "': " + p);
