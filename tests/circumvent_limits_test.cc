@@ -60,8 +60,8 @@ class CircumventSweep : public ::testing::TestWithParam<int> {};
 TEST_P(CircumventSweep, ReachesTheGoalOrStopsWithoutCollision) {
   const double y_m = -0.5 + 0.05 * GetParam();
   const Simulation::Outcome outcome = RunEpisode(ExampleWithObstacleAt(y_m), "sweep.yaml");
-  EXPECT_TRUE(outcome.name == "reached_goal" || outcome.name == "stopped")
-      << "obstacle at y = " << y_m << " m: " << outcome.name << " at " << outcome.t_s << " s: " << outcome.detail;
+  EXPECT_TRUE(outcome.name() == "reached_goal" || outcome.name() == "stopped")
+      << "obstacle at y = " << y_m << " m: " << outcome.name() << " at " << outcome.t_s << " s: " << outcome.detail;
 }
 
 INSTANTIATE_TEST_SUITE_P(ObstacleAcrossThePath, CircumventSweep, ::testing::Range(0, 21),
@@ -96,9 +96,9 @@ TEST(CircumventRooms, BlindCollidesWhereTheExamplesSensorsAvoid) {
   std::map<std::string, int> seeing, blind;
   for (int seed = 1; seed <= rooms; ++seed) {
     const std::string text = RoomWithTheExamplesSensors(seed);
-    ++seeing[RunEpisode(text, "room.yaml").name];
+    ++seeing[std::string(RunEpisode(text, "room.yaml").name())];
     const std::string no_sensors = text.substr(0, text.find("\nsensors:")) + "\nsensors: []\n";
-    ++blind[RunEpisode(no_sensors, "room.yaml").name];
+    ++blind[std::string(RunEpisode(no_sensors, "room.yaml").name())];
   }
   std::cout << rooms << " rooms, with the example's sensors:";
   for (const auto& [name, count] : seeing) std::cout << " " << name << " " << count;

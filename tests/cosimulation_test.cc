@@ -56,7 +56,7 @@ TEST(Cosimulation, DrivenByTheGaitsStatesMeasuresWhatTheGaitMeasured) {
   EXPECT_TRUE(external.robot_outcome().stop_requested);
   EXPECT_EQ(external.robot_outcome().stop_request_t_s, gait.robot_outcome().stop_request_t_s);
   EXPECT_TRUE(external.external()->stop_requested());
-  EXPECT_EQ(external.outcome().name, gait.outcome().name);
+  EXPECT_EQ(external.outcome().name(), gait.outcome().name());
   EXPECT_EQ(external.robot_outcome().min_clearance_m, gait.robot_outcome().min_clearance_m);
 }
 

@@ -60,13 +60,13 @@ std::map<std::string, int> FlatFloorWalkEpisodes(const std::string& robot_yaml) 
       if (sample % 50 == 24) sim.commands()->Resume();
       sim.Step();
     }
-    ++outcomes[sim.outcome().name];
+    ++outcomes[std::string(sim.outcome().name())];
     // (not a vacuous walk: every episode covers ground)
     const double walked_m = sim.observation().robot->distance_walked_m;
     EXPECT_GT(walked_m, 1.0) << "episode " << episode << ": " << sim.outcome().detail;
     outcomes["metres walked"] += static_cast<int>(walked_m);
-    EXPECT_NE(sim.outcome().name, "fell") << "episode " << episode << ": " << sim.outcome().detail;
-    EXPECT_NE(sim.outcome().name, "collided") << "episode " << episode << ": " << sim.outcome().detail;
+    EXPECT_NE(sim.outcome().name(), "fell") << "episode " << episode << ": " << sim.outcome().detail;
+    EXPECT_NE(sim.outcome().name(), "collided") << "episode " << episode << ": " << sim.outcome().detail;
   }
   return outcomes;
 }
@@ -115,7 +115,7 @@ FlatFloorWalked FlatFloorAskedStride(double stride_m) {
 TEST(FlatFloorWalks, AStrideBeyondTheLegsOnLevelGroundIsStoodNeverFallen) {
   for (const double stride_m : {3.0, 30.0}) {
     const FlatFloorWalked walked = FlatFloorAskedStride(stride_m);
-    EXPECT_EQ(walked.outcome.name, "refused") << stride_m << ": " << walked.outcome.detail;
+    EXPECT_EQ(walked.outcome.name(), "refused") << stride_m << ": " << walked.outcome.detail;
     EXPECT_GT(walked.distance_m, 0.3) << stride_m << ": the steps before it were walked";
   }
 }

@@ -126,7 +126,8 @@ TEST(InspectTest, BuiltinBipedListsItsLinksJointsAndLegs) {
   // the legs, found by axes and heights: the built-in map
   EXPECT_TRUE(inspect["legs_accepted"].get<bool>()) << inspect["legs_problems"].dump();
   EXPECT_EQ(inspect["legs"]["left"], (nlohmann::json{{"hip", "left_hip_pitch"}, {"knee", "left_knee_pitch"},
-                                                     {"ankle", "left_ankle_pitch"}, {"foot", "left_foot"}}));
+                                                     {"ankle", "left_ankle_pitch"}, {"foot", "left_foot"},
+                                                     {"ankle_zero_deg", 0.0}}));
   EXPECT_EQ(inspect["legs"]["right"]["knee"], "right_knee_pitch");
   EXPECT_EQ(inspect["feet_candidates"].size(), 2u);
   // the shank's front: the cylinder's surface, 0.05 m ahead of its axis, at every height
@@ -166,7 +167,8 @@ TEST(InspectTest, H1LegMapFoundByGeometryWalks) {
   EXPECT_TRUE(inspect["legs_accepted"].get<bool>()) << inspect["legs_problems"].dump();
   // the map docs/robots.md gives by hand, found without reading a name
   EXPECT_EQ(inspect["legs"]["left"], (nlohmann::json{{"hip", "left_hip_pitch_joint"}, {"knee", "left_knee_joint"},
-                                                     {"ankle", "left_ankle_joint"}, {"foot", "left_ankle_link"}}));
+                                                     {"ankle", "left_ankle_joint"}, {"foot", "left_ankle_link"},
+                                                     {"ankle_zero_deg", 0.0}}));
   EXPECT_EQ(inspect["legs"]["right"]["hip"], "right_hip_pitch_joint");
   EXPECT_EQ(inspect["shanks"]["left"]["link"], "left_knee_link");
   ASSERT_EQ(inspect["shanks"]["left"]["front_surface"].size(), 3u);

@@ -210,7 +210,7 @@ TEST(MovingObjects, ARobotStruckByAMovingBoxCollidesWithIt) {
   while (!sim.done()) sim.Step();
   ASSERT_FALSE(sim.robot_outcome().collisions.empty());
   EXPECT_EQ(sim.robot_outcome().collisions.front().object, "cart");
-  EXPECT_EQ(sim.outcome().name, "collided");
+  EXPECT_EQ(sim.outcome().name(), "collided");
   // about when the cart (front at 3.8 − t) meets a robot a few tens of cm ahead of x = 0.3·t
   EXPECT_GT(sim.robot_outcome().collisions.front().t_s, 1.5);
   EXPECT_LT(sim.robot_outcome().collisions.front().t_s, 4.0);
@@ -241,7 +241,7 @@ TEST(MovingObjects, APersonCrossingWhereTheRobotStandsWaitsAndNeverCollides) {
       while (!sim.done()) sim.Step();
       const std::string what = "crossing x = " + std::to_string(cross_x_m) + " from t = " + std::to_string(start_s);
       EXPECT_TRUE(sim.robot_outcome().collisions.empty()) << what << ": " << sim.robot_outcome().collisions.front().object;
-      EXPECT_EQ(sim.outcome().name, "reached_goal") << what;
+      EXPECT_EQ(sim.outcome().name(), "reached_goal") << what;
       // the person came up to the robot and waited: it is still on the crossing's first half
       EXPECT_LT(sim.robot_outcome().min_clearance_m, 1.0) << what;
     }
@@ -284,7 +284,7 @@ TEST(MovingObjects, APersonComingAtARobotThatIsStoppingWaitsAndNeverCollides) {
       }
       const std::string what = "at " + std::to_string(speed_m_s) + " m/s, stopped " + std::to_string(gap_m) + " m apart";
       EXPECT_TRUE(sim.robot_outcome().collisions.empty()) << what << ": " << sim.robot_outcome().collisions.front().object;
-      EXPECT_EQ(sim.outcome().name, "stopped") << what;
+      EXPECT_EQ(sim.outcome().name(), "stopped") << what;
       // the robot was still stepping 0.2 s after its stop: a rule for robots standing still would not have held the person then
       reached_before_standing += standing_t_s > stop_t_s + 0.2;
     }
@@ -300,7 +300,7 @@ TEST(MovingObjects, ARobotWalkingIntoAPersonCollides) {
   ASSERT_FALSE(sim.robot_outcome().collisions.empty());
   EXPECT_EQ(sim.robot_outcome().collisions.front().object.rfind("walker", 0), 0u)
       << sim.robot_outcome().collisions.front().object;
-  EXPECT_EQ(sim.outcome().name, "collided");
+  EXPECT_EQ(sim.outcome().name(), "collided");
 }
 
 // --- bad input -------------------------------------------------------------

@@ -137,10 +137,14 @@ OutcomeResults PlantedResults() {
     job.way_through = j != 19;
     if (j == 19) job.hazard_m = 3.0;  // B stopped after 2.0 m: within 2 m of it
     const double t = 8.0 + 0.1 * j;
-    const OutcomeRun reached{"reached_goal", t, 4.4, 4.0, 0.2};
-    job.runs.push_back(j < 19 ? reached : OutcomeRun{"collided", 3.0, 1.5, 4.0, 0.0});
-    const char* b = j < 10 ? "reached_goal" : j < 15 ? "collided" : j < 18 ? "fell" : j == 18 ? "time_up" : "stopped";
-    job.runs.push_back(j < 10 ? reached : OutcomeRun{b, 5.0, 2.0, 4.0, std::string(b) == "collided" ? 0.0 : 0.1});
+    const OutcomeRun reached{OutcomeKind::kReachedGoal, t, 4.4, 4.0, 0.2};
+    job.runs.push_back(j < 19 ? reached : OutcomeRun{OutcomeKind::kCollided, 3.0, 1.5, 4.0, 0.0});
+    const OutcomeKind b = j < 10   ? OutcomeKind::kReachedGoal
+                          : j < 15 ? OutcomeKind::kCollided
+                          : j < 18 ? OutcomeKind::kFell
+                          : j == 18 ? OutcomeKind::kTimeUp
+                                    : OutcomeKind::kStopped;
+    job.runs.push_back(j < 10 ? reached : OutcomeRun{b, 5.0, 2.0, 4.0, b == OutcomeKind::kCollided ? 0.0 : 0.1});
     job.runs.push_back(reached);
   }
   return results;
@@ -231,7 +235,7 @@ TEST(OutcomeAnswers, BaselinesGiveThePlantedPerceptionScoreCostAndWarning) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) study.jobs.push_back({0, seed});
   study.replay_files = 0;
   OutcomeResults results(10);
-  const OutcomeRun reached{"reached_goal", 8.0, 4.4, 4.0, 0.2}, collided{"collided", 3.0, 1.5, 4.0, 0.0};
+  const OutcomeRun reached{OutcomeKind::kReachedGoal, 8.0, 4.4, 4.0, 0.2}, collided{OutcomeKind::kCollided, 3.0, 1.5, 4.0, 0.0};
   for (int j = 0; j < 10; ++j) {
     results[j].runs = {j < 8 ? reached : collided, j < 3 ? reached : collided, reached};
   }
@@ -292,7 +296,7 @@ TEST(OutcomeAnswers, TuningChoosesOnTrainingWorldsAndScoresOnTestWorlds) {
   study.families = {{"room_d0.5", "room", 0.5, "", "", true}};
   for (std::uint64_t seed = 1; seed <= 14; ++seed) study.jobs.push_back({0, seed, seed <= 4});
   study.replay_files = 0;
-  const OutcomeRun ok{"reached_goal", 8.0, 4.4, 4.0, 0.2}, hit{"collided", 3.0, 1.5, 4.0, 0.0};
+  const OutcomeRun ok{OutcomeKind::kReachedGoal, 8.0, 4.4, 4.0, 0.2}, hit{OutcomeKind::kCollided, 3.0, 1.5, 4.0, 0.0};
   OutcomeResults results(14);
   for (int j = 0; j < 14; ++j) {
     const bool train = j < 4;
@@ -354,14 +358,14 @@ TEST(OutcomeAnswers, AStopIsASuccessOnlyBeforeAnImpassableHazard) {
   OutcomeJob blocked;
   blocked.way_through = false;
   blocked.hazard_m = 3.0;
-  EXPECT_TRUE(IsSuccess({"stopped", 4.0, 2.5, 5.0, 0.3}, blocked));
-  EXPECT_TRUE(IsSuccess({"refused", 4.0, 2.9, 5.0, 0.3}, blocked));
-  EXPECT_FALSE(IsSuccess({"stopped", 1.0, 0.5, 5.0, 0.3}, blocked)) << "stopped at its start";
-  EXPECT_FALSE(IsSuccess({"fell", 4.0, 3.0, 5.0, 0.3}, blocked));
-  EXPECT_FALSE(IsSuccess({"time_up", 14.0, 2.5, 5.0, 0.3}, blocked));
+  EXPECT_TRUE(IsSuccess({OutcomeKind::kStopped, 4.0, 2.5, 5.0, 0.3}, blocked));
+  EXPECT_TRUE(IsSuccess({OutcomeKind::kRefused, 4.0, 2.9, 5.0, 0.3}, blocked));
+  EXPECT_FALSE(IsSuccess({OutcomeKind::kStopped, 1.0, 0.5, 5.0, 0.3}, blocked)) << "stopped at its start";
+  EXPECT_FALSE(IsSuccess({OutcomeKind::kFell, 4.0, 3.0, 5.0, 0.3}, blocked));
+  EXPECT_FALSE(IsSuccess({OutcomeKind::kTimeUp, 14.0, 2.5, 5.0, 0.3}, blocked));
   const OutcomeJob open;  // a way through: only the goal counts
-  EXPECT_FALSE(IsSuccess({"stopped", 4.0, 2.5, 5.0, 0.3}, open));
-  EXPECT_TRUE(IsSuccess({"reached_goal", 9.0, 5.2, 5.0, 0.3}, open));
+  EXPECT_FALSE(IsSuccess({OutcomeKind::kStopped, 4.0, 2.5, 5.0, 0.3}, open));
+  EXPECT_TRUE(IsSuccess({OutcomeKind::kReachedGoal, 9.0, 5.2, 5.0, 0.3}, open));
 }
 
 // combine: every set of `size` among the `top` rows of a detection study's

@@ -171,6 +171,16 @@ TEST(PitchedSole, WalkedFlatAtThePitchItsGeometryLiesFlattestOrAtAnkleZeroDeg) {
     ExpectTheSameWalk(original, pitched, pitched_by);
     fs::remove_all(pitched_dir / "out");
   }
+  // `proxsim inspect` says the pitch it found, as the key that would give it; the original has none
+  const auto inspected = RunProxsim("inspect '" + (pitched_dir / "biped_pitched.urdf").string() + "'");
+  EXPECT_EQ(inspected.exit_code, 0) << inspected.output;
+  EXPECT_NE(inspected.output.find("foot: left_foot, ankle_zero_deg: 10.0}"), std::string::npos) << inspected.output;
+  EXPECT_NE(inspected.output.find("foot: right_foot, ankle_zero_deg: 10.0}"), std::string::npos) << inspected.output;
+  const auto inspected_json = RunProxsim("inspect --json '" + (pitched_dir / "biped_pitched.urdf").string() + "' 2>/dev/null");
+  const nlohmann::json found = nlohmann::json::parse(inspected_json.output.substr(inspected_json.output.find('{')));
+  EXPECT_NEAR(found["legs"]["left"]["ankle_zero_deg"].get<double>(), 10.0, 0.05);
+  const auto flat = RunProxsim("inspect '" + kBipedUrdf.string() + "'");
+  EXPECT_EQ(flat.output.find("ankle_zero_deg"), std::string::npos) << flat.output;
   fs::remove_all(original_dir);
   fs::remove_all(pitched_dir);
 }

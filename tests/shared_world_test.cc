@@ -59,7 +59,7 @@ Walk WalkToTheEnd(Simulation& sim) {
     for (const SensorSample& sample : frame.sensors) walk.d_m.push_back(sample.reading.d_m);
     walk.pelvis_x_m.push_back(sim.robot_state()->X_WP.translation().x());
   }
-  walk.outcome = sim.outcome().name;
+  walk.outcome = sim.outcome().name();
   walk.outcome_t_s = sim.outcome().t_s;
   return walk;
 }

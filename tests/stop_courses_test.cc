@@ -49,7 +49,7 @@ TEST_P(StopOnCourses, NeverFallsIntoAHoleOrAGap) {
     while (!sim.done()) sim.Step();
     const Simulation::Outcome outcome = sim.outcome();
     // it stands before the first one, stopped by the rule from its readings
-    EXPECT_EQ(outcome.name, "stopped") << c.element << " seed " << seed << ": " << outcome.detail;
+    EXPECT_EQ(outcome.name(), "stopped") << c.element << " seed " << seed << ": " << outcome.detail;
     bool drop_seen = false;
     for (const StrategyEvent& event : sim.events()) drop_seen = drop_seen || event.event == "drop_ahead";
     EXPECT_TRUE(drop_seen) << c.element << " seed " << seed;

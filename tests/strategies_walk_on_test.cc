@@ -46,7 +46,7 @@ TEST(StrategiesWalkOn, StopWaitsForAPersonCrossingItsCorridorThenWalksOnToTheGoa
   EXPECT_TRUE(Logged(sim, "obstacle_ahead")) << "the person must have stopped it, or this test shows nothing";
   EXPECT_TRUE(Logged(sim, "walking_on"));
   EXPECT_TRUE(sim.robot_outcome().collisions.empty()) << sim.robot_outcome().collisions.front().object;
-  EXPECT_EQ(sim.outcome().name, "reached_goal");
+  EXPECT_EQ(sim.outcome().name(), "reached_goal");
 }
 
 TEST(StrategiesWalkOn, StopForABoxNeverWalksOn) {
@@ -59,14 +59,14 @@ TEST(StrategiesWalkOn, StopForABoxNeverWalksOn) {
   EXPECT_TRUE(Logged(sim, "obstacle_ahead"));
   EXPECT_FALSE(Logged(sim, "walking_on"));
   EXPECT_TRUE(sim.robot_outcome().collisions.empty());
-  EXPECT_EQ(sim.outcome().name, "stopped");
+  EXPECT_EQ(sim.outcome().name(), "stopped");
 }
 
 TEST(StrategiesWalkOn, CircumventReachesTheGoalPastAPersonCrossingItsWay) {
   Simulation sim(LoadScenarioText(WalkOnText(kCrossingPerson, "{name: circumvent, perception: map}"), "walk_on.yaml"), 1);
   while (!sim.done()) sim.Step();
   EXPECT_TRUE(sim.robot_outcome().collisions.empty()) << sim.robot_outcome().collisions.front().object;
-  EXPECT_EQ(sim.outcome().name, "reached_goal");
+  EXPECT_EQ(sim.outcome().name(), "reached_goal");
 }
 
 TEST(StrategiesWalkOn, CircumventWalksARouteThroughTheGapOfAWallAcrossItsWay) {
@@ -78,13 +78,13 @@ TEST(StrategiesWalkOn, CircumventWalksARouteThroughTheGapOfAWallAcrossItsWay) {
   while (!sim.done()) sim.Step();
   EXPECT_TRUE(Logged(sim, "route_planned"));
   EXPECT_TRUE(sim.robot_outcome().collisions.empty()) << sim.robot_outcome().collisions.front().object;
-  EXPECT_EQ(sim.outcome().name, "reached_goal");
+  EXPECT_EQ(sim.outcome().name(), "reached_goal");
   // (the stop rule, the baseline, stands before the wall)
   Simulation stop(LoadScenarioText(WalkOnText(walls, "{name: stop, perception: map, corridor_half_width_m: 0.22}"),
                                    "walk_on.yaml"),
                   1);
   while (!stop.done()) stop.Step();
-  EXPECT_EQ(stop.outcome().name, "stopped");
+  EXPECT_EQ(stop.outcome().name(), "stopped");
 }
 
 }  // namespace

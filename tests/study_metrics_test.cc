@@ -128,7 +128,7 @@ TEST_F(StudyMetricsTest, EveryRowSaysHowItsEpisodeEnded) {
   for (const std::string scene : {"far_hazard", "near_wall"}) {
     const auto& a = RowOf(results_, "ideal@pelvis", scene);
     const auto& b = RowOf(results_, "ideal@left_tibia", scene);
-    EXPECT_NE(std::ranges::find(Simulation::kOutcomeNames, a.at("outcome")), Simulation::kOutcomeNames.end())
+    EXPECT_NE(std::ranges::find(kOutcomeNames, a.at("outcome")), kOutcomeNames.end())
         << a.at("outcome");
     EXPECT_EQ(a.at("outcome"), b.at("outcome"));
     EXPECT_EQ(a.at("outcome_t_s"), b.at("outcome_t_s"));

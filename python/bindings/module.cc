@@ -284,7 +284,7 @@ class PySimulation {
       truth["reached_goal"] = outcome.reached_goal;
       // how the episode stands: reached_goal, stopped, collided, fell, refused or time_up (summary.json's)
       const Simulation::Outcome episode = sim_->outcome();
-      truth["outcome"] = episode.name;
+      truth["outcome"] = std::string(episode.name());
       truth["outcome_t_s"] = episode.t_s;
       truth["collisions"] = outcome.collisions.size();
     }

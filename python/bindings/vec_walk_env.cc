@@ -49,7 +49,7 @@ struct EnvSlot {
   std::uint64_t seed = 0;       // this episode's
   std::uint64_t next_seed = 0;  // the next episode's
   bool autoreset = false;       // the episode ended: the next step starts the next one
-  std::string outcome;          // after the last step
+  OutcomeKind outcome = OutcomeKind::kTimeUp;  // after the last step
 };
 
 // Row i of every output array, written by the thread that steps env i.
@@ -195,7 +195,7 @@ class VecWalkCore {
     py::array outcome = numpy_empty_(static_cast<py::ssize_t>(envs_.size()), "O");
     auto** items = static_cast<PyObject**>(outcome.mutable_data());
     for (std::size_t i = 0; i < envs_.size(); ++i) {
-      py::str& name = OutcomeName(envs_[i].outcome);
+      py::str& name = outcome_names_[static_cast<std::size_t>(envs_[i].outcome)];
       Py_XDECREF(items[i]);
       items[i] = name.inc_ref().ptr();
     }
@@ -208,12 +208,6 @@ class VecWalkCore {
       infos[(std::string("_") + key).c_str()] = all;
     }
     return infos;
-  }
-
-  py::str& OutcomeName(const std::string& name) {
-    auto it = outcome_names_.find(name);
-    if (it == outcome_names_.end()) it = outcome_names_.emplace(name, py::str(name)).first;
-    return it->second;
   }
 
   // WalkEnv._distance_to_goal
@@ -254,7 +248,7 @@ class VecWalkCore {
     env.autoreset = false;
     env.sim->Step();
     env.last_distance_m = DistanceToGoal(*env.sim->observation().robot);
-    env.outcome = env.sim->outcome().name;
+    env.outcome = env.sim->outcome().kind;
     FillObservation(i, out);
     out.reward[i] = 0.0;
     out.terminated[i] = out.truncated[i] = false;
@@ -278,13 +272,13 @@ class VecWalkCore {
     const double distance_m = DistanceToGoal(*env.sim->observation().robot);
     double reward = env.last_distance_m - distance_m;
     env.last_distance_m = distance_m;
-    env.outcome = env.sim->outcome().name;
-    const bool collided = env.outcome == "collided", fell = env.outcome == "fell";
+    env.outcome = env.sim->outcome().kind;
+    const bool collided = env.outcome == OutcomeKind::kCollided, fell = env.outcome == OutcomeKind::kFell;
     const std::size_t collisions = env.sim->robot_outcome().collisions.size();
     if (collisions > env.collisions) reward -= task_.collision_penalty;  // a new collision this step
     env.collisions = collisions;
     if (fell) reward -= task_.fall_penalty;
-    const bool terminated = collided || fell || env.outcome == "reached_goal";
+    const bool terminated = collided || fell || env.outcome == OutcomeKind::kReachedGoal;
     FillObservation(i, out);
     out.reward[i] = reward;
     out.terminated[i] = terminated;
@@ -305,7 +299,12 @@ class VecWalkCore {
   int sensor_count_ = 0;
   double last_cpp_s_ = 0;
   bool started_ = false;  // reset() was called
-  std::map<std::string, py::str> outcome_names_;
+  // each outcome's name as a Python string, made once (OutcomeKind's order)
+  std::vector<py::str> outcome_names_ = [] {
+    std::vector<py::str> names;
+    for (const std::string_view name : kOutcomeNames) names.emplace_back(std::string(name));
+    return names;
+  }();
   py::object numpy_empty_ = py::module_::import("numpy").attr("empty");
 };
 

@@ -102,6 +102,8 @@ nlohmann::json InspectJson(const RobotModel& model, const RobotSummary& summary,
     if (leg.names) {
       map[side] = {{"hip", leg.names->hip}, {"knee", leg.names->knee}, {"ankle", leg.names->ankle},
                    {"foot", leg.names->foot}};
+      // the foot's pitch at joint zero the gait found (it walks the sole flat)
+      if (legs.accepted) map[side]["ankle_zero_deg"] = legs.ankle_zero_deg[s];
     } else {
       map[side] = nullptr;
       why.push_back(std::string(side) + ": " + leg.problem);
@@ -194,9 +196,16 @@ void PrintText(const RobotModel& model, const RobotSummary& summary, const LegMa
     std::printf("robot:\n  legs:\n");
     for (int s = 0; s < 2; ++s) {
       const LegNames& n = *legs.legs[s].names;
-      std::printf("    %-6s {hip: %s, knee: %s, ankle: %s, foot: %s}\n", s == 0 ? "left:" : "right:", n.hip.c_str(),
-                  n.knee.c_str(), n.ankle.c_str(), n.foot.c_str());
+      // a foot pitched at joint zero: the pitch the gait found, written as the key that would give it
+      char ankle_zero[64] = "";
+      if (legs.accepted && legs.ankle_zero_deg[s] != 0.0)
+        std::snprintf(ankle_zero, sizeof ankle_zero, ", ankle_zero_deg: %.1f", legs.ankle_zero_deg[s]);
+      std::printf("    %-6s {hip: %s, knee: %s, ankle: %s, foot: %s%s}\n", s == 0 ? "left:" : "right:", n.hip.c_str(),
+                  n.knee.c_str(), n.ankle.c_str(), n.foot.c_str(), ankle_zero);
     }
+    if (legs.accepted && (legs.ankle_zero_deg[0] != 0.0 || legs.ankle_zero_deg[1] != 0.0))
+      std::printf("  (a foot not flat at joint zero: the gait found the pitch its sole lies flattest at, toe up "
+                  "positive, and walks it flat; give ankle_zero_deg to set it)\n");
     std::printf("%s\n", legs.accepted ? "  (read as the gait reads robot.legs: accepted)"
                                       : "  (the gait's leg reader refuses it:)");
   }

@@ -199,7 +199,7 @@ int Run(const std::string& scenario_path, const std::string& out_dir, const std:
                                                          : "its own " + first["other_link"].get<std::string>();
       motion = "collided with " + with + " (" + first["link"].get<std::string>() + ")" + at;
     } else if (outcome == "fell") {
-      motion = std::string("fell") + at + " (" + r["outcome_detail"].get<std::string>().substr(6) + ")";
+      motion = std::string("fell") + at + " (" + r["fall"]["reason"].get<std::string>() + ")";
     } else if (outcome == "reached_goal") {
       motion = std::string("reached its goal") + at;
     } else if (r["stopped"].get<bool>()) {

@@ -158,6 +158,7 @@ LegMapSuggestion SuggestLegMap(const RobotModel& model, const RobotSummary& summ
     const BipedLegs legs(model, std::array<LegNames, 2>{*suggestion.legs[0].names, *suggestion.legs[1].names},
                          q_reference);
     suggestion.accepted = true;
+    for (int s = 0; s < 2; ++s) suggestion.ankle_zero_deg[s] = RadToDeg(legs.leg(static_cast<Side>(s)).foot0_rad);
   } catch (const InputError& error) {
     suggestion.problems = error.problems();
   }

@@ -58,6 +58,11 @@ struct LegMapSuggestion {
   std::vector<FootCandidate> feet;      ///< every candidate, left (y > 0) first
   std::array<LegSuggestion, 2> legs;    ///< left, right
   bool accepted = false;                ///< both legs found and BipedLegs reads them
+  /// When accepted: each foot's pitch at the reference pose as the gait reads
+  /// it (left, right; toe up +), degrees — 0 for a sole flat at joint zero, else
+  /// the pitch its geometry lies flattest at, which the gait walks flat
+  /// (what `legs.*.ankle_zero_deg` would give)
+  std::array<double, 2> ankle_zero_deg{0, 0};
   std::vector<std::string> problems;    ///< why BipedLegs refuses them (its messages), when it does
 };
 

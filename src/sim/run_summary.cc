@@ -138,18 +138,19 @@ nlohmann::json RobotOutcomeJson(const Simulation& sim) {
     collisions.push_back({{"t_s", c.t_s}, {"link", c.link}, {c.self ? "other_link" : "object", c.object},
                           {"depth_m", c.depth_m}, {"p_W", {c.p_W.x(), c.p_W.y(), c.p_W.z()}}});
   }
-  // where the robot fell: the foothold its foot missed, as planned (null
-  // when no landing was felt: an unsafe step taken under unsafe_steps: fall)
+  // where the robot fell: the foothold its foot missed, as planned, or (an
+  // unsafe step taken under unsafe_steps: fall) the pelvis's point on the ground
   nlohmann::json fall = nullptr;
   if (outcome.fell) {
     fall = {{"t_s", outcome.end_t_s},
             {"p_W", outcome.fall_p_W ? nlohmann::json{outcome.fall_p_W->x(), outcome.fall_p_W->y(), outcome.fall_p_W->z()}
                                      : nlohmann::json(nullptr)},
-            {"detail", outcome.end_detail}};
+            {"detail", outcome.end_detail},
+            {"reason", outcome.fall_reason}};
   }
   const Simulation::Outcome episode = sim.outcome();
   return {{"model", sim.robot()->model().source()},
-          {"outcome", episode.name},
+          {"outcome", episode.name()},
           {"outcome_t_s", episode.t_s},
           {"outcome_detail", episode.detail},
           {"collisions", collisions},

@@ -20,15 +20,11 @@ class Simulation::Commands : public RobotCommands {
  public:
   explicit Commands(Simulation& sim) : sim_(sim) {}
   void Stop() override {
-    if (!sim_.outcome_.stop_requested) {
-      sim_.outcome_.stop_requested = true;
-      sim_.outcome_.stop_request_t_s = sim_.frame_.t_s;
-    }
-    sim_.stop_pending_ = true;
+    sim_.referee_->StopCommanded(sim_.frame_.t_s);
     sim_.locomotion_->RequestStop();
   }
   void Resume() override {
-    sim_.stop_pending_ = false;
+    sim_.referee_->Resumed();
     sim_.locomotion_->Resume();
   }
   void SetStride(double stride_m) override {
@@ -163,13 +159,14 @@ void Simulation::Build(int threads, std::unique_ptr<Locomotion> locomotion, std:
     half_width_m_ = ReferenceHalfWidth_m(*world_->robot());
     contacts_ = std::make_unique<ContactFinder>(*world_->robot(), world_->ground_caster(), world_->ground_ids(), feet_);
     contacts_->SetMoving(world_->moving_caster());
-    if (scenario_.robot && scenario_.robot->trajectory_file.empty() && !scenario_.robot->waypoints_m.empty()) {
-      goal_m_ = scenario_.robot->waypoints_m.back();
-      // half the stride walked (the legs may set it rather than the scenario)
-      const auto cycle = locomotion_->gait_cycle();
-      goal_tolerance_m_ = 0.5 * (cycle ? cycle->stride_m : scenario_.robot->gait.stride_m);
-    }
   }
+  // the goal: within half the stride walked (the legs may set it rather than the scenario)
+  double goal_tolerance_m = 0;
+  if (locomotion_ && scenario_.robot) {
+    const auto cycle = locomotion_->gait_cycle();
+    goal_tolerance_m = 0.5 * (cycle ? cycle->stride_m : scenario_.robot->gait.stride_m);
+  }
+  referee_ = std::make_unique<Referee>(scenario_, goal_tolerance_m, *event_log_);
   frame_.sensors.resize(scenario_.sensors.size());
   delivered_.sensors.resize(scenario_.sensors.size());
   outputs_.resize(scenario_.sensors.size());
@@ -211,13 +208,8 @@ void Simulation::Reset(std::uint64_t seed) {
   frame_.robot = RobotSample{};
   reader_->Reset();
   delivery_->Clear();
-  outcome_ = RobotOutcome{};
+  referee_->Reset();
   contacts_now_.clear();
-  contacts_before_.clear();
-  stop_pending_ = false;
-  walking_since_t_s_ = 0;
-  cannot_step_t_s_ = -std::numeric_limits<double>::infinity();
-  cannot_step_detail_.clear();
   events_.clear();
   state_ = RobotState{};
   // (the map first: a gait planning on it plans its first step as it starts afresh)
@@ -267,27 +259,8 @@ const SampleFrame& Simulation::TakeSample() {
   if (locomotion_) {
     // every link at its pose of this very sample time
     state_ = locomotion_->Advance(frame_.t_s);
-    std::string unsafe_step;
-    for (LocomotionEvent& event : locomotion_->TakeEvents()) {
-      // a foot that landed where it cannot stand (gait.footholds: map): the fall is the event
-      if (event.event == "fall") {
-        Fall(event.detail, event.p_W);
-        continue;
-      }
-      if (event.event == "cannot_step") {
-        cannot_step_t_s_ = frame_.t_s;
-        cannot_step_detail_ = event.detail;
-        // under unsafe_steps: fall the step is taken, not refused: the fall is the event
-        // (unless the gait plans on its own map: then the map said so, and the
-        // robot stands; or the step passes over level ground: the legs' own limits)
-        if (UnsafeStepsFall() && !event.level_ground) {
-          unsafe_step = event.detail;
-          continue;
-        }
-      }
-      event_log_->Log(std::move(event.event), std::move(event.detail));
-    }
-    if (!unsafe_step.empty()) Fall(unsafe_step);
+    // (the ground known at the last sample: where a fall with no place of its own lands)
+    referee_->LegEvents(locomotion_->TakeEvents(), frame_.t_s, state_, knowledge_.ground_z_m);
     robot->Place(state_);
     world_->caster().Commit();
     frame_.robot = {.present = true,
@@ -306,7 +279,7 @@ const SampleFrame& Simulation::TakeSample() {
                    // afresh); each exact below the cap: the running minimum, or the reach of a
                    // contact once the minimum is below it (a touch does not make every later
                    // sample search for contacts)
-                   const double cap_m = std::max(outcome_.min_clearance_m, kContactTolerance_m);
+                   const double cap_m = std::max(referee_->robot().min_clearance_m, kContactTolerance_m);
                    const double still_m = robot->ClearanceTo(world_->ground_ids(), cap_m);
                    clearance_m = still_m;
                    if (const RayCaster* moving = world_->moving_caster())
@@ -328,8 +301,10 @@ const SampleFrame& Simulation::TakeSample() {
     terrain_map_->Update(observation_, columns);
   }
   if (locomotion_) {
-    UpdateRobot(clearance_m);
-    UpdateContacts(contacts_now_);
+    // the strategy sees what the robot knows and nothing else; the referee judges the sample after it
+    if (strategy_) strategy_->Decide(observation_, *commands_, *event_log_);
+    referee_->Judge(frame_.t_s, state_, clearance_m);
+    referee_->Contacts(frame_.t_s, contacts_now_, *world_, world_->robot()->model());
   }
   return frame_;
 }
@@ -366,125 +341,8 @@ void Simulation::FillObservation() {
                              .map = terrain_map_.get()};
 }
 
-void Simulation::UpdateRobot(double clearance_m) {
-  // the strategy sees what the robot knows and nothing else
-  if (strategy_) strategy_->Decide(observation_, *commands_, *event_log_);
+Simulation::Outcome Simulation::outcome() const { return referee_->outcome(frame_.t_s); }
 
-  UpdateStanding();
-  char detail[160];
-  if (goal_m_ && !outcome_.reached_goal &&
-      (state_.X_WP.translation().head<2>() - *goal_m_).norm() <= goal_tolerance_m_) {
-    outcome_.reached_goal = true;
-    outcome_.reached_goal_t_s = frame_.t_s;
-    std::snprintf(detail, sizeof detail, "pelvis within %.2f m of the last waypoint (%.2f, %.2f)", goal_tolerance_m_,
-                  goal_m_->x(), goal_m_->y());
-    event_log_->Log("goal_reached", detail);
-  }
-
-  // the truth, for the summary only
-  if (clearance_m < outcome_.min_clearance_m) {
-    outcome_.min_clearance_m = clearance_m;
-    outcome_.min_clearance_t_s = frame_.t_s;
-  }
-}
-
-void Simulation::Fall(const std::string& reason, const std::optional<Vec3>& p_W) {
-  if (outcome_.ended) return;
-  outcome_.fell = outcome_.ended = true;
-  // where: the gait's place for it (the foothold it missed), or else the
-  // pelvis's point on the ground it stood on (a step the legs could not take)
-  const Vec3 p_WP = state_.X_WP.translation();
-  outcome_.fall_p_W = p_W ? *p_W : Vec3(p_WP.x(), p_WP.y(), knowledge_.ground_z_m);
-  outcome_.end_t_s = frame_.t_s;
-  outcome_.end_detail = "fell: " + reason;
-  event_log_->Log("fall", outcome_.end_detail);
-}
-
-void Simulation::UpdateContacts(const std::vector<Contact>& contacts) {
-  const auto same = [](const Contact& a, const Contact& b) {
-    return a.link == b.link && a.object_id == b.object_id && a.other_link == b.other_link;
-  };
-  const RobotModel& model = world_->robot()->model();
-  for (const Contact& contact : contacts) {
-    // a contact that lasts is one collision, logged when it begins
-    if (std::any_of(contacts_before_.begin(), contacts_before_.end(), [&](const Contact& c) { return same(c, contact); }))
-      continue;
-    RobotOutcome::Collision collision{.t_s = frame_.t_s,
-                                      .link = model.link_name(contact.link),
-                                      .object = contact.object_id >= 0 ? world_->object_name(contact.object_id)
-                                                                       : model.link_name(contact.other_link),
-                                      .self = contact.object_id < 0,
-                                      .depth_m = contact.depth_m,
-                                      .p_W = contact.p_W};
-    char detail[256];
-    std::snprintf(detail, sizeof detail, "%s %s %s, %.0f mm deep at (%.2f, %.2f, %.2f)", collision.link.c_str(),
-                  collision.self ? "touched its own" : "struck", collision.object.c_str(), 1000 * contact.depth_m,
-                  contact.p_W.x(), contact.p_W.y(), contact.p_W.z());
-    event_log_->Log("collision", detail);
-    outcome_.collisions.push_back(std::move(collision));
-    if (scenario_.robot && scenario_.robot->on_collision == OnCollision::kStop && !outcome_.ended) {
-      outcome_.collided = outcome_.ended = true;
-      outcome_.end_t_s = frame_.t_s;
-      outcome_.end_detail = std::string("collided: ") + detail;
-    }
-  }
-  contacts_before_ = contacts;
-}
-
-Simulation::Outcome Simulation::outcome() const {
-  // the goal ends the episode's story: nothing after it (a collision, the
-  // gait's last step past a limit) changes its outcome
-  const auto after_goal = [&](double t_s) { return outcome_.reached_goal && t_s > outcome_.reached_goal_t_s; };
-  const bool collided_first = !outcome_.collisions.empty() && !after_goal(outcome_.collisions.front().t_s);
-  const bool fell_first = outcome_.fell && !after_goal(outcome_.end_t_s);
-  if (!collided_first && !fell_first && outcome_.reached_goal)
-    return {"reached_goal", outcome_.reached_goal_t_s, "reached the path's last waypoint"};
-  if (outcome_.collided) return {"collided", outcome_.end_t_s, outcome_.end_detail};
-  // under on_collision: continue the walk went on, but the episode still collided
-  if (!outcome_.collisions.empty()) {
-    const RobotOutcome::Collision& first = outcome_.collisions.front();
-    return {"collided", first.t_s, "collided: " + first.link + (first.self ? " touched its own " : " struck ") +
-                                       first.object + " (on_collision: continue; " +
-                                       std::to_string(outcome_.collisions.size()) + " collisions in all)"};
-  }
-  if (outcome_.fell) return {"fell", outcome_.end_t_s, outcome_.end_detail};
-  if (outcome_.reached_goal) return {"reached_goal", outcome_.reached_goal_t_s, "reached the path's last waypoint"};
-  if (outcome_.stopped && outcome_.stop_reason == "strategy") return {"stopped", outcome_.stop_t_s, "stopped by its strategy, standing"};
-  if (outcome_.stopped && outcome_.stop_reason == "own_map") {
-    std::string detail = "standing before a step its own map shows it cannot take (footholds: map): ";
-    detail += cannot_step_detail_;
-    return {"stopped", outcome_.stop_t_s, detail};
-  }
-  if (outcome_.stopped && outcome_.stop_reason == "cannot_step")
-    return {"refused", outcome_.stop_t_s, "standing before a step its legs cannot take (unsafe_steps: refuse)"};
-  return {"time_up", frame_.t_s, "the episode's time ran out"};
-}
-
-bool Simulation::UnsafeStepsFall() const {
-  return scenario_.robot && scenario_.robot->unsafe_steps == UnsafeSteps::kFall &&
-         scenario_.robot->footholds != Footholds::kMap;
-}
-
-void Simulation::UpdateStanding() {
-  if (!state_.stopped) {
-    if (outcome_.stopped) walking_since_t_s_ = frame_.t_s;
-    outcome_.stopped = false;
-    outcome_.stop_reason.clear();
-    return;
-  }
-  if (outcome_.stopped) return;  // standing since an earlier sample
-  outcome_.stopped = true;
-  outcome_.stop_t_s = frame_.t_s;
-  const bool own_map = scenario_.robot && scenario_.robot->footholds == Footholds::kMap;
-  outcome_.stop_reason = stop_pending_                           ? "strategy"
-                         : cannot_step_t_s_ >= walking_since_t_s_ ? (own_map ? "own_map" : "cannot_step")
-                                                                  : "end_of_path";
-  if (stop_pending_) {
-    char detail[160];
-    std::snprintf(detail, sizeof detail, "standing, both feet down, after the stop commanded at t = %.2f s",
-                  outcome_.stop_request_t_s);
-    event_log_->Log("stopped", detail);
-  }
-}
+const Simulation::RobotOutcome& Simulation::robot_outcome() const { return referee_->robot(); }
 
 }  // namespace proxsim

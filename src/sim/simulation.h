@@ -31,6 +31,7 @@
 #include "sim/contacts.h"
 #include "sim/delivery_queue.h"
 #include "sim/map_terrain.h"
+#include "sim/referee.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"
 #include "sim/sensor_rig.h"
@@ -86,7 +87,7 @@ class Simulation {
 
   /// True once every sample of the episode has been taken, or the episode
   /// ended early: the robot collided (robot.on_collision: stop) or fell.
-  bool done() const { return next_sample_ >= sample_count_ || outcome_.ended; }
+  bool done() const { return next_sample_ >= sample_count_ || referee_->robot().ended; }
 
   /// Takes the next sample and returns it (valid until the next Step). Requires !done()
   /// and a robot that moves by itself (not robot.locomotion: external).
@@ -139,53 +140,14 @@ class Simulation {
   const Locomotion* locomotion() const { return locomotion_.get(); }
   const Strategy* strategy() const { return strategy_.get(); }
 
-  /// What the episode knows of the robot so far (summary.json `robot`).
-  struct RobotOutcome {
-    bool stop_requested = false;
-    double stop_request_t_s = 0;   ///< when a stop was first commanded
-    /// Standing still at the last sample, and since when, and why: `strategy`
-    /// (a stop command not resumed), `cannot_step` (the legs stood before a
-    /// step they cannot take), `own_map` (the gait, planning on the robot's
-    /// own map, found no step it can take there) or `end_of_path` (the path
-    /// or the trajectory ended). At the end of an episode: standing still for good.
-    bool stopped = false;
-    double stop_t_s = 0;
-    std::string stop_reason;
-    bool reached_goal = false;     ///< the pelvis came within half a stride of the path's last waypoint
-    double reached_goal_t_s = 0;
-    double min_clearance_m = std::numeric_limits<double>::infinity();
-    double min_clearance_t_s = 0;
-    /// Contacts of the robot's body with the world or itself (sim/contacts.h),
-    /// each logged when it begins: link, object or other link, depth, point.
-    struct Collision {
-      double t_s = 0;
-      std::string link;
-      std::string object;  ///< the scene object, or the other link of a self-collision
-      bool self = false;
-      double depth_m = 0;
-      Vec3 p_W = Vec3::Zero();
-    };
-    std::vector<Collision> collisions;
-    bool collided = false;  ///< a contact ended the episode (on_collision: stop)
-    bool fell = false;      ///< an unsafe step was taken (unsafe_steps: fall), or a foot landed where it cannot stand (footholds: map)
-    std::optional<Vec3> fall_p_W;  ///< where it fell: the foothold the foot missed (the middle of its sole as planned), or the pelvis's point on the ground; empty unless it fell
-    bool ended = false;     ///< the episode ended before its last sample (collided or fell)
-    double end_t_s = 0;
-    std::string end_detail;
-  };
-  /// The episode's outcome as summary.json states it: reached_goal, stopped
+  /// What the episode knows of the robot so far (summary.json `robot`; sim/referee.h).
+  using RobotOutcome = proxsim::RobotOutcome;
+  using Outcome = proxsim::EpisodeOutcome;
+  /// The episode's outcome as the referee judges it (sim/referee.h): reached_goal, stopped
   /// (by its strategy, standing), collided, fell, refused (standing before an
   /// unsafe step its legs refused) or time_up; with its time and a line for a person.
-  /// Every outcome's name (Outcome::name is one of them; docs/outcomes.md).
-  static constexpr std::array<std::string_view, 6> kOutcomeNames = {"reached_goal", "stopped", "collided",
-                                                                    "fell",         "refused", "time_up"};
-  struct Outcome {
-    std::string name;
-    double t_s = 0;
-    std::string detail;
-  };
   Outcome outcome() const;
-  const RobotOutcome& robot_outcome() const { return outcome_; }
+  const RobotOutcome& robot_outcome() const;
 
   /// The strategy's events and the episode's own (stopped, goal_reached), in time order.
   const std::vector<StrategyEvent>& events() const { return events_; }
@@ -197,19 +159,6 @@ class Simulation {
              std::shared_ptr<World> world = nullptr);
   // the sample itself, the robot's motion ready
   const SampleFrame& TakeSample();
-  // the robot's part of a sample after the readings: knowledge, strategy, outcome
-  void UpdateRobot(double clearance_m);
-  // standing still: since when and why (RobotOutcome::stopped)
-  void UpdateStanding();
-  // the contacts of this sample: logged when new, the end of the episode under on_collision: stop
-  void UpdateContacts(const std::vector<Contact>& contacts);
-  // an unsafe step under unsafe_steps: fall, or a landing that cannot stand
-  void Fall(const std::string& reason, const std::optional<Vec3>& p_W = std::nullopt);
-  // Whether a step the gait refuses is taken, and the robot falls
-  // (unsafe_steps: fall), rather than stood before: never when the gait plans
-  // on the robot's own map (footholds: map) — the refusal is then the robot's
-  // own judgement of what it saw, and it stands.
-  bool UnsafeStepsFall() const;
   void FillObservation();
   StrategySetup MakeSetup() const;
   std::unique_ptr<TerrainMap> MakeTerrainMap() const;
@@ -233,8 +182,7 @@ class Simulation {
   std::vector<SensorInfo> sensor_info_;
   std::vector<FootFrame> feet_;
   double half_width_m_ = 0;
-  std::optional<Vec2> goal_m_;   // the path's last waypoint
-  double goal_tolerance_m_ = 0;
+  std::unique_ptr<Referee> referee_;  // judges the episode (fed only with a robot)
   // the episode
   RobotState state_;
   SampleFrame frame_;
@@ -242,14 +190,9 @@ class Simulation {
   std::vector<SensorOutput> outputs_;
   RobotKnowledge knowledge_;
   Observation observation_;
-  RobotOutcome outcome_;
   std::vector<StrategyEvent> events_;
   std::unique_ptr<ContactFinder> contacts_;         // null without a robot
-  std::vector<Contact> contacts_now_, contacts_before_;  // this sample's and the last one's
-  bool stop_pending_ = false;         // a stop command not resumed since
-  double walking_since_t_s_ = 0;      // when the robot last started walking
-  double cannot_step_t_s_ = -std::numeric_limits<double>::infinity();  // the last cannot_step event
-  std::string cannot_step_detail_;                                      // and its reason
+  std::vector<Contact> contacts_now_;  // this sample's
 };
 
 }  // namespace proxsim

@@ -68,7 +68,9 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
   // successes, then the fewest failure dollars, then the order given (the
   // only variant when nothing is tuned)
   const auto failure_usd = [&](const OutcomeRun& run) {
-    return run.outcome == "collided" ? study.costs.collision_usd : run.outcome == "fell" ? study.costs.fall_usd : 0.0;
+    return run.outcome == OutcomeKind::kCollided ? study.costs.collision_usd
+           : run.outcome == OutcomeKind::kFell   ? study.costs.fall_usd
+                                                 : 0.0;
   };
   std::vector<Tally> tallies;
   for (std::size_t s = 0; s < n_sets; ++s) {
@@ -108,11 +110,11 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
       for (std::size_t g = 0; g < n_strategies; ++g) {
         const OutcomeRun& run = run_of(job, s, g);
         const bool success = IsSuccess(run, results[job]);
-        const bool reached = run.outcome == "reached_goal";
+        const bool reached = run.outcome == OutcomeKind::kReachedGoal;
         const double ratio = reached && run.straight_m > 0 ? run.walked_m / run.straight_m : NAN;
         csv += CsvField(study.sets[s].name) + "," + CsvField(groups[group_of[g]].first) + "," + CsvField(family.name) +
                "," + family.kind + "," + Format(family.difficulty) + "," + std::to_string(study.jobs[job].seed) + "," +
-               (results[job].way_through ? "1" : "0") + "," + run.outcome + "," + Format(run.outcome_t_s) + "," +
+               (results[job].way_through ? "1" : "0") + "," + std::string(OutcomeName(run.outcome)) + "," + Format(run.outcome_t_s) + "," +
                (success ? "1" : "0") + "," + (reached ? Format(run.outcome_t_s) : "") + "," + Format(run.walked_m) +
                "," + Format(run.straight_m) + "," + Format(ratio) + "," + Format(run.min_clearance_m) + "," +
                Format(study.sets[s].price_usd) + "," + (study.jobs[job].train ? "train" : "test") + "," +
@@ -122,10 +124,10 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
         ++t.runs;
         t.successes += success;
         t.reached += reached;
-        t.collided += run.outcome == "collided";
-        t.fell += run.outcome == "fell";
-        t.stopped += run.outcome == "stopped" || run.outcome == "refused";
-        t.time_up += run.outcome == "time_up";
+        t.collided += run.outcome == OutcomeKind::kCollided;
+        t.fell += run.outcome == OutcomeKind::kFell;
+        t.stopped += run.outcome == OutcomeKind::kStopped || run.outcome == OutcomeKind::kRefused;
+        t.time_up += run.outcome == OutcomeKind::kTimeUp;
         if (reached) t.time_to_goal_s.push_back(run.outcome_t_s);
         if (std::isfinite(ratio)) t.path_ratio.push_back(ratio);
         if (std::isfinite(run.min_clearance_m)) {
@@ -407,7 +409,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
           emitted << replay;
           // the user's names quoted and escaped (JSON strings): a newline in one cannot start a key of the file
           const std::string text =
-              "# " + run.outcome + " at t = " + Format(run.outcome_t_s) + " s: set " + QuotedForComment(study.sets[s].name) +
+              "# " + std::string(OutcomeName(run.outcome)) + " at t = " + Format(run.outcome_t_s) + " s: set " + QuotedForComment(study.sets[s].name) +
               ", strategy " + QuotedForComment(study.strategies[g].label) + ", world " + QuotedForComment(family.name) +
               " seed " + std::to_string(study.jobs[job].seed) + " (written by proxsim study " +
               QuotedForComment(study.source) + ")\n" + emitted.c_str() + "\n";
@@ -418,7 +420,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
           viewer = "replays/" + stem + "/report/index.html";
         }
         failures += CsvField(study.sets[s].name) + "," + CsvField(groups[group_of[g]].first) + "," +
-                    CsvField(family.name) + "," + std::to_string(study.jobs[job].seed) + "," + run.outcome + "," +
+                    CsvField(family.name) + "," + std::to_string(study.jobs[job].seed) + "," + std::string(OutcomeName(run.outcome)) + "," +
                     Format(run.outcome_t_s) + "," + CsvField(file) + "," + CsvField(command) + "," +
                     CsvField(viewer) + "," + CsvField(study.strategies[g].tuned) + "\n";
       }
@@ -447,7 +449,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
                          {"difficulty", JsonNumber(family.difficulty)},
                          {"seed", study.jobs[job].seed},
                          {"way_through", results[job].way_through},
-                         {"outcome", run.outcome},
+                         {"outcome", OutcomeName(run.outcome)},
                          {"outcome_t_s", JsonNumber(run.outcome_t_s)},
                          {"success", IsSuccess(run, results[job])},
                          {"walked_m", JsonNumber(run.walked_m)},

@@ -54,7 +54,7 @@ OutcomeRun RunLoaded(Scenario scenario, const std::shared_ptr<World>& world = nu
   while (!sim.done() && !sim.robot_outcome().reached_goal) sim.Step();
   OutcomeRun run;
   const Simulation::Outcome outcome = sim.outcome();
-  run.outcome = outcome.name;
+  run.outcome = outcome.kind;
   run.outcome_t_s = outcome.t_s;
   const RobotKnowledge* robot = sim.observation().robot;
   run.walked_m = robot != nullptr ? robot->distance_walked_m : 0.0;
@@ -83,10 +83,10 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
   Scenario reference_scenario = LoadScenarioNode(RunNodeFromWorld(world, nullptr, nullptr, true), source);
   const std::shared_ptr<World> built = BuildWorld(reference_scenario, 1);
   const OutcomeRun reference = RunLoaded(std::move(reference_scenario), built);
-  result.way_through = reference.outcome != "refused" && reference.outcome != "collided";
+  result.way_through = reference.outcome != OutcomeKind::kRefused && reference.outcome != OutcomeKind::kCollided;
   if (!result.way_through) {
     result.hazard_m = reference.walked_m;
-    result.stop_window_m = reference.outcome == "refused" ? kStopBeforeHazard_m : kStopBeforeObstacle_m;
+    result.stop_window_m = reference.outcome == OutcomeKind::kRefused ? kStopBeforeHazard_m : kStopBeforeObstacle_m;
   }
   for (const SensorSet& set : study.sets) {
     for (const StrategyChoice& strategy : study.strategies) {
@@ -105,8 +105,8 @@ OutcomeJob RunJob(const OutcomeStudyConfig& study, std::size_t job) {
 }  // namespace
 
 bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
-  if (run.outcome == "reached_goal") return true;
-  return !job.way_through && (run.outcome == "stopped" || run.outcome == "refused") &&
+  if (run.outcome == OutcomeKind::kReachedGoal) return true;
+  return !job.way_through && (run.outcome == OutcomeKind::kStopped || run.outcome == OutcomeKind::kRefused) &&
          run.walked_m >= job.hazard_m - job.stop_window_m;
 }
 
@@ -120,7 +120,7 @@ OutcomeRun RunEpisodeNode(const YAML::Node& scenario, const std::string& source)
 
 json OutcomeJobJson(const OutcomeJob& job) {
   json runs = json::array();
-  for (const OutcomeRun& r : job.runs) runs.push_back({r.outcome, r.outcome_t_s, r.walked_m, r.straight_m, r.min_clearance_m});
+  for (const OutcomeRun& r : job.runs) runs.push_back({OutcomeName(r.outcome), r.outcome_t_s, r.walked_m, r.straight_m, r.min_clearance_m});
   return {{"way", job.way_through}, {"hazard_m", job.hazard_m}, {"window_m", job.stop_window_m}, {"runs", runs}};
 }
 
@@ -144,11 +144,10 @@ OutcomeJob ParseOutcomeJob(const json& metrics, std::size_t runs_per_job, const 
   job.hazard_m = hazard->get<double>();
   job.stop_window_m = window->get<double>();
   for (const json& r : *runs) {
-    if (!r.is_array() || r.size() != 5 || !r[0].is_string() ||
-        std::ranges::find(Simulation::kOutcomeNames, r[0].get<std::string>()) == Simulation::kOutcomeNames.end()) {
-      Bad(where + ": a run is not [outcome, outcome_t_s, walked_m, straight_m, min_clearance_m]: " + r.dump());
-    }
-    job.runs.push_back({r[0].get<std::string>(), NumberOrNaN(r[1], where, "outcome_t_s"),
+    const std::optional<OutcomeKind> kind =
+        r.is_array() && r.size() == 5 && r[0].is_string() ? OutcomeFromName(r[0].get<std::string>()) : std::nullopt;
+    if (!kind) Bad(where + ": a run is not [outcome, outcome_t_s, walked_m, straight_m, min_clearance_m]: " + r.dump());
+    job.runs.push_back({*kind, NumberOrNaN(r[1], where, "outcome_t_s"),
                         NumberOrNaN(r[2], where, "walked_m"), NumberOrNaN(r[3], where, "straight_m"),
                         NumberOrNaN(r[4], where, "min_clearance_m", -kMaxJournalValue)});
   }

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/referee.h"
 #include "study/outcome_config.h"
 #include "study/study_jobs.h"
 
@@ -20,7 +21,7 @@ namespace proxsim {
 
 /// What one episode measured.
 struct OutcomeRun {
-  std::string outcome;          ///< Simulation::kOutcomeNames
+  OutcomeKind outcome = OutcomeKind::kTimeUp;  ///< how the episode ended (its name: OutcomeName)
   double outcome_t_s = 0;
   double walked_m = 0;          ///< the path the robot walked
   double straight_m = 0;        ///< start to goal in a straight line; NaN without a path

@@ -92,7 +92,7 @@ std::vector<RunMetrics> RunMetricsRecorder::Finish() const {
     std::int64_t covered = 0;
     for (bool b : floor_bins_[i]) covered += b;
     out[i].floor_coverage = bins_walked_ > 0 ? static_cast<double>(covered) / bins_walked_ : 0.0;
-    out[i].outcome = outcome.name;
+    out[i].outcome = outcome.kind;
     out[i].outcome_t_s = outcome.t_s;
   }
   return out;

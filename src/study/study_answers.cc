@@ -94,7 +94,7 @@ nlohmann::json WriteStudyAnswers(const StudyConfig& study, const StudyResults& r
                Number(cand.along_m) + "," + Number(cand.forward_m) + "," + Number(cand.pitch_deg) + "," +
                Number(cand.yaw_deg) + "," + CsvField(study.variants[v].name) + "," + std::to_string(study.seeds[s]) + "," +
                std::to_string(m.samples) + "," + std::to_string(m.false_alarms) + "," + Number(m.self_share) + "," +
-               Number(m.grazing_share) + "," + Number(m.floor_coverage) + "," + m.outcome + "," +
+               Number(m.grazing_share) + "," + Number(m.floor_coverage) + "," + std::string(OutcomeName(m.outcome)) + "," +
                Number(m.outcome_t_s);
         for (const HazardResult& h : m.hazards) {
           csv += ',';

@@ -47,7 +47,7 @@ json JournalMetricsJson(const std::vector<RunMetrics>& runs) {
                    {"self", m.self_share},
                    {"graze", m.grazing_share},
                    {"floor", m.floor_coverage},
-                   {"out", m.outcome},
+                   {"out", OutcomeName(m.outcome)},
                    {"out_t", m.outcome_t_s}});
   }
   return out;
@@ -89,11 +89,11 @@ JournalEntry ParseJournalLine(const json& line, const JournalShape& shape) {
     m.grazing_share = JournalNumberOrNaN(JournalField(r, "graze", where), where + ": graze");
     m.floor_coverage = JournalNumberOrNaN(JournalField(r, "floor", where), where + ": floor");
     const json& outcome = JournalField(r, "out", where);
-    if (!outcome.is_string() || std::ranges::find(Simulation::kOutcomeNames, outcome.get<std::string>()) ==
-                                    Simulation::kOutcomeNames.end())
+    const std::optional<OutcomeKind> kind = outcome.is_string() ? OutcomeFromName(outcome.get<std::string>()) : std::nullopt;
+    if (!kind)
       BadJournalLine(where + ": out: expected an outcome name (reached_goal, stopped, collided, fell, refused, time_up), got " +
           outcome.dump());
-    m.outcome = outcome.get<std::string>();
+    m.outcome = *kind;
     m.outcome_t_s = JournalNumberOrNaN(JournalField(r, "out_t", where), where + ": out_t");
     entry.metrics.push_back(std::move(m));
   }
