@@ -30,7 +30,8 @@ def test_inspect_reads_talos_through_current_mujoco_and_finds_its_legs():
     assert report["robot"]["loader"] == "MuJoCo " + mujoco.mj_versionString()
     assert report["legs_accepted"], report["legs_problems"]
     assert report["legs"]["left"] == {"hip": "leg_left_3_joint", "knee": "leg_left_4_joint",
-                                      "ankle": "leg_left_5_joint", "foot": "leg_left_6_link"}
+                                      "ankle": "leg_left_5_joint", "foot": "leg_left_6_link",
+                                      "ankle_zero_deg": 0.0}  # TALOS's soles lie flat at joint zero
     assert report["legs"]["right"]["knee"] == "leg_right_4_joint"
     # every hinge MuJoCo compiled is a joint with MuJoCo's range
     m = mujoco.MjModel.from_xml_path(os.path.join(TALOS_DIR, "talos.xml"))
