@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "core/ray_hit.h"
 #include "scene/shape.h"
 
 namespace proxsim {
@@ -24,15 +25,6 @@ struct Ray {
   float max_range_m = 1.0f;            ///< > 0
   bool see_robot = true;               ///< false: the robot's links are transparent
   bool see_moving = true;              ///< false: the scene's moving objects are transparent
-};
-
-/// The first hit of a ray, or a miss.
-struct Hit {
-  float distance_m = std::numeric_limits<float>::infinity();  ///< +inf on a miss
-  Vec3f normal_W = Vec3f::Zero();  ///< unit geometric normal, as the surface has it (either side)
-  std::int32_t object_id = -1;     ///< the BodyShape's object_id; -1 on a miss
-
-  bool is_hit() const { return object_id >= 0; }
 };
 
 /// A shape fixed on a body.

@@ -34,7 +34,7 @@ struct SensorConfig {
   double latency_s = 0.0;        ///< >= 0: a reading is reported (and seen by the strategy) this much later
   bool flight_time = false;      ///< time of flight: the echo is received where the sensor is when it returns
   double wave_speed_m_s = 0.0;   ///< c for flight_time; 0: 343 m/s for ultrasonic, 299 792 458 m/s otherwise
-  // when it pings (ultrasonic sensors hear each other's pings: sim/crosstalk.h)
+  // when it pings (ultrasonic sensors hear each other's pings: sensors/crosstalk.h)
   std::string fire = "simultaneous";  ///< `fire` as given: simultaneous, round_robin, or an offset in seconds
   double fire_offset_s = 0.0;    ///< its periods start this long after t = 0 (round_robin: its slot's), in [0, 1/rate_hz)
   bool crosstalk = true;         ///< ultrasonic: it hears other ultrasonic sensors' pings in its listening window

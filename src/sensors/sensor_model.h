@@ -58,7 +58,7 @@ enum class ReadingStatus : std::uint8_t {
   kSelf,      ///< the echo came from the robot's own body
   kDropout,   ///< an echo that counted, lost to the noise model's dropout
   kNotSampled,  ///< the sensor took no sample at this time (its rate_hz is below the run's)
-  kCrosstalk,   ///< the device reports an echo, but of another sensor's ping (sim/crosstalk.h); a detection to the robot
+  kCrosstalk,   ///< the device reports an echo, but of another sensor's ping (sensors/crosstalk.h); a detection to the robot
   kLast = kCrosstalk,  ///< the highest status: tables indexed by status have kLast + 1 slots
 };
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "sensors/echo.h"
-#include "sim/crosstalk.h"
+#include "sensors/crosstalk.h"
 #include "sensors/measured_point.h"
 #include "sensors/multizone.h"
 #include "sensors/noise.h"

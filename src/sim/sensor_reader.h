@@ -6,7 +6,7 @@
 // otherwise); with flight_time the receive point is the sensor's origin at the
 // echo's return, extrapolated at the velocity it had between the last two
 // samples. A sensor's periods start at its `fire_offset_s`. Ultrasonic
-// sensors with beams hear each other's pings (sim/crosstalk.h): a reading is
+// sensors with beams hear each other's pings (sensors/crosstalk.h): a reading is
 // the first echo of any ping that reaches it within its listening window
 // (`echo_timeout_s` after its own ping), status `crosstalk` when it was
 // another sensor's. The other sensor's ping is taken as cast at this sample
@@ -23,7 +23,7 @@
 #include "core/parallel.h"
 #include "scenario/scenario.h"
 #include "sensors/sensor_measure.h"
-#include "sim/crosstalk.h"
+#include "sensors/crosstalk.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_rig.h"
 #include "sim/world.h"
@@ -115,7 +115,7 @@ class SensorReader {
   std::vector<std::vector<Vec3>> zone_axes_S_;  // each multizone sensor's zone axes in its frame (multizone.h)
   std::vector<std::vector<Vec3>> zone_axes_W_;  // the same in W where the sensor last measured
   std::vector<SensorMeasurement> measured_;     // by sensor: its sample's buffers, swapped with the frame's
-  // ApplyCrosstalk's per-emitter echo sources (sim/crosstalk.h), by sensor;
+  // ApplyCrosstalk's per-emitter echo sources (sensors/crosstalk.h), by sensor;
   // found in the emitter's read task when a listener may need them (buffers
   // kept across samples; one slot per sensor, so tasks never share one)
   std::vector<std::vector<EchoSource>> echo_sources_;

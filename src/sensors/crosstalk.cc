@@ -1,4 +1,4 @@
-#include "sim/crosstalk.h"
+#include "sensors/crosstalk.h"
 
 #include <algorithm>
 #include <cmath>

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/geometry.h"
-#include "raycast/ray_caster.h"
+#include "core/ray_hit.h"
 #include "sensors/beam.h"
 #include "sensors/sensor_spec.h"
 
