@@ -18,4 +18,25 @@ void SplitEchoes(std::vector<RangedRay>& rays, double separation_m, int max_grou
   }
 }
 
+void ResolveTargets(std::vector<RangedRay>& rays, double separation_m, int max_targets,
+                    std::vector<ResolvedTarget>& targets) {
+  thread_local std::vector<EchoGroup> groups;
+  SplitEchoes(rays, separation_m, max_targets, groups);
+  targets.clear();
+  for (const EchoGroup& group : groups) {
+    // the centre of the returns, each weighed by its signal (the histogram's
+    // peak leans to the nearer, brighter surface); the plain mean when no
+    // return carries signal
+    double sum_m = 0.0, sum_weighted_m = 0.0, sum_weight = 0.0;
+    for (std::size_t k = group.begin; k < group.end; ++k) {
+      sum_m += rays[k].d_m;
+      sum_weighted_m += rays[k].signal * rays[k].d_m;
+      sum_weight += rays[k].signal;
+    }
+    const double centre_m =
+        sum_weight > 0 ? sum_weighted_m / sum_weight : sum_m / static_cast<double>(group.end - group.begin);
+    targets.push_back({group, centre_m});
+  }
+}
+
 }  // namespace proxsim
