@@ -183,6 +183,11 @@ TEST(BeamReadoutTest, TheRobotsOwnBodyAndRaysThatDoNotCountMakeNoTarget) {
   const BeamReading near_only = MeasureBeam(spec, far, rays, NoReadoutDraw);
   EXPECT_NEAR(near_only.reading.d_m,
               WeighedCentre_m(rays, far, [&](std::size_t i) { return EdgeAndWall{}.OnNear(rays[i]); }), 1e-12);
+  // a surface touching the emitter (a range from 0 m) returns without bound: it is the reading
+  SensorSpec from_zero = spec;
+  from_zero.min_range_m = 0.0;
+  far[0].distance_m = 0.0;
+  EXPECT_EQ(MeasureBeam(from_zero, far, rays, NoReadoutDraw).reading.d_m, 0.0);
   // nothing within range: no_echo, as before
   const std::vector<Echo> nothing(rays.size());
   EXPECT_EQ(MeasureBeam(spec, nothing, rays, NoReadoutDraw).reading.status, ReadingStatus::kNoEcho);

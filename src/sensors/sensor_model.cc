@@ -332,8 +332,10 @@ BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, st
           nearest_self = static_cast<int>(i);
         continue;
       }
+      // (a surface at the emitter returns without bound: it is the reading)
       counted.push_back({arrival_m, static_cast<int>(i),
-                         rays[i].weight * PhysicalEchoEnergy(spec, echoes[i]) / (arrival_m * arrival_m)});
+                         arrival_m > 0 ? rays[i].weight * PhysicalEchoEnergy(spec, echoes[i]) / (arrival_m * arrival_m)
+                                       : std::numeric_limits<double>::infinity()});
     }
     if (counted.empty() && nearest_self < 0) return no_detection();
     Echo read = echoes[std::max(nearest_self, 0)];
