@@ -1,7 +1,8 @@
 // Where a beam's echo may have come from. A sensor with a cone of rays
-// reports the nearest echo anywhere in its cone, not on its axis: the point
-// a reading puts on the axis (SensorOutput::p_W_measured) may stand
-// centimetres above a floor that echoed at the cone's lower edge. Whether a
+// reports the nearest echo anywhere in its cone (or, a part that weighs its
+// returns, their signal-weighted centre: no nearer than that echo), not on
+// its axis: the point a reading puts on the axis (SensorOutput::p_W_measured)
+// may stand centimetres above a floor that echoed at the cone's lower edge. Whether a
 // reading shows something raised is therefore asked of the lowest point the
 // echo can have come from: the cone's lowest direction at the reported
 // distance. One ray (aperture 0) is its axis.

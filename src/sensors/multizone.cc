@@ -122,13 +122,9 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, std::spa
   out.targets.assign(static_cast<std::size_t>(zone_count * zones.targets), ZoneTarget{});
   out.target_count.assign(static_cast<std::size_t>(zone_count), 0);
   std::vector<RangedRay> counted;
-  std::vector<EchoGroup> groups, strongest;
+  std::vector<ResolvedTarget> found_targets, strongest;
   std::vector<double> signal;
   std::vector<std::size_t> order;
-  // each ray's return as the zone's histogram weighs it: the signal a
-  // diffuse target sends back, E / d² (E = ρ·cos θ for a matte surface:
-  // PhysicalEchoEnergy), by ray index within the zone
-  std::vector<double> weight(static_cast<std::size_t>(per_zone));
   counted.reserve(per_zone);
   const bool by_target = !spec.range_table.empty() || !spec.corner_range_table.empty();
   // the floor and walls repeat one reflectance: its ranges are found once
@@ -159,53 +155,44 @@ void MeasureZones(const SensorSpec& spec, std::span<const Echo> echoes, std::spa
       if (echo.distance_m <= spec.max_range_m && !echo.from_robot) surface_in_range = true;
       if (status != ReadingStatus::kOk) continue;
       const double arrival_m = echo.distance_m + echo.flight_shift_m;
-      // the part's distance: projected on the sensor's axis (ST's chips), or along the ray
+      // the part's distance: projected on the sensor's axis (ST's chips), or along the ray;
+      // its return as the zone's histogram weighs it: the signal a diffuse
+      // target sends back, E / d² (E = ρ·cos θ for a matte surface: PhysicalEchoEnergy)
       const double d_m = zones.perpendicular ? arrival_m * rays[ray].dir_S.x() : arrival_m;
-      counted.push_back({d_m, i});
-      weight[static_cast<std::size_t>(i - zone * per_zone)] = energy / (arrival_m * arrival_m);
+      counted.push_back({d_m, i, energy / (arrival_m * arrival_m)});
     }
     ZoneTarget* targets = &out.targets[static_cast<std::size_t>(zone * zones.targets)];
     if (counted.empty()) {
       targets[0].status = surface_in_range ? kZoneSignalTooLow : kZoneNoTarget;
       continue;
     }
-    // nearest first; a gap of the part's separation or more starts a new target
-    SplitEchoes(counted, zones.target_separation_m, zones.strongest_first ? zone_count * per_zone : zones.targets,
-                groups);
+    // nearest first, each at its returns' signal-weighted centre; a gap of
+    // the part's separation or more starts a new target (echo_groups.h)
+    ResolveTargets(counted, zones.target_separation_m, zones.strongest_first ? zone_count * per_zone : zones.targets,
+                   found_targets);
     if (zones.strongest_first) {
       // ST's strongest order: the targets by the signal their rays return
       // (each ray an equal part of the zone), a tie keeping the nearer first
-      signal.assign(groups.size(), 0.0);
-      for (std::size_t g = 0; g < groups.size(); ++g)
-        for (std::size_t k = groups[g].begin; k < groups[g].end; ++k)
+      signal.assign(found_targets.size(), 0.0);
+      for (std::size_t g = 0; g < found_targets.size(); ++g)
+        for (std::size_t k = found_targets[g].rays.begin; k < found_targets[g].rays.end; ++k)
           signal[g] += ReturnedEnergy(spec, echoes[static_cast<std::size_t>(counted[k].ray)]);
-      order.resize(groups.size());
-      for (std::size_t g = 0; g < groups.size(); ++g) order[g] = g;
+      order.resize(found_targets.size());
+      for (std::size_t g = 0; g < found_targets.size(); ++g) order[g] = g;
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return signal[a] > signal[b]; });
       strongest.clear();
       for (std::size_t g = 0; g < order.size() && g < static_cast<std::size_t>(zones.targets); ++g)
-        strongest.push_back(groups[order[g]]);
-      groups.swap(strongest);
+        strongest.push_back(found_targets[order[g]]);
+      found_targets.swap(strongest);
     }
-    for (std::size_t found = 0; found < groups.size(); ++found) {
-      const EchoGroup& group = groups[found];
-      // the target's distance: its returns' centre, each weighed by its signal
-      // (the histogram's peak leans to the nearer, brighter surface); the
-      // plain mean when no return carries signal (a mirror's off-lobe rays)
-      double sum_m = 0.0, sum_weighted_m = 0.0, sum_weight = 0.0;
-      for (std::size_t k = group.begin; k < group.end; ++k) {
-        const double w = weight[static_cast<std::size_t>(counted[k].ray - zone * per_zone)];
-        sum_m += counted[k].d_m;
-        sum_weighted_m += w * counted[k].d_m;
-        sum_weight += w;
-      }
-      const double mean_m =
-          sum_weight > 0 ? sum_weighted_m / sum_weight : sum_m / static_cast<double>(group.end - group.begin);
-      const int ray = counted[group.begin].ray;
+    for (std::size_t found = 0; found < found_targets.size(); ++found) {
+      // the sensor's noise once per target, with the draw of its nearest ray
+      const ResolvedTarget& target = found_targets[found];
+      const int ray = counted[target.rays.begin].ray;
       const NoiseSpec noise = NoiseAt(spec, echoes[static_cast<std::size_t>(ray)].ir_albedo);
-      targets[found] = {TimeOfFlightReading_m(noise, mean_m, draw(ray).gaussian_g), kZoneRangeValid, ray, mean_m};
+      targets[found] = {TimeOfFlightReading_m(noise, target.d_m, draw(ray).gaussian_g), kZoneRangeValid, ray, target.d_m};
     }
-    out.target_count[static_cast<std::size_t>(zone)] = static_cast<std::uint8_t>(groups.size());
+    out.target_count[static_cast<std::size_t>(zone)] = static_cast<std::uint8_t>(found_targets.size());
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/enum_names.h"
 #include "sensors/beam_echoes.h"
+#include "sensors/echo_groups.h"
 #include "sensors/noise_table.h"
 #include "sensors/range_table.h"
 
@@ -306,6 +307,51 @@ BeamReading MeasureBeam(const SensorSpec& spec, std::span<const Echo> echoes, st
     out.reading = InvertReflectance(spec, sum, noise, dominant_status);
     out.truth_ray = dominant;
     out.ray = out.reading.status == ReadingStatus::kNoEcho ? -1 : dominant;
+    return out;
+  }
+
+  if (spec.beam_readout == BeamReadout::kSignalWeighted) {
+    // a part that weighs its returns (ST's single-zone parts): each ray that
+    // is heard and counts carries w·E/d² (w its weight in the pattern, E the
+    // surface's returned energy, ρ·cos θ for a matte one, d its arrival),
+    // resolved into targets as a zone resolves its own (echo_groups.h); the
+    // nearest is read at its signal-weighted centre, with the noise of its
+    // nearest ray's draw. The robot's own body makes no target (as in a
+    // zone); when only it counts, the reading is its nearest echo's, `self`.
+    thread_local std::vector<RangedRay> counted;
+    thread_local std::vector<ResolvedTarget> targets;
+    counted.clear();
+    int nearest_self = -1;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!BeamReaches(spec.beam, rays[i].off_axis_deg, echoes[i].distance_m)) continue;
+      const ReadingStatus status = EchoStatus(spec, echoes[i], rays[i].gain);
+      if (!Counts(status)) continue;
+      const double arrival_m = echoes[i].distance_m + echoes[i].flight_shift_m;
+      if (status == ReadingStatus::kSelf) {
+        if (nearest_self < 0 || arrival_m < echoes[nearest_self].distance_m + echoes[nearest_self].flight_shift_m)
+          nearest_self = static_cast<int>(i);
+        continue;
+      }
+      // (a surface at the emitter returns without bound: it is the reading)
+      counted.push_back({arrival_m, static_cast<int>(i),
+                         arrival_m > 0 ? rays[i].weight * PhysicalEchoEnergy(spec, echoes[i]) / (arrival_m * arrival_m)
+                                       : std::numeric_limits<double>::infinity()});
+    }
+    if (counted.empty() && nearest_self < 0) return no_detection();
+    Echo read = echoes[std::max(nearest_self, 0)];
+    int nearest = nearest_self;
+    ReadingStatus status = ReadingStatus::kSelf;
+    if (!counted.empty()) {
+      ResolveTargets(counted, spec.beam_target_separation_m, 1, targets);
+      nearest = counted[targets.front().rays.begin].ray;
+      read = echoes[static_cast<std::size_t>(nearest)];
+      read.distance_m = targets.front().d_m;
+      read.flight_shift_m = 0.0;  // the centre is of the arrivals
+      status = ReadingStatus::kOk;
+    }
+    out.reading = MeasureCounted(spec, read, status, draw(nearest));
+    out.truth_ray = nearest;
+    out.ray = out.reading.status == ReadingStatus::kDropout ? -1 : nearest;
     return out;
   }
 

@@ -32,7 +32,11 @@
 //     (Webots' lookupTable), and the distance it implies, read off the table's
 //     far branch;
 //   - a beam of several rays (beam.h): time of flight reports the nearest echo
-//     that counts; reflectance sums the weighted signals and inverts the sum.
+//     that counts (a sonar's threshold detector), or, for a part whose
+//     readout is kSignalWeighted (ST's VL53L0X, VL53L1X), its rays' returns
+//     weighed by their signal and resolved into targets as a multi-zone
+//     zone resolves its own, the nearest target's weighted centre;
+//     reflectance sums the weighted signals and inverts the sum.
 #pragma once
 
 #include <cmath>
@@ -172,8 +176,10 @@ double MovingSurfaceMeeting_m(double d_m, const Vec3& dir_W, const Vec3& n_W, co
 
 /// The reading of a whole beam: echoes[i] and draws[i] belong to rays[i].
 /// `ray` is the ray whose echo gave the reading (time of flight: the nearest
-/// echo that counts; reflectance: the largest weighted signal), -1 without a
-/// detection; `truth_ray` the ray whose truth stands beside the reading.
+/// echo that counts, or with spec.beam_readout kSignalWeighted the nearest
+/// ray of the target read; reflectance: the largest weighted signal), -1
+/// without a detection; `truth_ray` the ray whose truth stands beside the
+/// reading (the same ray when there is one).
 struct BeamReading {
   Reading reading;
   int ray = -1;

@@ -23,6 +23,20 @@ namespace {
 // optical types keep SensorSpec's default (ST's 600 mm).
 constexpr double kUltrasonicEchoSeparation_m = kSpeedOfSoundInAir_m_s * (8.0 / 40000.0) / 2.0;
 
+// ST's single-zone parts (VL53L0X, VL53L1X) report the mean time of the
+// photons their SPADs count over the whole field of view, each surface
+// counted by the light it returns: "the distance the sensor gives is a
+// weighted average of all the objects seen in the field of view ... objects
+// nearer to the sensor are going to reflect more light and get counted more
+// heavily" (an ST engineer on the VL53L0X, ST community thread "Field of
+// view of VL53L0X"); "the VL53L1X averages all the photon times it gets
+// back" (the same, thread "VL53L1X unexplained distance change"). They do
+// not tell two targets apart ("there is no way to determine if there are
+// multiple objects within the field"; ST's multi-target parts, the VL53L3CX
+// and the multi-zone ones, are histogram parts): the beam is one target, the
+// separation SensorSpec's default +inf.
+constexpr BeamReadout kStSingleZoneReadout = BeamReadout::kSignalWeighted;
+
 // a multizone sensor's grid, and the grids its part has
 void ValidateZones(const SensorSpec& spec, std::vector<std::string>& problems) {
   const auto fail = [&](const std::string& key, const std::string& expected, double got) {
@@ -284,6 +298,7 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.sigma_table = {{0.88, 0.0, 0.04}, {0.17, 0.0, 0.07}, {0.88, 5.0, 0.07}, {0.17, 5.0, 0.12}};
     spec.beam = BeamSpec{.aperture_deg = 25.0, .rays = 19, .pattern = BeamPattern::kUniform, .width_deg = 10.0, .table = {}, .reach = {}};
     spec.single_echo_source = "VL53L0X datasheet DocID029104: one ranging result per measurement";
+    spec.beam_readout = kStSingleZoneReadout;
     return spec;
   }
   if (name == "vl53l1x") {
@@ -304,6 +319,7 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     spec.timing_budget_ms = kVl53l1xDefaultBudget_ms;
     ApplyDistanceMode(*FindDistanceMode("vl53l1x", DefaultDistanceMode("vl53l1x")), spec);
     spec.single_echo_source = "VL53L1X datasheet DocID031281: one ranging result per measurement";
+    spec.beam_readout = kStSingleZoneReadout;
     return spec;
   }
   if (const MultizonePart* part = FindMultizonePart(std::string(name))) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -117,6 +118,21 @@ std::optional<EchoSelection> EchoSelectionFromName(std::string_view name);
 /// The most echoes a reading keeps with `echoes: all`.
 inline constexpr int kMaxEchoes = 4;
 
+/// How a time-of-flight beam of several rays turns its rays' returns into
+/// its reading (docs/sensors.md#what-a-beam-reports).
+enum class BeamReadout {
+  /// The first echo back among the rays that count: a receiver that stops
+  /// its clock at the first echo over its threshold (a sonar; the paper's
+  /// models and every generic type).
+  kFirstEcho,
+  /// The rays' returns weighed by the signal each carries (the ray's weight
+  /// in the pattern, the surface's returned energy, 1/d²) and resolved into
+  /// targets at `beam_target_separation_m`, the nearest reported at its
+  /// signal-weighted centre, as a multi-zone zone resolves its own
+  /// (echo_groups.h): ST's single-zone time-of-flight parts.
+  kSignalWeighted,
+};
+
 struct SensorSpec {
   SensorType type = SensorType::kIdeal;
   std::string part;                  ///< the named part this came from ("" for the paper's presets)
@@ -169,6 +185,13 @@ struct SensorSpec {
   /// A named part that reports one echo per ping refuses `echoes` other than
   /// first: why (its datasheet), "" for a type that may report several.
   std::string single_echo_source;
+  /// How a beam of several rays makes its reading (a single ray is the
+  /// paper's model whatever this says); the part presets set it.
+  BeamReadout beam_readout = BeamReadout::kFirstEcho;
+  /// kSignalWeighted: returns closer in range than this merge into one
+  /// target (m, > 0); +inf, every return one target — the VL53L0X and
+  /// VL53L1X time every photon they count into one mean (sensor_spec.cc).
+  double beam_target_separation_m = std::numeric_limits<double>::infinity();
   /// A part's distance mode ("short", "medium", "long" for the VL53L1X), "" for none.
   std::string distance_mode;
   /// The VL53L1X's region of interest on its 16x16 SPAD array, [width, height]
