@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/text_fields.h"
 #include "scenario/scenario_paths.h"
+#include "study/outcome_baselines.h"
 #include "study/outcome_stats.h"
 
 namespace proxsim {
@@ -201,7 +202,8 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
     const PerceptionScore score = perception(t);
     const auto share = [&](std::int64_t k) { return t.runs > 0 ? static_cast<double>(k) / static_cast<double>(t.runs) : 0.0; };
     std::string sensors;
-    for (const std::string& name : set.sensor_names) sensors += (sensors.empty() ? "" : " ") + name;
+    for (const std::string& name : SensorsOfRuns(set, study.strategies[t.strategy]))
+      sensors += (sensors.empty() ? "" : " ") + name;
     const double train_rate =
         t.train_runs > 0 ? static_cast<double>(t.train_successes) / static_cast<double>(t.train_runs) : NAN;
     ranking += std::to_string(r + 1) + "," + CsvField(set.name) + "," + CsvField(groups[t.group].first) +
@@ -286,7 +288,7 @@ json WriteOutcomeAnswers(const OutcomeStudyConfig& study, const OutcomeResults& 
                 {"tuned", study.strategies[t.strategy].tuned},
                 {"price_usd", study.sets[t.set].price_usd},
                 {"mass_g", JsonNumber(study.sets[t.set].mass_g)},
-                {"sensors", study.sets[t.set].sensor_names},
+                {"sensors", SensorsOfRuns(study.sets[t.set], study.strategies[t.strategy])},
                 {"success_rate", t.rate()},
                 {"success_ci95", {ci.low, ci.high}},
                 {"target_met_at_95_confidence", ci.low >= study.target_success},

@@ -71,6 +71,16 @@ void GiveOraclePerception(YAML::Node& run) {
   run["sensors"] = YAML::Load("[]");
 }
 
+std::vector<std::string> SensorsOfRuns(const SensorSet& set, const StrategyChoice& strategy) {
+  if (set.baseline != kOracleBaseline || strategy.yaml.empty()) return set.sensor_names;
+  YAML::Node run;
+  run["robot"]["strategy"] = YAML::Load(strategy.yaml);
+  if (!RobotKeyIsMap(run, "strategy", "perception")) return set.sensor_names;
+  char name[96];
+  std::snprintf(name, sizeof name, "true_map_within_%gm", kOracleReach_m);
+  return {name};
+}
+
 bool IsBaselineName(const std::string& name) { return name == kBlindBaseline || name == kOracleBaseline; }
 
 SensorSet BaselineSet(const std::string& name) {

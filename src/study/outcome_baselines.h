@@ -58,6 +58,11 @@ inline constexpr double kOracleMapCeiling_m = 1.2;
 /// legs planning on a perfect map do.
 void GiveOraclePerception(YAML::Node& run);
 
+/// The sensors a set's runs with `strategy` use, as its rows name them: the
+/// set's own, or for the oracle with a strategy that reads the map (whose
+/// runs cast no sensor: GiveOraclePerception) one name for its perfect map.
+std::vector<std::string> SensorsOfRuns(const SensorSet& set, const StrategyChoice& strategy);
+
 /// Whether `name` is a baseline's.
 bool IsBaselineName(const std::string& name);
 
