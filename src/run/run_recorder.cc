@@ -5,9 +5,8 @@
 #include <optional>
 
 #include "core/atomic_file.h"
+#include "output/measurements_npy.h"
 #include "output/poses_csv.h"
-#include "output/echoes_npy.h"
-#include "output/zones_npy.h"
 #include "output/profile_ply.h"
 #include "output/run_manifest.h"
 #include "output/scene_json.h"
@@ -109,8 +108,10 @@ RunRecorder::RunRecorder(const Simulation& sim, const std::string& out_dir, Read
     if (ObjectPosesCsvWriter::Needed(scenario.scene)) {
       sinks_.push_back(std::make_unique<ObjectPosesCsvWriter>((out / "objects_poses.csv").string(), scenario.scene));
     }
-    if (ZonesNpyWriter::Needed(scenario)) sinks_.push_back(std::make_unique<ZonesNpyWriter>(out_dir_, scenario));
-    if (EchoesNpyWriter::Needed(scenario)) sinks_.push_back(std::make_unique<EchoesNpyWriter>(out_dir_, scenario));
+    // what parts report beside their reading: zones' targets, beams' echoes
+    for (const auto kind : {MeasurementsNpyWriter::Kind::kZones, MeasurementsNpyWriter::Kind::kEchoes})
+      if (MeasurementsNpyWriter::Needed(scenario, kind))
+        sinks_.push_back(std::make_unique<MeasurementsNpyWriter>(out_dir_, scenario, kind));
   }
   if (sim.terrain_map()) {
     sinks_.push_back(std::make_unique<TerrainSink>(*sim.terrain_map(), sim.world().caster(),
