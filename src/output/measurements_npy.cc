@@ -89,35 +89,14 @@ void MeasurementsNpyWriter::Add(const SampleFrame& frame) {
   }
 }
 
-void MeasurementsNpyWriter::Commit() {
-  RefuseLinkedSensorFolders(dir_, sensors_);
-  if (kind_ == Kind::kZones) CommitZones();
-  else CommitEchoes();
-}
+namespace {
 
-void MeasurementsNpyWriter::CommitZones() const {
+// zones/columns.json: the sensors' folders, the zone order, the columns, the status codes' names
+nlohmann::json ZonesColumns(nlohmann::json sensors) {
   nlohmann::json codes = nlohmann::json::object();
   for (const std::uint8_t code : ZoneStatusCodes()) codes[std::to_string(code)] = ZoneStatusName(code);
-  nlohmann::json sensors = nlohmann::json::object();
-  for (const Sensor& sensor : sensors_) {
-    const std::string folder = dir_ + "/" + sensor.folder;
-    std::filesystem::create_directories(folder);
-    const auto samples = static_cast<std::int64_t>(sensor.t_s.size());
-    WriteNpyArray(folder + "/t_s.npy", "<f8", {samples}, sensor.t_s);
-    WriteNpyArray(folder + "/d_m.npy", "<f8", {samples, sensor.groups, sensor.ranks}, sensor.d_m);
-    WriteNpyArray(folder + "/p_W.npy", "<f8", {samples, sensor.groups, sensor.ranks, 3}, sensor.p_W);
-    WriteNpyArray(folder + "/status.npy", "|u1", {samples, sensor.groups, sensor.ranks}, sensor.code);
-    WriteNpyArray(folder + "/target_count.npy", "|u1", {samples, sensor.groups}, sensor.group_count);
-    const ZoneSpec& zones = *scenario_.sensors[sensor.index].spec.zones;
-    sensors[scenario_.sensors[sensor.index].name] = {
-        {"folder", sensor.folder},
-        {"samples", samples},
-        {"zones", {zones.nx, zones.ny}},
-        {"targets", sensor.ranks},
-        {"fov_deg", {zones.fov_h_deg, zones.fov_v_deg}}};
-  }
-  const nlohmann::json columns = {
-      {"sensors", sensors},
+  return {
+      {"sensors", std::move(sensors)},
       {"zone_order", "zone z = row * nx + column; row 0 at the top (+z), column 0 on the left (+y), seen along the sensor's +x"},
       {"columns",
        {{{"name", "t_s"}, {"dtype", "float64"}, {"shape", "samples"}, {"unit", "s"}, {"meaning", "the sample's time"}},
@@ -130,27 +109,12 @@ void MeasurementsNpyWriter::CommitZones() const {
         {{"name", "target_count"}, {"dtype", "uint8"}, {"shape", "samples x zones"}, {"unit", ""},
          {"meaning", "valid targets found in the zone"}}}},
       {"status_codes", codes}};
-  WriteFileAtomically(dir_ + "/columns.json", columns.dump(1) + "\n");
 }
 
-void MeasurementsNpyWriter::CommitEchoes() const {
-  nlohmann::json sensors = nlohmann::json::object();
-  for (const Sensor& sensor : sensors_) {
-    const std::string folder = dir_ + "/" + sensor.folder;
-    std::filesystem::create_directories(folder);
-    const auto samples = static_cast<std::int64_t>(sensor.t_s.size());
-    WriteNpyArray(folder + "/t_s.npy", "<f8", {samples}, sensor.t_s);
-    WriteNpyArray(folder + "/d_m.npy", "<f8", {samples, std::int64_t{kMaxEchoes}}, sensor.d_m);
-    WriteNpyArray(folder + "/signal.npy", "<f8", {samples, std::int64_t{kMaxEchoes}}, sensor.signal);
-    WriteNpyArray(folder + "/count.npy", "|u1", {samples}, sensor.count);
-    const SensorSpec& spec = scenario_.sensors[sensor.index].spec;
-    sensors[scenario_.sensors[sensor.index].name] = {{"folder", sensor.folder},
-                                                      {"samples", samples},
-                                                      {"echoes", EchoSelectionName(spec.echoes)},
-                                                      {"echo_separation_m", spec.echo_separation_m}};
-  }
-  const nlohmann::json columns = {
-      {"sensors", sensors},
+// echoes/columns.json: the sensors' folders, the most echoes kept, the columns
+nlohmann::json EchoesColumns(nlohmann::json sensors) {
+  return {
+      {"sensors", std::move(sensors)},
       {"max_echoes", kMaxEchoes},
       {"columns",
        {{{"name", "t_s"}, {"dtype", "float64"}, {"shape", "samples"}, {"unit", "s"}, {"meaning", "the sample's time"}},
@@ -163,6 +127,44 @@ void MeasurementsNpyWriter::CommitEchoes() const {
                      "last echo"}},
         {{"name", "count"}, {"dtype", "uint8"}, {"shape", "samples"}, {"unit", ""},
          {"meaning", "the echoes heard, at most 4"}}}}};
+}
+
+}  // namespace
+
+void MeasurementsNpyWriter::Commit() {
+  RefuseLinkedSensorFolders(dir_, sensors_);
+  const bool zones = kind_ == Kind::kZones;
+  nlohmann::json sensors = nlohmann::json::object();
+  for (const Sensor& sensor : sensors_) {
+    const std::string folder = dir_ + "/" + sensor.folder;
+    std::filesystem::create_directories(folder);
+    const auto samples = static_cast<std::int64_t>(sensor.t_s.size());
+    WriteNpyArray(folder + "/t_s.npy", "<f8", {samples}, sensor.t_s);
+    // a zone's slots (samples, zones, targets), a beam's (samples, echoes)
+    const std::vector<std::int64_t> slots = zones ? std::vector<std::int64_t>{samples, sensor.groups, sensor.ranks}
+                                                  : std::vector<std::int64_t>{samples, sensor.ranks};
+    WriteNpyArray(folder + "/d_m.npy", "<f8", slots, sensor.d_m);
+    const SensorConfig& config = scenario_.sensors[sensor.index];
+    if (zones) {
+      WriteNpyArray(folder + "/p_W.npy", "<f8", {samples, sensor.groups, sensor.ranks, 3}, sensor.p_W);
+      WriteNpyArray(folder + "/status.npy", "|u1", slots, sensor.code);
+      WriteNpyArray(folder + "/target_count.npy", "|u1", {samples, sensor.groups}, sensor.group_count);
+      const ZoneSpec& spec = *config.spec.zones;
+      sensors[config.name] = {{"folder", sensor.folder},
+                              {"samples", samples},
+                              {"zones", {spec.nx, spec.ny}},
+                              {"targets", sensor.ranks},
+                              {"fov_deg", {spec.fov_h_deg, spec.fov_v_deg}}};
+    } else {
+      WriteNpyArray(folder + "/signal.npy", "<f8", slots, sensor.signal);
+      WriteNpyArray(folder + "/count.npy", "|u1", {samples}, sensor.count);
+      sensors[config.name] = {{"folder", sensor.folder},
+                              {"samples", samples},
+                              {"echoes", EchoSelectionName(config.spec.echoes)},
+                              {"echo_separation_m", config.spec.echo_separation_m}};
+    }
+  }
+  const nlohmann::json columns = zones ? ZonesColumns(std::move(sensors)) : EchoesColumns(std::move(sensors));
   WriteFileAtomically(dir_ + "/columns.json", columns.dump(1) + "\n");
 }
 

@@ -59,10 +59,6 @@ class MeasurementsNpyWriter : public RunSink {
     std::vector<std::uint8_t> group_count;       // detections per group: zones only
     std::vector<std::uint8_t> count;             // measurements per sample: echoes only
   };
-  // (the commit of each kind: its arrays and its columns.json)
-  void CommitZones() const;
-  void CommitEchoes() const;
-
   Kind kind_;
   std::string dir_;
   const Scenario& scenario_;
