@@ -305,7 +305,7 @@ TEST_F(LegMapTest, InspectSuggestsTheMapByGeometry) {
   const auto legs = StriderLegs();
   for (const auto& [side, leg] : {std::pair{"left", legs[0]}, std::pair{"right", legs[1]}}) {
     EXPECT_EQ(inspect["legs"][side], (nlohmann::json{{"hip", leg.hip}, {"knee", leg.knee}, {"ankle", leg.ankle},
-                                                    {"foot", leg.foot}}))
+                                                    {"foot", leg.foot}, {"ankle_zero_deg", 0.0}}))
         << side;
   }
   EXPECT_EQ(inspect["shanks"]["left"]["link"], "l_shin");

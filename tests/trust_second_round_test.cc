@@ -25,6 +25,7 @@
 #include "core/text_fields.h"
 #include "input_error_helpers.h"
 #include "output/octomap_recorder.h"
+#include "output/octomap_tiles.h"
 #include "study/outcome_runner.h"
 
 namespace proxsim {
@@ -397,6 +398,66 @@ TEST(TrustRound2Octomap, ReadingsBeyondTheKeysReachAreCountedSilently) {
   near.p_WS = Vec3(1, 0, 0.5);
   octomap.Add(near);
   EXPECT_EQ(octomap.left_out(), 2u);
+}
+
+TEST(TrustRound2Octomap, AWalkBeyondTheKeysReachIsKeptInTilesOfItsOwn) {
+  // map.bt holds what lies within its reach of the world origin; a reading
+  // beyond goes into the tile nearest its sensor, in that tile's frame
+  OctomapTiles tiles(0.02);
+  const RayEvidence far{.p_WS = Vec3(700, -3, 0.5), .dir_W = -Vec3::UnitZ(), .detected = true, .d_m = 0.5,
+                        .free_end_m = 0.48, .bounds_height = true};
+  RayEvidence near = far;
+  near.p_WS = Vec3(1, 0, 0.5);
+  ::testing::internal::CaptureStderr();
+  tiles.Add(near);
+  tiles.Add(far);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(tiles.left_out(), 0u);
+  ASSERT_NE(tiles.tile(1, 0), nullptr);
+  // its point at 700 - 655.36 = 44.64 m along the tile's x, occupied, its ray free above it
+  EXPECT_TRUE(tiles.tile(1, 0)->IsOccupied(Vec3(700 - 655.36, -3, 0.0)));
+  EXPECT_TRUE(tiles.tile(1, 0)->IsFree(Vec3(700 - 655.36, -3, 0.3)));
+  EXPECT_TRUE(tiles.origin_tile().IsOccupied(Vec3(1, 0, 0.0)));
+  EXPECT_FALSE(tiles.origin_tile().IsOccupied(Vec3(700 - 655.36, -3, 0.0)));
+  const fs::path dir = testing::FreshDir("octomap_tiles");
+  fs::create_directories(dir);
+  const std::vector<OctomapTiles::Tile> written = tiles.WriteBinary(dir);
+  ASSERT_EQ(written.size(), 1u);
+  EXPECT_EQ(written[0].file, "map_tiles/map_1_0.bt");
+  EXPECT_DOUBLE_EQ(written[0].origin_W.x(), 655.36);
+  EXPECT_TRUE(fs::is_regular_file(dir / "map.bt"));
+  EXPECT_TRUE(fs::is_regular_file(dir / "map_tiles" / "map_1_0.bt"));
+  // a walk that stays within map.bt's reach writes no tile
+  OctomapTiles short_walk(0.02);
+  short_walk.Add(near);
+  const fs::path short_dir = testing::FreshDir("octomap_tiles_short");
+  fs::create_directories(short_dir);
+  EXPECT_TRUE(short_walk.WriteBinary(short_dir).empty());
+  EXPECT_FALSE(fs::exists(short_dir / "map_tiles"));
+  fs::remove_all(dir);
+  fs::remove_all(short_dir);
+}
+
+TEST_F(TrustRound2Test, ARunBeyondTheKeysReachWritesItsMapTilesAndListsThem) {
+  // the built-in biped walking 2 m at x = 700 m: its map beyond map.bt's reach, in tile (1, 0)
+  const fs::path scenario = Write("far.yaml", "proxsim: 1\nduration_s: 3.0\nrate_hz: 50\nscene: {builtin: empty}\n"
+                                              "robot:\n  model: builtin:biped\n  start: {xyz_m: [700, 0, 0]}\n"
+                                              "  path: {waypoints_m: [[700, 0], [702, 0]]}\n"
+                                              "sensors:\n  - {name: l, type: laser, link: left_tibia, "
+                                              "pose: {xyz_m: [0.06, 0, -0.35], rpy_deg: [0, 30, 0]}}\n");
+  const fs::path out = dir_ / "out";
+  const auto run = testing::RunProxsim("run '" + scenario.string() + "' --no-report --out '" + out.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::is_regular_file(out / "terrain" / "map.bt"));
+  EXPECT_TRUE(fs::is_regular_file(out / "terrain" / "map_tiles" / "map_1_0.bt"));
+  const nlohmann::json summary = nlohmann::json::parse(testing::ReadFile(out / "summary.json"));
+  const nlohmann::json& map_bt = summary["terrain"]["map_bt"];
+  ASSERT_EQ(map_bt["tiles"].size(), 1u) << map_bt.dump();
+  EXPECT_EQ(map_bt["tiles"][0]["file"], "terrain/map_tiles/map_1_0.bt");
+  EXPECT_DOUBLE_EQ(map_bt["tiles"][0]["origin_m"][0].get<double>(), 655.36);
+  EXPECT_EQ(map_bt["left_out_readings"], 0);
+  // the manifest lists the tile with the run's other files
+  EXPECT_NE(testing::ReadFile(out / "manifest.json").find("terrain/map_tiles/map_1_0.bt"), std::string::npos);
 }
 
 // ----- MPI: a failure on rank 0 before the jobs reaches every rank

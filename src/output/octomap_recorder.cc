@@ -157,13 +157,13 @@ OctomapRecorder::~OctomapRecorder() = default;
 std::uint64_t OctomapRecorder::left_out() const { return impl_->left_out; }
 double OctomapRecorder::reach_m() const { return impl_->tree.getResolution() * static_cast<double>(kKeyCentre); }
 
-void OctomapRecorder::Add(const RayEvidence& evidence) {
+bool OctomapRecorder::Add(const RayEvidence& evidence) {
   const bool frees = evidence.bounds_height && evidence.free_end_m > evidence.free_begin_m;
   // beyond ±32768 voxels of the origin OctoMap has no key: left out and counted, once printed per point
   if ((frees && (!impl_->Reaches(evidence.free_begin_W()) || !impl_->Reaches(evidence.free_end_W()))) ||
       (evidence.detected && !impl_->Reaches(evidence.point_W()))) {
     ++impl_->left_out;
-    return;
+    return false;
   }
   if (frees) {
     impl_->Free(evidence.free_begin_W(), evidence.free_end_W());
@@ -172,6 +172,7 @@ void OctomapRecorder::Add(const RayEvidence& evidence) {
     impl_->tree.updateNode(Point(evidence.point_W()), true, /*lazy_eval=*/true);
     impl_->dirty = true;
   }
+  return true;
 }
 
 namespace {

@@ -34,8 +34,9 @@ class OctomapRecorder {
   OctomapRecorder(const OctomapRecorder&) = delete;
   OctomapRecorder& operator=(const OctomapRecorder&) = delete;
 
-  /// Inserts one reading's ray.
-  void Add(const RayEvidence& evidence);
+  /// Inserts one reading's ray; false (and counted in left_out()) when it
+  /// reaches beyond the tree's keys, left out.
+  bool Add(const RayEvidence& evidence);
 
   /// Writes the tree as a .bt file (maximum-likelihood occupancy); throws std::runtime_error on failure.
   void WriteBinary(const std::string& path) const;

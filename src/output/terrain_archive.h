@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/spill_file.h"
-#include "output/octomap_recorder.h"
+#include "output/octomap_tiles.h"
 #include "output/track_reader.h"
 #include "knowledge/terrain_map.h"
 
@@ -50,7 +50,10 @@ class TerrainArchive : public TrackReader {
   /// the robot stood on (each reading's own ceiling is max_height_m above the
   /// ground the robot stood on then).
   double truth_ceiling_z_m() const;
-  OctomapRecorder* octomap() { return octomap_ ? &*octomap_ : nullptr; }
+  /// The OctoMap tree about the world origin (terrain/map.bt's), or null.
+  OctomapRecorder* octomap() { return octomap_ ? &octomap_->origin_tile() : nullptr; }
+  /// Every tile of the walk's OctoMap (map.bt and, beyond its reach, map_tiles/), or null.
+  const OctomapTiles* octomap_tiles() const { return octomap_ ? &*octomap_ : nullptr; }
   std::size_t retired_tiles() const { return retired_tiles_; }
 
   /// Reads cells [ix_min, ix_min + n) of row iy into `cells` (null where no
@@ -63,7 +66,7 @@ class TerrainArchive : public TrackReader {
   void AddTrackPoint(const TrackPoint& point);
 
   const TerrainMap& map_;
-  std::optional<OctomapRecorder> octomap_;
+  std::optional<OctomapTiles> octomap_;
   SpillFile tiles_{"the terrain map's retired tiles"};
   SpillFile track_file_{"the robot's track"};
   std::vector<TrackPoint> track_tail_;  // the points not yet in track_file_

@@ -164,14 +164,21 @@ nlohmann::json RecordTerrain(TerrainArchive& archive, const RayCaster& caster, c
       {"arrays", kArrayNames}};
   WriteFileAtomically((final_dir / "meta.json").string(), meta.dump(2) + "\n");
   WriteFileAtomically((final_dir / "hazards.csv").string(), HazardsCsvText(archive.Hazards()));
-  if (const OctomapRecorder* octomap = archive.octomap(); octomap != nullptr) {
-    octomap->WriteBinary((final_dir / "map.bt").string());
-    // a walk beyond the keys' reach: map.bt stops there, and says so here (the arrays above cover it all)
-    if (octomap->left_out() > 0) {
-      score["map_bt"] = {{"left_out_readings", octomap->left_out()},
+  if (const OctomapTiles* octomap = archive.octomap_tiles(); octomap != nullptr) {
+    const std::vector<OctomapTiles::Tile> tiles = octomap->WriteBinary(final_dir);
+    // a walk beyond the keys' reach: map.bt holds what lies within it, the tiles the rest (octomap_tiles.h)
+    if (!tiles.empty() || octomap->left_out() > 0) {
+      nlohmann::json listed = nlohmann::json::array();
+      for (const OctomapTiles::Tile& tile : tiles)
+        listed.push_back({{"file", "terrain/" + tile.file},
+                          {"origin_m", {tile.origin_W.x(), tile.origin_W.y(), tile.origin_W.z()}}});
+      score["map_bt"] = {{"tiles", listed},
+                         {"left_out_readings", octomap->left_out()},
                          {"reach_m", octomap->reach_m()},
-                         {"note", "OctoMap's keys reach this far from the origin at the map's resolution; "
-                                  "readings beyond are not in terrain/map.bt"}};
+                         {"note", "OctoMap's keys reach this far from a tree's origin at the map's resolution: "
+                                  "terrain/map.bt holds the readings within it of the world origin, each tile "
+                                  "the readings whose sensor was nearest its origin, in its own frame (the world "
+                                  "moved by origin_m)"}};
     }
   }
   return score;
