@@ -66,8 +66,11 @@ std::unique_ptr<RayPeer> MakeMujocoPeer(const BenchScene& scene, std::string* wh
       *why = "cannot write " + path.string();
       return nullptr;
     }
-    std::fputs("<mujoco model=\"bench\">\n<compiler convexhull=\"false\"/>\n"
-               "<default><geom contype=\"0\" conaffinity=\"0\"/></default>\n<asset>\n", f);
+    // (MuJoCo 2.x: no convex hulls, which mj_ray does not use; 3.0 dropped the
+    // attribute, its rays meet a mesh's own faces whatever its hull)
+    std::fputs("<mujoco model=\"bench\">\n", f);
+    if (mj_version() < 300) std::fputs("<compiler convexhull=\"false\"/>\n", f);
+    std::fputs("<default><geom contype=\"0\" conaffinity=\"0\"/></default>\n<asset>\n", f);
     for (std::size_t m = 0; m < scene.objects.size(); ++m) {
       const TriangleMesh& mesh = *scene.objects[m].mesh;
       std::fprintf(f, "<mesh name=\"m%zu\" vertex=\"", m);
