@@ -8,7 +8,7 @@
 // strategies and gaits in turn — one at a time, each claiming it while it
 // lives (an outcome study builds one world per job, not one per run).
 //
-// Frames: W world, L a link, S a sensor.
+// Frames: W world, L a link, O a scene object.
 #pragma once
 
 #include <cstdint>

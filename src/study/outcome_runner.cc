@@ -46,10 +46,9 @@ std::string Fingerprint(const OutcomeStudyConfig& study) {
                           text);
 }
 
-// The episode of a loaded scenario, walked to its end.
-// (on `world` when given: one built from the same scene and robot)
-OutcomeRun RunLoaded(Scenario scenario, const std::shared_ptr<World>& world = nullptr) {
-  Simulation sim = world ? Simulation(std::move(scenario), 1, world) : Simulation(std::move(scenario), 1);
+// The episode of a loaded scenario, walked to its end on `world` (built from the same scene and robot).
+OutcomeRun RunLoaded(Scenario scenario, const std::shared_ptr<World>& world) {
+  Simulation sim(std::move(scenario), 1, world);
   // the goal ends the episode: nothing after it changes the outcome
   while (!sim.done() && !sim.robot_outcome().reached_goal) sim.Step();
   OutcomeRun run;
@@ -111,11 +110,9 @@ bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job) {
 }
 
 OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source) {
-  return RunLoaded(LoadScenarioText(scenario_text, source));
-}
-
-OutcomeRun RunEpisodeNode(const YAML::Node& scenario, const std::string& source) {
-  return RunLoaded(LoadScenarioNode(scenario, source));
+  Scenario scenario = LoadScenarioText(scenario_text, source);
+  const std::shared_ptr<World> world = BuildWorld(scenario, 1);
+  return RunLoaded(std::move(scenario), world);
 }
 
 json OutcomeJobJson(const OutcomeJob& job) {

@@ -62,11 +62,8 @@ bool IsSuccess(const OutcomeRun& run, const OutcomeJob& job);
 nlohmann::json OutcomeJobJson(const OutcomeJob& job);
 OutcomeJob ParseOutcomeJob(const nlohmann::json& metrics, std::size_t runs_per_job, const std::string& where);
 
-/// One episode of a run's scenario text.
+/// One episode of a run's scenario text, on a world of its own (the microbenchmark's episode).
 OutcomeRun RunEpisode(const std::string& scenario_text, const std::string& source);
-/// One episode of a run's scenario document (RunNodeFromWorld): the same run
-/// as from its text, without writing and parsing it.
-OutcomeRun RunEpisodeNode(const YAML::Node& scenario, const std::string& source);
 
 /// The study's jobs as RunJobs and a merge of slices take them: count,
 /// fingerprint, digest, the journal line's check (no workers).
