@@ -81,7 +81,7 @@ std::string Edited(const std::string& example, const std::vector<std::pair<std::
 // Where each foot stood flat, in order: its link's positions held still over
 // two samples (x, z) with the foot level (a foot rising off a riser pauses in
 // the air, pitched), a new one when it moved more than 1 mm.
-std::vector<Vec3> Footholds(const Csv& poses, const std::string& foot) {
+std::vector<Vec3> FootholdPoints(const Csv& poses, const std::string& foot) {
   std::vector<Vec3> held;
   Vec3 last = Vec3::Constant(NAN);
   for (const auto& row : poses.rows) {
@@ -107,7 +107,7 @@ TEST(FootholdsMapExamples, IdealSensorsThatSeeEveryTreadWalkTheStairsAsOnTheTrut
   // every foothold on the same tread as the truth's, and near it along the way
   double worst_x_m = 0;
   for (const char* foot : {"left_foot", "right_foot"}) {
-    const std::vector<Vec3> a = Footholds(truth.poses, foot), b = Footholds(map.poses, foot);
+    const std::vector<Vec3> a = FootholdPoints(truth.poses, foot), b = FootholdPoints(map.poses, foot);
     ASSERT_EQ(a.size(), b.size()) << foot;
     for (std::size_t i = 0; i < a.size(); ++i) {
       EXPECT_NEAR(a[i].z(), b[i].z(), 1e-6) << foot << " foothold " << i;
@@ -167,7 +167,7 @@ TEST(FootholdsMapExamples, SeeingTheWideGapItStandsBeforeItWhateverUnsafeStepsSa
   EXPECT_NE(why.find("longer than a stride"), std::string::npos) << why;
   EXPECT_NE(run.output.find("standing before a step its own map shows it cannot take"), std::string::npos) << run.output;
   for (const char* foot : {"left_foot", "right_foot"}) {
-    const std::vector<Vec3> held = Footholds(run.poses, foot);
+    const std::vector<Vec3> held = FootholdPoints(run.poses, foot);
     ASSERT_FALSE(held.empty()) << foot;
     EXPECT_LT(held.back().x() + kToeAheadOfAnkle_m, kGapNear_x_m) << foot;
   }

@@ -487,7 +487,7 @@ TEST(TerrainScenarioTest, TheMapSectionIsReadAndEveryMistakeInItListed) {
   colour: red
 )");
   ASSERT_EQ(problems.size(), 5u);
-  EXPECT_EQ(problems[0], "s.yaml:5: map.resolution_m: expected a cell side in [0.005, 1] m, got 0");
+  EXPECT_EQ(problems[0], "s.yaml:5: map.resolution_m: expected a number in [0.005, 1] m, got 0");
   EXPECT_EQ(problems[1], "s.yaml:6: map.step_max_m: expected at least obstacle_min_m (0.04) and drop_min_m (0.05), got 0.01");
   EXPECT_EQ(problems[2], "s.yaml:7: map.sensors[1]: unknown sensor 'c' (did you mean 'a'?); expected one of a, b");
   EXPECT_EQ(problems[3], "s.yaml:7: map.sensors[2]: sensor 'a' is listed twice");

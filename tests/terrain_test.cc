@@ -566,10 +566,10 @@ TEST(TerrainConfigTest, ValidateListsEveryProblem) {
   config.max_height_m = std::numeric_limits<double>::infinity();
   auto problems = config.Validate();
   ASSERT_EQ(problems.size(), 4u);
-  EXPECT_EQ(problems[0], "resolution_m: expected a cell side in [0.005, 1] m, got 0.001");
-  EXPECT_EQ(problems[1], "max_height_m: expected a finite height in m, got inf");
-  EXPECT_EQ(problems[2], "obstacle_min_m: expected a finite number > 0 m, got -1");
-  EXPECT_EQ(problems[3], "step_min_size_m: expected a finite number > 0 m, got 0");
+  EXPECT_EQ(problems[0], "resolution_m: expected a number in [0.005, 1] m, got 0.001");
+  EXPECT_EQ(problems[1], "max_height_m: expected a finite number in m, got inf");
+  EXPECT_EQ(problems[2], "obstacle_min_m: expected a number > 0 m, got -1");
+  EXPECT_EQ(problems[3], "step_min_size_m: expected a number > 0 m, got 0");
   // the steps against the rise and the drop, once both are valid
   TerrainMapConfig steps;
   steps.drop_min_m = 0.1;

@@ -40,6 +40,7 @@
 #include "output/readings_columns.h"
 #include "sensors/sensor_keys.h"
 #include "output/run_manifest.h"
+#include "scenario/config_sections.h"
 #include "scenario/scenario.h"
 #include "report/mcap_export.h"
 #include "report/ros2_export.h"
@@ -563,6 +564,18 @@ int main(int argc, char** argv) {
   bool columns_sensor_keys = false;
   columns->add_flag("--sensor-keys", columns_sensor_keys,
                     "print every key a sensor takes in a scenario (type and unit, default, meaning) instead");
+  std::string columns_keys;
+  columns->add_option("--keys", columns_keys,
+                      "print the keys of a scenario section (type and unit, default, meaning) instead: " +
+                          [] {
+                            std::string names;
+                            for (const std::string& name : proxsim::ConfigSectionNames())
+                              names += (names.empty() ? "" : ", ") + name;
+                            return names;
+                          }())
+      ->check([](const std::string& name) {
+        return proxsim::ConfigSectionParams(name) ? std::string() : "not a section with declared keys";
+      });
 
   try {
     app.parse(argc, argv);
@@ -631,6 +644,10 @@ int main(int argc, char** argv) {
     if (*validate) return Validate(validate_path);
     if (*generate) return Generate(generate_path, generate_out);
     if (*inspect) return proxsim::InspectCommand(inspect_target, inspect_json);
+    if (*columns && !columns_keys.empty()) {
+      std::fputs(proxsim::ParamsMarkdown(*proxsim::ConfigSectionParams(columns_keys)).c_str(), stdout);
+      return 0;
+    }
     if (*columns) {
       std::fputs(columns_sensor_keys ? proxsim::SensorKeysMarkdown().c_str() : proxsim::ReadingsColumnsMarkdown().c_str(),
                  stdout);

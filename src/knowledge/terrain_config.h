@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/config_schema.h"
+
 namespace proxsim {
 
 struct TerrainMapConfig {
@@ -36,8 +38,13 @@ struct TerrainMapConfig {
   /// see this way. 0 (default): off. In [0, 20] m.
   double truth_within_m = 0.0;
 
-  /// Every violated condition, one message each, worded after the scenario key; empty if valid.
+  /// Every violated condition, one message each, worded after the scenario
+  /// key; empty if valid: the schema's bounds, then step_max_m against the thresholds.
   std::vector<std::string> Validate() const;
 };
+
+/// The `map:` section's keys (core/config_schema.h): the reader, the summary
+/// echo, docs/terrain_map.md's table and Validate() follow it.
+const ConfigSchema<TerrainMapConfig>& TerrainMapSchema();
 
 }  // namespace proxsim

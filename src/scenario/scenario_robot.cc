@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "core/nearest_key.h"
+#include "scenario/param_reader.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
@@ -122,11 +123,17 @@ std::optional<Value> ReadChoice(YamlReader& reader, const Field& field,
   return std::nullopt;
 }
 
-// a strategy's `perception: readings | map`
-Perception ReadPerception(YamlReader& reader, const Field& field) {
-  return ReadChoice<Perception>(reader, field, {{"readings", Perception::kReadings}, {"map", Perception::kMap}},
-                                "expected readings (each fresh reading's point) or map (the robot's terrain map)")
-      .value_or(Perception::kReadings);
+// one strategy's map by its declaration (strategy/strategy_config.h), `name` aside
+template <class Config>
+std::optional<StrategyConfig> ReadStrategySection(YamlReader& reader, const Field& field,
+                                                  const ConfigSchema<Config>& schema) {
+  const auto map = OpenSection(reader, field, schema, {"name"});
+  if (!map) return std::nullopt;
+  Config config;
+  ReadParams(reader, *map, schema, config);
+  const StrategyConfig strategy = config;
+  ReportAtKeys(reader, *map, Validate(strategy));
+  return strategy;
 }
 
 }  // namespace
@@ -135,34 +142,8 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
   const std::vector<std::string> names = {"stop", "circumvent"};
   const YAML::Node name_node = field.node.IsMap() ? field.node["name"] : YAML::Node();
   const std::string name = name_node && name_node.IsScalar() ? name_node.Scalar() : "";
-  if (name == "stop") {
-    const auto map =
-        reader.Map(field, {"name", "perception", "stop_distance_m", "min_height_m", "corridor_half_width_m", "max_drop_m"});
-    if (!map) return std::nullopt;
-    StopConfig stop;
-    stop.perception = ReadPerception(reader, (*map)["perception"]);
-    stop.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(stop.stop_distance_m);
-    stop.min_height_m = reader.Number((*map)["min_height_m"], PositiveNumber("m")).value_or(stop.min_height_m);
-    stop.corridor_half_width_m =
-        reader.Number((*map)["corridor_half_width_m"], PositiveNumber("m")).value_or(stop.corridor_half_width_m);
-    stop.max_drop_m = reader.Number((*map)["max_drop_m"], PositiveNumber("m")).value_or(stop.max_drop_m);
-    return stop;
-  }
-  if (name == "circumvent") {
-    const auto map = reader.Map(field, {"name", "perception", "margin_m", "detect_distance_m", "stop_distance_m",
-                                        "min_height_m", "max_detour_m", "assumed_depth_m", "rejoin_m"});
-    if (!map) return std::nullopt;
-    CircumventConfig c;
-    c.perception = ReadPerception(reader, (*map)["perception"]);
-    c.margin_m = reader.Number((*map)["margin_m"], NonNegativeNumber("m")).value_or(c.margin_m);
-    c.detect_distance_m = reader.Number((*map)["detect_distance_m"], PositiveNumber("m")).value_or(c.detect_distance_m);
-    c.stop_distance_m = reader.Number((*map)["stop_distance_m"], PositiveNumber("m")).value_or(c.stop_distance_m);
-    c.min_height_m = reader.Number((*map)["min_height_m"], PositiveNumber("m")).value_or(c.min_height_m);
-    c.max_detour_m = reader.Number((*map)["max_detour_m"], PositiveNumber("m")).value_or(c.max_detour_m);
-    c.assumed_depth_m = reader.Number((*map)["assumed_depth_m"], NonNegativeNumber("m")).value_or(c.assumed_depth_m);
-    c.rejoin_m = reader.Number((*map)["rejoin_m"], PositiveNumber("m")).value_or(c.rejoin_m);
-    return c;
-  }
+  if (name == "stop") return ReadStrategySection<StopConfig>(reader, field, StopSchema());
+  if (name == "circumvent") return ReadStrategySection<CircumventConfig>(reader, field, CircumventSchema());
   // not a map, no name, or an unknown one
   if (!field.node.IsMap()) {
     reader.Fail(field, "expected a map {name: stop | circumvent, ...}, got " + DescribeNode(field.node));

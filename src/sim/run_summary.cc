@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "raycast/embree_version.h"
+#include "sim/params_json.h"
 #include "sensors/sensor_echo.h"
 #include "sensors/sensor_types.h"
 #include "sensors/wave_speed.h"
@@ -14,20 +15,13 @@ namespace {
 
 nlohmann::json NullUnless(bool known, const nlohmann::json& value) { return known ? value : nlohmann::json(nullptr); }
 
+// the strategy's keys by its declaration (strategy/strategy_config.h), and its name
 nlohmann::json StrategyJson(const StrategyConfig& config) {
-  if (const auto* stop = std::get_if<StopConfig>(&config)) {
-    return {{"name", "stop"},
-            {"perception", PerceptionName(stop->perception)},
-            {"stop_distance_m", stop->stop_distance_m},
-            {"min_height_m", stop->min_height_m},
-            {"corridor_half_width_m", stop->corridor_half_width_m},
-            {"max_drop_m", NullUnless(stop->max_drop_m > 0, stop->max_drop_m)}};
-  }
-  const auto& c = std::get<CircumventConfig>(config);
-  return {{"name", "circumvent"},          {"perception", PerceptionName(c.perception)}, {"margin_m", c.margin_m},
-          {"detect_distance_m", c.detect_distance_m}, {"stop_distance_m", c.stop_distance_m},
-          {"min_height_m", c.min_height_m},  {"max_detour_m", c.max_detour_m},
-          {"assumed_depth_m", c.assumed_depth_m}, {"rejoin_m", c.rejoin_m}};
+  nlohmann::json echo = std::holds_alternative<StopConfig>(config)
+                            ? ParamsJson(StopSchema(), std::get<StopConfig>(config))
+                            : ParamsJson(CircumventSchema(), std::get<CircumventConfig>(config));
+  echo["name"] = StrategyName(config);
+  return echo;
 }
 
 }  // namespace
@@ -106,12 +100,9 @@ nlohmann::json InputsJson(const Scenario& scenario) {
   }
   nlohmann::json map = nullptr;
   if (scenario.robot) {
-    const TerrainMapConfig& m = scenario.map;
-    map = {{"enabled", m.enabled},           {"resolution_m", m.resolution_m},   {"max_height_m", m.max_height_m},
-           {"obstacle_min_m", m.obstacle_min_m}, {"drop_min_m", m.drop_min_m},     {"step_max_m", m.step_max_m},
-           {"step_min_size_m", m.step_min_size_m}, {"window_m", m.window_m},
-           {"truth_within_m", m.truth_within_m},
-           {"sensors", m.sensors_given ? nlohmann::json(m.sensors) : nlohmann::json("types: " + DefaultMapSensorTypes())}};
+    // the map's keys by its declaration (knowledge/terrain_config.h); its sensors, when not given, by the rule
+    map = ParamsJson(TerrainMapSchema(), scenario.map);
+    if (!scenario.map.sensors_given) map["sensors"] = "types: " + DefaultMapSensorTypes();
   }
   return {{"source", scenario.source},
           {"seed", scenario.seed},

@@ -5,6 +5,9 @@
 
 #include <string>
 #include <variant>
+#include <vector>
+
+#include "core/config_schema.h"
 
 namespace proxsim {
 
@@ -38,6 +41,18 @@ struct CircumventConfig {
 };
 
 using StrategyConfig = std::variant<StopConfig, CircumventConfig>;
+
+/// The keys of `{name: stop}` and `{name: circumvent}` (core/config_schema.h),
+/// `name` aside: the reader, the summary echo, docs/scenario.md's tables and
+/// Validate() follow them.
+const ConfigSchema<StopConfig>& StopSchema();
+const ConfigSchema<CircumventConfig>& CircumventSchema();
+
+/// Every parameter out of its bounds, "KEY: expected …, got …"; empty if valid.
+std::vector<std::string> Validate(const StrategyConfig& config);
+
+/// The strategy as the scenario's flow map, `{name: stop, stop_distance_m: 0.5, ...}`.
+std::string StrategyYaml(const StrategyConfig& config);
 
 /// "readings" or "map".
 inline const char* PerceptionName(Perception perception) {

@@ -1,0 +1,36 @@
+#include "scenario/config_sections.h"
+
+#include <functional>
+#include <utility>
+
+#include "knowledge/terrain_config.h"
+#include "strategy/strategy_config.h"
+
+namespace proxsim {
+
+namespace {
+
+const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>>& Sections() {
+  static const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>> sections = {
+      {"map", [] { return DescribeParams(TerrainMapSchema()); }},
+      {"strategy.stop", [] { return DescribeParams(StopSchema()); }},
+      {"strategy.circumvent", [] { return DescribeParams(CircumventSchema()); }},
+  };
+  return sections;
+}
+
+}  // namespace
+
+std::vector<std::string> ConfigSectionNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, params] : Sections()) names.push_back(name);
+  return names;
+}
+
+std::optional<std::vector<ParamDescription>> ConfigSectionParams(const std::string& name) {
+  for (const auto& [section, params] : Sections())
+    if (section == name) return params();
+  return std::nullopt;
+}
+
+}  // namespace proxsim

@@ -1,0 +1,26 @@
+// A configuration section as summary.json echoes it, by its declaration
+// (core/config_schema.h): every key, an unset one as null.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "core/config_schema.h"
+
+namespace proxsim {
+
+/// A value as JSON: a number, a bool, a string or a list of strings.
+inline nlohmann::json ParamValueJson(const ParamValue& value) {
+  return std::visit([](const auto& v) { return nlohmann::json(v); }, value);
+}
+
+/// Every key of the section; one whose value means "not given" is null.
+template <class Config>
+nlohmann::json ParamsJson(const ConfigSchema<Config>& schema, const Config& config) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& param : schema) {
+    out[param.key()] = param.Unset(config) ? nlohmann::json(nullptr) : ParamValueJson(param.get(config));
+  }
+  return out;
+}
+
+}  // namespace proxsim
