@@ -16,6 +16,7 @@
 #include "core/input_error.h"
 #include "knowledge/terrain_config.h"
 #include "scenario/config_sections.h"
+#include "scenario/gait_section.h"
 #include "scenario/scenario.h"
 #include "sim/run_summary.h"
 #include "strategy/strategy_config.h"
@@ -24,8 +25,9 @@ namespace proxsim {
 namespace {
 
 // a scenario with a robot, two sensors, `map` and `strategy` sections as given
-Scenario SchemaScenario(const std::string& map_yaml, const std::string& strategy_yaml) {
-  return LoadScenarioText("proxsim: 1\nrobot: {model: builtin:biped, strategy: " + strategy_yaml +
+Scenario SchemaScenario(const std::string& map_yaml, const std::string& strategy_yaml,
+                        const std::string& gait_yaml = "{}") {
+  return LoadScenarioText("proxsim: 1\nrobot: {model: builtin:biped, gait: " + gait_yaml + ", strategy: " + strategy_yaml +
                               "}\nsensors: [{name: a, type: laser, link: left_tibia}, "
                               "{name: b, type: reflectance, link: left_tibia}]\nmap: " +
                               map_yaml + "\n",
@@ -153,6 +155,15 @@ TEST(ConfigSchema, WhatTheWriterWritesTheReaderReadsBack) {
     EXPECT_EQ(ParamsYaml(TerrainMapSchema(), s.map), map_yaml);
   }
   EXPECT_NE(StrategyYaml(stop), StrategyYaml(StopConfig{}));
+
+  RobotConfig robot = EveryKeyChanged(GaitSectionSchema());
+  robot.gait.keyframe.clear();  // the built-in biped has no keyframe to name
+  ASSERT_TRUE(CheckParamBounds(GaitSectionSchema(), robot).empty());
+  const std::string gait_yaml = ParamsYaml(GaitSectionSchema(), robot);
+  const Scenario s = SchemaScenario("{}", "{name: stop}", gait_yaml);
+  ASSERT_TRUE(s.robot);
+  EXPECT_EQ(ParamsYaml(GaitSectionSchema(), *s.robot), gait_yaml);
+  EXPECT_NE(gait_yaml.find("crouch_knee_deg: "), std::string::npos) << gait_yaml;
 }
 
 // summary.json's inputs carry every declared key of the map and the strategy,
@@ -173,6 +184,14 @@ TEST(ConfigSchema, TheSummaryEchoesEveryDeclaredKey) {
     EXPECT_FALSE(echoed[param.key()].is_null()) << param.key();
   }
   EXPECT_EQ(echoed["stop_distance_m"].get<double>(), stop.stop_distance_m);
+  RobotConfig robot = EveryKeyChanged(GaitSectionSchema());
+  robot.gait.keyframe.clear();
+  const nlohmann::json gait =
+      InputsJson(SchemaScenario("{}", "{name: stop}", ParamsYaml(GaitSectionSchema(), robot)))["robot"]["gait"];
+  for (const auto& param : GaitSectionSchema()) {
+    ASSERT_TRUE(gait.contains(param.key())) << param.key();
+    EXPECT_EQ(gait[param.key()].is_null(), param.key() == "keyframe") << param.key();
+  }
   EXPECT_EQ(echoed["perception"], "map");
   // a key left out: its default, or null where the default means "not given"
   const nlohmann::json defaults = InputsJson(SchemaScenario("{}", "{name: stop}"));
@@ -185,7 +204,7 @@ TEST(ConfigSchema, TheSummaryEchoesEveryDeclaredKey) {
 // `proxsim columns --keys SECTION` prints it.
 TEST(ConfigSchema, TheDocsTablesAreTheDeclarations) {
   const std::vector<std::pair<std::string, std::string>> pages = {
-      {"map", "terrain_map.md"}, {"strategy.stop", "scenario.md"}, {"strategy.circumvent", "scenario.md"}};
+      {"map", "terrain_map.md"}, {"robot.gait", "scenario.md"}, {"strategy.stop", "scenario.md"}, {"strategy.circumvent", "scenario.md"}};
   ASSERT_EQ(ConfigSectionNames().size(), pages.size()) << "a new section: add its docs page here";
   for (const auto& [section, page] : pages) {
     const auto params = ConfigSectionParams(section);

@@ -69,6 +69,7 @@ struct ParamDescription {
   std::vector<std::string> choices;
   std::string default_text;  ///< the default as a file would write it, or what leaving it out means
   std::string meaning;
+  std::string bounds_note;   ///< why the bounds are what they are, for messages ("" for none)
 };
 
 /// One key of a section of struct `Config`.
@@ -109,7 +110,7 @@ ConfigParam<Config> NumberParam(std::string key, double Config::*member, ParamBo
                                 std::string meaning) {
   ConfigParam<Config> param;
   param.description = {std::move(key), ParamType::kNumber, std::move(unit), bounds, {},
-                       ParamValueText(Config{}.*member), std::move(meaning)};
+                       ParamValueText(Config{}.*member), std::move(meaning), {}};
   param.get = [member](const Config& c) { return ParamValue(c.*member); };
   param.set = [member](Config& c, const ParamValue& v) { c.*member = std::get<double>(v); };
   return param;
@@ -127,12 +128,42 @@ ConfigParam<Config> OptionalNumberParam(std::string key, double Config::*member,
   return param;
 }
 
+/// A number the file gives in `unit` and the struct keeps its own way (another
+/// unit, an optional, a flag beside it): `get` and `set` convert, `is_unset`
+/// (may be empty) says the struct holds "not given", which means `default_text`.
+template <class Config>
+ConfigParam<Config> ConvertedNumberParam(std::string key, ParamBounds bounds, std::string unit,
+                                         std::string default_text, std::string meaning,
+                                         std::function<double(const Config&)> get,
+                                         std::function<void(Config&, double)> set,
+                                         std::function<bool(const Config&)> is_unset = {}) {
+  ConfigParam<Config> param;
+  param.description = {std::move(key), ParamType::kNumber, std::move(unit), bounds, {}, std::move(default_text),
+                       std::move(meaning), {}};
+  param.get = [get](const Config& c) { return ParamValue(get(c)); };
+  param.set = [set](Config& c, const ParamValue& v) { set(c, std::get<double>(v)); };
+  param.is_unset = std::move(is_unset);
+  return param;
+}
+
+/// A text member; empty (the default) means `unset_means`.
+template <class Config>
+ConfigParam<Config> TextParam(std::string key, std::string Config::*member, std::string unset_means,
+                              std::string meaning) {
+  ConfigParam<Config> param;
+  param.description = {std::move(key), ParamType::kText, "", {}, {}, std::move(unset_means), std::move(meaning), {}};
+  param.get = [member](const Config& c) { return ParamValue(c.*member); };
+  param.set = [member](Config& c, const ParamValue& v) { c.*member = std::get<std::string>(v); };
+  param.is_unset = [member](const Config& c) { return (c.*member).empty(); };
+  return param;
+}
+
 /// A bool member.
 template <class Config>
 ConfigParam<Config> FlagParam(std::string key, bool Config::*member, std::string meaning) {
   ConfigParam<Config> param;
   param.description = {std::move(key), ParamType::kFlag, "", {}, {}, ParamValueText(Config{}.*member),
-                       std::move(meaning)};
+                       std::move(meaning), {}};
   param.get = [member](const Config& c) { return ParamValue(c.*member); };
   param.set = [member](Config& c, const ParamValue& v) { c.*member = std::get<bool>(v); };
   return param;
@@ -149,7 +180,7 @@ ConfigParam<Config> ChoiceParam(std::string key, Enum Config::*member, std::vect
     choices.push_back(name);
     if (value == Config{}.*member) default_name = name;
   }
-  param.description = {std::move(key), ParamType::kChoice, "", {}, std::move(choices), default_name, std::move(meaning)};
+  param.description = {std::move(key), ParamType::kChoice, "", {}, std::move(choices), default_name, std::move(meaning), {}};
   param.get = [member, names](const Config& c) {
     for (const auto& [value, name] : names)
       if (value == c.*member) return ParamValue(name);
@@ -189,8 +220,9 @@ std::vector<std::string> CheckParamBounds(const ConfigSchema<Config>& schema, co
     if (param.description.type != ParamType::kNumber || param.Unset(config)) continue;
     const double value = std::get<double>(param.get(config));
     if (!param.description.bounds.Contains(value)) {
+      const std::string& note = param.description.bounds_note;
       problems.push_back(param.key() + ": expected " + param.description.bounds.Expected(param.description.unit) +
-                         ", got " + ParamNumberText(value));
+                         (note.empty() ? "" : " (" + note + ")") + ", got " + ParamNumberText(value));
     }
   }
   return problems;

@@ -28,7 +28,7 @@ const ConfigSchema<TerrainMapConfig>& TerrainMapSchema() {
     ConfigParam<C> sensors;
     sensors.description = {"sensors", ParamType::kNames, "", {}, {},
                            "every sensor but the reflectance ones",
-                           "the names of the sensors whose readings feed the map"};
+                           "the names of the sensors whose readings feed the map", {}};
     sensors.get = [](const C& c) { return ParamValue(c.sensors); };
     sensors.set = [](C& c, const ParamValue& v) {
       c.sensors = std::get<std::vector<std::string>>(v);

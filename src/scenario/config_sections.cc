@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "knowledge/terrain_config.h"
+#include "scenario/gait_section.h"
 #include "strategy/strategy_config.h"
 
 namespace proxsim {
@@ -13,6 +14,7 @@ namespace {
 const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>>& Sections() {
   static const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>> sections = {
       {"map", [] { return DescribeParams(TerrainMapSchema()); }},
+      {"robot.gait", [] { return DescribeParams(GaitSectionSchema()); }},
       {"strategy.stop", [] { return DescribeParams(StopSchema()); }},
       {"strategy.circumvent", [] { return DescribeParams(CircumventSchema()); }},
   };

@@ -12,22 +12,12 @@
 #include <tuple>
 
 #include "core/nearest_key.h"
+#include "scenario/gait_section.h"
 #include "scenario/param_reader.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
 
-namespace {
-// The gaits proxsim walks (bipeds from toys to adults, slow to running pace).
-constexpr double kMinStride_m = 0.01, kMaxStride_m = 3.0;
-constexpr double kMinGaitPeriod_s = 0.1, kMaxGaitPeriod_s = 30.0;
-// The largest touchdown tolerance: a foot that settles moves to the true
-// ground within one sample (gait/touchdown.h), a jump that stays a kinematic
-// stand-in for a foot feeling its way down only over a few centimetres.
-constexpr double kMaxTouchdownTolerance_m = 0.05;
-// gait.crouch_knee_deg: a knee bent further than this is a squat, not a walk
-constexpr double kMaxCrouchKnee_deg = 90.0;
-}  // namespace
 
 namespace {
 
@@ -247,42 +237,13 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     }
   }
 
-  // gait: {stride_m, period_s, max_step_m}; stride or period absent scales with
-  // the legs, max_step_m absent comes from them
+  // gait: by its declaration (gait_section.h); stride or period absent scale
+  // with the legs, max_step_m absent comes from them
   robot.gait.derive_stride_from_legs = robot.gait.derive_period_from_legs = true;
-  if (const auto gait = reader.Map((*map)["gait"], {"stride_m", "period_s", "max_step_m", "unsafe_steps", "footholds",
-                                                     "touchdown_tolerance_m", "keyframe", "crouch_knee_deg"})) {
-    // the gait's shape from the robot: a named keyframe of its model, or a knee bend given here
-    if (const auto key = reader.String((*gait)["keyframe"])) robot.gait.keyframe = *key;
-    if (const auto crouch = reader.Number((*gait)["crouch_knee_deg"], NumberIn(0.0, kMaxCrouchKnee_deg, "deg"))) {
-      robot.gait.crouch_knee_rad = DegToRad(*crouch);
-    }
-    robot.unsafe_steps =
-        ReadChoice<UnsafeSteps>(reader, (*gait)["unsafe_steps"],
-                                {{"fall", UnsafeSteps::kFall}, {"refuse", UnsafeSteps::kRefuse}},
-                                "expected fall (a step the legs cannot take is taken, and the robot falls) or "
-                                "refuse (the legs stand before it)")
-            .value_or(robot.unsafe_steps);
-    robot.footholds = ReadChoice<Footholds>(reader, (*gait)["footholds"],
-                                            {{"truth", Footholds::kTruth}, {"map", Footholds::kMap}},
-                                            "expected truth (footsteps planned on the scene's true surface) or map "
-                                            "(on the robot's own terrain map)")
-                          .value_or(robot.footholds);
+  if (const auto gait = OpenSection(reader, (*map)["gait"], GaitSectionSchema())) {
+    ReadParams(reader, *gait, GaitSectionSchema(), robot);
+    ReportAtKeys(reader, *gait, CheckParamBounds(GaitSectionSchema(), robot));
     if (const Field footholds = (*gait)["footholds"]) robot.footholds_line = footholds.node.Mark().line + 1;
-    robot.gait.touchdown_tolerance_m =
-        reader.Number((*gait)["touchdown_tolerance_m"], NumberIn(0.0, kMaxTouchdownTolerance_m, "m"))
-            .value_or(robot.gait.touchdown_tolerance_m);
-    robot.gait.derive_stride_from_legs = !gait->Has("stride_m");
-    robot.gait.derive_period_from_legs = !gait->Has("period_s");
-    // a walking gait, not a degenerate one: a period of 1e-9 s walked the
-    // robot kilometres per sample and the terrain corridor never ended (issue 23)
-    NumberRule stride = NumberIn(kMinStride_m, kMaxStride_m, "m");
-    stride.expected += " (a stride a walking robot can take)";
-    NumberRule period = NumberIn(kMinGaitPeriod_s, kMaxGaitPeriod_s, "s");
-    period.expected += " (a gait cycle a walking robot can take)";
-    robot.gait.stride_m = reader.Number((*gait)["stride_m"], stride).value_or(robot.gait.stride_m);
-    robot.gait.period_s = reader.Number((*gait)["period_s"], period).value_or(robot.gait.period_s);
-    robot.gait.max_step_m = reader.Number((*gait)["max_step_m"], stride).value_or(0.0);
   }
 
   // path: {waypoints_m: [[x, y], ...]}

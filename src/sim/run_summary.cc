@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "raycast/embree_version.h"
+#include "scenario/gait_section.h"
 #include "sim/params_json.h"
 #include "sensors/sensor_echo.h"
 #include "sensors/sensor_types.h"
@@ -86,13 +87,7 @@ nlohmann::json InputsJson(const Scenario& scenario) {
              {"start", {{"xyz_m", {r.start_xyz_m.x(), r.start_xyz_m.y(), r.start_xyz_m.z()}},
                         {"yaw_deg", RadToDeg(r.start_yaw_rad)},
                         {"on", NullUnless(!r.start_on.empty(), r.start_on)}}},
-             {"gait", {{"stride_m", NullUnless(!r.gait.derive_stride_from_legs, r.gait.stride_m)}, {"period_s", NullUnless(!r.gait.derive_period_from_legs, r.gait.period_s)},
-                       {"max_step_m", NullUnless(r.gait.max_step_m > 0, r.gait.max_step_m)},  // null: from the legs
-                       {"unsafe_steps", r.unsafe_steps == UnsafeSteps::kRefuse ? "refuse" : "fall"},
-                       {"footholds", r.footholds == Footholds::kMap ? "map" : "truth"},
-                       {"touchdown_tolerance_m", r.gait.touchdown_tolerance_m},
-                       {"keyframe", NullUnless(!r.gait.keyframe.empty(), r.gait.keyframe)},
-                       {"crouch_knee_deg", NullUnless(r.gait.crouch_knee_rad.has_value(), RadToDeg(r.gait.crouch_knee_rad.value_or(0.0)))}}},
+             {"gait", ParamsJson(GaitSectionSchema(), r)},
              {"path", {{"waypoints_m", waypoints}}},
              {"strategy", r.strategy ? StrategyJson(*r.strategy) : nlohmann::json(nullptr)},
              {"trajectory", NullUnless(!r.trajectory_file.empty(), r.trajectory_file)},
