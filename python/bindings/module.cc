@@ -37,6 +37,7 @@
 #include "object_lock.h"
 #include "robot_state.h"
 #include "vec_walk_env.h"
+#include "scenario/config_sections.h"
 #include "scenario/scenario.h"
 #include "run/run.h"
 #include "run/run_recorder.h"
@@ -597,6 +598,39 @@ PYBIND11_MODULE(_core, m) {
       "proxsim.InputError", "A bad scenario, robot or argument: .problems lists every problem, as the CLI prints them.",
       PyExc_ValueError, nullptr);
   m.attr("InputError") = py::handle(proxsim::g_input_error);
+
+  // the scenario sections' declared keys (core/config_schema.h), as the docs' tables give them
+  m.def(
+      "config_keys",
+      [](const std::string& section) {
+        const auto params = proxsim::ConfigSectionParams(section);
+        if (!params) {
+          std::string names;
+          for (const std::string& name : proxsim::ConfigSectionNames()) names += (names.empty() ? "" : ", ") + name;
+          throw py::value_error("no declared section '" + section + "'; expected one of " + names);
+        }
+        py::list keys;
+        for (const proxsim::ParamDescription& p : *params) {
+          py::dict key;
+          key["key"] = p.key;
+          key["type"] = proxsim::ParamTypeText(p);
+          key["unit"] = p.unit;
+          const bool number = p.type == proxsim::ParamType::kNumber;
+          key["min"] = number && std::isfinite(p.bounds.min) ? py::cast(p.bounds.min) : py::none();
+          key["max"] = number && std::isfinite(p.bounds.max) ? py::cast(p.bounds.max) : py::none();
+          key["min_open"] = p.bounds.min_open;
+          key["max_open"] = p.bounds.max_open;
+          key["choices"] = p.choices;
+          key["default"] = p.default_text;
+          key["meaning"] = p.meaning;
+          keys.append(key);
+        }
+        return keys;
+      },
+      py::arg("section"),
+      "The keys of a scenario section ('map', 'robot.gait', 'strategy.stop', 'strategy.circumvent'): "
+      "a list of dicts {key, type, unit, min, max, min_open, max_open, choices, default, meaning}.");
+  m.def("config_sections", &proxsim::ConfigSectionNames, "The sections config_keys() describes.");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -19,12 +19,15 @@ every sample: sim.step(q={joint: rad}, X_WP=(xyz, quat_wxyz)).
 See docs/strategies.md for the whole contract, proxsim.WalkEnv for a
 Gymnasium-style environment and proxsim.VecWalkEnv for N of them stepped
 together in C++ threads (Gymnasium's vector API).
+
+proxsim.config_keys("map") lists a scenario section's keys (type, unit,
+bounds, default, meaning), as docs/scenario.md's tables do.
 """
-from ._core import InputError, Robot, Simulation
+from ._core import InputError, Robot, Simulation, config_keys, config_sections
 from .vec_walk_env import VecWalkEnv
 from .walk_env import WalkEnv
 
-__all__ = ["InputError", "Robot", "Simulation", "VecWalkEnv", "WalkEnv"]
+__all__ = ["InputError", "Robot", "Simulation", "VecWalkEnv", "WalkEnv", "config_keys", "config_sections"]
 
 # Gymnasium is not a dependency; when it is importable, the environments are
 # registered with it so that gymnasium.make("proxsim/Walk-v0", scenario=...) and

@@ -295,3 +295,20 @@ def test_a_beam_with_several_echoes_gives_them_by_name(tmp_path):
     np.testing.assert_allclose(listed["dir_W"], [[1, 0, 0], [1, 0, 0]], atol=1e-12)
     # the paper's sensors report one echo each
     assert proxsim.Simulation.builtin("paper").step()["readings"]["echoes"] == {}
+
+
+def test_config_keys_are_the_declared_sections_as_dicts():
+    """proxsim.config_keys gives each section's keys as the docs' tables do."""
+    assert proxsim.config_sections() == ["map", "robot.gait", "strategy.stop", "strategy.circumvent"]
+    keys = {k["key"]: k for k in proxsim.config_keys("map")}
+    assert keys["resolution_m"]["min"] == 0.005 and keys["resolution_m"]["max"] == 1.0
+    assert keys["resolution_m"]["unit"] == "m" and keys["resolution_m"]["default"] == "0.02"
+    stop = {k["key"]: k for k in proxsim.config_keys("strategy.stop")}
+    assert stop["perception"]["choices"] == ["readings", "map"]
+    assert stop["stop_distance_m"]["min"] == 0.0 and stop["stop_distance_m"]["min_open"]
+    # every declared key of a section appears in a run's summary echo of it
+    sim = proxsim.Simulation.builtin("paper", seed=1)
+    echoed = sim.summary()["inputs"]["map"]
+    assert set(keys) == set(echoed)
+    with pytest.raises(ValueError, match="expected one of map"):
+        proxsim.config_keys("nope")
