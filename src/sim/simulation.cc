@@ -304,7 +304,7 @@ const SampleFrame& Simulation::TakeSample() {
     // the strategy sees what the robot knows and nothing else; the referee judges the sample after it
     if (strategy_) strategy_->Decide(observation_, *commands_, *event_log_);
     referee_->Judge(frame_.t_s, state_, clearance_m);
-    referee_->Contacts(frame_.t_s, contacts_now_, *world_, world_->robot()->model());
+    referee_->Contacts(frame_.t_s, NamedContacts());
   }
   return frame_;
 }
@@ -339,6 +339,21 @@ void Simulation::FillObservation() {
                              .sensors = outputs_,
                              .robot = locomotion_ ? &knowledge_ : nullptr,
                              .map = terrain_map_.get()};
+}
+
+std::vector<BodyContact> Simulation::NamedContacts() const {
+  const RobotModel& model = world_->robot()->model();
+  std::vector<BodyContact> named;
+  named.reserve(contacts_now_.size());
+  for (const Contact& contact : contacts_now_) {
+    const bool self = contact.object_id < 0;
+    named.push_back({.link = model.link_name(contact.link),
+                     .object = self ? model.link_name(contact.other_link) : world_->object_name(contact.object_id),
+                     .self = self,
+                     .depth_m = contact.depth_m,
+                     .p_W = contact.p_W});
+  }
+  return named;
 }
 
 Simulation::Outcome Simulation::outcome() const { return referee_->outcome(frame_.t_s); }

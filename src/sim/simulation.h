@@ -31,7 +31,7 @@
 #include "sim/contacts.h"
 #include "sim/delivery_queue.h"
 #include "sim/map_terrain.h"
-#include "sim/referee.h"
+#include "referee/referee.h"
 #include "sim/sample_frame.h"
 #include "sim/sensor_reader.h"
 #include "sim/sensor_rig.h"
@@ -140,10 +140,10 @@ class Simulation {
   const Locomotion* locomotion() const { return locomotion_.get(); }
   const Strategy* strategy() const { return strategy_.get(); }
 
-  /// What the episode knows of the robot so far (summary.json `robot`; sim/referee.h).
+  /// What the episode knows of the robot so far (summary.json `robot`; referee/referee.h).
   using RobotOutcome = proxsim::RobotOutcome;
   using Outcome = proxsim::EpisodeOutcome;
-  /// The episode's outcome as the referee judges it (sim/referee.h): reached_goal, stopped
+  /// The episode's outcome as the referee judges it (referee/referee.h): reached_goal, stopped
   /// (by its strategy, standing), collided, fell, refused (standing before an
   /// unsafe step its legs refused) or time_up; with its time and a line for a person.
   Outcome outcome() const;
@@ -162,6 +162,8 @@ class Simulation {
   void FillObservation();
   StrategySetup MakeSetup() const;
   std::unique_ptr<TerrainMap> MakeTerrainMap() const;
+  // this sample's contacts, named for the referee (scene objects by the world, links by the model)
+  std::vector<BodyContact> NamedContacts() const;
 
   Scenario scenario_;
   std::int64_t sample_count_ = 0;

@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/referee.h"
+#include "referee/referee.h"
 #include "study/outcome_config.h"
 #include "study/study_jobs.h"
 

@@ -29,7 +29,7 @@ struct RunMetrics {
   double self_share = 0;
   double grazing_share = 0;
   double floor_coverage = 0;
-  /// The episode's outcome (sim/referee.h) and its time: the same
+  /// The episode's outcome (referee/referee.h) and its time: the same
   /// for every candidate of a run (they ride together and have no strategy),
   /// and the metrics above are measured up to it.
   OutcomeKind outcome = OutcomeKind::kTimeUp;

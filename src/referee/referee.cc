@@ -1,10 +1,8 @@
-#include "sim/referee.h"
+#include "referee/referee.h"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "robot/robot_model.h"
-#include "sim/world.h"
 
 namespace proxsim {
 
@@ -125,19 +123,19 @@ void Referee::UpdateStanding(double t_s, bool stopped) {
   }
 }
 
-void Referee::Contacts(double t_s, const std::vector<Contact>& contacts, const World& world, const RobotModel& model) {
-  const auto same = [](const Contact& a, const Contact& b) {
-    return a.link == b.link && a.object_id == b.object_id && a.other_link == b.other_link;
+void Referee::Contacts(double t_s, const std::vector<BodyContact>& contacts) {
+  const auto same = [](const BodyContact& a, const BodyContact& b) {
+    return a.link == b.link && a.object == b.object && a.self == b.self;
   };
-  for (const Contact& contact : contacts) {
+  for (const BodyContact& contact : contacts) {
     // a contact that lasts is one collision, logged when it begins
-    if (std::any_of(contacts_before_.begin(), contacts_before_.end(), [&](const Contact& c) { return same(c, contact); }))
+    if (std::any_of(contacts_before_.begin(), contacts_before_.end(),
+                    [&](const BodyContact& c) { return same(c, contact); }))
       continue;
     RobotOutcome::Collision collision{.t_s = t_s,
-                                      .link = model.link_name(contact.link),
-                                      .object = contact.object_id >= 0 ? world.object_name(contact.object_id)
-                                                                       : model.link_name(contact.other_link),
-                                      .self = contact.object_id < 0,
+                                      .link = contact.link,
+                                      .object = contact.object,
+                                      .self = contact.self,
                                       .depth_m = contact.depth_m,
                                       .p_W = contact.p_W};
     char detail[256];

@@ -19,13 +19,10 @@
 #include "core/geometry.h"
 #include "gait/locomotion.h"
 #include "scenario/scenario.h"
-#include "sim/contacts.h"
 #include "strategy/strategy.h"
 
 namespace proxsim {
 
-class RobotModel;
-class World;
 
 /// How an episode ended (summary.json `robot.outcome`; docs/outcomes.md).
 enum class OutcomeKind { kReachedGoal, kStopped, kCollided, kFell, kRefused, kTimeUp };
@@ -80,6 +77,16 @@ struct RobotOutcome {
   std::string end_detail;
 };
 
+/// A contact of the robot's body as the referee is told of it: which link
+/// touched which object or other link, by name (the simulation names them).
+struct BodyContact {
+  std::string link;
+  std::string object;  ///< the scene object, or the other link of a self-collision
+  bool self = false;
+  double depth_m = 0;  ///< how deep the deepest sample lies inside (0: touching, for meshes: unknown)
+  Vec3 p_W = Vec3::Zero();
+};
+
 class Referee {
  public:
   /// For the scenario's robot (its on_collision, unsafe_steps, footholds and
@@ -106,8 +113,8 @@ class Referee {
   void Judge(double t_s, const RobotState& state, double clearance_m);
 
   /// The contacts of the sample at t_s: each new one logged; the end of the
-  /// episode under on_collision: stop. Names come from the world and the model.
-  void Contacts(double t_s, const std::vector<Contact>& contacts, const World& world, const RobotModel& model);
+  /// episode under on_collision: stop.
+  void Contacts(double t_s, const std::vector<BodyContact>& contacts);
 
   const RobotOutcome& robot() const { return outcome_; }
   /// The episode's outcome as summary.json states it: reached_goal, stopped
@@ -128,7 +135,7 @@ class Referee {
   EventLog& events_;
   // the episode
   RobotOutcome outcome_;
-  std::vector<Contact> contacts_before_;  // the last sample's
+  std::vector<BodyContact> contacts_before_;  // the last sample's
   bool stop_pending_ = false;             // a stop command not resumed since
   double walking_since_t_s_ = 0;          // when the robot last started walking
   double cannot_step_t_s_ = -std::numeric_limits<double>::infinity();  // the last cannot_step event
