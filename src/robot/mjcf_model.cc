@@ -149,8 +149,90 @@ const char* GeomTypeName(int type) {
     case mjGEOM_CYLINDER: return "cylinder";
     case mjGEOM_BOX: return "box";
     case mjGEOM_MESH: return "mesh";
+    case mjGEOM_SDF: return "sdf";
     default: return "unknown";
   }
+}
+
+using MeshCache = std::map<int, std::shared_ptr<const TriangleMesh>>;  // by MuJoCo mesh id, shared by its geoms
+
+// A geom's proxsim shapes in its body's frame (a capsule's surface is a
+// cylinder's side and a sphere at each end); none for a type proxsim does
+// not take on a body (a plane, a height field)
+std::vector<LinkShape> GeomShapes(const mjModel* m, int g, MeshCache& meshes) {
+  const Pose X_BO = PoseOf(m->geom_pos + 3 * g, m->geom_quat + 4 * g);
+  const mjtNum* size = m->geom_size + 3 * g;
+  switch (m->geom_type[g]) {
+    case mjGEOM_BOX: return {{Box{2.0 * Vec3(size[0], size[1], size[2])}, X_BO}};
+    case mjGEOM_SPHERE: return {{Sphere{size[0]}, X_BO}};
+    case mjGEOM_CYLINDER: return {{Cylinder{size[0], 2.0 * size[1]}, X_BO}};
+    case mjGEOM_CAPSULE:
+      return {{Cylinder{size[0], 2.0 * size[1]}, X_BO},
+              {Sphere{size[0]}, X_BO * Translation(Vec3(0, 0, size[1]))},
+              {Sphere{size[0]}, X_BO * Translation(Vec3(0, 0, -size[1]))}};
+    case mjGEOM_ELLIPSOID:
+      return {{Mesh{.file = "ellipsoid", .data = EllipsoidMesh(Vec3(size[0], size[1], size[2]))}, X_BO}};
+    case mjGEOM_MESH: {
+      const int id = m->geom_dataid[g];
+      auto& data = meshes[id];
+      if (!data) {
+        auto mesh = std::make_shared<TriangleMesh>();
+        for (int v = m->mesh_vertadr[id]; v < m->mesh_vertadr[id] + m->mesh_vertnum[id]; ++v)
+          mesh->vertices_O.emplace_back(m->mesh_vert[3 * v], m->mesh_vert[3 * v + 1], m->mesh_vert[3 * v + 2]);
+        for (int f = m->mesh_faceadr[id]; f < m->mesh_faceadr[id] + m->mesh_facenum[id]; ++f) {
+          mesh->triangles.push_back({static_cast<std::uint32_t>(m->mesh_face[3 * f]),
+                                     static_cast<std::uint32_t>(m->mesh_face[3 * f + 1]),
+                                     static_cast<std::uint32_t>(m->mesh_face[3 * f + 2])});
+        }
+        data = std::move(mesh);
+      }
+      return {{Mesh{.file = NameOf(m, mjOBJ_MESH, id, "mesh"), .data = data}, X_BO}};
+    }
+    default: return {};
+  }
+}
+
+// The world body's geoms: the scene a scene file draws around the robot.
+// Each becomes scene objects named model:GEOM in the world frame (a
+// capsule's ends model:GEOM:top and model:GEOM:bottom, along its own +z and
+// −z); the plane z = 0 facing up is the ground; any other plane, and what
+// proxsim has no shape for, is named as not taken.
+std::vector<ModelSceneGeom> WorldGeoms(const mjModel* m) {
+  std::vector<ModelSceneGeom> geoms;
+  MeshCache meshes;
+  for (int k = 0; k < m->body_geomnum[0]; ++k) {
+    const int g = m->body_geomadr[0] + k;
+    const char* name = mj_id2name(m, mjOBJ_GEOM, g);
+    ModelSceneGeom geom{.geom = name != nullptr && name[0] != '\0' ? std::string(name) : "geom_" + std::to_string(k),
+                        .type = GeomTypeName(m->geom_type[g]),
+                        .group = m->geom_group[g]};
+    const std::string object = "model:" + geom.geom;
+    if (m->geom_type[g] == mjGEOM_PLANE) {
+      // the ground: the plane through the origin facing +z, whatever its drawn size (MuJoCo's contacts take a plane as unbounded)
+      const Pose X_WO = PoseOf(m->geom_pos + 3 * g, m->geom_quat + 4 * g);
+      const Vec3 normal_W = X_WO.linear().col(2);
+      if ((normal_W - Vec3::UnitZ()).norm() < 1e-9 && std::abs(X_WO.translation().z()) < 1e-9) {
+        geom.ground_plane = true;
+        geom.objects.push_back(SceneObject{.name = object, .shape = Plane{}, .ground = true});
+      } else {
+        geom.problem = "a plane that is not the ground (z = 0, facing up): proxsim takes a model's plane only as its "
+                       "ground; give it in the scenario's scene (a plane object with its pose, or a box)";
+      }
+      geoms.push_back(std::move(geom));
+      continue;
+    }
+    const std::vector<LinkShape> shapes = GeomShapes(m, g, meshes);
+    if (shapes.empty()) {
+      geom.problem = "a " + geom.type + ": not supported in a scene (box, sphere, capsule, cylinder, ellipsoid, mesh "
+                     "and the ground plane are)";
+    }
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      const char* part = shapes.size() == 1 ? "" : i == 0 ? "" : i == 1 ? ":top" : ":bottom";
+      geom.objects.push_back(SceneObject{.name = object + part, .shape = shapes[i].shape, .X_WO = shapes[i].X_LO});
+    }
+    geoms.push_back(std::move(geom));
+  }
+  return geoms;
 }
 
 }  // namespace
@@ -196,11 +278,6 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
       problems.push_back(where + "body '" + NameOf(m, mjOBJ_BODY, b, "body") + "' is a mocap body: not supported");
     }
   }
-  for (int g = m->body_geomadr[0]; m->body_geomnum[0] > 0 && g < m->body_geomadr[0] + m->body_geomnum[0]; ++g) {
-    problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' (" + GeomTypeName(m->geom_type[g]) +
-                       ") belongs to the world body: the scene goes in the scenario's scene (load the robot's own "
-                       "file, not a scene that includes it)");
-  }
   if (roots.size() != 1) {
     std::string names;
     for (const int b : roots) names += (names.empty() ? "'" : ", '") + NameOf(m, mjOBJ_BODY, b, "body") + "'";
@@ -237,7 +314,7 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
   // bodies: each a link; its joints between it and its parent's link
   std::vector<int> link_of_body(m->nbody, -1);
   std::map<int, int> mujoco_joint_of;  // proxsim's moving joint -> MuJoCo's joint id (for keyframes)
-  std::map<int, std::shared_ptr<const TriangleMesh>> meshes;  // by MuJoCo mesh id, shared by the geoms using it
+  MeshCache meshes;
   for (int b = roots[0]; b < m->nbody; ++b) {
     const std::string body = NameOf(m, mjOBJ_BODY, b, "body");
     const bool root = b == roots[0];
@@ -315,44 +392,14 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
     // its geoms of the group chosen
     for (int g = m->body_geomadr[b]; m->body_geomnum[b] > 0 && g < m->body_geomadr[b] + m->body_geomnum[b]; ++g) {
       if (options.geom_group >= 0 && m->geom_group[g] != options.geom_group) continue;
-      const Pose X_LO = PoseOf(m->geom_pos + 3 * g, m->geom_quat + 4 * g);
-      const mjtNum* size = m->geom_size + 3 * g;
-      auto& shapes = model.links_[link].shapes;
-      switch (m->geom_type[g]) {
-        case mjGEOM_BOX: shapes.push_back({Box{2.0 * Vec3(size[0], size[1], size[2])}, X_LO}); break;
-        case mjGEOM_SPHERE: shapes.push_back({Sphere{size[0]}, X_LO}); break;
-        case mjGEOM_CYLINDER: shapes.push_back({Cylinder{size[0], 2.0 * size[1]}, X_LO}); break;
-        case mjGEOM_CAPSULE:
-          // a capsule's surface is a cylinder's side and a sphere at each end
-          shapes.push_back({Cylinder{size[0], 2.0 * size[1]}, X_LO});
-          shapes.push_back({Sphere{size[0]}, X_LO * Translation(Vec3(0, 0, size[1]))});
-          shapes.push_back({Sphere{size[0]}, X_LO * Translation(Vec3(0, 0, -size[1]))});
-          break;
-        case mjGEOM_ELLIPSOID:
-          shapes.push_back({Mesh{.file = "ellipsoid", .data = EllipsoidMesh(Vec3(size[0], size[1], size[2]))}, X_LO});
-          break;
-        case mjGEOM_MESH: {
-          const int id = m->geom_dataid[g];
-          auto& data = meshes[id];
-          if (!data) {
-            auto mesh = std::make_shared<TriangleMesh>();
-            for (int v = m->mesh_vertadr[id]; v < m->mesh_vertadr[id] + m->mesh_vertnum[id]; ++v)
-              mesh->vertices_O.emplace_back(m->mesh_vert[3 * v], m->mesh_vert[3 * v + 1], m->mesh_vert[3 * v + 2]);
-            for (int f = m->mesh_faceadr[id]; f < m->mesh_faceadr[id] + m->mesh_facenum[id]; ++f) {
-              mesh->triangles.push_back({static_cast<std::uint32_t>(m->mesh_face[3 * f]),
-                                         static_cast<std::uint32_t>(m->mesh_face[3 * f + 1]),
-                                         static_cast<std::uint32_t>(m->mesh_face[3 * f + 2])});
-            }
-            data = std::move(mesh);
-          }
-          shapes.push_back({Mesh{.file = NameOf(m, mjOBJ_MESH, id, "mesh"), .data = data}, X_LO});
-          break;
-        }
-        default:
-          problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' of body '" + body + "' is a " +
-                             GeomTypeName(m->geom_type[g]) +
-                             ": not supported on a robot (box, sphere, capsule, cylinder, ellipsoid and mesh are)");
+      std::vector<LinkShape> shapes = GeomShapes(m, g, meshes);
+      if (shapes.empty()) {
+        problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' of body '" + body + "' is a " +
+                           GeomTypeName(m->geom_type[g]) +
+                           ": not supported on a robot (box, sphere, capsule, cylinder, ellipsoid and mesh are)");
       }
+      auto& link_shapes = model.links_[link].shapes;
+      link_shapes.insert(link_shapes.end(), std::make_move_iterator(shapes.begin()), std::make_move_iterator(shapes.end()));
     }
   }
 
@@ -383,6 +430,7 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
     model.keyframes_.push_back(std::move(key));
   }
   model.loader_ = std::string("MuJoCo ") + mj_versionString();
+  model.scene_geoms_ = WorldGeoms(m);
 
   // forward kinematics in joint order: each joint was added after its parent link was reached
   model.root_link_ = 0;
