@@ -21,6 +21,7 @@
 
 #include "cli_helpers.h"
 #include "input_error_helpers.h"
+#include "mjcf_twin.h"
 #include "robot/robot_model.h"
 #include "scenario/scenario.h"
 #include "sim/run_summary.h"
@@ -29,11 +30,6 @@ namespace proxsim {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::ErrorOf;
-using testing::FreshDir;
-using testing::ReadCsv;
-using testing::ReadFile;
-using testing::RunProxsim;
 
 const fs::path kTalosDir = fs::path(PROXSIM_SOURCE_DIR) / ".." / "shared" / "robots" / "pal_talos";
 
@@ -42,44 +38,8 @@ const fs::path kTalosDir = fs::path(PROXSIM_SOURCE_DIR) / ".." / "shared" / "rob
   GTEST_SKIP() << "skipped: MuJoCo Menagerie's TALOS is not at " << kTalosDir.lexically_normal().string() \
                << " (these tests read ../shared/robots/pal_talos from beside the project)"
 
-// A biped as the built-in one (its leg names: the default leg map): a free
-// pelvis, hip, knee and ankle pitch joints, box feet.
-constexpr const char* kSceneTestRobot = R"(<mujoco model="scene_biped">
-  <compiler angle="degree"/>
-  <worldbody>
-    <body name="pelvis" pos="0 0 0.98">
-      <freejoint name="root"/>
-      <geom type="box" size="0.1 0.15 0.08" pos="0 0 0.04"/>
-      <body name="left_thigh" pos="0 0.1 0">
-        <joint name="left_hip_pitch" type="hinge" axis="0 -1 0" range="-60 100" limited="true"/>
-        <geom type="cylinder" size="0.05 0.225" pos="0 0 -0.225"/>
-        <body name="left_tibia" pos="0 0 -0.45">
-          <joint name="left_knee_pitch" type="hinge" axis="0 1 0" range="0 130" limited="true"/>
-          <geom type="cylinder" size="0.04 0.225" pos="0 0 -0.225"/>
-          <body name="left_foot" pos="0 0 -0.45">
-            <joint name="left_ankle_pitch" type="hinge" axis="0 -1 0" range="-40 40" limited="true"/>
-            <geom type="box" size="0.13 0.05 0.03" pos="0.07 0 -0.05"/>
-          </body>
-        </body>
-      </body>
-      <body name="right_thigh" pos="0 -0.1 0">
-        <joint name="right_hip_pitch" type="hinge" axis="0 -1 0" range="-60 100" limited="true"/>
-        <geom type="cylinder" size="0.05 0.225" pos="0 0 -0.225"/>
-        <body name="right_tibia" pos="0 0 -0.45">
-          <joint name="right_knee_pitch" type="hinge" axis="0 1 0" range="0 130" limited="true"/>
-          <geom type="cylinder" size="0.04 0.225" pos="0 0 -0.225"/>
-          <body name="right_foot" pos="0 0 -0.45">
-            <joint name="right_ankle_pitch" type="hinge" axis="0 -1 0" range="-40 40" limited="true"/>
-            <geom type="box" size="0.13 0.05 0.03" pos="0.07 0 -0.05"/>
-          </body>
-        </body>
-      </body>
-    </body>
-  </worldbody>
-</mujoco>
-)";
-
-// The scene file: the robot included, lights and a camera (not read), the
+// The scene file: the robot (tests/mjcf_twin.h: a biped with the built-in
+// one's leg names, a mast and a head on its pelvis) included, lights and a camera (not read), the
 // floor, a crate 0.2 × 0.3 × 0.2 m on it at x = 1.5 in the robot's way, and an
 // unnamed capsule off the path (along y, at x = 0.5, y = 1).
 constexpr const char* kSceneTestScene = R"(<mujoco model="scene_biped scene">
@@ -94,12 +54,24 @@ constexpr const char* kSceneTestScene = R"(<mujoco model="scene_biped scene">
 </mujoco>
 )";
 
+// `output` holds `text`
+void ExpectModelSceneOutputHas(const std::string& output, const std::string& text) {
+  EXPECT_NE(output.find(text), std::string::npos) << text << "\n" << output;
+}
+
+// inspect's text says the robot's root and how many world geoms it found, the first the floor it takes as the ground
+void ExpectInspectTookTheFloor(const std::string& output, const std::string& root, int geoms) {
+  ExpectModelSceneOutputHas(output, "the robot is the tree under the world body from '" + root + "'; the world body's " +
+                                        std::to_string(geoms) + " geom(s) are a scene, not the robot");
+  ExpectModelSceneOutputHas(output, "  floor (plane, group 0): the ground (z = 0, facing up), scene object 'model:floor', a plane");
+}
+
 class ModelSceneTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = FreshDir("model_scene");
+    dir_ = testing::FreshDir("model_scene");
     fs::create_directories(dir_);
-    std::ofstream(dir_ / "robot.xml") << kSceneTestRobot;
+    std::ofstream(dir_ / "robot.xml") << testing::MjcfTwin();
     std::ofstream(dir_ / "scene.xml") << kSceneTestScene;
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -164,7 +136,7 @@ TEST_F(ModelSceneTest, APlaneOffTheGroundIsNamedAndRefusedOnlyWhenTheSceneIsTake
     EXPECT_TRUE(model.scene_geoms()[k].objects.empty());
   }
   // a scenario taking the model's scene is refused, naming each geom and the way out
-  const std::string refused = ErrorOf([&] { Load("proxsim: 1\nrobot: {model: tilted.xml}\nsensors: []\n"); });
+  const std::string refused = testing::ErrorOf([&] { Load("proxsim: 1\nrobot: {model: tilted.xml}\nsensors: []\n"); });
   EXPECT_NE(refused.find("robot.model: geom 'ramp' of the model's world body (its scene) is a plane that is not the ground"),
             std::string::npos)
       << refused;
@@ -175,7 +147,7 @@ TEST_F(ModelSceneTest, APlaneOffTheGroundIsNamedAndRefusedOnlyWhenTheSceneIsTake
   EXPECT_TRUE(ignored.scene.objects.empty());
   EXPECT_TRUE(ignored.scene_from_model.objects.empty());
   // a value other than include or ignore is named
-  const std::string bad = ErrorOf([&] { Load("proxsim: 1\nrobot: {model: scene.xml, model_scene: keep}\nsensors: []\n"); });
+  const std::string bad = testing::ErrorOf([&] { Load("proxsim: 1\nrobot: {model: scene.xml, model_scene: keep}\nsensors: []\n"); });
   EXPECT_NE(bad.find("robot.model_scene: expected include (the world geoms of the model's file join the scene) or ignore"),
             std::string::npos)
       << bad;
@@ -210,7 +182,7 @@ TEST_F(ModelSceneTest, TheScenarioTakesTheWorldGeomsAndTheGroundPlaneOnlyWithout
                 .robot->start_on,
             "model:crate");
   // a name the scene uses already is refused
-  const std::string clash = ErrorOf([&] {
+  const std::string clash = testing::ErrorOf([&] {
     Load("proxsim: 1\nscene: {objects: [{name: 'model:crate', sphere: {radius_m: 0.1}, pose: {xyz_m: [0, 3, 0.1]}}]}\n"
          "robot: {model: scene.xml}\nsensors: []\n");
   });
@@ -257,11 +229,11 @@ sensors:
   std::map<std::string, nlohmann::json> summary;
   for (const std::string name : {"with_scene", "drawn"}) {
     const fs::path out = dir_ / ("out_" + name);
-    const auto run = RunProxsim("run " + (dir_ / (name + ".yaml")).string() + " --no-report --out " + out.string());
+    const auto run = testing::RunProxsim("run " + (dir_ / (name + ".yaml")).string() + " --no-report --out " + out.string());
     ASSERT_EQ(run.exit_code, 0) << run.output;
-    poses[name] = ReadCsv(out / "poses.csv");
-    readings[name] = ReadCsv(out / "readings.csv");
-    summary[name] = nlohmann::json::parse(ReadFile(out / "summary.json"));
+    poses[name] = testing::ReadCsv(out / "poses.csv");
+    readings[name] = testing::ReadCsv(out / "readings.csv");
+    summary[name] = nlohmann::json::parse(testing::ReadFile(out / "summary.json"));
   }
   // the side sensor reads the crate's face y = 0.15 from y = 1: 0.85 m
   int side_rows = 0, shin_on_crate = 0;
@@ -306,31 +278,23 @@ TEST_F(ModelSceneTest, InspectAndValidateSayWhatItTook) {
   // validate counts what the model brought, and says when its floor was left out
   Write("v_empty.yaml", "proxsim: 1\nrobot: {model: scene.xml}\nsensors: []\n");
   Write("v_room.yaml", "proxsim: 1\nscene: {builtin: dining_room}\nrobot: {model: scene.xml}\nsensors: []\n");
-  const auto empty = RunProxsim("validate " + (dir_ / "v_empty.yaml").string());
+  const auto empty = testing::RunProxsim("validate " + (dir_ / "v_empty.yaml").string());
   ASSERT_EQ(empty.exit_code, 0) << empty.output;
-  EXPECT_NE(empty.output.find("valid (5 objects, 5 from the robot's model file, 0 sensors"), std::string::npos) << empty.output;
+  ExpectModelSceneOutputHas(empty.output, "valid (5 objects, 5 from the robot's model file, 0 sensors");
   EXPECT_EQ(empty.output.find("left out"), std::string::npos) << empty.output;
-  const auto room = RunProxsim("validate " + (dir_ / "v_room.yaml").string());
+  const auto room = testing::RunProxsim("validate " + (dir_ / "v_room.yaml").string());
   ASSERT_EQ(room.exit_code, 0) << room.output;
-  EXPECT_NE(room.output.find("4 from the robot's model file"), std::string::npos) << room.output;
-  EXPECT_NE(room.output.find("the model file's ground plane 'floor' is left out: the scene's own ground stands for it"),
-            std::string::npos)
-      << room.output;
+  ExpectModelSceneOutputHas(room.output, "4 from the robot's model file");
+  ExpectModelSceneOutputHas(room.output,
+                            "the model file's ground plane 'floor' is left out: the scene's own ground stands for it");
 
-  const auto text = RunProxsim("inspect " + (dir_ / "scene.xml").string());
+  const auto text = testing::RunProxsim("inspect " + (dir_ / "scene.xml").string());
   ASSERT_EQ(text.exit_code, 0) << text.output;
-  EXPECT_NE(text.output.find("the robot is the tree under the world body from 'pelvis'; the world body's 3 geom(s) are a "
-                             "scene, not the robot"),
-            std::string::npos)
-      << text.output;
-  EXPECT_NE(text.output.find("  floor (plane, group 0): the ground (z = 0, facing up), scene object 'model:floor', a plane"),
-            std::string::npos)
-      << text.output;
-  EXPECT_NE(text.output.find("  crate (box, group 0): scene object 'model:crate', a box at [1.5000, 0.0000, 0.1000] m"),
-            std::string::npos)
-      << text.output;
-  EXPECT_NE(text.output.find("scene object 'model:geom_2:top', a sphere"), std::string::npos) << text.output;
-  const auto json_run = RunProxsim("inspect --json " + (dir_ / "scene.xml").string() + " 2>/dev/null");
+  ExpectInspectTookTheFloor(text.output, "pelvis", 3);
+  ExpectModelSceneOutputHas(text.output,
+                            "  crate (box, group 0): scene object 'model:crate', a box at [1.5000, 0.0000, 0.1000] m");
+  ExpectModelSceneOutputHas(text.output, "scene object 'model:geom_2:top', a sphere");
+  const auto json_run = testing::RunProxsim("inspect --json " + (dir_ / "scene.xml").string() + " 2>/dev/null");
   ASSERT_EQ(json_run.exit_code, 0) << json_run.output;
   const nlohmann::json json = nlohmann::json::parse(json_run.output);
   const nlohmann::json& geoms = json["model_scene"];
@@ -344,7 +308,7 @@ TEST_F(ModelSceneTest, InspectAndValidateSayWhatItTook) {
   EXPECT_EQ(geoms[2]["objects"].size(), 3u);
   EXPECT_EQ(json["robot"]["root_link"], "pelvis");
   // the robot's own file has none
-  const auto own = RunProxsim("inspect --json " + (dir_ / "robot.xml").string() + " 2>/dev/null");
+  const auto own = testing::RunProxsim("inspect --json " + (dir_ / "robot.xml").string() + " 2>/dev/null");
   EXPECT_TRUE(nlohmann::json::parse(own.output)["model_scene"].empty());
 }
 
@@ -354,18 +318,12 @@ TEST_F(ModelSceneTest, InspectAndValidateSayWhatItTook) {
 // file does on a floor the scenario draws.
 TEST(ModelSceneTalos, TheMenagerieSceneFileWalksToItsGoalAsTheRobotsOwnFile) {
   SKIP_WITHOUT_TALOS();
-  const auto inspected = RunProxsim("inspect " + (kTalosDir / "scene_position.xml").string());
+  const auto inspected = testing::RunProxsim("inspect " + (kTalosDir / "scene_position.xml").string());
   ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
-  EXPECT_NE(inspected.output.find("the robot is the tree under the world body from 'base_link'; the world body's 1 "
-                                  "geom(s) are a scene"),
-            std::string::npos)
-      << inspected.output;
-  EXPECT_NE(inspected.output.find("  floor (plane, group 0): the ground (z = 0, facing up), scene object 'model:floor'"),
-            std::string::npos)
-      << inspected.output;
-  EXPECT_NE(inspected.output.find("(read as the gait reads robot.legs: accepted)"), std::string::npos) << inspected.output;
+  ExpectInspectTookTheFloor(inspected.output, "base_link", 1);
+  ExpectModelSceneOutputHas(inspected.output, "(read as the gait reads robot.legs: accepted)");
 
-  const fs::path dir = FreshDir("model_scene_talos");
+  const fs::path dir = testing::FreshDir("model_scene_talos");
   fs::create_directories(dir);
   const auto scenario = [&](const std::string& model, const std::string& scene) {
     return "proxsim: 1\nseed: 1\nduration_s: 8\nrate_hz: 50\nscene: " + scene + "\nrobot:\n  model: " + model +
@@ -388,11 +346,11 @@ TEST(ModelSceneTalos, TheMenagerieSceneFileWalksToItsGoalAsTheRobotsOwnFile) {
   std::map<std::string, testing::Csv> poses, readings;
   for (const auto& [name, yaml] : runs) {
     std::ofstream(dir / (name + ".yaml")) << yaml;
-    const auto run = RunProxsim("run " + (dir / (name + ".yaml")).string() + " --no-report --out " + (dir / name).string());
+    const auto run = testing::RunProxsim("run " + (dir / (name + ".yaml")).string() + " --no-report --out " + (dir / name).string());
     ASSERT_EQ(run.exit_code, 0) << name << ": " << run.output;
-    summary[name] = nlohmann::json::parse(ReadFile(dir / name / "summary.json"));
-    poses[name] = ReadCsv(dir / name / "poses.csv");
-    readings[name] = ReadCsv(dir / name / "readings.csv");
+    summary[name] = nlohmann::json::parse(testing::ReadFile(dir / name / "summary.json"));
+    poses[name] = testing::ReadCsv(dir / name / "poses.csv");
+    readings[name] = testing::ReadCsv(dir / name / "readings.csv");
     EXPECT_EQ(summary[name]["robot"]["outcome"], "reached_goal") << name << ": " << summary[name]["robot"].dump(1);
   }
   EXPECT_EQ(summary["scene_empty"]["inputs"]["scene"]["from_model"]["objects"], nlohmann::json::array({"model:floor"}));
