@@ -225,9 +225,10 @@ std::vector<std::string> RobotProblems(const Scenario& scenario) {
     const UrdfOptions options{
         .geometry = robot.geometry, .package_paths = robot.package_paths, .geom_group = robot.geom_group};
     // (an MJCF the scenario read already, to take its scene, is not read again)
-    GaitWalker(builtin                    ? RobotModel::Builtin(robot.model.substr(8), options)
-               : robot.model_read != nullptr && robot.model_read_key == ModelReadKey(robot) ? *robot.model_read
-                                          : RobotModel::FromFile(robot.model, options),
+    const bool read = robot.model_read != nullptr && robot.model_read_key == ModelReadKey(robot);
+    GaitWalker(builtin ? RobotModel::Builtin(robot.model.substr(8), options)
+               : read  ? *robot.model_read
+                       : RobotModel::FromFile(robot.model, options),
                robot);
   } catch (const InputError& robot_error) {
     return robot_error.problems();
