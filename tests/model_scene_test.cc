@@ -122,25 +122,45 @@ TEST_F(ModelSceneTest, TheRobotIsTheOneTreeAndTheWorldGeomsAreOfferedApart) {
 }
 
 TEST_F(ModelSceneTest, APlaneOffTheGroundIsNamedAndRefusedOnlyWhenTheSceneIsTaken) {
-  Write("tilted.xml", R"(<mujoco><include file="robot.xml"/><worldbody>
+  Write("tilted.xml", R"(<mujoco><include file="robot.xml"/>
+  <asset>
+    <mesh name="tetra" vertex="0 0 0  0.2 0 0  0 0.2 0  0 0 0.2"/>
+    <hfield name="bumps" nrow="2" ncol="2" size="1 1 0.1 0.1"/>
+  </asset>
+  <worldbody>
     <geom name="floor" type="plane" size="0 0 0.05"/>
     <geom name="ramp" type="plane" size="1 1 0.05" pos="3 0 0" euler="0 -10 0"/>
     <geom name="raised" type="plane" size="1 1 0.05" pos="0 0 0.3"/>
+    <geom name="rock" type="mesh" mesh="tetra" pos="2 2 0"/>
+    <geom name="egg" type="ellipsoid" size="0.3 0.1 0.2" pos="2 -2 0.2"/>
+    <geom name="terrain" type="hfield" hfield="bumps" pos="5 0 0"/>
   </worldbody></mujoco>)");
   // the robot loads: the planes are not its own
   const RobotModel model = RobotModel::FromFile((dir_ / "tilted.xml").string());
-  ASSERT_EQ(model.scene_geoms().size(), 3u);
-  EXPECT_TRUE(model.scene_geoms()[0].ground_plane);
+  const auto& geoms = model.scene_geoms();
+  ASSERT_EQ(geoms.size(), 6u);
+  EXPECT_TRUE(geoms[0].ground_plane);
   for (int k : {1, 2}) {
-    EXPECT_NE(model.scene_geoms()[k].problem.find("a plane that is not the ground (z = 0, facing up)"), std::string::npos);
-    EXPECT_TRUE(model.scene_geoms()[k].objects.empty());
+    EXPECT_NE(geoms[k].problem.find("a plane that is not the ground (z = 0, facing up)"), std::string::npos);
+    EXPECT_TRUE(geoms[k].objects.empty());
   }
+  // a mesh with its compiled vertices (4), an ellipsoid as the robot's are (a mesh), a height field named
+  ASSERT_EQ(geoms[3].objects.size(), 1u);
+  ASSERT_TRUE(std::holds_alternative<Mesh>(geoms[3].objects[0].shape));
+  EXPECT_EQ(std::get<Mesh>(geoms[3].objects[0].shape).data->vertices_O.size(), 4u);
+  ASSERT_EQ(geoms[4].objects.size(), 1u);
+  ASSERT_TRUE(std::holds_alternative<Mesh>(geoms[4].objects[0].shape));
+  EXPECT_LT((geoms[4].objects[0].X_WO.translation() - Vec3(2, -2, 0.2)).norm(), 1e-12);
+  EXPECT_EQ(geoms[5].type, "hfield");
+  EXPECT_NE(geoms[5].problem.find("a hfield: not supported in a scene"), std::string::npos) << geoms[5].problem;
+  EXPECT_TRUE(geoms[5].objects.empty());
   // a scenario taking the model's scene is refused, naming each geom and the way out
   const std::string refused = testing::ErrorOf([&] { Load("proxsim: 1\nrobot: {model: tilted.xml}\nsensors: []\n"); });
   EXPECT_NE(refused.find("robot.model: geom 'ramp' of the model's world body (its scene) is a plane that is not the ground"),
             std::string::npos)
       << refused;
   EXPECT_NE(refused.find("geom 'raised'"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("geom 'terrain' of the model's world body (its scene) is a hfield"), std::string::npos) << refused;
   EXPECT_NE(refused.find("robot.model_scene: ignore"), std::string::npos) << refused;
   // leaving it out, the robot walks in the scenario's scene alone
   const Scenario ignored = Load("proxsim: 1\nrobot: {model: tilted.xml, model_scene: ignore}\nsensors: []\n");

@@ -230,8 +230,8 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scene& scene,
                       SceneFromModel& from_model) {
   RobotConfig robot;
-  const auto map = reader.Map(field, {"model", "model_scene", "start", "gait", "path", "strategy", "stop_distance_m",
-                                       "trajectory", "geometry", "geom_group", "package_paths", "legs", "joints_deg",
+  const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
+                                       "geometry", "geom_group", "package_paths", "model_scene", "legs", "joints_deg",
                                        "on_collision", "locomotion"});
   if (!map) return robot;
 
