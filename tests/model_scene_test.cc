@@ -22,6 +22,7 @@
 #include "cli_helpers.h"
 #include "input_error_helpers.h"
 #include "mjcf_twin.h"
+#include "robot/mjcf_model.h"
 #include "robot/robot_model.h"
 #include "scenario/scenario.h"
 #include "sim/run_summary.h"
@@ -119,6 +120,33 @@ TEST_F(ModelSceneTest, TheRobotIsTheOneTreeAndTheWorldGeomsAreOfferedApart) {
   EXPECT_LT((geoms[2].objects[1].X_WO.translation() - Vec3(0.5, 0.8, 0.05)).norm(), 1e-9);
   EXPECT_LT((geoms[2].objects[2].X_WO.translation() - Vec3(0.5, 1.2, 0.05)).norm(), 1e-9);
   for (const ModelSceneGeom& geom : geoms) EXPECT_EQ(geom.problem, "") << geom.geom;
+}
+
+// A scenario compiles the model when it reads it only when the file's text
+// may give the world body geoms (a robot's own file is compiled once, by the
+// run): the scan agrees with what MuJoCo compiles, through frames, includes,
+// defaults and comments.
+TEST_F(ModelSceneTest, TheTextScanFindsWorldGeomsWhereMuJoCoDoes) {
+  Write("framed.xml", R"(<mujoco><include file="robot.xml"/><worldbody><frame pos="1 0 0">
+    <geom name="post" type="cylinder" size="0.05 0.5"/></frame></worldbody></mujoco>)");
+  Write("parts.xml", R"(<mujoco><geom name="slab" type="box" size="1 1 0.05" pos="0 0 -0.05"/></mujoco>)");
+  Write("included.xml", R"(<mujoco><include file="robot.xml"/><worldbody><include file="parts.xml"/></worldbody></mujoco>)");
+  Write("quiet.xml", R"(<mujoco><include file="robot.xml"/>
+    <default><geom type="box" size="0.1 0.1 0.1"/></default>
+    <worldbody><!-- <geom name="floor" type="plane" size="0 0 0.05"/> -->
+      <light name="sun" pos="0 0 5"/><body name="x" pos="9 9 9"/></worldbody></mujoco>)");
+  for (const auto& [file, has] : std::map<std::string, bool>{
+           {"robot.xml", false}, {"scene.xml", true}, {"framed.xml", true}, {"included.xml", true}, {"quiet.xml", false}}) {
+    EXPECT_EQ(MjcfMayHaveWorldGeoms((dir_ / file).string()), has) << file;
+    if (file == "quiet.xml") continue;  // (two bodies under its world: not a robot)
+    EXPECT_EQ(RobotModel::FromFile((dir_ / file).string()).scene_geoms().empty(), !has) << file;
+  }
+  // Menagerie's TALOS: its robot files give none, its scene files their floor
+  if (fs::is_regular_file(kTalosDir / "scene_position.xml")) {
+    for (const auto& [file, has] : std::map<std::string, bool>{
+             {"talos.xml", false}, {"talos_position.xml", false}, {"scene_position.xml", true}, {"scene_motor.xml", true}})
+      EXPECT_EQ(MjcfMayHaveWorldGeoms((kTalosDir / file).string()), has) << file;
+  }
 }
 
 TEST_F(ModelSceneTest, APlaneOffTheGroundIsNamedAndRefusedOnlyWhenTheSceneIsTaken) {

@@ -5,11 +5,13 @@
 
 #include <mujoco/mujoco.h>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -67,32 +69,97 @@ struct ModelDeleter {
 };
 using ModelPtr = std::unique_ptr<mjModel, ModelDeleter>;
 
+// The text of an MJCF file, when it is a regular file within the size limit
+std::optional<std::string> MjcfText(const std::filesystem::path& path) {
+  if (!RegularFileProblem(path.string(), kMaxUrdfBytes).empty()) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// The file an <include> tag starting at `at` names (beside `path`), or none
+// when its file="..." cannot be read before the tag's end
+std::optional<std::filesystem::path> IncludedFile(const std::filesystem::path& path, const std::string& text,
+                                                  std::size_t at) {
+  const std::size_t file = text.find("file=", at);
+  const std::size_t end_tag = text.find('>', at);
+  if (file == std::string::npos || file > end_tag || file + 6 >= text.size()) return std::nullopt;
+  const std::size_t close = text.find(text[file + 5], file + 6);
+  if (close == std::string::npos) return std::nullopt;
+  return path.parent_path() / text.substr(file + 6, close - file - 6);
+}
+
 // The <body> elements of an MJCF file and of the files it includes (each
 // once), counted before MuJoCo compiles them: its compile time and memory
 // grow faster than linearly with the count (20 000 bodies: 105 s and 1.8 GB).
 std::size_t CountMjcfBodies(const std::filesystem::path& path, std::set<std::string>& seen) {
   std::error_code error;
   const std::string key = std::filesystem::weakly_canonical(path, error).string();
-  if (!seen.insert(key).second || !RegularFileProblem(path.string(), kMaxUrdfBytes).empty()) return 0;
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  const std::string text = bytes.str();
+  if (!seen.insert(key).second) return 0;
+  const std::optional<std::string> text = MjcfText(path);
+  if (!text) return 0;
   std::size_t bodies = 0;
-  for (std::size_t at = text.find("<body"); at != std::string::npos; at = text.find("<body", at + 5)) {
-    const char next = at + 5 < text.size() ? text[at + 5] : '\0';
+  for (std::size_t at = text->find("<body"); at != std::string::npos; at = text->find("<body", at + 5)) {
+    const char next = at + 5 < text->size() ? (*text)[at + 5] : '\0';
     if (next == ' ' || next == '>' || next == '/' || next == '\t' || next == '\n' || next == '\r') ++bodies;
   }
-  for (std::size_t at = text.find("<include"); at != std::string::npos; at = text.find("<include", at + 8)) {
-    const std::size_t file = text.find("file=", at);
-    const std::size_t end_tag = text.find('>', at);
-    if (file == std::string::npos || file > end_tag || file + 6 >= text.size()) continue;
-    const char quote = text[file + 5];
-    const std::size_t close = text.find(quote, file + 6);
-    if (close == std::string::npos) continue;
-    bodies += CountMjcfBodies(path.parent_path() / text.substr(file + 6, close - file - 6), seen);
+  for (std::size_t at = text->find("<include"); at != std::string::npos; at = text->find("<include", at + 8)) {
+    if (const auto included = IncludedFile(path, *text, at)) bodies += CountMjcfBodies(*included, seen);
   }
   return bodies;
+}
+
+// The scan behind MjcfMayHaveWorldGeoms: the file's elements in order, the
+// bodies open under <worldbody> counted; `in_world` starts true for a file
+// included directly in <worldbody> (its elements are the world body's).
+bool ScanWorldGeoms(const std::filesystem::path& path, bool in_world, std::set<std::string>& seen) {
+  std::error_code error;
+  const std::string key = std::filesystem::weakly_canonical(path, error).string();
+  if (!seen.insert(key + (in_world ? "\n1" : "\n0")).second) return false;
+  const std::optional<std::string> read = MjcfText(path);
+  if (!read) return true;  // unread: it may
+  const std::string& text = *read;
+  int bodies = 0;  // open under <worldbody>
+  for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at + 1)) {
+    // comments, declarations and processing instructions hold no elements
+    if (text.compare(at, 4, "<!--") == 0) {
+      at = text.find("-->", at);
+      if (at == std::string::npos) break;
+      continue;
+    }
+    if (text.compare(at, 2, "<?") == 0 || text.compare(at, 2, "<!") == 0) continue;
+    const bool closing = text.compare(at, 2, "</") == 0;
+    std::size_t name_end = at + (closing ? 2 : 1);
+    while (name_end < text.size() && (std::isalnum(static_cast<unsigned char>(text[name_end])) != 0 ||
+                                      text[name_end] == '_' || text[name_end] == '-'))
+      ++name_end;
+    const std::string name = text.substr(at + (closing ? 2 : 1), name_end - at - (closing ? 2 : 1));
+    // the tag's end, past quoted attribute values
+    std::size_t end = name_end;
+    for (char quote = 0; end < text.size() && (quote != 0 || text[end] != '>'); ++end) {
+      if (quote == 0 && (text[end] == '"' || text[end] == '\'')) quote = text[end];
+      else if (quote != 0 && text[end] == quote) quote = 0;
+    }
+    const bool empty = end > 0 && end < text.size() && text[end - 1] == '/';
+    if (closing) {
+      if (name == "worldbody") in_world = false;
+      if (name == "body" && bodies > 0) --bodies;
+    } else if (name == "worldbody") {
+      in_world = !empty;
+      bodies = 0;
+    } else if (in_world && name == "body") {
+      bodies += empty ? 0 : 1;
+    } else if (in_world && bodies == 0 && (name == "geom" || name == "attach" || name == "composite" || name == "flexcomp")) {
+      return true;
+    } else if (name == "include") {
+      // an included file's elements stand where it is included
+      const auto included = IncludedFile(path, text, at);
+      if (!included || ScanWorldGeoms(*included, in_world && bodies == 0, seen)) return true;
+    }
+    at = end;
+  }
+  return false;
 }
 
 ModelPtr LoadCompiled(const std::string& path) {
@@ -236,6 +303,11 @@ std::vector<ModelSceneGeom> WorldGeoms(const mjModel* m) {
 }
 
 }  // namespace
+
+bool MjcfMayHaveWorldGeoms(const std::string& path) {
+  std::set<std::string> seen;
+  return ScanWorldGeoms(path, false, seen);
+}
 
 // The tables are filled here, in body order (MuJoCo numbers a body after its
 // parent), so that joints come parents first as forward kinematics needs.

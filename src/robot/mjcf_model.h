@@ -67,6 +67,13 @@ constexpr int kEllipsoidRings = 48;
 inline const double kEllipsoidMeshDepth =
     1.0 - std::sqrt(1.0 - 0.5 * (3.14159265358979323846 / kEllipsoidRings) * (3.14159265358979323846 / kEllipsoidRings));
 
+/// Whether an MJCF file may give its world body geoms of its own (a scene
+/// file's floor and furniture), read from its text and its includes' without
+/// compiling it: false only when none can be — no <geom> under <worldbody>
+/// outside every <body> (through <frame>, <replicate> and <include>); an
+/// <attach>, <composite> or <flexcomp> there, or a file it cannot read, is a yes.
+bool MjcfMayHaveWorldGeoms(const std::string& path);
+
 /// The ellipsoid of semi-axes `radii` (x, y, z) centred on its frame, as a
 /// closed triangle mesh with outward faces.
 std::shared_ptr<const TriangleMesh> EllipsoidMesh(const Vec3& radii);

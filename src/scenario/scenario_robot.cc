@@ -15,6 +15,7 @@
 
 #include "core/input_error.h"
 #include "core/nearest_key.h"
+#include "robot/mjcf_model.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
@@ -135,10 +136,14 @@ Perception ReadPerception(YamlReader& reader, const Field& field) {
 // The world geoms of an MJCF that includes the robot (a scene file), read
 // with the model now: added to the scene as objects `model:GEOM` after its
 // own, the ground plane only when the scene has no ground yet (else left out:
-// the scene's ground stands for it). The model read is kept for the run.
+// the scene's ground stands for it). The model read is kept for the run (a
+// scenario is read again for each run of a study: its robot's own file is not
+// compiled then, only a file whose text may give the world body geoms).
 void TakeModelScene(YamlReader& reader, const Field& model_field, RobotConfig& robot, Scene& scene,
                     SceneFromModel& from_model) {
   if (robot.model.empty() || robot.model.starts_with(kBuiltinPrefix) || !RobotModel::IsMjcfFile(robot.model)) return;
+  // (a robot's own file, without world geoms, is read once, when the run builds it)
+  if (robot.model_scene == ModelScene::kIgnore || !MjcfMayHaveWorldGeoms(robot.model)) return;
   const UrdfOptions options{.geometry = robot.geometry, .package_paths = robot.package_paths, .geom_group = robot.geom_group};
   try {
     robot.model_read = std::make_shared<const RobotModel>(RobotModel::FromMjcfFile(robot.model, options));
@@ -146,7 +151,6 @@ void TakeModelScene(YamlReader& reader, const Field& model_field, RobotConfig& r
   } catch (const InputError&) {
     return;  // the robot's own problems, reported where it is built (with the scenario's, or by the run)
   }
-  if (robot.model_scene == ModelScene::kIgnore) return;
   bool has_ground = std::ranges::any_of(scene.objects, [](const SceneObject& o) { return o.ground; });
   std::set<std::string> names;
   for (const SceneObject& object : scene.objects) names.insert(object.name);
