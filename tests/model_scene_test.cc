@@ -135,8 +135,15 @@ TEST_F(ModelSceneTest, TheTextScanFindsWorldGeomsWhereMuJoCoDoes) {
     <default><geom type="box" size="0.1 0.1 0.1"/></default>
     <worldbody><!-- <geom name="floor" type="plane" size="0 0 0.05"/> -->
       <light name="sun" pos="0 0 5"/><body name="x" pos="9 9 9"/></worldbody></mujoco>)");
-  for (const auto& [file, has] : std::map<std::string, bool>{
-           {"robot.xml", false}, {"scene.xml", true}, {"framed.xml", true}, {"included.xml", true}, {"quiet.xml", false}}) {
+  // (a static body fused into the world body: its geoms are the world's)
+  Write("fused.xml", R"(<mujoco><compiler fusestatic="true"/><include file="robot.xml"/><worldbody>
+    <body name="table" pos="2 0 0.4"><geom type="box" size="0.4 0.4 0.02"/></body></worldbody></mujoco>)");
+  for (const auto& [file, has] : std::map<std::string, bool>{{"robot.xml", false},
+                                                             {"scene.xml", true},
+                                                             {"framed.xml", true},
+                                                             {"included.xml", true},
+                                                             {"fused.xml", true},
+                                                             {"quiet.xml", false}}) {
     EXPECT_EQ(MjcfMayHaveWorldGeoms((dir_ / file).string()), has) << file;
     if (file == "quiet.xml") continue;  // (two bodies under its world: not a robot)
     EXPECT_EQ(RobotModel::FromFile((dir_ / file).string()).scene_geoms().empty(), !has) << file;

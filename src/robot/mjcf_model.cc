@@ -152,6 +152,8 @@ bool ScanWorldGeoms(const std::filesystem::path& path, bool in_world, std::set<s
       bodies += empty ? 0 : 1;
     } else if (in_world && bodies == 0 && (name == "geom" || name == "attach" || name == "composite" || name == "flexcomp")) {
       return true;
+    } else if (name == "compiler" && text.substr(at, end - at).find("fusestatic") != std::string::npos) {
+      return true;  // static bodies may be fused into the world body
     } else if (name == "include") {
       // an included file's elements stand where it is included
       const auto included = IncludedFile(path, text, at);

@@ -71,7 +71,8 @@ inline const double kEllipsoidMeshDepth =
 /// file's floor and furniture), read from its text and its includes' without
 /// compiling it: false only when none can be — no <geom> under <worldbody>
 /// outside every <body> (through <frame>, <replicate> and <include>); an
-/// <attach>, <composite> or <flexcomp> there, or a file it cannot read, is a yes.
+/// <attach>, <composite> or <flexcomp> there, a compiler's `fusestatic`, or a
+/// file it cannot read, is a yes.
 bool MjcfMayHaveWorldGeoms(const std::string& path);
 
 /// The ellipsoid of semi-axes `radii` (x, y, z) centred on its frame, as a
