@@ -165,10 +165,20 @@ TEST(PitchedSole, WalkedFlatAtThePitchItsGeometryLiesFlattestOrAtAnkleZeroDeg) {
   fs::remove_all(pitched_dir / "out");
   const WalkRun original = Walk(original_dir, kBipedUrdf.string());
   const Eigen::Quaterniond pitched_by(Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()));
-  // given its pitch, and not given (found from the geometry), it walks with its sole flat, as the original
-  for (const std::string& legs : {with_zero("10"), legs_without}) {
+  // given its pitch, found from the geometry under a leg map or with no map
+  // at all, it walks with its sole flat, as the original; summary.json's
+  // robot.gait says the pitch the gait used for each foot (the original's 0)
+  ASSERT_EQ(original.exit_code, 0) << original.output;
+  for (const char* side : {"left", "right"})
+    EXPECT_EQ(original.robot["gait"]["ankle_zero_deg"][side].get<double>(), 0.0) << original.robot["gait"].dump();
+  for (const std::string& legs : {with_zero("10"), legs_without, std::string()}) {
     const WalkRun pitched = Walk(pitched_dir, "biped_pitched.urdf", legs);
     ExpectTheSameWalk(original, pitched, pitched_by);
+    for (const char* side : {"left", "right"}) {
+      // given: 10 exactly (a degree turned to radians and back); found: the 0.1 deg scan's
+      EXPECT_NEAR(pitched.robot["gait"]["ankle_zero_deg"][side].get<double>(), 10.0, legs.find("ankle_zero_deg") != std::string::npos ? 1e-9 : 0.05)
+          << side << ": " << pitched.robot["gait"].dump();
+    }
     fs::remove_all(pitched_dir / "out");
   }
   // `proxsim inspect` says the pitch it found, as the key that would give it; the original has none

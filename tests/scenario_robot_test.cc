@@ -99,6 +99,7 @@ scene:
   objects: [{name: crate, box: {size_m: [0.6, 0.6, 0.1]}, pose: {xyz_m: [0, 0, 0.05]}}]
 robot:
   model: robot.urdf
+  model_scene: ignore
   geometry: collision
   geom_group: 3
   package_paths: [/tmp]
@@ -115,6 +116,7 @@ robot:
 )",
                                       Source());
   const nlohmann::json robot = InputsJson(s)["robot"];
+  EXPECT_EQ(robot["model_scene"], "ignore");
   EXPECT_EQ(robot["geometry"], "collision");
   EXPECT_EQ(robot["geom_group"], 3);
   EXPECT_EQ(robot["package_paths"], nlohmann::json::array({"/tmp"}));
@@ -139,6 +141,7 @@ robot:
   // the defaults are echoed as such, not left out
   const nlohmann::json plain = InputsJson(LoadScenarioText("proxsim: 1\nrobot: {model: robot.urdf}\n", Source()))["robot"];
   EXPECT_EQ(plain["on_collision"], "stop");
+  EXPECT_EQ(plain["model_scene"], "include");
   EXPECT_EQ(plain["gait"]["unsafe_steps"], "fall");
   EXPECT_EQ(plain["gait"]["footholds"], "truth");
   EXPECT_TRUE(plain["gait"]["max_step_m"].is_null());  // from the legs

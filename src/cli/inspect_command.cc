@@ -51,6 +51,28 @@ nlohmann::json KeyframesJson(const RobotModel& model) {
   return keys;
 }
 
+// the world body's geoms of an MJCF scene file: what a scenario takes as scene objects
+nlohmann::json ModelSceneJson(const RobotModel& model) {
+  nlohmann::json geoms = nlohmann::json::array();
+  for (const ModelSceneGeom& geom : model.scene_geoms()) {
+    nlohmann::json objects = nlohmann::json::array();
+    for (const SceneObject& object : geom.objects) {
+      objects.push_back({{"name", object.name},
+                         {"shape", ShapeKindName(object.shape)},
+                         {"xyz_m", VecJson(object.X_WO.translation())},
+                         {"rpy_deg", VecJson(RpyFromRotation(object.X_WO.linear()) * (180.0 / kPi))},
+                         {"ground", object.ground}});
+    }
+    geoms.push_back({{"geom", geom.geom},
+                     {"type", geom.type},
+                     {"group", geom.group},
+                     {"ground_plane", geom.ground_plane},
+                     {"objects", objects},
+                     {"problem", geom.problem.empty() ? nlohmann::json(nullptr) : nlohmann::json(geom.problem)}});
+  }
+  return geoms;
+}
+
 nlohmann::json InspectJson(const RobotModel& model, const RobotSummary& summary, const LegMapSuggestion& legs) {
   nlohmann::json json = {{"proxsim_inspect", 1},
                          {"robot", {{"name", model.name()},
@@ -122,6 +144,7 @@ nlohmann::json InspectJson(const RobotModel& model, const RobotSummary& summary,
   }
   for (const std::string& problem : legs.problems) why.push_back(problem);
   json["legs"] = map;
+  json["model_scene"] = ModelSceneJson(model);
   json["legs_accepted"] = legs.accepted;
   json["legs_problems"] = why;
   json["shanks"] = shanks;
@@ -135,6 +158,29 @@ std::string Vec(const Vec3& v) {
   return text;
 }
 
+// an MJCF scene file: the robot is the world body's one tree, its other geoms the scene offered
+void PrintModelScene(const RobotModel& model) {
+  if (model.scene_geoms().empty()) return;
+  std::printf("the robot is the tree under the world body from '%s'; the world body's %zu geom(s) are a scene, not "
+              "the robot: a scenario takes them as scene objects (robot.model_scene: include, the default), the "
+              "ground plane only when its scene has no ground of its own:\n",
+              model.link_name(model.root_link()).c_str(), model.scene_geoms().size());
+  for (const ModelSceneGeom& geom : model.scene_geoms()) {
+    std::printf("  %s (%s, group %d): ", geom.geom.c_str(), geom.type.c_str(), geom.group);
+    if (!geom.problem.empty()) {
+      std::printf("not taken: %s\n", geom.problem.c_str());
+      continue;
+    }
+    if (geom.ground_plane) std::printf("the ground (z = 0, facing up), ");
+    for (std::size_t i = 0; i < geom.objects.size(); ++i) {
+      const SceneObject& object = geom.objects[i];
+      std::printf("%sscene object '%s', a %s at %s m", i == 0 ? "" : "; ", object.name.c_str(), ShapeKindName(object.shape),
+                  Vec(object.X_WO.translation()).c_str());
+    }
+    std::printf("\n");
+  }
+}
+
 void PrintText(const RobotModel& model, const RobotSummary& summary, const LegMapSuggestion& legs) {
   std::printf("robot '%s' (%s): %d links, %d joints, %.2f kg, %zu mesh files\n", model.name().c_str(),
               model.source().c_str(), model.link_count(), model.joint_count(), model.TotalMass_kg(),
@@ -142,6 +188,7 @@ void PrintText(const RobotModel& model, const RobotSummary& summary, const LegMa
   if (!model.loader().empty()) std::printf("read through %s (what it compiled)\n", model.loader().c_str());
   std::printf("reference pose: every joint at 0, the root link '%s' at the world origin (x forward, y left, z up)\n",
               model.link_name(model.root_link()).c_str());
+  PrintModelScene(model);
   for (const RobotKeyframe& key : model.keyframes()) {
     std::printf("keyframe '%s'", key.name.c_str());
     if (key.has_root) std::printf(": root at z %.4f m", key.X_WRoot.translation().z());

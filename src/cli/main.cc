@@ -251,9 +251,16 @@ int Validate(const std::string& scenario_path) {
   const proxsim::Scenario scenario = proxsim::LoadScenarioFile(scenario_path);
   // the robot, its trajectory and the sensors' links, as a run would check them
   const proxsim::Simulation simulation(scenario, 1);
-  std::printf("%s: valid (%zu objects, %zu sensors, %lld samples)\n", scenario_path.c_str(),
-              scenario.scene.objects.size(), scenario.sensors.size(),
+  // (with an MJCF scene file as the robot: how many objects it brought, and whether its floor was left out)
+  const proxsim::SceneFromModel& from_model = scenario.scene_from_model;
+  const std::string brought =
+      from_model.objects.empty() ? "" : ", " + std::to_string(from_model.objects.size()) + " from the robot's model file";
+  std::printf("%s: valid (%zu objects%s, %zu sensors, %lld samples)\n", scenario_path.c_str(),
+              scenario.scene.objects.size(), brought.c_str(), scenario.sensors.size(),
               static_cast<long long>(scenario.SampleCount()));
+  if (!from_model.ground_left_out.empty())
+    std::printf("  the model file's ground plane '%s' is left out: the scene's own ground stands for it\n",
+                from_model.ground_left_out.c_str());
   return 0;
 }
 

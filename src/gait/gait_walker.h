@@ -100,7 +100,7 @@ class GaitWalker : public Locomotion {
   std::vector<FootFrame> Feet() const override;
   std::optional<GaitCycle> gait_cycle() const override {
     return GaitCycle{achieved_stride_m_, gait_.period_s, max_step_m_, legs_->crouch_knee_rad(), pelvis_height_m_,
-                     k_target_};
+                     k_target_, {legs_->leg(Side::kLeft).foot0_rad, legs_->leg(Side::kRight).foot0_rad}};
   }
   void SetTerrain(const TerrainQuery* ground, const TerrainQuery* footholds = nullptr) override;
   std::vector<LocomotionEvent> TakeEvents() override;

@@ -4,6 +4,7 @@
 // for a new episode. Strategies command it through strategy/RobotCommands.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,9 @@ struct GaitCycle {
   double crouch_knee_rad = 0;  ///< the stance knee bend added to the curves (0: straight-kneed)
   double pelvis_height_m = 0;  ///< root link above the floor at heel strike on level ground, walking so
   double amplitude = 0;        ///< the curves' amplitude k for the stride (1: the normative adult walk)
+  /// each foot's pitch at joint zero the gait walks flat (left, right; toe up
+  /// positive): `legs.*.ankle_zero_deg` as given, or found from the sole's geometry
+  std::array<double, 2> ankle_zero_rad{0, 0};
 };
 
 /// Something the motion noticed or decided (a step it cannot take), for

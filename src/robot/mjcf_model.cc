@@ -5,11 +5,13 @@
 
 #include <mujoco/mujoco.h>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -67,32 +69,99 @@ struct ModelDeleter {
 };
 using ModelPtr = std::unique_ptr<mjModel, ModelDeleter>;
 
+// The text of an MJCF file, when it is a regular file within the size limit
+std::optional<std::string> MjcfText(const std::filesystem::path& path) {
+  if (!RegularFileProblem(path.string(), kMaxUrdfBytes).empty()) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// The file an <include> tag starting at `at` names (beside `path`), or none
+// when its file="..." cannot be read before the tag's end
+std::optional<std::filesystem::path> IncludedFile(const std::filesystem::path& path, const std::string& text,
+                                                  std::size_t at) {
+  const std::size_t file = text.find("file=", at);
+  const std::size_t end_tag = text.find('>', at);
+  if (file == std::string::npos || file > end_tag || file + 6 >= text.size()) return std::nullopt;
+  const std::size_t close = text.find(text[file + 5], file + 6);
+  if (close == std::string::npos) return std::nullopt;
+  return path.parent_path() / text.substr(file + 6, close - file - 6);
+}
+
 // The <body> elements of an MJCF file and of the files it includes (each
 // once), counted before MuJoCo compiles them: its compile time and memory
 // grow faster than linearly with the count (20 000 bodies: 105 s and 1.8 GB).
 std::size_t CountMjcfBodies(const std::filesystem::path& path, std::set<std::string>& seen) {
   std::error_code error;
   const std::string key = std::filesystem::weakly_canonical(path, error).string();
-  if (!seen.insert(key).second || !RegularFileProblem(path.string(), kMaxUrdfBytes).empty()) return 0;
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  const std::string text = bytes.str();
+  if (!seen.insert(key).second) return 0;
+  const std::optional<std::string> text = MjcfText(path);
+  if (!text) return 0;
   std::size_t bodies = 0;
-  for (std::size_t at = text.find("<body"); at != std::string::npos; at = text.find("<body", at + 5)) {
-    const char next = at + 5 < text.size() ? text[at + 5] : '\0';
+  for (std::size_t at = text->find("<body"); at != std::string::npos; at = text->find("<body", at + 5)) {
+    const char next = at + 5 < text->size() ? (*text)[at + 5] : '\0';
     if (next == ' ' || next == '>' || next == '/' || next == '\t' || next == '\n' || next == '\r') ++bodies;
   }
-  for (std::size_t at = text.find("<include"); at != std::string::npos; at = text.find("<include", at + 8)) {
-    const std::size_t file = text.find("file=", at);
-    const std::size_t end_tag = text.find('>', at);
-    if (file == std::string::npos || file > end_tag || file + 6 >= text.size()) continue;
-    const char quote = text[file + 5];
-    const std::size_t close = text.find(quote, file + 6);
-    if (close == std::string::npos) continue;
-    bodies += CountMjcfBodies(path.parent_path() / text.substr(file + 6, close - file - 6), seen);
+  for (std::size_t at = text->find("<include"); at != std::string::npos; at = text->find("<include", at + 8)) {
+    if (const auto included = IncludedFile(path, *text, at)) bodies += CountMjcfBodies(*included, seen);
   }
   return bodies;
+}
+
+// The scan behind MjcfMayHaveWorldGeoms: the file's elements in order, the
+// bodies open under <worldbody> counted; `in_world` starts true for a file
+// included directly in <worldbody> (its elements are the world body's).
+bool ScanWorldGeoms(const std::filesystem::path& path, bool in_world, std::set<std::string>& seen) {
+  std::error_code error;
+  const std::string key = std::filesystem::weakly_canonical(path, error).string();
+  if (!seen.insert(key + (in_world ? "\n1" : "\n0")).second) return false;
+  const std::optional<std::string> read = MjcfText(path);
+  if (!read) return true;  // unread: it may
+  const std::string& text = *read;
+  int bodies = 0;  // open under <worldbody>
+  for (std::size_t at = text.find('<'); at != std::string::npos; at = text.find('<', at + 1)) {
+    // comments, declarations and processing instructions hold no elements
+    if (text.compare(at, 4, "<!--") == 0) {
+      at = text.find("-->", at);
+      if (at == std::string::npos) break;
+      continue;
+    }
+    if (text.compare(at, 2, "<?") == 0 || text.compare(at, 2, "<!") == 0) continue;
+    const bool closing = text.compare(at, 2, "</") == 0;
+    std::size_t name_end = at + (closing ? 2 : 1);
+    while (name_end < text.size() && (std::isalnum(static_cast<unsigned char>(text[name_end])) != 0 ||
+                                      text[name_end] == '_' || text[name_end] == '-'))
+      ++name_end;
+    const std::string name = text.substr(at + (closing ? 2 : 1), name_end - at - (closing ? 2 : 1));
+    // the tag's end, past quoted attribute values
+    std::size_t end = name_end;
+    for (char quote = 0; end < text.size() && (quote != 0 || text[end] != '>'); ++end) {
+      if (quote == 0 && (text[end] == '"' || text[end] == '\'')) quote = text[end];
+      else if (quote != 0 && text[end] == quote) quote = 0;
+    }
+    const bool empty = end > 0 && end < text.size() && text[end - 1] == '/';
+    if (closing) {
+      if (name == "worldbody") in_world = false;
+      if (name == "body" && bodies > 0) --bodies;
+    } else if (name == "worldbody") {
+      in_world = !empty;
+      bodies = 0;
+    } else if (in_world && name == "body") {
+      bodies += empty ? 0 : 1;
+    } else if (in_world && bodies == 0 && (name == "geom" || name == "attach" || name == "composite" || name == "flexcomp")) {
+      return true;
+    } else if (name == "compiler" && text.substr(at, end - at).find("fusestatic") != std::string::npos) {
+      return true;  // static bodies may be fused into the world body
+    } else if (name == "include") {
+      // an included file's elements stand where it is included
+      const auto included = IncludedFile(path, text, at);
+      if (!included || ScanWorldGeoms(*included, in_world && bodies == 0, seen)) return true;
+    }
+    at = end;
+  }
+  return false;
 }
 
 ModelPtr LoadCompiled(const std::string& path) {
@@ -149,11 +218,98 @@ const char* GeomTypeName(int type) {
     case mjGEOM_CYLINDER: return "cylinder";
     case mjGEOM_BOX: return "box";
     case mjGEOM_MESH: return "mesh";
+    case mjGEOM_SDF: return "sdf";
     default: return "unknown";
   }
 }
 
+using MeshCache = std::map<int, std::shared_ptr<const TriangleMesh>>;  // by MuJoCo mesh id, shared by its geoms
+
+// A geom's proxsim shapes in its body's frame (a capsule's surface is a
+// cylinder's side and a sphere at each end); none for a type proxsim does
+// not take on a body (a plane, a height field)
+std::vector<LinkShape> GeomShapes(const mjModel* m, int g, MeshCache& meshes) {
+  const Pose X_BO = PoseOf(m->geom_pos + 3 * g, m->geom_quat + 4 * g);
+  const mjtNum* size = m->geom_size + 3 * g;
+  switch (m->geom_type[g]) {
+    case mjGEOM_BOX: return {{Box{2.0 * Vec3(size[0], size[1], size[2])}, X_BO}};
+    case mjGEOM_SPHERE: return {{Sphere{size[0]}, X_BO}};
+    case mjGEOM_CYLINDER: return {{Cylinder{size[0], 2.0 * size[1]}, X_BO}};
+    case mjGEOM_CAPSULE:
+      return {{Cylinder{size[0], 2.0 * size[1]}, X_BO},
+              {Sphere{size[0]}, X_BO * Translation(Vec3(0, 0, size[1]))},
+              {Sphere{size[0]}, X_BO * Translation(Vec3(0, 0, -size[1]))}};
+    case mjGEOM_ELLIPSOID:
+      return {{Mesh{.file = "ellipsoid", .data = EllipsoidMesh(Vec3(size[0], size[1], size[2]))}, X_BO}};
+    case mjGEOM_MESH: {
+      const int id = m->geom_dataid[g];
+      auto& data = meshes[id];
+      if (!data) {
+        auto mesh = std::make_shared<TriangleMesh>();
+        for (int v = m->mesh_vertadr[id]; v < m->mesh_vertadr[id] + m->mesh_vertnum[id]; ++v)
+          mesh->vertices_O.emplace_back(m->mesh_vert[3 * v], m->mesh_vert[3 * v + 1], m->mesh_vert[3 * v + 2]);
+        for (int f = m->mesh_faceadr[id]; f < m->mesh_faceadr[id] + m->mesh_facenum[id]; ++f) {
+          mesh->triangles.push_back({static_cast<std::uint32_t>(m->mesh_face[3 * f]),
+                                     static_cast<std::uint32_t>(m->mesh_face[3 * f + 1]),
+                                     static_cast<std::uint32_t>(m->mesh_face[3 * f + 2])});
+        }
+        data = std::move(mesh);
+      }
+      return {{Mesh{.file = NameOf(m, mjOBJ_MESH, id, "mesh"), .data = data}, X_BO}};
+    }
+    default: return {};
+  }
+}
+
+// The world body's geoms: the scene a scene file draws around the robot.
+// Each becomes scene objects named model:GEOM in the world frame (a
+// capsule's ends model:GEOM:top and model:GEOM:bottom, along its own +z and
+// −z); the plane z = 0 facing up is the ground; any other plane, and what
+// proxsim has no shape for, is named as not taken.
+std::vector<ModelSceneGeom> WorldGeoms(const mjModel* m) {
+  std::vector<ModelSceneGeom> geoms;
+  MeshCache meshes;
+  for (int k = 0; k < m->body_geomnum[0]; ++k) {
+    const int g = m->body_geomadr[0] + k;
+    const char* name = mj_id2name(m, mjOBJ_GEOM, g);
+    ModelSceneGeom geom{.geom = name != nullptr && name[0] != '\0' ? std::string(name) : "geom_" + std::to_string(k),
+                        .type = GeomTypeName(m->geom_type[g]),
+                        .group = m->geom_group[g]};
+    const std::string object = "model:" + geom.geom;
+    if (m->geom_type[g] == mjGEOM_PLANE) {
+      // the ground: the plane through the origin facing +z, whatever its drawn size (MuJoCo's contacts take a plane as unbounded)
+      const Pose X_WO = PoseOf(m->geom_pos + 3 * g, m->geom_quat + 4 * g);
+      const Vec3 normal_W = X_WO.linear().col(2);
+      if ((normal_W - Vec3::UnitZ()).norm() < 1e-9 && std::abs(X_WO.translation().z()) < 1e-9) {
+        geom.ground_plane = true;
+        geom.objects.push_back(SceneObject{.name = object, .shape = Plane{}, .ground = true});
+      } else {
+        geom.problem = "a plane that is not the ground (z = 0, facing up): proxsim takes a model's plane only as its "
+                       "ground; give it in the scenario's scene (a plane object with its pose, or a box)";
+      }
+      geoms.push_back(std::move(geom));
+      continue;
+    }
+    const std::vector<LinkShape> shapes = GeomShapes(m, g, meshes);
+    if (shapes.empty()) {
+      geom.problem = "a " + geom.type + ": not supported in a scene (box, sphere, capsule, cylinder, ellipsoid, mesh "
+                     "and the ground plane are)";
+    }
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      const char* part = shapes.size() == 1 ? "" : i == 0 ? "" : i == 1 ? ":top" : ":bottom";
+      geom.objects.push_back(SceneObject{.name = object + part, .shape = shapes[i].shape, .X_WO = shapes[i].X_LO});
+    }
+    geoms.push_back(std::move(geom));
+  }
+  return geoms;
+}
+
 }  // namespace
+
+bool MjcfMayHaveWorldGeoms(const std::string& path) {
+  std::set<std::string> seen;
+  return ScanWorldGeoms(path, false, seen);
+}
 
 // The tables are filled here, in body order (MuJoCo numbers a body after its
 // parent), so that joints come parents first as forward kinematics needs.
@@ -196,11 +352,6 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
       problems.push_back(where + "body '" + NameOf(m, mjOBJ_BODY, b, "body") + "' is a mocap body: not supported");
     }
   }
-  for (int g = m->body_geomadr[0]; m->body_geomnum[0] > 0 && g < m->body_geomadr[0] + m->body_geomnum[0]; ++g) {
-    problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' (" + GeomTypeName(m->geom_type[g]) +
-                       ") belongs to the world body: the scene goes in the scenario's scene (load the robot's own "
-                       "file, not a scene that includes it)");
-  }
   if (roots.size() != 1) {
     std::string names;
     for (const int b : roots) names += (names.empty() ? "'" : ", '") + NameOf(m, mjOBJ_BODY, b, "body") + "'";
@@ -237,7 +388,7 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
   // bodies: each a link; its joints between it and its parent's link
   std::vector<int> link_of_body(m->nbody, -1);
   std::map<int, int> mujoco_joint_of;  // proxsim's moving joint -> MuJoCo's joint id (for keyframes)
-  std::map<int, std::shared_ptr<const TriangleMesh>> meshes;  // by MuJoCo mesh id, shared by the geoms using it
+  MeshCache meshes;
   for (int b = roots[0]; b < m->nbody; ++b) {
     const std::string body = NameOf(m, mjOBJ_BODY, b, "body");
     const bool root = b == roots[0];
@@ -315,44 +466,14 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
     // its geoms of the group chosen
     for (int g = m->body_geomadr[b]; m->body_geomnum[b] > 0 && g < m->body_geomadr[b] + m->body_geomnum[b]; ++g) {
       if (options.geom_group >= 0 && m->geom_group[g] != options.geom_group) continue;
-      const Pose X_LO = PoseOf(m->geom_pos + 3 * g, m->geom_quat + 4 * g);
-      const mjtNum* size = m->geom_size + 3 * g;
-      auto& shapes = model.links_[link].shapes;
-      switch (m->geom_type[g]) {
-        case mjGEOM_BOX: shapes.push_back({Box{2.0 * Vec3(size[0], size[1], size[2])}, X_LO}); break;
-        case mjGEOM_SPHERE: shapes.push_back({Sphere{size[0]}, X_LO}); break;
-        case mjGEOM_CYLINDER: shapes.push_back({Cylinder{size[0], 2.0 * size[1]}, X_LO}); break;
-        case mjGEOM_CAPSULE:
-          // a capsule's surface is a cylinder's side and a sphere at each end
-          shapes.push_back({Cylinder{size[0], 2.0 * size[1]}, X_LO});
-          shapes.push_back({Sphere{size[0]}, X_LO * Translation(Vec3(0, 0, size[1]))});
-          shapes.push_back({Sphere{size[0]}, X_LO * Translation(Vec3(0, 0, -size[1]))});
-          break;
-        case mjGEOM_ELLIPSOID:
-          shapes.push_back({Mesh{.file = "ellipsoid", .data = EllipsoidMesh(Vec3(size[0], size[1], size[2]))}, X_LO});
-          break;
-        case mjGEOM_MESH: {
-          const int id = m->geom_dataid[g];
-          auto& data = meshes[id];
-          if (!data) {
-            auto mesh = std::make_shared<TriangleMesh>();
-            for (int v = m->mesh_vertadr[id]; v < m->mesh_vertadr[id] + m->mesh_vertnum[id]; ++v)
-              mesh->vertices_O.emplace_back(m->mesh_vert[3 * v], m->mesh_vert[3 * v + 1], m->mesh_vert[3 * v + 2]);
-            for (int f = m->mesh_faceadr[id]; f < m->mesh_faceadr[id] + m->mesh_facenum[id]; ++f) {
-              mesh->triangles.push_back({static_cast<std::uint32_t>(m->mesh_face[3 * f]),
-                                         static_cast<std::uint32_t>(m->mesh_face[3 * f + 1]),
-                                         static_cast<std::uint32_t>(m->mesh_face[3 * f + 2])});
-            }
-            data = std::move(mesh);
-          }
-          shapes.push_back({Mesh{.file = NameOf(m, mjOBJ_MESH, id, "mesh"), .data = data}, X_LO});
-          break;
-        }
-        default:
-          problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' of body '" + body + "' is a " +
-                             GeomTypeName(m->geom_type[g]) +
-                             ": not supported on a robot (box, sphere, capsule, cylinder, ellipsoid and mesh are)");
+      std::vector<LinkShape> shapes = GeomShapes(m, g, meshes);
+      if (shapes.empty()) {
+        problems.push_back(where + "geom '" + NameOf(m, mjOBJ_GEOM, g, "geom") + "' of body '" + body + "' is a " +
+                           GeomTypeName(m->geom_type[g]) +
+                           ": not supported on a robot (box, sphere, capsule, cylinder, ellipsoid and mesh are)");
       }
+      auto& link_shapes = model.links_[link].shapes;
+      link_shapes.insert(link_shapes.end(), std::make_move_iterator(shapes.begin()), std::make_move_iterator(shapes.end()));
     }
   }
 
@@ -383,6 +504,7 @@ RobotModel RobotModel::FromMjcfFile(const std::string& path, const UrdfOptions& 
     model.keyframes_.push_back(std::move(key));
   }
   model.loader_ = std::string("MuJoCo ") + mj_versionString();
+  model.scene_geoms_ = WorldGeoms(m);
 
   // forward kinematics in joint order: each joint was added after its parent link was reached
   model.root_link_ = 0;

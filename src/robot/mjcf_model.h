@@ -24,6 +24,16 @@
 //  - each site becomes a link of its name, fixed to its body (`site:SITE`),
 //    so that a sensor may mount on it (`link: SITE`).
 //
+//  - the world body's geoms (a scene file that includes the robot, such as
+//    Menagerie's scene.xml: a floor, furniture) are not the robot: they are
+//    kept apart (RobotModel::scene_geoms), converted as a body's are (every
+//    group), each a scene object `model:GEOM` in the world frame (unnamed:
+//    `model:geom_K`, K its place among the world's geoms; a capsule's ends
+//    `model:GEOM:top` and `:bottom`). The plane z = 0 facing up is the
+//    ground, whatever its drawn size (MuJoCo's contacts take a plane as
+//    unbounded); another plane, a height field or an sdf is named as not
+//    taken, refused only by a scenario that takes the model's scene;
+//
 //  - joint couplings (<equality><joint>) that hold at the reference pose are
 //    kept (proxsim holds the joints the gait does not drive there);
 //  - keyframes become RobotKeyframe (each joint's qpos, the root's pose).
@@ -32,8 +42,8 @@
 // proxsim cannot follow, is an InputError naming it: ball joints, free joints
 // below the root, joints attaching the root to the world, equality
 // constraints other than joint couplings (or a coupling the reference pose
-// breaks), mocap bodies, skins, plane and height-field geoms, geoms of the
-// world body, several trees under the world. What does not change it
+// breaks), mocap bodies, skins, plane and height-field geoms on a body,
+// several trees under the world. What does not change it
 // (actuators, MuJoCo sensors, tendons, contacts, visuals) is not read:
 // proxsim is kinematic.
 #pragma once
@@ -56,6 +66,14 @@ constexpr int kEllipsoidRings = 48;
 /// 1 − √(1 − θ²/2) ≈ 1.07e-3 (1 mm on a 1 m ellipsoid).
 inline const double kEllipsoidMeshDepth =
     1.0 - std::sqrt(1.0 - 0.5 * (3.14159265358979323846 / kEllipsoidRings) * (3.14159265358979323846 / kEllipsoidRings));
+
+/// Whether an MJCF file may give its world body geoms of its own (a scene
+/// file's floor and furniture), read from its text and its includes' without
+/// compiling it: false only when none can be — no <geom> under <worldbody>
+/// outside every <body> (through <frame>, <replicate> and <include>); an
+/// <attach>, <composite> or <flexcomp> there, a compiler's `fusestatic`, or a
+/// file it cannot read, is a yes.
+bool MjcfMayHaveWorldGeoms(const std::string& path);
 
 /// The ellipsoid of semi-axes `radii` (x, y, z) centred on its frame, as a
 /// closed triangle mesh with outward faces.

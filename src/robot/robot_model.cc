@@ -253,7 +253,7 @@ RobotModel RobotModel::FromUrdfFile(const std::string& path, const UrdfOptions& 
   return FromUrdfText(text.str(), path, options);
 }
 
-RobotModel RobotModel::FromFile(const std::string& path, const UrdfOptions& options) {
+bool RobotModel::IsMjcfFile(const std::string& path) {
   // the first element, past the XML declaration, comments and doctype
   std::ifstream in(path, std::ios::binary);
   std::string head(4096, '\0');
@@ -272,9 +272,12 @@ RobotModel RobotModel::FromFile(const std::string& path, const UrdfOptions& opti
     }
     if (at == std::string::npos) break;
   }
-  const bool mjcf = at != std::string::npos && head.compare(at, 7, "<mujoco") == 0 &&
-                    (at + 7 == head.size() || !std::isalnum(static_cast<unsigned char>(head[at + 7])));
-  return mjcf ? FromMjcfFile(path, options) : FromUrdfFile(path, options);
+  return at != std::string::npos && head.compare(at, 7, "<mujoco") == 0 &&
+         (at + 7 == head.size() || !std::isalnum(static_cast<unsigned char>(head[at + 7])));
+}
+
+RobotModel RobotModel::FromFile(const std::string& path, const UrdfOptions& options) {
+  return IsMjcfFile(path) ? FromMjcfFile(path, options) : FromUrdfFile(path, options);
 }
 
 RobotModel RobotModel::Builtin(const std::string& name, const UrdfOptions& options) {

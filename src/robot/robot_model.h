@@ -31,6 +31,7 @@
 
 #include "core/geometry.h"
 #include "robot/urdf_options.h"
+#include "scene/scene.h"
 #include "scene/shape.h"
 
 namespace proxsim {
@@ -75,6 +76,19 @@ struct RobotKeyframe {
   Pose X_WRoot = Pose::Identity(); ///< root link in W at the key (identity without has_root)
 };
 
+/// A geom of an MJCF's world body, not of the robot: the floor and the things
+/// a scene file draws around the robot it includes (MuJoCo Menagerie's
+/// scene.xml), which the model offers as scene objects (robot/mjcf_model.h
+/// says how each maps; a scenario takes them unless `robot.model_scene: ignore`).
+struct ModelSceneGeom {
+  std::string geom;                  ///< its name in the file, or geom_K for an unnamed one (K: its place among the world body's geoms, from 0)
+  std::string type;                  ///< MuJoCo's type name: box, sphere, capsule, cylinder, ellipsoid, mesh, plane, hfield…
+  int group = 0;                     ///< its MuJoCo geom group (robot.geom_group does not filter the world's geoms)
+  bool ground_plane = false;         ///< the plane z = 0 facing up: the ground, taken only by a scene without one
+  std::vector<SceneObject> objects;  ///< what proxsim makes of it, in the world frame (a capsule: three); none when refused
+  std::string problem;               ///< why proxsim cannot take it (a plane off the ground, a height field); empty when taken
+};
+
 /// A URDF robot: links, joints, shapes and forward kinematics.
 class RobotModel {
  public:
@@ -90,13 +104,17 @@ class RobotModel {
                                  const UrdfOptions& options = {});
 
   /// Reads a MuJoCo model (MJCF) through the wheel's libmujoco: its bodies, hinge and slide
-  /// joints, geoms and sites, as robot/mjcf_model.h maps them. Throws
-  /// InputError naming the file and what MuJoCo refused, or each element
-  /// proxsim cannot follow (a ball joint, a closed chain, a plane geom…).
+  /// joints, geoms and sites, as robot/mjcf_model.h maps them, and the world
+  /// body's geoms apart (scene_geoms()). Throws InputError naming the file and
+  /// what MuJoCo refused, or each element of the robot proxsim cannot follow
+  /// (a ball joint, a closed chain, a plane geom on a body…).
   static RobotModel FromMjcfFile(const std::string& path, const UrdfOptions& options = {});
 
   /// A URDF or an MJCF file, told apart by its first element (<robot> or <mujoco>).
   static RobotModel FromFile(const std::string& path, const UrdfOptions& options = {});
+
+  /// Whether the file's first element is <mujoco> (an MJCF; false for a URDF or a file that cannot be read).
+  static bool IsMjcfFile(const std::string& path);
 
   /// A robot shipped inside the binary: "biped" (data/robots/biped.urdf).
   static RobotModel Builtin(const std::string& name, const UrdfOptions& options = {});
@@ -133,6 +151,10 @@ class RobotModel {
   /// The keyframe called `name`, or null.
   const RobotKeyframe* Keyframe(const std::string& name) const;
 
+  /// The geoms of an MJCF's world body (a scene file that includes the robot),
+  /// in file order; none for a URDF or a robot's own MJCF.
+  const std::vector<ModelSceneGeom>& scene_geoms() const { return scene_geoms_; }
+
   /// What the loader's engine was (e.g. "MuJoCo 4.0.0" for an MJCF; empty for a URDF).
   const std::string& loader() const { return loader_; }
 
@@ -158,6 +180,7 @@ class RobotModel {
   int root_link_ = -1;
   std::size_t mesh_file_count_ = 0;
   std::vector<RobotKeyframe> keyframes_;
+  std::vector<ModelSceneGeom> scene_geoms_;
   std::string loader_;
 };
 

@@ -150,7 +150,8 @@ Scenario ReadScenario(YamlReader& reader, const YAML::Node& document, const std:
   // the sections
   const std::filesystem::path base_dir = BaseDirOf(source);
   ReadScene(reader, (*top)["scene"], base_dir, scenario);
-  if (top->Has("robot")) scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir, scenario.scene);
+  if (top->Has("robot"))
+    scenario.robot = ReadRobot(reader, (*top)["robot"], base_dir, scenario.scene, scenario.scene_from_model);
   scenario.sensors = ReadSensors(reader, (*top)["sensors"], scenario.robot.has_value());
   // the light the optical parts' range tables read
   for (SensorConfig& sensor : scenario.sensors) sensor.spec.ambient_klux = scenario.scene.ambient_klux;
@@ -223,7 +224,11 @@ std::vector<std::string> RobotProblems(const Scenario& scenario) {
   try {
     const UrdfOptions options{
         .geometry = robot.geometry, .package_paths = robot.package_paths, .geom_group = robot.geom_group};
-    GaitWalker(builtin ? RobotModel::Builtin(robot.model.substr(8), options) : RobotModel::FromFile(robot.model, options),
+    // (an MJCF the scenario read already, to take its scene, is not read again)
+    const bool read = robot.model_read != nullptr && robot.model_read_key == ModelReadKey(robot);
+    GaitWalker(builtin ? RobotModel::Builtin(robot.model.substr(8), options)
+               : read  ? *robot.model_read
+                       : RobotModel::FromFile(robot.model, options),
                robot);
   } catch (const InputError& robot_error) {
     return robot_error.problems();

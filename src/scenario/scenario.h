@@ -5,11 +5,13 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "gait/gait_config.h"
+#include "robot/robot_model.h"
 #include "robot/urdf_options.h"
 #include "scene/scene.h"
 #include "sensors/sensor_spec.h"
@@ -58,6 +60,13 @@ enum class OnCollision {
   kContinue,  ///< every one is logged and the walk goes on
 };
 
+/// `robot.model_scene`: what becomes of the world geoms of an MJCF that
+/// includes the robot (a scene file such as Menagerie's scene.xml).
+enum class ModelScene {
+  kInclude,  ///< they join the scene as objects `model:GEOM`; the ground plane only when the scene has no ground (default)
+  kIgnore,   ///< the scene is the scenario's alone
+};
+
 /// `robot.locomotion`: what moves the robot.
 enum class LocomotionSource {
   kGait,      ///< its own kinematic gait, or the recorded `trajectory` when given (default)
@@ -79,6 +88,22 @@ struct RobotConfig : WalkConfig {
   /// `robot.start.on`: the scene object the robot starts standing on, on purpose
   /// (empty: it starts on the ground); checked to exist when the scenario loads
   std::string start_on;
+  ModelScene model_scene = ModelScene::kInclude;  ///< `robot.model_scene`
+  /// An MJCF model as the scenario read it, to take its scene: the run walks
+  /// this one while ModelReadKey still gives model_read_key (null: read at the run)
+  std::shared_ptr<const RobotModel> model_read;
+  std::string model_read_key;
+};
+
+/// What a robot model is read from and with (the file and its geometry
+/// options), as text: equal keys read the same model.
+std::string ModelReadKey(const RobotConfig& robot);
+
+/// What the scene took from the robot's model file (`robot.model_scene: include`).
+struct SceneFromModel {
+  std::vector<std::string> objects;  ///< the scene objects it added, in scene order
+  /// the model's ground plane (its geom name), left out: the scene has a ground of its own
+  std::string ground_left_out;
 };
 
 /// `outputs.range_convention`: how readings.csv's d_m states a reading that is not a detection.
@@ -94,7 +119,8 @@ struct Scenario {
   double duration_s = 10.0;  ///< > 0
   double rate_hz = 50.0;     ///< samples per second, > 0
   std::string builtin_scene = "empty";
-  Scene scene;  ///< the built-in scene's objects followed by the file's own, meshes loaded
+  Scene scene;  ///< the built-in scene's objects followed by the file's own (then the robot model's), meshes loaded
+  SceneFromModel scene_from_model;  ///< the objects of `scene` that came from the robot's model file
   std::optional<RobotConfig> robot;
   std::vector<SensorConfig> sensors;
   TerrainMapConfig map;  ///< `map`: the terrain map a robot builds (defaults without the section)

@@ -8,10 +8,14 @@
 // path is reported with the scenario's other problems.
 #include <algorithm>
 #include <initializer_list>
+#include <memory>
+#include <set>
 #include <system_error>
 #include <tuple>
 
+#include "core/input_error.h"
 #include "core/nearest_key.h"
+#include "robot/mjcf_model.h"
 #include "scenario/gait_section.h"
 #include "scenario/param_reader.h"
 #include "scenario/scenario_sections.h"
@@ -126,7 +130,58 @@ std::optional<StrategyConfig> ReadStrategySection(YamlReader& reader, const Fiel
   return strategy;
 }
 
+// The world geoms of an MJCF that includes the robot (a scene file), read
+// with the model now: added to the scene as objects `model:GEOM` after its
+// own, the ground plane only when the scene has no ground yet (else left out:
+// the scene's ground stands for it). The model read is kept for the run (a
+// scenario is read again for each run of a study: its robot's own file is not
+// compiled then, only a file whose text may give the world body geoms).
+void TakeModelScene(YamlReader& reader, const Field& model_field, RobotConfig& robot, Scene& scene,
+                    SceneFromModel& from_model) {
+  if (robot.model.empty() || robot.model.starts_with(kBuiltinPrefix) || !RobotModel::IsMjcfFile(robot.model)) return;
+  // (a robot's own file, without world geoms, is read once, when the run builds it)
+  if (robot.model_scene == ModelScene::kIgnore || !MjcfMayHaveWorldGeoms(robot.model)) return;
+  const UrdfOptions options{.geometry = robot.geometry, .package_paths = robot.package_paths, .geom_group = robot.geom_group};
+  try {
+    robot.model_read = std::make_shared<const RobotModel>(RobotModel::FromMjcfFile(robot.model, options));
+    robot.model_read_key = ModelReadKey(robot);
+  } catch (const InputError&) {
+    return;  // the robot's own problems, reported where it is built (with the scenario's, or by the run)
+  }
+  bool has_ground = std::ranges::any_of(scene.objects, [](const SceneObject& o) { return o.ground; });
+  std::set<std::string> names;
+  for (const SceneObject& object : scene.objects) names.insert(object.name);
+  for (const ModelSceneGeom& geom : robot.model_read->scene_geoms()) {
+    if (!geom.problem.empty()) {
+      reader.Fail(model_field, "geom '" + geom.geom + "' of the model's world body (its scene) is " + geom.problem +
+                                   "; or leave the model's scene out: robot.model_scene: ignore");
+      continue;
+    }
+    if (geom.ground_plane && has_ground) {
+      from_model.ground_left_out = geom.geom;
+      continue;
+    }
+    has_ground = has_ground || geom.ground_plane;
+    for (const SceneObject& object : geom.objects) {
+      if (!names.insert(object.name).second) {
+        reader.Fail(model_field, "geom '" + geom.geom + "' of the model's world body becomes scene object '" +
+                                     object.name + "', a name the scene already uses; rename one");
+        continue;
+      }
+      scene.objects.push_back(object);
+      from_model.objects.push_back(object.name);
+    }
+  }
+}
+
 }  // namespace
+
+std::string ModelReadKey(const RobotConfig& robot) {
+  std::string key = robot.model + '\n' + std::to_string(static_cast<int>(robot.geometry)) + '\n' +
+                    std::to_string(robot.geom_group);
+  for (const std::string& path : robot.package_paths) key += '\n' + path;
+  return key;
+}
 
 std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& field) {
   const std::vector<std::string> names = {"stop", "circumvent"};
@@ -147,11 +202,11 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
   return std::nullopt;
 }
 
-RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
-                      const Scene& scene) {
+RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scene& scene,
+                      SceneFromModel& from_model) {
   RobotConfig robot;
   const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
-                                       "geometry", "geom_group", "package_paths", "legs", "joints_deg",
+                                       "geometry", "geom_group", "package_paths", "model_scene", "legs", "joints_deg",
                                        "on_collision", "locomotion"});
   if (!map) return robot;
 
@@ -199,6 +254,15 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
       robot.package_paths.push_back(path.string());
     }
   }
+
+  // model_scene: include | ignore, the world geoms of an MJCF scene file that includes the robot
+  robot.model_scene = ReadChoice<ModelScene>(reader, (*map)["model_scene"],
+                                             {{"include", ModelScene::kInclude}, {"ignore", ModelScene::kIgnore}},
+                                             "expected include (the world geoms of the model's file join the scene) "
+                                             "or ignore (the scene is the scenario's alone)")
+                          .value_or(robot.model_scene);
+  // (before start.on, which may name one of them)
+  TakeModelScene(reader, model, robot, scene, from_model);
 
   robot.legs = ReadLegs(reader, (*map)["legs"]);
   robot.joints_rad = ReadJointAngles(reader, (*map)["joints_deg"]);

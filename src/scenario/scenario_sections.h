@@ -33,10 +33,11 @@ double ReadPersonHeight(YamlReader& reader, const Field& field);
 /// meshes loaded; object names unique across both.
 void ReadScene(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scenario& scenario);
 
-/// `robot: {model, start, gait, path, strategy, stop_distance_m, trajectory}`; file paths resolved;
-/// `start.on` must name an object of `scene`.
-RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir,
-                      const Scene& scene);
+/// `robot: {model, start, gait, path, strategy, stop_distance_m, trajectory, ...}`; file paths resolved;
+/// an MJCF model's world geoms added to `scene` (unless `model_scene: ignore`,
+/// said in `from_model`); `start.on` must name an object of `scene`.
+RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scene& scene,
+                      SceneFromModel& from_model);
 
 /// `strategy: {name: stop | circumvent, ...}`: the keys allowed depend on the
 /// name; nullopt after reporting when the field is not one (an outcome study

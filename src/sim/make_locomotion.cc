@@ -36,6 +36,8 @@ RobotModel LoadRobotModel(const RobotConfig& config) {
     parsed.emplace(key, model);
     return model;
   }
+  // an MJCF the scenario read already, to take its scene: read with the same options, it is the same model
+  if (config.model_read != nullptr && config.model_read_key == ModelReadKey(config)) return *config.model_read;
   return RobotModel::FromFile(config.model, options);
 }
 

@@ -78,6 +78,7 @@ nlohmann::json InputsJson(const Scenario& scenario) {
     nlohmann::json joints_deg = nlohmann::json::object();
     for (const auto& [joint, q_rad] : r.joints_rad) joints_deg[joint] = RadToDeg(q_rad);
     robot = {{"model", r.model},
+             {"model_scene", r.model_scene == ModelScene::kIgnore ? "ignore" : "include"},
              {"geometry", r.geometry == LinkGeometryKind::kCollision ? "collision" : "visual"},
              {"geom_group", NullUnless(r.geom_group >= 0, r.geom_group)},
              {"package_paths", r.package_paths},
@@ -104,7 +105,13 @@ nlohmann::json InputsJson(const Scenario& scenario) {
           {"robot", robot},
           {"duration_s", scenario.duration_s},
           {"rate_hz", scenario.rate_hz},
-          {"scene", {{"builtin", scenario.builtin_scene}, {"objects", objects}, {"ambient_klux", scenario.scene.ambient_klux}}},
+          {"scene", {{"builtin", scenario.builtin_scene},
+                     {"objects", objects},
+                     {"ambient_klux", scenario.scene.ambient_klux},
+                     // what the robot's model file brought (robot.model_scene: include)
+                     {"from_model", {{"objects", scenario.scene_from_model.objects},
+                                     {"ground_left_out", NullUnless(!scenario.scene_from_model.ground_left_out.empty(),
+                                                                    scenario.scene_from_model.ground_left_out)}}}}},
           {"sensors", sensors},
           {"map", map},
           {"outputs", {{"range_convention", scenario.range_convention == RangeConvention::kRep117 ? "rep117" : "proxsim"}}}};
@@ -134,6 +141,17 @@ nlohmann::json RobotOutcomeJson(const Simulation& sim) {
             {"detail", outcome.end_detail},
             {"reason", outcome.fall_reason}};
   }
+  // the gait as walked (null for a replayed or external motion): the
+  // ankle zero pitch per leg as used, whether given or found from the soles
+  nlohmann::json gait = nullptr;
+  if (const auto cycle = sim.locomotion()->gait_cycle()) {
+    gait = {{"stride_m", cycle->stride_m},
+            {"period_s", cycle->period_s},
+            {"crouch_knee_deg", RadToDeg(cycle->crouch_knee_rad)},
+            {"pelvis_height_m", cycle->pelvis_height_m},
+            {"amplitude", cycle->amplitude},
+            {"ankle_zero_deg", {{"left", RadToDeg(cycle->ankle_zero_rad[0])}, {"right", RadToDeg(cycle->ankle_zero_rad[1])}}}};
+  }
   const Simulation::Outcome episode = sim.outcome();
   return {{"model", sim.robot()->model().source()},
           {"outcome", episode.name()},
@@ -150,10 +168,7 @@ nlohmann::json RobotOutcomeJson(const Simulation& sim) {
           {"reached_goal_t_s", NullUnless(outcome.reached_goal, outcome.reached_goal_t_s)},
           {"min_clearance_m", NullUnless(std::isfinite(outcome.min_clearance_m), outcome.min_clearance_m)},
           {"min_clearance_t_s", outcome.min_clearance_t_s},
-          {"gait", sim.locomotion()->gait_cycle() ? nlohmann::json{{"stride_m", sim.locomotion()->gait_cycle()->stride_m}, {"period_s", sim.locomotion()->gait_cycle()->period_s},
-                                                                      {"crouch_knee_deg", RadToDeg(sim.locomotion()->gait_cycle()->crouch_knee_rad)},
-                                                                      {"pelvis_height_m", sim.locomotion()->gait_cycle()->pelvis_height_m},
-                                                                      {"amplitude", sim.locomotion()->gait_cycle()->amplitude}} : nlohmann::json(nullptr)},
+          {"gait", gait},
           {"distance_walked_m", state.distance_walked_m},
           {"standing_at_end", state.stopped},
           {"events", events}};
