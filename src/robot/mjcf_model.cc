@@ -274,7 +274,10 @@ std::vector<ModelSceneGeom> WorldGeoms(const mjModel* m) {
     const char* name = mj_id2name(m, mjOBJ_GEOM, g);
     ModelSceneGeom geom{.geom = name != nullptr && name[0] != '\0' ? std::string(name) : "geom_" + std::to_string(k),
                         .type = GeomTypeName(m->geom_type[g]),
-                        .group = m->geom_group[g]};
+                        .group = m->geom_group[g],
+                        .ground_plane = false,
+                        .objects = {},
+                        .problem = {}};
     const std::string object = "model:" + geom.geom;
     if (m->geom_type[g] == mjGEOM_PLANE) {
       // the ground: the plane through the origin facing +z, whatever its drawn size (MuJoCo's contacts take a plane as unbounded)
@@ -282,7 +285,7 @@ std::vector<ModelSceneGeom> WorldGeoms(const mjModel* m) {
       const Vec3 normal_W = X_WO.linear().col(2);
       if ((normal_W - Vec3::UnitZ()).norm() < 1e-9 && std::abs(X_WO.translation().z()) < 1e-9) {
         geom.ground_plane = true;
-        geom.objects.push_back(SceneObject{.name = object, .shape = Plane{}, .ground = true});
+        geom.objects.push_back(SceneObject{.name = object, .shape = Plane{}, .X_WO = Pose::Identity(), .material = {}, .ground = true});
       } else {
         geom.problem = "a plane that is not the ground (z = 0, facing up): proxsim takes a model's plane only as its "
                        "ground; give it in the scenario's scene (a plane object with its pose, or a box)";
@@ -297,7 +300,8 @@ std::vector<ModelSceneGeom> WorldGeoms(const mjModel* m) {
     }
     for (std::size_t i = 0; i < shapes.size(); ++i) {
       const char* part = shapes.size() == 1 ? "" : i == 0 ? "" : i == 1 ? ":top" : ":bottom";
-      geom.objects.push_back(SceneObject{.name = object + part, .shape = shapes[i].shape, .X_WO = shapes[i].X_LO});
+      geom.objects.push_back(SceneObject{
+          .name = object + part, .shape = shapes[i].shape, .X_WO = shapes[i].X_LO, .material = {}, .ground = false});
     }
     geoms.push_back(std::move(geom));
   }
