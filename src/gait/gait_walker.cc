@@ -348,40 +348,15 @@ void GaitWalker::Resume() {
   stop_requested_ = false;
 }
 
-bool GaitWalker::Passed(std::size_t i, const Vec2& p) const {
-  const Vec2& waypoint = waypoints_m_[i];
-  if ((waypoint - p).norm() < 0.5 * achieved_stride_m_) return true;
-  // the way it is approached: from the previous waypoint, or from where the
-  // path began; along the path when it begins on it
-  Vec2 approach = waypoint - (i == 0 ? path_origin_m_ : waypoints_m_[i - 1]);
-  if (approach.norm() < 1e-9 && i + 1 < waypoints_m_.size()) approach = waypoints_m_[i + 1] - waypoint;
-  return approach.norm() < 1e-9 || (p - waypoint).dot(approach) >= 0;
-}
-
 bool GaitWalker::DecideAtHeelStrike(const Pose& X_WP, double* yaw_to) {
   *yaw_to = plan_.yaw_to;
   if (stop_requested_) return true;
   if (waypoints_m_.empty()) return false;
   const Vec2 p = X_WP.translation().head<2>();
   const double stride = achieved_stride_m_, step = 0.5 * stride;
-  while (next_waypoint_ + 1 < waypoints_m_.size() && Passed(next_waypoint_, p)) ++next_waypoint_;
+  next_waypoint_ = WaypointAhead(waypoints_m_, next_waypoint_, path_origin_m_, p, stride);
   const Vec2 to = waypoints_m_[next_waypoint_] - p;
-
-  // turn toward the waypoint; more sharply when it lies inside the circle
-  // that steps of the usual turn walk (they would circle around it): as
-  // sharply as the circle through it tangent to the heading needs, or (the
-  // waypoint behind) the sharpest turn
-  const double bearing = WrapAngle(std::atan2(to.y(), to.x()) - plan_.yaw_to);
-  double limit = kMaxTurnPerStep_rad;
-  const double radius_m = step / (2 * std::sin(kMaxTurnPerStep_rad / 2));
-  const Vec2 left(-std::sin(plan_.yaw_to), std::cos(plan_.yaw_to));
-  const Vec2 centre = p + (bearing >= 0 ? radius_m : -radius_m) * left;
-  if ((waypoints_m_[next_waypoint_] - centre).norm() < radius_m) {
-    const double chord = step * std::abs(std::sin(bearing)) / std::max(to.norm(), 1e-9);
-    limit = std::abs(bearing) < kPi / 2 && chord < 1 ? std::clamp(2 * std::asin(chord), limit, kMaxSharpTurnPerStep_rad)
-                                                     : kMaxSharpTurnPerStep_rad;
-  }
-  const double turn = std::clamp(bearing, -limit, limit);
+  const double turn = TurnTowardRad(p, plan_.yaw_to, waypoints_m_[next_waypoint_], step);
 
   if (next_waypoint_ + 1 == waypoints_m_.size()) {
     // the last one: stop within a quarter stride, or within a stride when one

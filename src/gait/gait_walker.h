@@ -8,13 +8,12 @@
 // smaller turns would walk), and a stop at a heel strike — a double support
 // with both feet down — when asked or when the last waypoint is reached.
 //
-// Waypoints: the current one is passed at a heel strike when the pelvis is
-// within half a stride of it or has gone past it, i.e. beyond the line
-// through it square to the way it was approached (from the previous
-// waypoint; for the first, from where the robot started, or along the path
-// when it starts on it). The last is reached when the pelvis is within a
-// quarter stride of it, or within a stride and one more step (toward it)
-// would not bring the pelvis closer.
+// Waypoints: the current one is passed at a heel strike by the rule of
+// gait/waypoint_rule.h (within half a stride of it, or beyond the line
+// through it square to the way it was approached), which strategies ask
+// too. The last is reached when the pelvis is within a quarter stride of it,
+// or within a stride and one more step (toward it) would not bring the
+// pelvis closer.
 //
 // Stride and period: as the gait section gives them, or, where it does not,
 // the built-in biped's 0.6 m and 1.2 s scaled to this robot's leg length L
@@ -73,13 +72,10 @@
 #include "gait/gait_config.h"
 #include "gait/step_safety.h"
 #include "gait/stride_table.h"
+#include "gait/waypoint_rule.h"
 
 namespace proxsim {
 
-/// Largest heading change per step, rad.
-constexpr double kMaxTurnPerStep_rad = DegToRad(15.0);
-/// Largest heading change per step toward a waypoint that kMaxTurnPerStep_rad cannot reach, rad.
-constexpr double kMaxSharpTurnPerStep_rad = DegToRad(45.0);
 /// The built-in biped's leg length (hip joint to sole), stride and period: the reference of the scaled defaults.
 constexpr double kReferenceLegLength_m = 0.98;
 constexpr double kReferenceStride_m = 0.6;
@@ -152,8 +148,6 @@ class GaitWalker : public Locomotion {
   Footprint SoleAt(Side side, const Vec3& p_W_heel, double yaw, double z_m) const;
   // Logs `cannot_step` once per reason in a row.
   void NoteCannotStep(const std::string& reason, bool level_ground = false);
-  // Whether waypoint i counts as passed with the pelvis at p.
-  bool Passed(std::size_t i, const Vec2& p) const;
 
   // the episode's beginning, for Reset()
   WalkConfig initial_;

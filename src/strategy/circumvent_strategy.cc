@@ -5,6 +5,7 @@
 #include "knowledge/map_route.h"
 #include "core/message_format.h"
 #include "gait/gait_walker.h"
+#include "gait/waypoint_rule.h"
 
 #include <algorithm>
 #include <cmath>
@@ -163,24 +164,19 @@ std::optional<Vec3> CircumventStrategy::PointInTheWay(const Observation& observa
   return std::nullopt;
 }
 
-std::size_t CircumventStrategy::GaitTargetIndex(const std::vector<Vec2>& waypoints, std::size_t first,
-                                               const Vec2& p_WP) const {
-  // the gait's rule (gait/gait_walker.cc): a waypoint is passed once the
-  // pelvis is within half a stride of it or beyond it along its approach
-  for (std::size_t i = first; i < waypoints.size(); ++i) {
-    const Vec2 approach = i == 0 ? Vec2(waypoints[0] - p_WP) : Vec2(waypoints[i] - waypoints[i - 1]);
-    const bool passed = (waypoints[i] - p_WP).norm() < 0.5 * stride_in_force_m_ || (p_WP - waypoints[i]).dot(approach) >= 0;
-    if (!passed) return i;
-  }
-  return waypoints.size() - 1;
+std::size_t CircumventStrategy::GaitTargetIndex(const std::vector<Vec2>& path, std::size_t first, const Vec2& p_WP) const {
+  // the gait's own rule (gait/waypoint_rule.h) on the path as it was given: its first point is where the pelvis was
+  return 1 + WaypointAhead(std::span<const Vec2>(path).subspan(1), first - 1, path[0], p_WP, stride_in_force_m_);
 }
 
 Vec2 CircumventStrategy::GaitTarget(const Vec2& p_WP) const {
   if (tracking_) return carrot_;
-  // (the path's first waypoint is where the robot started; a detour's first is the first still ahead)
   if (mode_ == Mode::kDetouring) {
-    const std::vector<Vec2> waypoints = Remaining();
-    return waypoints.empty() ? p_WP : waypoints[GaitTargetIndex(waypoints, 0, p_WP)];
+    // the detour's waypoints still ahead, as last given to the gait from where the pelvis was then
+    std::vector<Vec2> given = Remaining();
+    if (given.empty()) return p_WP;
+    given.insert(given.begin(), detour_given_at_W_);
+    return given[GaitTargetIndex(given, 1, p_WP)];
   }
   return path_m_.size() < 2 ? p_WP : path_m_[GaitTargetIndex(path_m_, path_target_, p_WP)];
 }
@@ -217,24 +213,10 @@ void CircumventStrategy::TrackPath(const Vec2& p_WP, RobotCommands& robot) {
 
 Vec3 CircumventStrategy::WalkingDirection(const RobotKnowledge& self, const Vec2& p_WP) const {
   // the step under way turns toward the gait's target as the gait turns it
-  // (gait/gait_walker.cc, DecideAtHeelStrike): up to kMaxTurnPerStep_rad, or
-  // more sharply, up to kMaxSharpTurnPerStep_rad, when the target lies inside
-  // the circle those steps would walk; the pelvis lags the step
-  const Vec2 to = GaitTarget(p_WP) - p_WP;
-  if (to.norm() < 1e-6) return self.heading_W;
-  const double bearing = std::remainder(std::atan2(to.y(), to.x()) - self.yaw_rad, 2 * kPi);
-  const double step_m = 0.5 * stride_in_force_m_;
-  double limit = kMaxTurnPerStep_rad;
-  const double radius_m = step_m / (2 * std::sin(kMaxTurnPerStep_rad / 2));
-  const Vec2 left(-std::sin(self.yaw_rad), std::cos(self.yaw_rad));
-  const Vec2 centre = p_WP + (bearing >= 0 ? radius_m : -radius_m) * left;
-  if ((p_WP + to - centre).norm() < radius_m) {
-    const double chord = step_m * std::abs(std::sin(bearing)) / to.norm();
-    limit = std::abs(bearing) < kPi / 2 && chord < 1
-                ? std::clamp(2 * std::asin(chord), kMaxTurnPerStep_rad, kMaxSharpTurnPerStep_rad)
-                : kMaxSharpTurnPerStep_rad;
-  }
-  const double yaw = self.yaw_rad + std::clamp(bearing, -limit, limit);
+  // (gait/waypoint_rule.h); the pelvis lags the step
+  const Vec2 target = GaitTarget(p_WP);
+  if ((target - p_WP).norm() < 1e-6) return self.heading_W;
+  const double yaw = self.yaw_rad + TurnTowardRad(p_WP, self.yaw_rad, target, 0.5 * stride_in_force_m_);
   return {std::cos(yaw), std::sin(yaw), 0.0};
 }
 
@@ -593,6 +575,7 @@ void CircumventStrategy::FollowOrDetour(const Observation& observation, const Ve
     next_waypoint_ = 0;
     detour_waypoints_ = kDetourWaypoints;
     robot.SetPath(detour_);
+    detour_given_at_W_ = p_WP;
     mode_ = Mode::kDetouring;
     passed_ = false;
     events.Log("detour_planned", DescribeDetour());
@@ -619,6 +602,7 @@ void CircumventStrategy::FollowOrDetour(const Observation& observation, const Ve
       shift_m_ = shift_m;
       side_ = shift_m_ > 0 ? 1 : -1;
       robot.SetPath(Remaining());
+      detour_given_at_W_ = p_WP;
       events.Log("detour_replanned", "more of the obstacle seen: " + DescribeDetour());
     }
   }
@@ -630,7 +614,10 @@ void CircumventStrategy::FollowOrDetour(const Observation& observation, const Ve
          (detour_[next_waypoint_] - segment_.origin).dot(segment_.u) - s_WP < kPassed_m) {
     ++next_waypoint_;
   }
-  if (next_waypoint_ != before) robot.SetPath(Remaining());
+  if (next_waypoint_ != before) {
+    robot.SetPath(Remaining());
+    detour_given_at_W_ = p_WP;
+  }
   const double s_far = std::max(extent_->s_max, extent_->s_min + config_.assumed_depth_m);
   if (!passed_ && s_WP > s_far + half_width_m_ + config_.margin_m) {
     passed_ = true;

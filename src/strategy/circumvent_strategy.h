@@ -112,7 +112,8 @@ class CircumventStrategy : public Strategy {
                                     double lateral_m) const;
   // the waypoint the gait walks toward: the first of the path it follows not yet passed
   Vec2 GaitTarget(const Vec2& p_WP) const;
-  std::size_t GaitTargetIndex(const std::vector<Vec2>& waypoints, std::size_t first, const Vec2& p_WP) const;
+  // the index the gait heads for in `path` (its first point: where the pelvis was when it was given), from `first` (>= 1) on
+  std::size_t GaitTargetIndex(const std::vector<Vec2>& path, std::size_t first, const Vec2& p_WP) const;
   // following the path: steer the gait back onto the path's line when it strays
   void TrackPath(const Vec2& p_WP, RobotCommands& robot);
   // the heading turned toward the gait's target as the step under way turns (unit, horizontal)
@@ -142,6 +143,7 @@ class CircumventStrategy : public Strategy {
   double stride_m_ = 0;      // the gait's own stride (NaN: not known)
   double stride_now_m_ = 0;  // the stride last commanded
   double stride_in_force_m_ = 0;  // the stride of the step being walked
+  Vec2 detour_given_at_W_ = Vec2::Zero();  // where the pelvis was when the detour's waypoints were last given to the gait
   bool stride_changed_ = false;   // a stride commanded that the step being walked does not have yet
   SupportLeg last_support_ = SupportLeg::kDouble;
   bool started_ = false;
