@@ -20,11 +20,15 @@ namespace {
 //    limits as the SparkFun VL53L5CX library documents them, "Using 4x4 ... max
 //    is 60Hz, Using 8x8 ... max is 15Hz"; the same for the L7CX in espp's
 //    driver notes). For the L8CX ST gives "60 Hz" (UM3109); its 8×8 limit is
-//    taken as the family's 15 Hz.
+//    taken as the family's 15 Hz. Their presets: 8x8 zones of 4 rays, one
+//    target per zone (the ULD's NB_TARGET_PER_ZONE default), perpendicular.
 constexpr MultizonePart kParts[] = {
-    {"vl53l5cx", 45.0, 4.0, 60.0, 15.0, "ST UM2884 / SparkFun VL53L5CX library: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
-    {"vl53l7cx", 60.0, 3.5, 60.0, 15.0, "ST STSW-IMG036 data brief, UM3038: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
-    {"vl53l8cx", 45.0, 4.0, 60.0, 15.0, "ST UM3109: up to 60 Hz (4x4); 8x8 taken as the family's 15 Hz"},
+    {"vl53l5cx", 45.0, 4.0, {8, 4}, {15.0, 60.0}, 4, 1, true,
+     "ST UM2884 / SparkFun VL53L5CX library: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
+    {"vl53l7cx", 60.0, 3.5, {8, 4}, {15.0, 60.0}, 4, 1, true,
+     "ST STSW-IMG036 data brief, UM3038: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
+    {"vl53l8cx", 45.0, 4.0, {8, 4}, {15.0, 60.0}, 4, 1, true,
+     "ST UM3109: up to 60 Hz (4x4); 8x8 taken as the family's 15 Hz"},
 };
 
 }  // namespace
@@ -51,6 +55,19 @@ const MultizonePart* FindMultizonePart(const std::string& name) {
     if (name == part.name) return &part;
   }
   return nullptr;
+}
+
+std::string MultizonePartGrids(const MultizonePart& part) {
+  // the grids in ascending size, as the messages always named them
+  std::array<int, 2> grids = part.grids_across;
+  std::sort(grids.begin(), grids.end());
+  std::string text;
+  for (int across : grids) {
+    if (across <= 0) continue;
+    const std::string n = std::to_string(across);
+    text += (text.empty() ? "" : " or ") + ("[" + n + ", " + n + "]");
+  }
+  return text;
 }
 
 namespace {
@@ -317,8 +334,10 @@ double MultizoneMaxRate_hz(const SensorSpec& spec) {
   const MultizonePart* part = FindMultizonePart(spec.part);
   if (part == nullptr || !spec.zones) return 0.0;
   const ZoneSpec& z = *spec.zones;
-  if (z.nx == 4 && z.ny == 4) return part->max_rate_4x4_hz;
-  if (z.nx == 8 && z.ny == 8) return part->max_rate_8x8_hz;
+  for (std::size_t g = 0; g < part->grids_across.size(); ++g) {
+    if (part->grids_across[g] > 0 && z.nx == part->grids_across[g] && z.ny == part->grids_across[g])
+      return part->max_rate_hz[g];
+  }
   return 0.0;  // a grid the part does not have: refused as such (sensor_spec.cc), with no rate to hold it to
 }
 

@@ -81,13 +81,18 @@ struct ZoneReadings {
   std::vector<std::uint8_t> target_count;   ///< [zone]: valid targets found
 };
 
-/// The part's limits that a scenario is checked against.
+/// The part's limits that a scenario is checked against, and its preset's grid.
 struct MultizonePart {
   const char* name;
   double fov_deg;             ///< square field of view, degrees (each side)
   double max_range_m;         ///< the datasheet's longest range
-  double max_rate_4x4_hz;     ///< ranging frequency limit at 4×4
-  double max_rate_8x8_hz;     ///< ranging frequency limit at 8×8
+  /// The grids the part has, zones a side (0: no second grid), the first its
+  /// preset's, and the ranging frequency limit at each, Hz.
+  std::array<int, 2> grids_across;
+  std::array<double, 2> max_rate_hz;
+  int rays_per_zone;          ///< the preset's rays per zone (k², an assumption of the model)
+  int targets;                ///< the preset's targets per zone (the driver's default)
+  bool perpendicular;         ///< the preset's distance: projected on the axis (true) or radial
   const char* source;         ///< where the figures come from
 };
 
@@ -95,6 +100,8 @@ struct MultizonePart {
 std::span<const MultizonePart> MultizoneParts();
 /// The part called `name`, or null.
 const MultizonePart* FindMultizonePart(const std::string& name);
+/// The grids a part has, as a scenario writes them: "[4, 4] or [8, 8]".
+std::string MultizonePartGrids(const MultizonePart& part);
 
 /// The number of zones.
 inline int ZoneCount(const ZoneSpec& zones) { return zones.nx * zones.ny; }
