@@ -211,7 +211,7 @@ SensorSpec SensorSpec::Preset(SensorType type) {
 
 const std::vector<std::string>& SensorSpec::PartNames() {
   static const std::vector<std::string> names = {"hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l1x",
-                                                      "vl53l5cx", "vl53l7cx", "vl53l8cx"};
+                                                      "vl53l4cx", "vl53l5cx", "vl53l7cx", "vl53l8cx"};
   return names;
 }
 
@@ -322,12 +322,14 @@ std::optional<SensorSpec> SensorSpec::PartPreset(std::string_view name) {
     return spec;
   }
   if (const MultizonePart* part = FindMultizonePart(std::string(name))) {
-    // ST's multi-zone parts (multizone.cc cites the figures): the part's
-    // first grid of zones (8x8) over its square field of view, ranging from
-    // 2 cm to its longest range, with its datasheet's range tables (inner and
-    // corner zones) and ranging accuracy at its resolution. σ = 3 % of the
-    // distance stays the σ a scenario's own noise.sigma replaces; 1 mm steps
-    // (the ULD reports millimetres) are an assumption.
+    // ST's multi-zone parts and the single-zone, multi-target VL53L4CX
+    // (multizone.cc cites the figures): the part's first grid of zones over
+    // its square field of view, ranging from 2 cm to its longest range, with
+    // its datasheet's range tables (inner and corner zones) and ranging
+    // accuracy at its resolution where they were found. σ = 3 % of the
+    // distance stays the σ a scenario's own noise.sigma replaces, and the
+    // VL53L4CX's σ (no accuracy table found for it); 1 mm steps (the drivers
+    // report millimetres) and the 2 cm minimum are assumptions.
     SensorSpec spec = Preset(SensorType::kMultizone);
     spec.part = part->name;
     spec.min_range_m = 0.02;
