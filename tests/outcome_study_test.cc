@@ -14,6 +14,7 @@
 #include "cli_helpers.h"
 #include "core/input_error.h"
 #include "sensors/part_prices.h"
+#include "sensors/sensor_spec.h"
 #include "study/outcome_answers.h"
 #include "study/outcome_config.h"
 #include "study/outcome_stats.h"
@@ -102,7 +103,7 @@ TEST(OutcomeStats, Median) {
 }
 
 TEST(OutcomeStats, EveryDatasheetPartHasAPriceAndAMass) {
-  for (const char* part : {"hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l1x", "vl53l5cx", "vl53l7cx", "vl53l8cx"}) {
+  for (const std::string& part : SensorSpec::PartNames()) {
     const auto price = PartPriceOf(part);
     ASSERT_TRUE(price.has_value()) << part;
     EXPECT_GT(price->price_usd, 0) << part;

@@ -20,11 +20,33 @@ namespace {
 //    limits as the SparkFun VL53L5CX library documents them, "Using 4x4 ... max
 //    is 60Hz, Using 8x8 ... max is 15Hz"; the same for the L7CX in espp's
 //    driver notes). For the L8CX ST gives "60 Hz" (UM3109); its 8×8 limit is
-//    taken as the family's 15 Hz.
+//    taken as the family's 15 Hz. Their presets: 8x8 zones of 4 rays, one
+//    target per zone (the ULD's NB_TARGET_PER_ZONE default), perpendicular.
+//  - VL53L4CX (ST's single-zone part with histogram processing and
+//    multi-target detection): one zone; "18° FoV" and "very accurate distance
+//    measurements up to 6 m" (ST's STSW-IMG029 page, the part's API); up to 4
+//    objects per measurement (VL53L4CX_MAX_RANGE_RESULTS = 4 in ST's driver as
+//    stm32duino/VL53L4CX ships it; ST's UM2778 for the VL53L3CX, the same
+//    VL53LX bare driver: "by default equal to 4"). Its 18° cone is taken as
+//    the square zone of 18° a side sampled by 4×4 rays, whose outer rays lie
+//    6.75° off the axis along a side and 9.5° along the diagonal, about the
+//    cone's 9° half-angle. Its distance is radial: ST's statement that the
+//    conversion to perpendicular is done on the chip is about the multi-zone
+//    parts, and a single-zone part times its photons along their paths.
+//    **No datasheet limit on the ranging rate was found**: its driver's
+//    default timing budget, 33.3 ms (VL53L4CX_DataInit sets 33333 µs), is
+//    taken as its cycle, 30 Hz, conservative against the shorter budgets the
+//    driver accepts (a budget is not modelled: the range does not change with it).
 constexpr MultizonePart kParts[] = {
-    {"vl53l5cx", 45.0, 4.0, 60.0, 15.0, "ST UM2884 / SparkFun VL53L5CX library: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
-    {"vl53l7cx", 60.0, 3.5, 60.0, 15.0, "ST STSW-IMG036 data brief, UM3038: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
-    {"vl53l8cx", 45.0, 4.0, 60.0, 15.0, "ST UM3109: up to 60 Hz (4x4); 8x8 taken as the family's 15 Hz"},
+    {"vl53l4cx", 18.0, 6.0, {1, 0}, {30.0, 0.0}, 16, 4, false,
+     "ST STSW-IMG029 (18° FoV, up to 6 m); one measurement per the driver's default 33.3 ms timing budget "
+     "(stm32duino/VL53L4CX VL53L4CX_DataInit), the datasheet's limit not found"},
+    {"vl53l5cx", 45.0, 4.0, {8, 4}, {15.0, 60.0}, 4, 1, true,
+     "ST UM2884 / SparkFun VL53L5CX library: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
+    {"vl53l7cx", 60.0, 3.5, {8, 4}, {15.0, 60.0}, 4, 1, true,
+     "ST STSW-IMG036 data brief, UM3038: 4x4 up to 60 Hz, 8x8 up to 15 Hz"},
+    {"vl53l8cx", 45.0, 4.0, {8, 4}, {15.0, 60.0}, 4, 1, true,
+     "ST UM3109: up to 60 Hz (4x4); 8x8 taken as the family's 15 Hz"},
 };
 
 }  // namespace
@@ -51,6 +73,19 @@ const MultizonePart* FindMultizonePart(const std::string& name) {
     if (name == part.name) return &part;
   }
   return nullptr;
+}
+
+std::string MultizonePartGrids(const MultizonePart& part) {
+  // the grids in ascending size, as the messages always named them
+  std::array<int, 2> grids = part.grids_across;
+  std::sort(grids.begin(), grids.end());
+  std::string text;
+  for (int across : grids) {
+    if (across <= 0) continue;
+    const std::string n = std::to_string(across);
+    text += (text.empty() ? "" : " or ") + ("[" + n + ", " + n + "]");
+  }
+  return text;
 }
 
 namespace {
@@ -317,8 +352,10 @@ double MultizoneMaxRate_hz(const SensorSpec& spec) {
   const MultizonePart* part = FindMultizonePart(spec.part);
   if (part == nullptr || !spec.zones) return 0.0;
   const ZoneSpec& z = *spec.zones;
-  if (z.nx == 4 && z.ny == 4) return part->max_rate_4x4_hz;
-  if (z.nx == 8 && z.ny == 8) return part->max_rate_8x8_hz;
+  for (std::size_t g = 0; g < part->grids_across.size(); ++g) {
+    if (part->grids_across[g] > 0 && z.nx == part->grids_across[g] && z.ny == part->grids_across[g])
+      return part->max_rate_hz[g];
+  }
   return 0.0;  // a grid the part does not have: refused as such (sensor_spec.cc), with no rate to hold it to
 }
 

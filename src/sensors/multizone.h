@@ -1,5 +1,6 @@
-// A multi-zone time-of-flight sensor (ST's VL53L5CX, VL53L7CX, VL53L8CX, or a
-// generic `multizone` one): its square field of view is split into nx × ny
+// A multi-zone time-of-flight sensor (ST's VL53L5CX, VL53L7CX, VL53L8CX; ST's
+// single-zone, multi-target VL53L4CX as a grid of one zone; or a generic
+// `multizone` one): its square field of view is split into nx × ny
 // zones, each sampled by k × k rays, and each zone reports up to `targets`
 // targets in one of ST's two target orders: nearest first ("closest", the
 // default here) or the most signal first ("strongest", the default of ST's
@@ -17,15 +18,18 @@
 // sorted by distance and split where two successive distances differ by the
 // part's minimum target separation or more: ST gives 600 mm for the
 // VL53L5CX/L7CX/L8CX ("the minimum distance between two targets to be
-// detected is 600 mm", UM2884, UM3038, UM3109); closer surfaces merge into one
-// target. A ray's distance is the one the part reports: projected on the
-// sensor's axis for ST's parts (`perpendicular`: a flat wall facing the
-// sensor reads the same in every zone; ST does the conversion on the chip),
-// or along the ray (`radial`). A target's distance is the centre of its
-// rays' distances weighed by the signal each returns, ρ·cos θ / d² for a
-// matte surface (the histogram's peak: a zone straddling a near bright edge
-// and a far wall leans to the edge), with the sensor's noise model applied
-// once per target (the draw of the target's nearest ray). The same signal
+// detected is 600 mm", UM2884, UM3038, UM3109), and no figure was found for
+// the VL53L4CX, which takes the same 600 mm (an assumption); closer surfaces
+// merge into one target. A ray's distance is the one the part reports:
+// projected on the sensor's axis for ST's multi-zone parts (`perpendicular`:
+// a flat wall facing the sensor reads the same in every zone; ST does the
+// conversion on the chip), or along the ray (`radial`: the single-zone
+// VL53L4CX's, which times its photons along their paths). A target's
+// distance is the centre of its rays' distances weighed by the signal each
+// returns, ρ·cos θ / d² for a matte surface (the histogram's peak: a zone
+// straddling a near bright edge and a far wall leans to the edge), with the
+// sensor's noise model applied once per target (the draw of the target's
+// nearest ray). The same signal
 // sets a ray's range: a part whose range depends on the target (its range
 // tables, measured on a flat target facing the sensor, which a ray meets at
 // its own angle φ off the axis) sees a surface met at incidence θ as a target
@@ -81,20 +85,27 @@ struct ZoneReadings {
   std::vector<std::uint8_t> target_count;   ///< [zone]: valid targets found
 };
 
-/// The part's limits that a scenario is checked against.
+/// The part's limits that a scenario is checked against, and its preset's grid.
 struct MultizonePart {
   const char* name;
   double fov_deg;             ///< square field of view, degrees (each side)
   double max_range_m;         ///< the datasheet's longest range
-  double max_rate_4x4_hz;     ///< ranging frequency limit at 4×4
-  double max_rate_8x8_hz;     ///< ranging frequency limit at 8×8
+  /// The grids the part has, zones a side (0: no second grid), the first its
+  /// preset's, and the ranging frequency limit at each, Hz.
+  std::array<int, 2> grids_across;
+  std::array<double, 2> max_rate_hz;
+  int rays_per_zone;          ///< the preset's rays per zone (k², an assumption of the model)
+  int targets;                ///< the preset's targets per zone (the driver's default)
+  bool perpendicular;         ///< the preset's distance: projected on the axis (true) or radial
   const char* source;         ///< where the figures come from
 };
 
-/// The named multi-zone parts ("vl53l5cx", "vl53l7cx", "vl53l8cx").
+/// The named multi-zone parts ("vl53l4cx", "vl53l5cx", "vl53l7cx", "vl53l8cx").
 std::span<const MultizonePart> MultizoneParts();
 /// The part called `name`, or null.
 const MultizonePart* FindMultizonePart(const std::string& name);
+/// The grids a part has, as a scenario writes them: "[4, 4] or [8, 8]", "[1, 1]".
+std::string MultizonePartGrids(const MultizonePart& part);
 
 /// The number of zones.
 inline int ZoneCount(const ZoneSpec& zones) { return zones.nx * zones.ny; }

@@ -17,6 +17,9 @@ constexpr Row kRows[] = {
     {"sharp_gp2y0a21", {12.95, 3.5}},
     {"vl53l0x", {14.95, 1.0}},
     {"vl53l1x", {14.95, 1.0}},
+    // no distributor price was found for a VL53L4CX board: taken as the VL53L1X
+    // board's (an estimate, docs/sensors.md says so)
+    {"vl53l4cx", {14.95, 1.0}},
     {"vl53l5cx", {24.95, 1.5}},
     {"vl53l7cx", {24.95, 1.5}},
     {"vl53l8cx", {24.95, 1.5}},

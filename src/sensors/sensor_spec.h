@@ -209,7 +209,8 @@ struct SensorSpec {
   /// noise; lookup: an empty table, to be given).
   static SensorSpec Preset(SensorType type);
 
-  /// A named real part ("hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l5cx", "vl53l7cx", "vl53l8cx"), or nullopt.
+  /// A named real part ("hc_sr04", "sharp_gp2y0a21", "vl53l0x", "vl53l1x", "vl53l4cx", "vl53l5cx",
+  /// "vl53l7cx", "vl53l8cx"), or nullopt.
   static std::optional<SensorSpec> PartPreset(std::string_view name);
   /// Every part name, for messages.
   static const std::vector<std::string>& PartNames();
