@@ -17,6 +17,7 @@
 #include "knowledge/terrain_config.h"
 #include "scenario/config_sections.h"
 #include "scenario/gait_section.h"
+#include "scenario/robot_section.h"
 #include "scenario/scenario.h"
 #include "sim/run_summary.h"
 #include "strategy/strategy_config.h"
@@ -26,8 +27,11 @@ namespace {
 
 // a scenario with a robot, two sensors, `map` and `strategy` sections as given
 Scenario SchemaScenario(const std::string& map_yaml, const std::string& strategy_yaml,
-                        const std::string& gait_yaml = "{}") {
-  return LoadScenarioText("proxsim: 1\nrobot: {model: builtin:biped, gait: " + gait_yaml + ", strategy: " + strategy_yaml +
+                        const std::string& gait_yaml = "{}", const std::string& robot_yaml = "{}") {
+  // the robot's own keys' flow map, its braces taken off, beside the ones given here
+  const std::string robot_keys = robot_yaml.substr(1, robot_yaml.size() - 2);
+  return LoadScenarioText("proxsim: 1\nrobot: {model: builtin:biped, gait: " + gait_yaml + ", strategy: " +
+                              strategy_yaml + (robot_keys.empty() ? "" : ", " + robot_keys) +
                               "}\nsensors: [{name: a, type: laser, link: left_tibia}, "
                               "{name: b, type: reflectance, link: left_tibia}]\nmap: " +
                               map_yaml + "\n",
@@ -49,8 +53,13 @@ Config EveryKeyChanged(const ConfigSchema<Config>& schema) {
   Config config;
   for (const auto& param : schema) {
     const ParamDescription& d = param.description;
+    if (param.ByHand()) continue;  // the section's own code reads it
     switch (d.type) {
       case ParamType::kNumber: {
+        if (d.whole) {
+          param.set(config, d.bounds.min + 1);
+          break;
+        }
         const double now = std::get<double>(param.get(config));
         double moved = now + 0.125;
         if (!d.bounds.Contains(moved)) moved = now - 0.001;
@@ -128,7 +137,7 @@ TEST(ConfigSchema, TheReaderReportsABoundAtItsKeysLine) {
   const std::vector<std::string> problems =
       SchemaProblems("{window_m: 0.5}", "{name: circumvent,\n  rejoin_m: 0, perception: mapp}");
   ASSERT_EQ(problems.size(), 3u);
-  EXPECT_EQ(problems[0], "schema.yaml:3: robot.strategy.perception: expected readings or map, got 'mapp' (did you mean 'map'?)");
+  EXPECT_EQ(problems[0], "schema.yaml:3: robot.strategy.perception: expected readings (each fresh reading's point) or map (the robot's terrain map), got 'mapp' (did you mean 'map'?)");
   EXPECT_EQ(problems[1], "schema.yaml:3: robot.strategy.rejoin_m: expected a number > 0 m, got 0");
   EXPECT_EQ(problems[2], "schema.yaml:5: map.window_m: expected a number >= 1 m, got 0.5");
 }
@@ -164,6 +173,14 @@ TEST(ConfigSchema, WhatTheWriterWritesTheReaderReadsBack) {
   ASSERT_TRUE(s.robot);
   EXPECT_EQ(ParamsYaml(GaitSectionSchema(), *s.robot), gait_yaml);
   EXPECT_NE(gait_yaml.find("crouch_knee_deg: "), std::string::npos) << gait_yaml;
+
+  // the robot's own choices and geom_group (its maps and paths are read by hand)
+  const RobotConfig changed = EveryKeyChanged(RobotSectionSchema());
+  const std::string robot_yaml = ParamsYaml(RobotSectionSchema(), changed);
+  EXPECT_EQ(robot_yaml, "{model_scene: ignore, geom_group: 1, geometry: collision, on_collision: continue, "
+                        "locomotion: external}");
+  const Scenario with_robot = SchemaScenario("{}", "{name: stop}", "{}", robot_yaml);
+  EXPECT_EQ(ParamsYaml(RobotSectionSchema(), *with_robot.robot), robot_yaml);
 }
 
 // summary.json's inputs carry every declared key of the map and the strategy,
@@ -192,6 +209,15 @@ TEST(ConfigSchema, TheSummaryEchoesEveryDeclaredKey) {
     ASSERT_TRUE(gait.contains(param.key())) << param.key();
     EXPECT_EQ(gait[param.key()].is_null(), param.key() == "keyframe") << param.key();
   }
+  // every robot key is echoed, by its declaration or by the section's code (stop_distance_m: as the strategy)
+  const nlohmann::json robot_echo = InputsJson(SchemaScenario("{}", "{name: stop}", "{}",
+                                                              ParamsYaml(RobotSectionSchema(), EveryKeyChanged(RobotSectionSchema()))))["robot"];
+  for (const auto& param : RobotSectionSchema()) {
+    if (param.key() == "stop_distance_m") continue;
+    EXPECT_TRUE(robot_echo.contains(param.key())) << param.key();
+  }
+  EXPECT_EQ(robot_echo["geom_group"].dump(), "1");
+  EXPECT_EQ(robot_echo["locomotion"], "external");
   EXPECT_EQ(echoed["perception"], "map");
   // a key left out: its default, or null where the default means "not given"
   const nlohmann::json defaults = InputsJson(SchemaScenario("{}", "{name: stop}"));
@@ -204,7 +230,7 @@ TEST(ConfigSchema, TheSummaryEchoesEveryDeclaredKey) {
 // `proxsim columns --keys SECTION` prints it.
 TEST(ConfigSchema, TheDocsTablesAreTheDeclarations) {
   const std::vector<std::pair<std::string, std::string>> pages = {
-      {"map", "terrain_map.md"}, {"robot.gait", "scenario.md"}, {"strategy.stop", "scenario.md"}, {"strategy.circumvent", "scenario.md"}};
+      {"map", "terrain_map.md"}, {"robot", "scenario.md"}, {"robot.gait", "scenario.md"}, {"strategy.stop", "scenario.md"}, {"strategy.circumvent", "scenario.md"}};
   ASSERT_EQ(ConfigSectionNames().size(), pages.size()) << "a new section: add its docs page here";
   for (const auto& [section, page] : pages) {
     const auto params = ConfigSectionParams(section);

@@ -172,7 +172,7 @@ robot:
   joints_deg: [10, 20]
 )",
                                                        Source());
-  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:4:", "robot.geometry", "expected visual or collision, got meshes"}))
+  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:4:", "robot.geometry", "expected visual or collision, got 'meshes'"}))
       << Join(problems);
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:5:", "robot.package_paths[1]", "expected a folder",
                                     (dir_ / "no_such_folder").string() + "' is not one"}))

@@ -374,7 +374,7 @@ TEST(ScenarioErrorTest, WrongShapesOfValues) {
       "    see_robot: maybe\n"
       "    pose: {xyz_m: [1, 2]}\n"));
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:2:", "seed:", "expected a whole number >= 0, got 1.5"}));
-  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:3:", "robot:", "expected a map with keys model, start", "got fast"}));
+  EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:3:", "robot:", "expected a map with keys model, model_scene, geom_group", "got fast"}));
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:5:", "sensors[0].name:", "expected a non-empty text, got [a, b]"}));
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:7:", "sensors[0].see_robot:", "expected true or false, got maybe"}));
   EXPECT_TRUE(HasProblem(problems, {"scenario.yaml:8:", "sensors[0].pose.xyz_m:", "expected [x, y, z] in metres, got [1, 2]"}));

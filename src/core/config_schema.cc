@@ -46,6 +46,15 @@ std::string WordText(const std::string& text) {
 
 }  // namespace
 
+ParamDescription Describe(std::string key, ParamType type, std::string default_text, std::string meaning) {
+  ParamDescription description;
+  description.key = std::move(key);
+  description.type = type;
+  description.default_text = std::move(default_text);
+  description.meaning = std::move(meaning);
+  return description;
+}
+
 bool ParamBounds::Contains(double value) const {
   if (!std::isfinite(value)) return false;
   if (min_open ? !(value > min) : !(value >= min)) return false;
@@ -88,10 +97,12 @@ std::string ParamValueText(const ParamValue& value) {
 }
 
 std::string ParamTypeText(const ParamDescription& param) {
+  if (!param.type_text.empty()) return param.type_text;
   switch (param.type) {
     case ParamType::kNumber: {
       const std::string bounds = param.bounds.Text("");
-      return "number" + (bounds.empty() ? "" : " " + bounds) + (param.unit.empty() ? "" : ", " + param.unit);
+      return std::string(param.whole ? "whole number" : "number") + (bounds.empty() ? "" : " " + bounds) +
+             (param.unit.empty() ? "" : ", " + param.unit);
     }
     case ParamType::kFlag:
       return "`true` \\| `false`";

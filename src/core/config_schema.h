@@ -67,10 +67,17 @@ struct ParamDescription {
   std::string unit;
   ParamBounds bounds;
   std::vector<std::string> choices;
+  std::vector<std::string> choice_glosses;  ///< what each choice does, for messages (empty, or one per choice)
   std::string default_text;  ///< the default as a file would write it, or what leaving it out means
   std::string meaning;
   std::string bounds_note;   ///< why the bounds are what they are, for messages ("" for none)
+  bool whole = false;        ///< a number: a whole number (read as a count)
+  std::string type_text;     ///< the type as the docs say it, for a key read by its section's own code
 };
+
+/// A description with its key, type, default and meaning; the rest (unit,
+/// bounds, choices, notes) set by the caller.
+ParamDescription Describe(std::string key, ParamType type, std::string default_text, std::string meaning);
 
 /// One key of a section of struct `Config`.
 template <class Config>
@@ -84,6 +91,9 @@ struct ConfigParam {
 
   const std::string& key() const { return description.key; }
   bool Unset(const Config& config) const { return is_unset && is_unset(config); }
+  /// A key the section's own code reads, echoes and writes (a nested map, a
+  /// path resolved against the file): declared here for the key list and the docs.
+  bool ByHand() const { return !get; }
 };
 
 template <class Config>
@@ -109,8 +119,9 @@ template <class Config>
 ConfigParam<Config> NumberParam(std::string key, double Config::*member, ParamBounds bounds, std::string unit,
                                 std::string meaning) {
   ConfigParam<Config> param;
-  param.description = {std::move(key), ParamType::kNumber, std::move(unit), bounds, {},
-                       ParamValueText(Config{}.*member), std::move(meaning), {}};
+  param.description = Describe(std::move(key), ParamType::kNumber, ParamValueText(Config{}.*member), std::move(meaning));
+  param.description.unit = std::move(unit);
+  param.description.bounds = bounds;
   param.get = [member](const Config& c) { return ParamValue(c.*member); };
   param.set = [member](Config& c, const ParamValue& v) { c.*member = std::get<double>(v); };
   return param;
@@ -138,8 +149,9 @@ ConfigParam<Config> ConvertedNumberParam(std::string key, ParamBounds bounds, st
                                          std::function<void(Config&, double)> set,
                                          std::function<bool(const Config&)> is_unset = {}) {
   ConfigParam<Config> param;
-  param.description = {std::move(key), ParamType::kNumber, std::move(unit), bounds, {}, std::move(default_text),
-                       std::move(meaning), {}};
+  param.description = Describe(std::move(key), ParamType::kNumber, std::move(default_text), std::move(meaning));
+  param.description.unit = std::move(unit);
+  param.description.bounds = bounds;
   param.get = [get](const Config& c) { return ParamValue(get(c)); };
   param.set = [set](Config& c, const ParamValue& v) { set(c, std::get<double>(v)); };
   param.is_unset = std::move(is_unset);
@@ -151,10 +163,20 @@ template <class Config>
 ConfigParam<Config> TextParam(std::string key, std::string Config::*member, std::string unset_means,
                               std::string meaning) {
   ConfigParam<Config> param;
-  param.description = {std::move(key), ParamType::kText, "", {}, {}, std::move(unset_means), std::move(meaning), {}};
+  param.description = Describe(std::move(key), ParamType::kText, std::move(unset_means), std::move(meaning));
   param.get = [member](const Config& c) { return ParamValue(c.*member); };
   param.set = [member](Config& c, const ParamValue& v) { c.*member = std::get<std::string>(v); };
   param.is_unset = [member](const Config& c) { return (c.*member).empty(); };
+  return param;
+}
+
+/// A key read by its section's own code (see ConfigParam::ByHand): its type
+/// as the docs say it, its default and meaning.
+template <class Config>
+ConfigParam<Config> ByHandParam(std::string key, std::string type_text, std::string default_text, std::string meaning) {
+  ConfigParam<Config> param;
+  param.description = Describe(std::move(key), ParamType::kText, std::move(default_text), std::move(meaning));
+  param.description.type_text = std::move(type_text);
   return param;
 }
 
@@ -162,8 +184,7 @@ ConfigParam<Config> TextParam(std::string key, std::string Config::*member, std:
 template <class Config>
 ConfigParam<Config> FlagParam(std::string key, bool Config::*member, std::string meaning) {
   ConfigParam<Config> param;
-  param.description = {std::move(key), ParamType::kFlag, "", {}, {}, ParamValueText(Config{}.*member),
-                       std::move(meaning), {}};
+  param.description = Describe(std::move(key), ParamType::kFlag, ParamValueText(Config{}.*member), std::move(meaning));
   param.get = [member](const Config& c) { return ParamValue(c.*member); };
   param.set = [member](Config& c, const ParamValue& v) { c.*member = std::get<bool>(v); };
   return param;
@@ -180,7 +201,8 @@ ConfigParam<Config> ChoiceParam(std::string key, Enum Config::*member, std::vect
     choices.push_back(name);
     if (value == Config{}.*member) default_name = name;
   }
-  param.description = {std::move(key), ParamType::kChoice, "", {}, std::move(choices), default_name, std::move(meaning), {}};
+  param.description = Describe(std::move(key), ParamType::kChoice, default_name, std::move(meaning));
+  param.description.choices = std::move(choices);
   param.get = [member, names](const Config& c) {
     for (const auto& [value, name] : names)
       if (value == c.*member) return ParamValue(name);
@@ -217,11 +239,14 @@ template <class Config>
 std::vector<std::string> CheckParamBounds(const ConfigSchema<Config>& schema, const Config& config) {
   std::vector<std::string> problems;
   for (const auto& param : schema) {
-    if (param.description.type != ParamType::kNumber || param.Unset(config)) continue;
+    if (param.ByHand() || param.description.type != ParamType::kNumber || param.Unset(config)) continue;
     const double value = std::get<double>(param.get(config));
     if (!param.description.bounds.Contains(value)) {
       const std::string& note = param.description.bounds_note;
-      problems.push_back(param.key() + ": expected " + param.description.bounds.Expected(param.description.unit) +
+      const ParamDescription& d = param.description;
+      const std::string expected =
+          d.whole ? "a whole number " + d.bounds.Text(d.unit) : d.bounds.Expected(d.unit);
+      problems.push_back(param.key() + ": expected " + expected +
                          (note.empty() ? "" : " (" + note + ")") + ", got " + ParamNumberText(value));
     }
   }
@@ -229,13 +254,13 @@ std::vector<std::string> CheckParamBounds(const ConfigSchema<Config>& schema, co
 }
 
 /// The section as a YAML flow map, `{key: value, ...}`, every key that has a
-/// value, in the declaration's order; `first` goes before them (e.g. a
+/// value (but those read by hand), in the declaration's order; `first` goes before them (e.g. a
 /// strategy's `name: stop`). It reads back to the same values.
 template <class Config>
 std::string ParamsYaml(const ConfigSchema<Config>& schema, const Config& config, const std::string& first = "") {
   std::string text = first;
   for (const auto& param : schema) {
-    if (param.Unset(config)) continue;
+    if (param.ByHand() || param.Unset(config)) continue;
     text += (text.empty() ? "" : ", ") + param.key() + ": " + ParamValueText(param.get(config));
   }
   return "{" + text + "}";

@@ -26,9 +26,8 @@ const ConfigSchema<TerrainMapConfig>& TerrainMapSchema() {
     };
     // the sensors feeding the map: not given is a rule by type, an empty list no sensor
     ConfigParam<C> sensors;
-    sensors.description = {"sensors", ParamType::kNames, "", {}, {},
-                           "every sensor but the reflectance ones",
-                           "the names of the sensors whose readings feed the map", {}};
+    sensors.description = Describe("sensors", ParamType::kNames, "every sensor but the reflectance ones",
+                                   "the names of the sensors whose readings feed the map");
     sensors.get = [](const C& c) { return ParamValue(c.sensors); };
     sensors.set = [](C& c, const ParamValue& v) {
       c.sensors = std::get<std::vector<std::string>>(v);

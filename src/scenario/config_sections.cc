@@ -5,6 +5,7 @@
 
 #include "knowledge/terrain_config.h"
 #include "scenario/gait_section.h"
+#include "scenario/robot_section.h"
 #include "strategy/strategy_config.h"
 
 namespace proxsim {
@@ -14,6 +15,7 @@ namespace {
 const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>>& Sections() {
   static const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>> sections = {
       {"map", [] { return DescribeParams(TerrainMapSchema()); }},
+      {"robot", [] { return DescribeParams(RobotSectionSchema()); }},
       {"robot.gait", [] { return DescribeParams(GaitSectionSchema()); }},
       {"strategy.stop", [] { return DescribeParams(StopSchema()); }},
       {"strategy.circumvent", [] { return DescribeParams(CircumventSchema()); }},

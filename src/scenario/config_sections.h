@@ -11,7 +11,7 @@
 
 namespace proxsim {
 
-/// "map", "robot.gait", "strategy.stop", "strategy.circumvent", in that order.
+/// "map", "robot", "robot.gait", "strategy.stop", "strategy.circumvent", in that order.
 std::vector<std::string> ConfigSectionNames();
 
 /// The keys of section `name`; nullopt for a name not in ConfigSectionNames().

@@ -27,11 +27,10 @@ const ConfigSchema<RobotConfig>& GaitSectionSchema() {
   static const ConfigSchema<C> schema = [] {
     // keyframe: a member of the walk's gait, not of the robot
     ConfigParam<C> keyframe;
-    keyframe.description = {"keyframe", ParamType::kText, "", {}, {}, "none",
-                            "the name of one of the model's keyframes (MJCF `<key name>`): the gait walks with its "
-                            "knee bend and holds every joint it does not drive at the key's angle (`joints_deg` "
-                            "overrides)",
-                            {}};
+    keyframe.description = Describe("keyframe", ParamType::kText, "none",
+                                    "the name of one of the model's keyframes (MJCF `<key name>`): the gait walks "
+                                    "with its knee bend and holds every joint it does not drive at the key's angle "
+                                    "(`joints_deg` overrides)");
     keyframe.get = [](const C& c) { return ParamValue(c.gait.keyframe); };
     keyframe.set = [](C& c, const ParamValue& v) { c.gait.keyframe = std::get<std::string>(v); };
     keyframe.is_unset = [](const C& c) { return c.gait.keyframe.empty(); };
@@ -84,6 +83,10 @@ const ConfigSchema<RobotConfig>& GaitSectionSchema() {
             [](const C& c) { return !c.gait.crouch_knee_rad.has_value(); }),
     };
     s[1].description.bounds_note = "a gait cycle a walking robot can take";
+    s[3].description.choice_glosses = {"a step the legs cannot take is taken, and the robot falls",
+                                       "the legs stand before it"};
+    s[4].description.choice_glosses = {"footsteps planned on the scene's true surface",
+                                       "on the robot's own terrain map"};
     s[0].description.bounds_note = s[2].description.bounds_note = kStrideNote;
     return s;
   }();

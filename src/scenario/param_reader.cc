@@ -7,6 +7,10 @@ namespace proxsim {
 std::optional<ParamValue> ReadParamValue(YamlReader& reader, const Field& field, const ParamDescription& param) {
   switch (param.type) {
     case ParamType::kNumber:
+      if (param.whole) {
+        if (const auto count = reader.Count(field)) return ParamValue(static_cast<double>(*count));
+        return std::nullopt;
+      }
       if (const auto number = reader.Number(field, AnyNumber())) return ParamValue(*number);
       return std::nullopt;
     case ParamType::kFlag:
@@ -22,7 +26,9 @@ std::optional<ParamValue> ReadParamValue(YamlReader& reader, const Field& field,
         if (*word == choice) return ParamValue(*word);
       std::string all;
       for (std::size_t i = 0; i < param.choices.size(); ++i) {
-        all += (i == 0 ? "" : i + 1 == param.choices.size() ? " or " : ", ") + param.choices[i];
+        const bool glossed = i < param.choice_glosses.size() && !param.choice_glosses[i].empty();
+        all += (i == 0 ? "" : i + 1 == param.choices.size() ? " or " : ", ") + param.choices[i] +
+               (glossed ? " (" + param.choice_glosses[i] + ")" : "");
       }
       const auto nearest = NearestKey(*word, param.choices);
       reader.Fail(field, "expected " + all + ", got '" + *word + "'" +

@@ -25,10 +25,12 @@ std::optional<MapView> OpenSection(YamlReader& reader, const Field& field, const
   return reader.Map(field, keys);
 }
 
-/// Every key of the schema the file gives, read into `config`; the others keep their defaults.
+/// Every key of the schema the file gives, read into `config` (but those read
+/// by hand: the caller's); the others keep their defaults.
 template <class Config>
 void ReadParams(YamlReader& reader, const MapView& map, const ConfigSchema<Config>& schema, Config& config) {
   for (const auto& param : schema) {
+    if (param.ByHand()) continue;
     const Field field = map[param.key()];
     if (!field) continue;
     if (const auto value = ReadParamValue(reader, field, param.description)) param.set(config, *value);

@@ -7,7 +7,6 @@
 // (robot/); here we only check that a named file exists, so that a typo in a
 // path is reported with the scenario's other problems.
 #include <algorithm>
-#include <initializer_list>
 #include <memory>
 #include <set>
 #include <system_error>
@@ -18,6 +17,7 @@
 #include "robot/mjcf_model.h"
 #include "scenario/gait_section.h"
 #include "scenario/param_reader.h"
+#include "scenario/robot_section.h"
 #include "scenario/scenario_sections.h"
 
 namespace proxsim {
@@ -102,20 +102,6 @@ std::vector<std::pair<std::string, double>> ReadJointAngles(YamlReader& reader, 
   return angles;
 }
 
-
-// One of a few named values (absent: nullopt); anything else fails naming them.
-template <typename Value>
-std::optional<Value> ReadChoice(YamlReader& reader, const Field& field,
-                                std::initializer_list<std::pair<const char*, Value>> choices,
-                                const std::string& expected) {
-  if (!field) return std::nullopt;
-  const auto text = reader.String(field);
-  if (!text) return std::nullopt;
-  for (const auto& [name, value] : choices)
-    if (*text == name) return value;
-  reader.Fail(field, expected + ", got '" + *text + "'");
-  return std::nullopt;
-}
 
 // one strategy's map by its declaration (strategy/strategy_config.h), `name` aside
 template <class Config>
@@ -205,10 +191,11 @@ std::optional<StrategyConfig> ReadStrategy(YamlReader& reader, const Field& fiel
 RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesystem::path& base_dir, Scene& scene,
                       SceneFromModel& from_model) {
   RobotConfig robot;
-  const auto map = reader.Map(field, {"model", "start", "gait", "path", "strategy", "stop_distance_m", "trajectory",
-                                       "geometry", "geom_group", "package_paths", "model_scene", "legs", "joints_deg",
-                                       "on_collision", "locomotion"});
+  const auto map = OpenSection(reader, field, RobotSectionSchema());
   if (!map) return robot;
+  // geometry, geom_group, model_scene, on_collision, locomotion: by their declaration (robot_section.h)
+  ReadParams(reader, *map, RobotSectionSchema(), robot);
+  ReportAtKeys(reader, *map, CheckParamBounds(RobotSectionSchema(), robot));
 
   // model: builtin:NAME, or a URDF or MJCF file
   const Field model = (*map)["model"];
@@ -216,27 +203,6 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     robot.model = model.node.Scalar();
   } else if (const auto urdf = ReadExistingFile(reader, model, base_dir, "builtin:biped or the path of a URDF or MJCF file")) {
     robot.model = *urdf;
-  }
-
-  // geometry: visual | collision
-  if (const Field geometry = (*map)["geometry"]) {
-    const auto kind = reader.String(geometry);
-    if (kind == "visual") {
-      robot.geometry = LinkGeometryKind::kVisual;
-    } else if (kind == "collision") {
-      robot.geometry = LinkGeometryKind::kCollision;
-    } else if (kind) {
-      reader.Fail(geometry, "expected visual or collision, got " + DescribeNode(geometry.node));
-    }
-  }
-
-  // geom_group: 0 to 5, the MJCF geoms that are the links' surfaces (none: every geom)
-  if (const Field group = (*map)["geom_group"]) {
-    if (const auto value = reader.Count(group); value && *value > 5) {
-      reader.Fail(group, "expected a MuJoCo geom group, 0 to 5, got " + std::to_string(*value));
-    } else if (value) {
-      robot.geom_group = static_cast<int>(*value);
-    }
   }
 
   // package_paths: [folder, ...], relative to the scenario's folder
@@ -255,25 +221,11 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
     }
   }
 
-  // model_scene: include | ignore, the world geoms of an MJCF scene file that includes the robot
-  robot.model_scene = ReadChoice<ModelScene>(reader, (*map)["model_scene"],
-                                             {{"include", ModelScene::kInclude}, {"ignore", ModelScene::kIgnore}},
-                                             "expected include (the world geoms of the model's file join the scene) "
-                                             "or ignore (the scene is the scenario's alone)")
-                          .value_or(robot.model_scene);
   // (before start.on, which may name one of them)
   TakeModelScene(reader, model, robot, scene, from_model);
 
   robot.legs = ReadLegs(reader, (*map)["legs"]);
   robot.joints_rad = ReadJointAngles(reader, (*map)["joints_deg"]);
-
-  // on_collision: stop | continue
-  robot.on_collision =
-      ReadChoice<OnCollision>(reader, (*map)["on_collision"],
-                              {{"stop", OnCollision::kStop}, {"continue", OnCollision::kContinue}},
-                              "expected stop (the episode ends at the first collision) or continue (every "
-                              "collision is logged and the walk goes on)")
-          .value_or(robot.on_collision);
 
   // start: {xyz_m, yaw_deg, on}; `on` names the object the robot starts on
   // on purpose (sim/start_check.h refuses any other start on or in an object)
@@ -337,16 +289,9 @@ RobotConfig ReadRobot(YamlReader& reader, const Field& field, const std::filesys
                                 .value_or("");
   }
 
-  // locomotion: gait | external (co-simulation: the caller sets the state every sample)
-  const Field locomotion = (*map)["locomotion"];
-  robot.locomotion = ReadChoice<LocomotionSource>(
-                         reader, locomotion,
-                         {{"gait", LocomotionSource::kGait}, {"external", LocomotionSource::kExternal}},
-                         "expected gait (its own gait, or the trajectory when given) or external (the caller sets "
-                         "the robot's state every sample: docs/cosimulation.md)")
-                         .value_or(robot.locomotion);
+  // locomotion: external (co-simulation: the caller sets the state every sample) replays nothing
   if (robot.locomotion == LocomotionSource::kExternal && (*map)["trajectory"]) {
-    reader.Fail(locomotion, "give either locomotion: external or a trajectory to replay, not both");
+    reader.Fail((*map)["locomotion"], "give either locomotion: external or a trajectory to replay, not both");
   }
   return robot;
 }

@@ -4,6 +4,7 @@
 
 #include "raycast/embree_version.h"
 #include "scenario/gait_section.h"
+#include "scenario/robot_section.h"
 #include "sim/params_json.h"
 #include "sensors/sensor_echo.h"
 #include "sensors/sensor_types.h"
@@ -77,22 +78,19 @@ nlohmann::json InputsJson(const Scenario& scenario) {
     }
     nlohmann::json joints_deg = nlohmann::json::object();
     for (const auto& [joint, q_rad] : r.joints_rad) joints_deg[joint] = RadToDeg(q_rad);
-    robot = {{"model", r.model},
-             {"model_scene", r.model_scene == ModelScene::kIgnore ? "ignore" : "include"},
-             {"geometry", r.geometry == LinkGeometryKind::kCollision ? "collision" : "visual"},
-             {"geom_group", NullUnless(r.geom_group >= 0, r.geom_group)},
-             {"package_paths", r.package_paths},
-             {"legs", legs},
-             {"joints_deg", joints_deg},
-             {"on_collision", r.on_collision == OnCollision::kContinue ? "continue" : "stop"},
-             {"start", {{"xyz_m", {r.start_xyz_m.x(), r.start_xyz_m.y(), r.start_xyz_m.z()}},
-                        {"yaw_deg", RadToDeg(r.start_yaw_rad)},
-                        {"on", NullUnless(!r.start_on.empty(), r.start_on)}}},
-             {"gait", ParamsJson(GaitSectionSchema(), r)},
-             {"path", {{"waypoints_m", waypoints}}},
-             {"strategy", r.strategy ? StrategyJson(*r.strategy) : nlohmann::json(nullptr)},
-             {"trajectory", NullUnless(!r.trajectory_file.empty(), r.trajectory_file)},
-             {"locomotion", r.locomotion == LocomotionSource::kExternal ? "external" : "gait"}};
+    // the choices and geom_group by their declaration (scenario/robot_section.h), the maps and paths here
+    robot = ParamsJson(RobotSectionSchema(), r);
+    robot["model"] = r.model;
+    robot["package_paths"] = r.package_paths;
+    robot["legs"] = legs;
+    robot["joints_deg"] = joints_deg;
+    robot["start"] = {{"xyz_m", {r.start_xyz_m.x(), r.start_xyz_m.y(), r.start_xyz_m.z()}},
+                      {"yaw_deg", RadToDeg(r.start_yaw_rad)},
+                      {"on", NullUnless(!r.start_on.empty(), r.start_on)}};
+    robot["gait"] = ParamsJson(GaitSectionSchema(), r);
+    robot["path"] = {{"waypoints_m", waypoints}};
+    robot["strategy"] = r.strategy ? StrategyJson(*r.strategy) : nlohmann::json(nullptr);
+    robot["trajectory"] = NullUnless(!r.trajectory_file.empty(), r.trajectory_file);
   }
   nlohmann::json map = nullptr;
   if (scenario.robot) {

@@ -9,12 +9,20 @@ const std::vector<std::pair<Perception, std::string>> kPerceptionNames = {{Perce
 const char* const kPerceptionMeaning =
     "`readings`: each fresh reading's point (the paper's way); `map`: the obstacles of the robot's terrain map";
 
+// the perception key, with what each choice reads for a wrong one's message
+template <class C>
+ConfigParam<C> PerceptionParam() {
+  ConfigParam<C> param = ChoiceParam("perception", &C::perception, kPerceptionNames, kPerceptionMeaning);
+  param.description.choice_glosses = {"each fresh reading's point", "the robot's terrain map"};
+  return param;
+}
+
 }  // namespace
 
 const ConfigSchema<StopConfig>& StopSchema() {
   using C = StopConfig;
   static const ConfigSchema<C> schema = {
-      ChoiceParam("perception", &C::perception, kPerceptionNames, kPerceptionMeaning),
+      PerceptionParam<C>(),
       NumberParam("stop_distance_m", &C::stop_distance_m, Positive(), "m", "look-ahead from the leading toe"),
       NumberParam("min_height_m", &C::min_height_m, Positive(), "m",
                   "a measured point this far above the ground the robot stands on is an obstacle"),
@@ -30,7 +38,7 @@ const ConfigSchema<StopConfig>& StopSchema() {
 const ConfigSchema<CircumventConfig>& CircumventSchema() {
   using C = CircumventConfig;
   static const ConfigSchema<C> schema = {
-      ChoiceParam("perception", &C::perception, kPerceptionNames, kPerceptionMeaning),
+      PerceptionParam<C>(),
       NumberParam("margin_m", &C::margin_m, NonNegative(), "m", "kept between the robot's half-width and the obstacle"),
       NumberParam("detect_distance_m", &C::detect_distance_m, Positive(), "m",
                   "an obstacle this close ahead of the leading toe is avoided"),
