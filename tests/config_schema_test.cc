@@ -230,7 +230,7 @@ TEST(ConfigSchema, TheSummaryEchoesEveryDeclaredKey) {
 // `proxsim columns --keys SECTION` prints it.
 TEST(ConfigSchema, TheDocsTablesAreTheDeclarations) {
   const std::vector<std::pair<std::string, std::string>> pages = {
-      {"map", "terrain_map.md"}, {"robot", "scenario.md"}, {"robot.gait", "scenario.md"}, {"strategy.stop", "scenario.md"}, {"strategy.circumvent", "scenario.md"}};
+      {"material", "scenario.md"}, {"map", "terrain_map.md"}, {"robot", "scenario.md"}, {"robot.gait", "scenario.md"}, {"strategy.stop", "scenario.md"}, {"strategy.circumvent", "scenario.md"}};
   ASSERT_EQ(ConfigSectionNames().size(), pages.size()) << "a new section: add its docs page here";
   for (const auto& [section, page] : pages) {
     const auto params = ConfigSectionParams(section);

@@ -628,7 +628,7 @@ PYBIND11_MODULE(_core, m) {
         return keys;
       },
       py::arg("section"),
-      "The keys of a scenario section ('map', 'robot', 'robot.gait', 'strategy.stop', 'strategy.circumvent'): "
+      "The keys of a scenario section ('material', 'map', 'robot', 'robot.gait', 'strategy.stop', 'strategy.circumvent'): "
       "a list of dicts {key, type, unit, min, max, min_open, max_open, choices, default, meaning}.");
   m.def("config_sections", &proxsim::ConfigSectionNames, "The sections config_keys() describes.");
   py::register_exception_translator([](std::exception_ptr p) {

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "knowledge/terrain_config.h"
+#include "scene/scene.h"
 #include "scenario/gait_section.h"
 #include "scenario/robot_section.h"
 #include "strategy/strategy_config.h"
@@ -14,6 +15,7 @@ namespace {
 
 const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>>& Sections() {
   static const std::vector<std::pair<std::string, std::function<std::vector<ParamDescription>()>>> sections = {
+      {"material", [] { return DescribeParams(MaterialSchema()); }},
       {"map", [] { return DescribeParams(TerrainMapSchema()); }},
       {"robot", [] { return DescribeParams(RobotSectionSchema()); }},
       {"robot.gait", [] { return DescribeParams(GaitSectionSchema()); }},

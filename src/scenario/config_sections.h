@@ -11,7 +11,8 @@
 
 namespace proxsim {
 
-/// "map", "robot", "robot.gait", "strategy.stop", "strategy.circumvent", in that order.
+/// "material" (a scene object's), "map", "robot", "robot.gait",
+/// "strategy.stop", "strategy.circumvent", in that order.
 std::vector<std::string> ConfigSectionNames();
 
 /// The keys of section `name`; nullopt for a name not in ConfigSectionNames().

@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "core/nearest_key.h"
 #include "core/text_fields.h"
+#include "scenario/param_reader.h"
 #include "scenario/scenario_sections.h"
 #include "scene/mesh_loader.h"
 #include "scene/person.h"
@@ -100,15 +101,13 @@ Mesh ReadMesh(YamlReader& reader, const Field& field, const std::filesystem::pat
   return mesh;
 }
 
-// material: {albedo, specular, ir_albedo, acoustic_reflectivity}, each in [0, 1]
+// material: by its declaration (MaterialSchema(), scene/scene.h)
 Material ReadMaterial(YamlReader& reader, const Field& field) {
   Material material;
-  const auto map = reader.Map(field, {"albedo", "specular", "ir_albedo", "acoustic_reflectivity"});
+  const auto map = OpenSection(reader, field, MaterialSchema());
   if (!map) return material;
-  material.albedo = reader.Number((*map)["albedo"], NumberIn(0, 1)).value_or(material.albedo);
-  material.specular = reader.Number((*map)["specular"], NumberIn(0, 1)).value_or(material.specular);
-  material.ir_albedo = reader.Number((*map)["ir_albedo"], NumberIn(0, 1));
-  material.acoustic_reflectivity = reader.Number((*map)["acoustic_reflectivity"], NumberIn(0, 1));
+  ReadParams(reader, *map, MaterialSchema(), material);
+  ReportAtKeys(reader, *map, CheckParamBounds(MaterialSchema(), material));
   return material;
 }
 

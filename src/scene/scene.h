@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/config_schema.h"
 #include "scene/motion.h"
 #include "scene/shape.h"
 
@@ -22,6 +23,10 @@ struct Material {
   std::optional<double> ir_albedo;              ///< in [0, 1]; the infrared sensors' albedo when not `albedo`
   std::optional<double> acoustic_reflectivity;  ///< in [0, 1]; fraction of sound returned; absent: 1
 };
+
+/// An object's `material:` keys declared once (core/config_schema.h): the
+/// scenario reader, docs/scenario.md's table and the writer follow them.
+const ConfigSchema<Material>& MaterialSchema();
 
 struct SceneObject {
   std::string name;  ///< unique within the scene; the `object` column of readings.csv

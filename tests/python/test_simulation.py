@@ -299,7 +299,7 @@ def test_a_beam_with_several_echoes_gives_them_by_name(tmp_path):
 
 def test_config_keys_are_the_declared_sections_as_dicts():
     """proxsim.config_keys gives each section's keys as the docs' tables do."""
-    assert proxsim.config_sections() == ["map", "robot", "robot.gait", "strategy.stop", "strategy.circumvent"]
+    assert proxsim.config_sections() == ["material", "map", "robot", "robot.gait", "strategy.stop", "strategy.circumvent"]
     keys = {k["key"]: k for k in proxsim.config_keys("map")}
     assert keys["resolution_m"]["min"] == 0.005 and keys["resolution_m"]["max"] == 1.0
     assert keys["resolution_m"]["unit"] == "m" and keys["resolution_m"]["default"] == "0.02"
@@ -310,5 +310,5 @@ def test_config_keys_are_the_declared_sections_as_dicts():
     sim = proxsim.Simulation.builtin("paper", seed=1)
     echoed = sim.summary()["inputs"]["map"]
     assert set(keys) == set(echoed)
-    with pytest.raises(ValueError, match="expected one of map"):
+    with pytest.raises(ValueError, match="expected one of material, map"):
         proxsim.config_keys("nope")
