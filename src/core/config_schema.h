@@ -215,6 +215,27 @@ ConfigParam<Config> ChoiceParam(std::string key, Enum Config::*member, std::vect
   return param;
 }
 
+/// `param` with the reason its bounds are what they are, for messages.
+template <class Config>
+ConfigParam<Config> WithNote(ConfigParam<Config> param, std::string bounds_note) {
+  param.description.bounds_note = std::move(bounds_note);
+  return param;
+}
+
+/// `param` (a choice) with what each choice does, in the choices' order, for messages.
+template <class Config>
+ConfigParam<Config> WithGlosses(ConfigParam<Config> param, std::vector<std::string> glosses) {
+  param.description.choice_glosses = std::move(glosses);
+  return param;
+}
+
+/// `param` (a number) as a whole number: read as a count, echoed as one.
+template <class Config>
+ConfigParam<Config> AsWhole(ConfigParam<Config> param) {
+  param.description.whole = true;
+  return param;
+}
+
 // --- using a declaration ---------------------------------------------------
 
 /// The keys, in the declaration's order.

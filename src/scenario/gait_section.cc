@@ -34,8 +34,8 @@ const ConfigSchema<RobotConfig>& GaitSectionSchema() {
     keyframe.get = [](const C& c) { return ParamValue(c.gait.keyframe); };
     keyframe.set = [](C& c, const ParamValue& v) { c.gait.keyframe = std::get<std::string>(v); };
     keyframe.is_unset = [](const C& c) { return c.gait.keyframe.empty(); };
-    ConfigSchema<C> s = {
-        ConvertedNumberParam<C>(
+    return ConfigSchema<C>{
+        WithNote(ConvertedNumberParam<C>(
             "stride_m", Between(kMinStride_m, kMaxStride_m), "m", "the built-in biped's 0.6 m scaled to the legs",
             "the distance between two heel strikes of one foot",
             [](const C& c) { return c.gait.stride_m; },
@@ -43,8 +43,8 @@ const ConfigSchema<RobotConfig>& GaitSectionSchema() {
               c.gait.stride_m = v;
               c.gait.derive_stride_from_legs = false;
             },
-            [](const C& c) { return c.gait.derive_stride_from_legs; }),
-        ConvertedNumberParam<C>(
+            [](const C& c) { return c.gait.derive_stride_from_legs; }), kStrideNote),
+        WithNote(ConvertedNumberParam<C>(
             "period_s", Between(kMinGaitPeriod_s, kMaxGaitPeriod_s), "s",
             "the built-in biped's 1.2 s scaled by the square root of the leg length", "the time of one gait cycle",
             [](const C& c) { return c.gait.period_s; },
@@ -52,21 +52,26 @@ const ConfigSchema<RobotConfig>& GaitSectionSchema() {
               c.gait.period_s = v;
               c.gait.derive_period_from_legs = false;
             },
-            [](const C& c) { return c.gait.derive_period_from_legs; }),
-        ConvertedNumberParam<C>(
+            [](const C& c) { return c.gait.derive_period_from_legs; }), "a gait cycle a walking robot can take"),
+        WithNote(ConvertedNumberParam<C>(
             "max_step_m", Between(kMinStride_m, kMaxStride_m), "m",
             "what the legs reach with the knee flexed at most 100° (about 0.32 m for the built-in biped)",
             "the highest step up or down the legs take; a higher one is unsafe ([terrain.md](terrain.md))",
             [](const C& c) { return c.gait.max_step_m; }, [](C& c, double v) { c.gait.max_step_m = v; },
-            [](const C& c) { return c.gait.max_step_m == 0.0; }),
-        ChoiceParam<C, UnsafeSteps>("unsafe_steps", &C::unsafe_steps,
-                                    {{UnsafeSteps::kFall, "fall"}, {UnsafeSteps::kRefuse, "refuse"}},
-                                    "`fall`: a step the legs cannot take is taken, and the robot falls there, ending "
-                                    "the episode; `refuse`: the legs stand before it ([outcomes.md](outcomes.md))"),
-        ChoiceParam<C, Footholds>("footholds", &C::footholds, {{Footholds::kTruth, "truth"}, {Footholds::kMap, "map"}},
-                                  "`truth`: every foothold and swing arc planned on the scene's true surface; `map`: "
-                                  "on the robot's own terrain map, which must be on (where it knows nothing, a level "
-                                  "step at the stance foot's height; the true surface then decides each landing)"),
+            [](const C& c) { return c.gait.max_step_m == 0.0; }), kStrideNote),
+        WithGlosses(ChoiceParam<C, UnsafeSteps>("unsafe_steps", &C::unsafe_steps,
+                                                {{UnsafeSteps::kFall, "fall"}, {UnsafeSteps::kRefuse, "refuse"}},
+                                                "`fall`: a step the legs cannot take is taken, and the robot falls "
+                                                "there, ending the episode; `refuse`: the legs stand before it "
+                                                "([outcomes.md](outcomes.md))"),
+                    {"a step the legs cannot take is taken, and the robot falls", "the legs stand before it"}),
+        WithGlosses(ChoiceParam<C, Footholds>("footholds", &C::footholds,
+                                              {{Footholds::kTruth, "truth"}, {Footholds::kMap, "map"}},
+                                              "`truth`: every foothold and swing arc planned on the scene's true "
+                                              "surface; `map`: on the robot's own terrain map, which must be on "
+                                              "(where it knows nothing, a level step at the stance foot's height; "
+                                              "the true surface then decides each landing)"),
+                    {"footsteps planned on the scene's true surface", "on the robot's own terrain map"}),
         ConvertedNumberParam<C>(
             "touchdown_tolerance_m", Between(0.0, kMaxTouchdownTolerance_m), "m", "0.02",
             "under `footholds: map`, a foot landing lower than planned by more than this falls; within it the foot "
@@ -82,13 +87,6 @@ const ConfigSchema<RobotConfig>& GaitSectionSchema() {
             [](C& c, double v) { c.gait.crouch_knee_rad = DegToRad(v); },
             [](const C& c) { return !c.gait.crouch_knee_rad.has_value(); }),
     };
-    s[1].description.bounds_note = "a gait cycle a walking robot can take";
-    s[3].description.choice_glosses = {"a step the legs cannot take is taken, and the robot falls",
-                                       "the legs stand before it"};
-    s[4].description.choice_glosses = {"footsteps planned on the scene's true surface",
-                                       "on the robot's own terrain map"};
-    s[0].description.bounds_note = s[2].description.bounds_note = kStrideNote;
-    return s;
   }();
   return schema;
 }

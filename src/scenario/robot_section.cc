@@ -5,24 +5,26 @@ namespace proxsim {
 const ConfigSchema<RobotConfig>& RobotSectionSchema() {
   using C = RobotConfig;
   static const ConfigSchema<C> schema = [] {
-    ConfigParam<C> geom_group = ConvertedNumberParam<C>(
-        "geom_group", Between(0, 5), "", "every geom",
-        "MJCF only: the geom group whose geoms are the robot's surface (MuJoCo Menagerie: 2 visual, 3 collision)",
-        [](const C& c) { return static_cast<double>(c.geom_group); },
-        [](C& c, double v) { c.geom_group = static_cast<int>(v); }, [](const C& c) { return c.geom_group < 0; });
-    geom_group.description.whole = true;
-    geom_group.description.bounds_note = "a MuJoCo geom group";
-    ConfigSchema<C> s = {
+    return ConfigSchema<C>{
         ByHandParam<C>("model", "`builtin:biped` or a path", "`builtin:biped`",
                        "the robot: the built-in biped, a URDF file (with its meshes) or a MuJoCo model, MJCF "
                        "(`<mujoco>`: [robots.md](robots.md#mujoco-models-mjcf))"),
-        ChoiceParam<C, ModelScene>(
-            "model_scene", &C::model_scene, {{ModelScene::kInclude, "include"}, {ModelScene::kIgnore, "ignore"}},
-            "MJCF only: a scene file that includes the robot (MuJoCo Menagerie's `scene.xml`) has geoms of its own on "
-            "the world body, a floor and furniture: `include` adds them to the scene as objects `model:GEOM` (the "
-            "floor plane only when the scene has no ground of its own), `ignore` leaves them out "
-            "([robots.md](robots.md#a-scene-file-that-includes-the-robot))"),
-        geom_group,
+        WithGlosses(
+            ChoiceParam<C, ModelScene>(
+                "model_scene", &C::model_scene, {{ModelScene::kInclude, "include"}, {ModelScene::kIgnore, "ignore"}},
+                "MJCF only: a scene file that includes the robot (MuJoCo Menagerie's `scene.xml`) has geoms of its "
+                "own on the world body, a floor and furniture: `include` adds them to the scene as objects "
+                "`model:GEOM` (the floor plane only when the scene has no ground of its own), `ignore` leaves them "
+                "out ([robots.md](robots.md#a-scene-file-that-includes-the-robot))"),
+            {"the world geoms of the model's file join the scene", "the scene is the scenario's alone"}),
+        WithNote(AsWhole(ConvertedNumberParam<C>(
+                     "geom_group", Between(0, 5), "", "every geom",
+                     "MJCF only: the geom group whose geoms are the robot's surface (MuJoCo Menagerie: 2 visual, 3 "
+                     "collision)",
+                     [](const C& c) { return static_cast<double>(c.geom_group); },
+                     [](C& c, double v) { c.geom_group = static_cast<int>(v); },
+                     [](const C& c) { return c.geom_group < 0; })),
+                 "a MuJoCo geom group"),
         ChoiceParam<C, LinkGeometryKind>(
             "geometry", &C::geometry, {{LinkGeometryKind::kVisual, "visual"}, {LinkGeometryKind::kCollision, "collision"}},
             "which of the URDF's geometries is the robot's surface: what sensors see, the clearance, the soles, the "
@@ -43,10 +45,12 @@ const ConfigSchema<RobotConfig>& RobotSectionSchema() {
         ByHandParam<C>("gait", "map", "scaled to the legs",
                        "the gait's pace and shape, what the legs do with a step they cannot take, and what they plan "
                        "their footholds on: every key in [the table below](#the-gait-section)"),
-        ChoiceParam<C, OnCollision>("on_collision", &C::on_collision,
-                                    {{OnCollision::kStop, "stop"}, {OnCollision::kContinue, "continue"}},
-                                    "a contact of the robot's body with the world or itself: `stop` ends the episode at "
-                                    "the first one, `continue` logs each and walks on ([outcomes.md](outcomes.md))"),
+        WithGlosses(ChoiceParam<C, OnCollision>("on_collision", &C::on_collision,
+                                                {{OnCollision::kStop, "stop"}, {OnCollision::kContinue, "continue"}},
+                                                "a contact of the robot's body with the world or itself: `stop` ends "
+                                                "the episode at the first one, `continue` logs each and walks on "
+                                                "([outcomes.md](outcomes.md))"),
+                    {"the episode ends at the first collision", "every collision is logged and the walk goes on"}),
         ByHandParam<C>("path", "`{waypoints_m: [[x, y], ...]}`", "straight ahead",
                        "the path to follow on the floor, with or without the start point; the robot stops at the last "
                        "waypoint"),
@@ -55,22 +59,17 @@ const ConfigSchema<RobotConfig>& RobotSectionSchema() {
         ByHandParam<C>("stop_distance_m", "number > 0, m", "—",
                        "shorthand for `strategy: {name: stop, stop_distance_m: D}`; not together with `strategy`"),
         ByHandParam<C>("trajectory", "a CSV path", "none", "replay a recorded motion instead of the gait (below)"),
-        ChoiceParam<C, LocomotionSource>(
-            "locomotion", &C::locomotion, {{LocomotionSource::kGait, "gait"}, {LocomotionSource::kExternal, "external"}},
-            "what moves the robot: its own gait (or the `trajectory` when given), or `external`: another simulator "
-            "sets its state every sample from Python or C++ (co-simulation, [cosimulation.md](cosimulation.md)); not "
-            "together with `trajectory`; `proxsim run` and studies refuse it (exit 2: they have no caller)"),
+        WithGlosses(
+            ChoiceParam<C, LocomotionSource>(
+                "locomotion", &C::locomotion,
+                {{LocomotionSource::kGait, "gait"}, {LocomotionSource::kExternal, "external"}},
+                "what moves the robot: its own gait (or the `trajectory` when given), or `external`: another "
+                "simulator sets its state every sample from Python or C++ (co-simulation, "
+                "[cosimulation.md](cosimulation.md)); not together with `trajectory`; `proxsim run` and studies refuse "
+                "it (exit 2: they have no caller)"),
+            {"its own gait, or the trajectory when given",
+             "the caller sets the robot's state every sample: docs/cosimulation.md"}),
     };
-    // what each choice does, for the messages of a wrong one
-    const auto gloss = [&s](const char* key, std::vector<std::string> glosses) {
-      for (ConfigParam<C>& param : s)
-        if (param.key() == key) param.description.choice_glosses = std::move(glosses);
-    };
-    gloss("model_scene", {"the world geoms of the model's file join the scene", "the scene is the scenario's alone"});
-    gloss("on_collision", {"the episode ends at the first collision", "every collision is logged and the walk goes on"});
-    gloss("locomotion", {"its own gait, or the trajectory when given",
-                         "the caller sets the robot's state every sample: docs/cosimulation.md"});
-    return s;
   }();
   return schema;
 }

@@ -12,9 +12,8 @@ const char* const kPerceptionMeaning =
 // the perception key, with what each choice reads for a wrong one's message
 template <class C>
 ConfigParam<C> PerceptionParam() {
-  ConfigParam<C> param = ChoiceParam("perception", &C::perception, kPerceptionNames, kPerceptionMeaning);
-  param.description.choice_glosses = {"each fresh reading's point", "the robot's terrain map"};
-  return param;
+  return WithGlosses(ChoiceParam("perception", &C::perception, kPerceptionNames, kPerceptionMeaning),
+                     {"each fresh reading's point", "the robot's terrain map"});
 }
 
 }  // namespace
@@ -61,8 +60,9 @@ std::vector<std::string> Validate(const StrategyConfig& config) {
 }
 
 std::string StrategyYaml(const StrategyConfig& config) {
-  if (const auto* stop = std::get_if<StopConfig>(&config)) return ParamsYaml(StopSchema(), *stop, "name: stop");
-  return ParamsYaml(CircumventSchema(), std::get<CircumventConfig>(config), "name: circumvent");
+  const std::string name = std::string("name: ") + StrategyName(config);
+  if (const auto* stop = std::get_if<StopConfig>(&config)) return ParamsYaml(StopSchema(), *stop, name);
+  return ParamsYaml(CircumventSchema(), std::get<CircumventConfig>(config), name);
 }
 
 }  // namespace proxsim

@@ -54,11 +54,6 @@ std::vector<std::string> Validate(const StrategyConfig& config);
 /// The strategy as the scenario's flow map, `{name: stop, stop_distance_m: 0.5, ...}`.
 std::string StrategyYaml(const StrategyConfig& config);
 
-/// "readings" or "map".
-inline const char* PerceptionName(Perception perception) {
-  return perception == Perception::kMap ? "map" : "readings";
-}
-
 /// "stop" or "circumvent".
 inline const char* StrategyName(const StrategyConfig& config) {
   return std::holds_alternative<StopConfig>(config) ? "stop" : "circumvent";
